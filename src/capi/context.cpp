@@ -1,0 +1,114 @@
+#include "context.hpp"
+
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+
+#include "api_guard.hpp"
+#include "struct_io.hpp"
+
+namespace polymass::capi {
+namespace {
+
+void* default_allocate(void*, std::size_t size, std::size_t alignment) {
+    if (alignment <= alignof(std::max_align_t)) return std::malloc(size);
+    // aligned_alloc wants a size that is a multiple of the alignment.
+    return std::aligned_alloc(alignment, (size + alignment - 1) / alignment * alignment);
+}
+
+void default_deallocate(void*, void* pointer) { std::free(pointer); }
+
+}  // namespace
+
+void* HookMemoryResource::do_allocate(std::size_t bytes, std::size_t alignment) {
+    void* pointer = allocator_.allocate(allocator_.user_data, bytes, alignment);
+    if (!pointer && bytes > 0) throw std::bad_alloc();
+    return pointer;
+}
+
+void HookMemoryResource::do_deallocate(void* pointer, std::size_t, std::size_t) {
+    if (pointer) allocator_.deallocate(allocator_.user_data, pointer);
+}
+
+polymass_allocator allocator_or_default(const polymass_allocator* allocator) {
+    if (allocator) return *allocator;
+    return {default_allocate, default_deallocate, nullptr};
+}
+
+void* allocate_object(const polymass_allocator& allocator, std::size_t size, std::size_t alignment) {
+    return allocator.allocate(allocator.user_data, size, alignment);
+}
+
+}  // namespace polymass::capi
+
+int32_t polymass_context::fail(int32_t status, const char* format, ...) {
+    va_list arguments;
+    va_start(arguments, format);
+    std::vsnprintf(message, sizeof message, format, arguments);
+    va_end(arguments);
+    return status;
+}
+
+using namespace polymass::capi;
+
+extern "C" {
+
+POLYMASS_API int32_t polymass_context_create(polymass_context** out_context,
+                                             const polymass_allocator* allocator) {
+    if (!out_context) return POLYMASS_ERROR_INVALID_ARGUMENT;
+    *out_context = nullptr;
+    if (allocator && (!allocator->allocate || !allocator->deallocate))
+        return POLYMASS_ERROR_INVALID_ARGUMENT;
+    const polymass_allocator hook = allocator_or_default(allocator);
+    void* memory = allocate_object(hook, sizeof(polymass_context), alignof(polymass_context));
+    if (!memory) return POLYMASS_ERROR_OUT_OF_MEMORY;
+    *out_context = new (memory) polymass_context(hook);
+    return POLYMASS_OK;
+}
+
+POLYMASS_API void polymass_context_destroy(polymass_context* context) {
+    if (!context) return;
+    const polymass_allocator hook = context->allocator;
+    context->~polymass_context();
+    hook.deallocate(hook.user_data, context);
+}
+
+POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
+                                                  const polymass_options* options) {
+    return guarded(context, [&] {
+        if (const int32_t status = check_struct(context, options, "options")) return status;
+        constexpr uint32_t known_flags =
+            POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
+            POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
+        if (options->flags & ~known_flags)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "options->flags has unknown bits 0x%x",
+                                 unsigned(options->flags & ~known_flags));
+        const double tolerance = options->planarity_tolerance;
+        if (!(tolerance >= 0.0 && tolerance < 1.0))  // also rejects NaN
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "options->planarity_tolerance is %g; it must be in [0, 1) "
+                                 "(0 selects the default %g)",
+                                 tolerance, POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
+        context->options = *options;
+        if (tolerance == 0.0) context->options.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
+        return POLYMASS_OK;
+    });
+}
+
+POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
+                                                  polymass_context* context) {
+    return guarded(context, [&] {
+        if (const int32_t status = check_struct(context, out_options, "out_options"))
+            return status;
+        *out_options = context->options;
+        return POLYMASS_OK;
+    });
+}
+
+POLYMASS_API const char* polymass_context_message(const polymass_context* context) {
+    return context ? context->message : "context is NULL";
+}
+
+}  // extern "C"

@@ -1,0 +1,48 @@
+// The context behind polymass_context: options, the caller's allocator (as a
+// std::pmr::memory_resource for core/), and the last detailed error message.
+#pragma once
+
+#include <polymass/polymass.h>
+
+#include <cstdint>
+#include <memory_resource>
+
+namespace polymass::capi {
+
+// Routes every allocation of core/ through the caller's polymass_allocator;
+// a NULL from it becomes std::bad_alloc, which the API guard reports.
+class HookMemoryResource final : public std::pmr::memory_resource {
+public:
+    explicit HookMemoryResource(const polymass_allocator& allocator) : allocator_(allocator) {}
+
+private:
+    void* do_allocate(std::size_t bytes, std::size_t alignment) override;
+    void do_deallocate(void* pointer, std::size_t, std::size_t) override;
+    bool do_is_equal(const std::pmr::memory_resource& other) const noexcept override {
+        return this == &other;
+    }
+
+    polymass_allocator allocator_;
+};
+
+// The allocator to use: the caller's, or malloc-backed when NULL.
+polymass_allocator allocator_or_default(const polymass_allocator* allocator);
+
+// Memory for a library object (context, mesh) from the caller's allocator;
+// nullptr on failure.
+void* allocate_object(const polymass_allocator& allocator, std::size_t size, std::size_t alignment);
+
+}  // namespace polymass::capi
+
+struct polymass_context {
+    explicit polymass_context(const polymass_allocator& hook) : allocator(hook), memory(hook) {}
+
+    polymass_allocator allocator;
+    polymass::capi::HookMemoryResource memory;
+    polymass_options options{sizeof(polymass_options), 0, POLYMASS_DEFAULT_PLANARITY_TOLERANCE};
+    char message[512] = "";
+
+    void clear_message() { message[0] = '\0'; }
+    // Formats the message and returns status, so that `return fail(...)` reads naturally.
+    int32_t fail(int32_t status, const char* format, ...) __attribute__((format(printf, 3, 4)));
+};

@@ -1,0 +1,122 @@
+#include "mesh_input.hpp"
+
+#include <limits>
+
+#include "struct_io.hpp"
+
+namespace polymass::capi {
+namespace {
+
+using u64 = unsigned long long;  // for printf
+
+// True when [pointer, pointer + count * stride) — the last element `element`
+// bytes long — is addressable: no arithmetic on it can overflow.
+bool span_fits(const void* pointer, uint64_t count, uint64_t stride, uint64_t element) {
+    if (count == 0) return true;
+    uint64_t last = 0, end = 0;
+    if (__builtin_mul_overflow(count - 1, stride, &last)) return false;
+    if (__builtin_add_overflow(last, element, &end)) return false;
+    const uint64_t room = uint64_t(std::numeric_limits<std::uintptr_t>::max()) -
+                          uint64_t(reinterpret_cast<std::uintptr_t>(pointer));
+    return end <= room && end <= uint64_t(std::numeric_limits<std::ptrdiff_t>::max());
+}
+
+int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& desc,
+                        MeshInput& input) {
+    if (!desc.face_sizes) {
+        if (desc.face_count != 0)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "face_count is %llu but face_sizes is NULL (NULL face_sizes "
+                                 "means triangles, counted from index_count)",
+                                 u64(desc.face_count));
+        if (desc.index_count % 3 != 0)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "index_count %llu is not a multiple of 3 (face_sizes is NULL, "
+                                 "so every face is a triangle)",
+                                 u64(desc.index_count));
+        input.face_count = std::size_t(desc.index_count / 3);
+        return POLYMASS_OK;
+    }
+    if (!span_fits(desc.face_sizes, desc.face_count, sizeof(uint32_t), sizeof(uint32_t)))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "face_count %llu is larger than any array can be",
+                             u64(desc.face_count));
+    uint64_t total = 0;
+    for (uint64_t face = 0; face < desc.face_count; ++face) {
+        const uint32_t size = desc.face_sizes[face];
+        if (size < 3 && input.small_faces++ == 0) input.first_small_face = std::size_t(face);
+        // Saturating: an absurd total must still compare unequal to index_count.
+        total = size > std::numeric_limits<uint64_t>::max() - total
+                    ? std::numeric_limits<uint64_t>::max()
+                    : total + size;
+    }
+    input.face_sizes = desc.face_sizes;
+    input.face_count = std::size_t(desc.face_count);
+    if (input.small_faces > 0)
+        return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
+                             "face %llu has %u vertices; a face needs at least 3 "
+                             "(%llu faces are too small)",
+                             u64(input.first_small_face), desc.face_sizes[input.first_small_face],
+                             u64(input.small_faces));
+    if (total != desc.index_count)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "face_sizes add up to %llu indices but index_count is %llu",
+                             u64(total), u64(desc.index_count));
+    return POLYMASS_OK;
+}
+
+}  // namespace
+
+int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc, MeshInput& input) {
+    if (const int32_t status = check_struct(context, desc, "desc")) return status;
+    if (desc->position_type != POLYMASS_POSITION_FLOAT64 &&
+        desc->position_type != POLYMASS_POSITION_FLOAT32)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "position_type %u is not POLYMASS_POSITION_FLOAT64 (0) or "
+                             "POLYMASS_POSITION_FLOAT32 (1)",
+                             unsigned(desc->position_type));
+    if (desc->index_type != POLYMASS_INDEX_UINT32 && desc->index_type != POLYMASS_INDEX_UINT16)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "index_type %u is not POLYMASS_INDEX_UINT32 (0) or "
+                             "POLYMASS_INDEX_UINT16 (1)",
+                             unsigned(desc->index_type));
+    if (desc->reserved != 0)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "reserved is %u; it must be 0",
+                             unsigned(desc->reserved));
+
+    const uint64_t vertex_bytes = desc->position_type == POLYMASS_POSITION_FLOAT32 ? 12 : 24;
+    const uint64_t stride = desc->position_stride ? desc->position_stride : vertex_bytes;
+    if (stride < vertex_bytes)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "position_stride %llu is smaller than a vertex (%llu bytes)",
+                             u64(stride), u64(vertex_bytes));
+    if (desc->vertex_count > 0 && !desc->positions)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "positions is NULL but vertex_count is %llu", u64(desc->vertex_count));
+    if (!span_fits(desc->positions, desc->vertex_count, stride, vertex_bytes))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "vertex_count %llu at stride %llu is larger than any array can be",
+                             u64(desc->vertex_count), u64(stride));
+
+    const uint64_t index_bytes = desc->index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    if (desc->index_count == 0)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "the mesh has no faces (index_count is 0)");
+    if (!desc->indices)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "indices is NULL but index_count is %llu", u64(desc->index_count));
+    if (!span_fits(desc->indices, desc->index_count, index_bytes, index_bytes))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "index_count %llu is larger than any array can be",
+                             u64(desc->index_count));
+
+    input.position_type = desc->position_type;
+    input.index_type = desc->index_type;
+    input.positions = static_cast<const unsigned char*>(desc->positions);
+    input.vertex_count = std::size_t(desc->vertex_count);
+    input.position_stride = std::size_t(stride);
+    input.indices = static_cast<const unsigned char*>(desc->indices);
+    input.index_count = std::size_t(desc->index_count);
+    return read_face_sizes(context, *desc, input);
+}
+
+}  // namespace polymass::capi

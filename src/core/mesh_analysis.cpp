@@ -1,0 +1,48 @@
+#include "mesh_analysis.hpp"
+
+#include "welding.hpp"
+
+namespace polymass::core {
+
+template <class Scalar, class Index>
+MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSettings& settings,
+                          bool accept_balanced_non_manifold, std::pmr::memory_resource* memory) {
+    MeshAnalysis analysis(scan_mesh(mesh, memory));
+    const MeshScan& scan = analysis.scan;
+    analysis.used_vertex_count = scan.used_vertex_count;
+    // Out-of-range indices cannot be read and non-finite coordinates poison
+    // every sum: nothing after this is meaningful.
+    if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0) return analysis;
+
+    if (settings.check_topology) {
+        std::pmr::vector<std::uint32_t> welded(memory);
+        if (settings.weld) {
+            welded = weld_vertices(mesh, scan, memory);
+            analysis.used_vertex_count = 0;
+            for (std::size_t vertex = 0; vertex < welded.size(); ++vertex)
+                analysis.used_vertex_count += scan.is_used(vertex) && welded[vertex] == vertex;
+        }
+        analysis.topology =
+            analyse_topology(mesh, settings.weld ? welded.data() : nullptr, memory);
+        if (settings.stop_at_first_problem &&
+            !analysis.topology->closed_and_oriented(accept_balanced_non_manifold))
+            return analysis;
+    }
+
+    analysis.reference = scan.reference_point();
+    IntegrationSettings integration;
+    integration.reference = analysis.reference;
+    integration.check_planarity = settings.check_topology;
+    integration.planarity_tolerance = settings.planarity_tolerance;
+    analysis.integration = integrate_mesh(mesh, integration);
+    return analysis;
+}
+
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                               \
+    template MeshAnalysis analyse_mesh<Scalar, Index>(const MeshView<Scalar, Index>&,   \
+                                                      const AnalysisSettings&, bool,   \
+                                                      std::pmr::memory_resource*);
+POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
+#undef POLYMASS_INSTANTIATE
+
+}  // namespace polymass::core

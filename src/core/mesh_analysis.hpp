@@ -1,0 +1,39 @@
+// Everything the library learns about a mesh before it trusts it: the scan,
+// welding, the topology check and the integration pass, in that order, each
+// run only when the ones before it leave the next one meaningful.
+#pragma once
+
+#include <cstddef>
+#include <memory_resource>
+#include <optional>
+#include <utility>
+
+#include "mesh_integration.hpp"
+#include "mesh_scan.hpp"
+#include "mesh_view.hpp"
+#include "topology.hpp"
+
+namespace polymass::core {
+
+struct AnalysisSettings {
+    bool check_topology = true;  // closed, manifold, oriented, planar
+    bool weld = false;           // identify exactly coincident vertices first
+    bool stop_at_first_problem = true;
+    double planarity_tolerance = 1e-6;
+};
+
+struct MeshAnalysis {
+    MeshScan scan;
+    std::size_t used_vertex_count = 0;        // after welding
+    std::optional<TopologyReport> topology;   // when checked
+    std::optional<IntegrationResult> integration;  // when the faces could be integrated
+    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+
+    explicit MeshAnalysis(MeshScan scanned) : scan(std::move(scanned)) {}
+};
+
+template <class Scalar, class Index>
+MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSettings& settings,
+                          bool accept_balanced_non_manifold, std::pmr::memory_resource* memory);
+
+}  // namespace polymass::core

@@ -1,0 +1,44 @@
+// The first look at a mesh: are its indices in range and the coordinates its
+// faces use finite, and where does it lie. Everything later relies on this.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cstddef>
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+#include "mesh_integration.hpp"
+#include "mesh_view.hpp"
+
+namespace polymass::core {
+
+struct VertexFinding {
+    std::size_t count = 0;
+    std::size_t first = 0;  // vertex index, when count > 0
+};
+
+struct MeshScan {
+    std::size_t out_of_range_indices = 0;
+    FaceFinding out_of_range_faces;  // faces with an index past the vertex array
+    std::uint32_t first_out_of_range_index = 0;  // its value, in out_of_range_faces.first
+    VertexFinding non_finite;        // used vertices with a NaN or infinite coordinate
+    std::size_t used_vertex_count = 0;
+    Eigen::AlignedBox3d bounds;         // of the used, finite vertices
+    std::pmr::vector<std::uint64_t> used;  // bit v: vertex v is used by a face
+
+    explicit MeshScan(std::pmr::memory_resource* memory) : used(memory) {}
+
+    bool is_used(std::size_t vertex) const { return (used[vertex / 64] >> (vertex % 64)) & 1u; }
+    // A point near every face: integrating about it keeps the digits of a mesh
+    // far from the origin. Only vertices the faces use count.
+    Eigen::Vector3d reference_point() const {
+        return bounds.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(bounds.center());
+    }
+    double diagonal() const { return bounds.isEmpty() ? 0.0 : bounds.diagonal().norm(); }
+};
+
+template <class Scalar, class Index>
+MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory);
+
+}  // namespace polymass::core

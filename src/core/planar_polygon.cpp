@@ -1,0 +1,42 @@
+#include "planar_polygon.hpp"
+
+#include <cmath>
+
+namespace polymass::core {
+
+PlanarPolygon planar_polygon_from(const ProjectionIntegrals& about_reference,
+                                  const Eigen::Vector2d& reference, double extent_squared) {
+    PlanarPolygon polygon;
+    // A clockwise polygon gives every region integral negated.
+    const double sign = about_reference.one < 0 ? -1.0 : 1.0;
+    polygon.orientation = int(sign);
+    polygon.area = sign * about_reference.one;
+    polygon.zero_area = is_degenerate_face(2.0 * polygon.area, extent_squared);
+    if (polygon.zero_area) return polygon;
+
+    const double area = polygon.area;
+    const Eigen::Vector2d centroid(sign * about_reference.a / area, sign * about_reference.b / area);
+    polygon.centroid = reference + centroid;
+    const double ixx = sign * about_reference.bb - area * centroid.y() * centroid.y();
+    const double iyy = sign * about_reference.aa - area * centroid.x() * centroid.x();
+    const double ixy = sign * about_reference.ab - area * centroid.x() * centroid.y();
+    polygon.moments = {ixx, iyy, ixy};
+    const Eigen::Vector2d& c = polygon.centroid;
+    polygon.moments_origin = {ixx + area * c.y() * c.y(), iyy + area * c.x() * c.x(),
+                              ixy + area * c.x() * c.y()};
+
+    // About an axis at angle θ: I(θ) = mean + half_difference cos 2θ − ixy sin 2θ,
+    // smallest at 2θ = π − atan2(ixy, half_difference).
+    const double mean = (ixx + iyy) / 2.0, half_difference = (ixx - iyy) / 2.0;
+    const double radius = std::hypot(half_difference, ixy);
+    polygon.principal_moments = {mean - radius, mean + radius};
+    const double pi = 3.14159265358979323846;
+    // Equal moments (a square, a regular polygon): every axis is principal; take x.
+    const bool isotropic = radius <= 1e-10 * std::abs(mean);
+    double angle = isotropic ? 0.0 : (pi - std::atan2(ixy, half_difference)) / 2.0;
+    if (angle > pi / 2) angle -= pi;
+    polygon.principal_angle = angle;
+    return polygon;
+}
+
+}  // namespace polymass::core

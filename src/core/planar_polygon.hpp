@@ -1,0 +1,42 @@
+// Area, centroid and second moments of area of a simple planar polygon.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstddef>
+
+#include "polygon_integrals.hpp"
+
+namespace polymass::core {
+
+struct PlanarPolygon {
+    int orientation = 1;  // +1 counter-clockwise, −1 clockwise
+    double area = 0.0;    // > 0
+    Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+    // Second moments of area (Ixx = ∫y², Iyy = ∫x², Ixy = +∫xy).
+    Eigen::Vector3d moments = Eigen::Vector3d::Zero();         // about the centroid
+    Eigen::Vector3d moments_origin = Eigen::Vector3d::Zero();  // about (0, 0)
+    Eigen::Vector2d principal_moments = Eigen::Vector2d::Zero();  // ascending
+    double principal_angle = 0.0;  // of the axis of principal_moments[0], in (−π/2, π/2]
+    bool zero_area = false;        // area at rounding level: nothing else is meaningful
+};
+
+// From the region integrals of the polygon about `reference` (as the caller
+// ordered its points); `extent_squared` is the square of the polygon's size
+// times its point count, the scale of the area's rounding.
+PlanarPolygon planar_polygon_from(const ProjectionIntegrals& about_reference,
+                                  const Eigen::Vector2d& reference, double extent_squared);
+
+// point_at(i) returns point i as a 2-vector; count >= 3, all finite.
+template <class PointAt>
+PlanarPolygon planar_polygon(std::size_t count, PointAt&& point_at) {
+    Eigen::AlignedBox2d bounds;
+    for (std::size_t i = 0; i < count; ++i) bounds.extend(point_at(i));
+    // About the centre of the bounds, so a polygon far from the origin keeps its digits.
+    const Eigen::Vector2d reference = bounds.center();
+    const ProjectionIntegrals integrals = projection_integrals(
+        count, [&](std::size_t i) { return Eigen::Vector2d(point_at(i) - reference); });
+    return planar_polygon_from(integrals, reference, double(count) * bounds.diagonal().squaredNorm());
+}
+
+}  // namespace polymass::core

@@ -1,0 +1,55 @@
+// Is the surface closed and consistently oriented?
+//
+// Every edge of a closed, consistently oriented surface is traversed once in
+// each direction. Counting, for each undirected edge, how often it is
+// traversed each way classifies it: once in all → open; twice the same way →
+// misoriented; more than twice → non-manifold (balanced when both ways are
+// equally frequent: two solids touching along an edge, whose integrals are
+// still right).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory_resource>
+
+#include "mesh_view.hpp"
+
+namespace polymass::core {
+
+struct EdgeFinding {
+    std::size_t count = 0;
+    std::uint32_t first[2] = {0, 0};  // vertex indices, in the (most frequent) direction
+    std::size_t first_traversals = 0;  // how many times faces traverse the first one
+
+    void record(std::uint32_t from, std::uint32_t to, std::size_t traversals) {
+        if (count++ == 0) {
+            first[0] = from;
+            first[1] = to;
+            first_traversals = traversals;
+        }
+    }
+};
+
+struct TopologyReport {
+    std::size_t edge_count = 0;  // distinct undirected edges
+    EdgeFinding open;
+    EdgeFinding misoriented;
+    EdgeFinding non_manifold;
+    bool non_manifold_balanced = true;  // every non-manifold edge as often each way
+
+    bool closed_and_oriented(bool accept_balanced_non_manifold) const {
+        const bool manifold_enough =
+            non_manifold.count == 0 || (accept_balanced_non_manifold && non_manifold_balanced);
+        return open.count == 0 && misoriented.count == 0 && manifold_enough;
+    }
+};
+
+// vertex_ids maps a vertex index to its identity for the check (welding); null
+// means the index itself. Indices must be in range. Edges whose two ends are
+// the same vertex (a repeated index) are no edges.
+template <class Scalar, class Index>
+TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
+                                const std::uint32_t* vertex_ids,
+                                std::pmr::memory_resource* memory);
+
+}  // namespace polymass::core

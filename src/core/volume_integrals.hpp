@@ -1,0 +1,65 @@
+// The ten volume integrals of a solid and the surface sums they come from.
+//
+// The divergence theorem turns each volume integral into a sum over faces of
+// "flux" integrals n_axis * integral over the face of a polynomial (Mirtich,
+// section 2). Both face paths — the closed-form triangle and the projected
+// polygon — produce these same ten face sums, and this file alone turns them
+// into volume integrals.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace polymass::core {
+
+// Sums over faces of n_axis * integral_face(P) dS, with n the unit outward
+// normal, for the polynomials the divergence theorem needs:
+//   x                                   -> volume
+//   x², y², z²  (n_x, n_y, n_z)         -> first moments
+//   x³, y³, z³  (n_x, n_y, n_z)         -> second moments
+//   x²y, y²z, z²x (n_x, n_y, n_z)       -> products xy, yz, zx
+struct FaceSums {
+    double x = 0.0;
+    Eigen::Vector3d squares = Eigen::Vector3d::Zero();
+    Eigen::Vector3d cubes = Eigen::Vector3d::Zero();
+    Eigen::Vector3d mixed = Eigen::Vector3d::Zero();
+
+    FaceSums& operator+=(const FaceSums& other) {
+        x += other.x;
+        squares += other.squares;
+        cubes += other.cubes;
+        mixed += other.mixed;
+        return *this;
+    }
+};
+
+// Integrals over the solid of 1, x, y, z, x², y², z², xy, yz, zx, in the frame
+// in which the faces were given (for this library: relative to a reference point).
+struct VolumeIntegrals {
+    double volume = 0.0;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();     // ∫x, ∫y, ∫z
+    Eigen::Vector3d second = Eigen::Vector3d::Zero();    // ∫x², ∫y², ∫z²
+    Eigen::Vector3d products = Eigen::Vector3d::Zero();  // ∫xy, ∫yz, ∫zx
+
+    VolumeIntegrals negated() const { return {-volume, -first, -second, -products}; }
+};
+
+// Divergence theorem with F = (x, 0, 0), (x²/2, 0, 0), (x³/3, 0, 0), (x²y/2, 0, 0)
+// and their cyclic counterparts.
+inline VolumeIntegrals volume_integrals_from(const FaceSums& sums) {
+    return {sums.x, sums.squares / 2.0, sums.cubes / 3.0, sums.mixed / 2.0};
+}
+
+}  // namespace polymass::core
+
+namespace polymass::core {
+
+// A face whose area is at rounding level for its extent has no orientation to
+// speak of; it adds nothing to the integrals and is reported as degenerate.
+// twice_area is |E1 × E2| (or the Newell vector's length); extent_squared
+// bounds |E1|·|E2| from above.
+inline bool is_degenerate_face(double twice_area, double extent_squared) {
+    constexpr double rounding = 32.0 * 2.220446049250313e-16;
+    return twice_area <= rounding * extent_squared;
+}
+
+}  // namespace polymass::core
