@@ -38,7 +38,9 @@
  *
  * ERRORS
  *   Every fallible function returns an int32_t status (POLYMASS_OK == 0) and
- *   never throws, asserts or aborts on bad input. polymass_status_string()
+ *   never throws, asserts or aborts on bad input. Output structs are written
+ *   only on success (polymass_mesh_check's report: whenever its arguments are
+ *   valid). polymass_status_string()
  *   names a status; polymass_context_message() says what and where ("face 17
  *   has 2 vertices", "edge (4, 9) is used by 3 faces").
  *
@@ -215,10 +217,10 @@ typedef struct polymass_mass_desc {
 } polymass_mass_desc;
 
 /* polymass_mass_properties.warnings */
-#define POLYMASS_WARNING_INVERTED (1u << 0)          /* accepted and turned */
-#define POLYMASS_WARNING_DEGENERATE_FACES (1u << 1)  /* zero-area faces, harmless */
-#define POLYMASS_WARNING_UNCHECKED (1u << 2)         /* topology checks skipped */
-#define POLYMASS_WARNING_NON_MANIFOLD (1u << 3)      /* accepted non-manifold edges */
+#define POLYMASS_WARNING_INVERTED (1u << 0)         /* accepted and turned */
+#define POLYMASS_WARNING_DEGENERATE_FACES (1u << 1) /* zero-area faces, harmless */
+#define POLYMASS_WARNING_UNCHECKED (1u << 2)        /* topology checks skipped */
+#define POLYMASS_WARNING_NON_MANIFOLD (1u << 3)     /* accepted non-manifold edges */
 
 typedef struct polymass_mass_properties {
     uint32_t struct_size; /* set by the caller: sizeof(polymass_mass_properties) */
@@ -228,9 +230,9 @@ typedef struct polymass_mass_properties {
     double density;
     double surface_area;
     double center_of_mass[3];
-    double inertia[9];        /* about the centre of mass */
-    double inertia_origin[9]; /* about (0, 0, 0) */
-    double inertia_point[9];  /* about polymass_mass_desc.point */
+    double inertia[9];           /* about the centre of mass */
+    double inertia_origin[9];    /* about (0, 0, 0) */
+    double inertia_point[9];     /* about polymass_mass_desc.point */
     double principal_moments[3]; /* eigenvalues of `inertia`, ascending */
     /* Row-major rotation R (det R = +1) whose columns are the principal axes:
        inertia = R diag(principal_moments) R^T. Where moments coincide the axes
@@ -310,19 +312,23 @@ POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void);
 POLYMASS_API int32_t polymass_context_create(polymass_context** out_context,
                                              const polymass_allocator* allocator);
 
-/* Frees a context. NULL is accepted. Meshes made through it stay valid. */
+/* Frees a context. NULL is accepted. Meshes made through it stay valid.
+   Not while another thread uses the context. */
 POLYMASS_API void polymass_context_destroy(polymass_context* context);
 
-/* Sets the options used by later calls through this context. */
+/* Sets the options used by later calls through this context.
+   Context: one thread at a time. */
 POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
                                                   const polymass_options* options);
 
-/* Reads the context's options; out_options->struct_size must be set. */
+/* Reads the context's options; out_options->struct_size must be set.
+   Context: one thread at a time. */
 POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
                                                   polymass_context* context);
 
 /* The detailed message of the last call through this context that failed
-   ("" after a success). Valid until the next call through the context. */
+   ("" after a success). Valid until the next call through the context, from
+   the thread that made that call. Never NULL. */
 POLYMASS_API const char* polymass_context_message(const polymass_context* context);
 
 /* ========================================================================== */
@@ -332,24 +338,25 @@ POLYMASS_API const char* polymass_context_message(const polymass_context* contex
 /* Validates the surface (arguments, indices, finiteness, then unless skipped:
    closed, manifold, consistently oriented, planar polygon faces, then not
    inverted and not of zero volume) and integrates it in one pass over the
-   faces. The mesh keeps the integrals, not the caller's arrays: they may be
-   freed once this returns. On failure *out_mesh is NULL and the context holds
-   the message. Context: one thread at a time. */
+   faces (the checks make their own). The mesh keeps the integrals, not the caller's arrays: they
+   may be freed once this returns. On failure *out_mesh is NULL and the context holds the message.
+   Context: one thread at a time. */
 POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_context* context,
                                           const polymass_mesh_desc* desc);
 
-/* Frees a mesh. NULL is accepted. */
+/* Frees a mesh. NULL is accepted. Not while another thread reads the mesh. */
 POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh);
 
 /* The mass properties of a mesh as a body of the given density or mass (NULL:
    unit density, point = origin). Cheap: no pass over the faces. The mesh may
-   be shared between threads, each with its own context. */
+   be read by several threads at once, each with its own context. */
 POLYMASS_API int32_t polymass_mesh_mass_properties(polymass_mass_properties* out_properties,
                                                    polymass_context* context,
                                                    const polymass_mesh* mesh,
                                                    const polymass_mass_desc* mass);
 
-/* polymass_mesh_create followed by polymass_mesh_mass_properties. */
+/* polymass_mesh_create followed by polymass_mesh_mass_properties, with no
+   mesh left to free. Context: one thread at a time. */
 POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* out_properties,
                                                       polymass_context* context,
                                                       const polymass_mesh_desc* desc,
@@ -359,10 +366,9 @@ POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* 
    The topology checks run even when the context's options skip them; the other
    options (welding, tolerance, what is accepted) apply. Returns the status
    polymass_mesh_create would return with the topology checks on (also in
-   out_report->status), with the same message. */
+   out_report->status), with the same message. Context: one thread at a time. */
 POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
-                                         polymass_context* context,
-                                         const polymass_mesh_desc* desc);
+                                         polymass_context* context, const polymass_mesh_desc* desc);
 
 /* ========================================================================== */
 /* Planar polygons                                                            */
@@ -371,7 +377,9 @@ POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
 /* Area, centroid and second moments of area of a simple polygon (convex or
    not, either orientation) given as point_count (x, y) pairs of doubles, each
    pair `stride` bytes after the previous (0: packed). The polygon closes
-   itself: do not repeat the first point. */
+   itself: do not repeat the first point. A self-intersecting polygon is not
+   detected: its result is the signed sum over its lobes.
+   Context: one thread at a time. */
 POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_properties,
                                               polymass_context* context, const double* points,
                                               uint64_t point_count, uint64_t stride);

@@ -36,7 +36,8 @@ polymass_allocator allocator_or_default(const polymass_allocator* allocator) {
     return {default_allocate, default_deallocate, nullptr};
 }
 
-void* allocate_object(const polymass_allocator& allocator, std::size_t size, std::size_t alignment) {
+void* allocate_object(const polymass_allocator& allocator, std::size_t size,
+                      std::size_t alignment) {
     return allocator.allocate(allocator.user_data, size, alignment);
 }
 
@@ -92,7 +93,8 @@ POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
                                  "(0 selects the default %g)",
                                  tolerance, POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
         context->options = *options;
-        if (tolerance == 0.0) context->options.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
+        if (tolerance == 0.0)
+            context->options.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
         return POLYMASS_OK;
     });
 }
@@ -100,8 +102,7 @@ POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
 POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
                                                   polymass_context* context) {
     return guarded(context, [&] {
-        if (const int32_t status = check_struct(context, out_options, "out_options"))
-            return status;
+        if (const int32_t status = check_struct(context, out_options, "out_options")) return status;
         *out_options = context->options;
         return POLYMASS_OK;
     });

@@ -15,7 +15,7 @@
 
 // A solid: its integrals, not the caller's arrays.
 struct polymass_mesh {
-    polymass_allocator allocator;  // to free it with; the context may be gone by then
+    polymass_allocator allocator;               // to free it with; the context may be gone by then
     polymass::core::VolumeIntegrals integrals;  // about `reference`, outward-oriented
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();
     double surface_area = 0.0;
@@ -50,8 +50,8 @@ int32_t fail_on_edge(polymass_context* context, int32_t status, const core::Edge
 
 // The first problem, in the order the checks run, as a status and message;
 // what the options accept instead becomes a warning.
-int32_t judge(polymass_context* context, const MeshInput& input,
-              const core::MeshAnalysis& analysis, uint32_t& warnings) {
+int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
+              uint32_t& warnings) {
     const uint32_t flags = context->options.flags;
     const core::MeshScan& scan = analysis.scan;
     if (scan.out_of_range_indices > 0)
@@ -72,8 +72,8 @@ int32_t judge(polymass_context* context, const MeshInput& input,
             return fail_on_edge(context, POLYMASS_ERROR_OPEN, topology->open,
                                 "used by one face only: the surface is open");
         if (topology->non_manifold.count > 0) {
-            const bool accepted = (flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD) &&
-                                  topology->non_manifold_balanced;
+            const bool accepted =
+                (flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD) && topology->non_manifold_balanced;
             if (!accepted)
                 return context->fail(
                     POLYMASS_ERROR_NON_MANIFOLD,
@@ -98,8 +98,7 @@ int32_t judge(polymass_context* context, const MeshInput& input,
         return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
                              "face %llu is not planar: a vertex is off its plane by %.3g of "
                              "the face's diameter, more than the tolerance %.3g (%llu such faces)",
-                             u64(integration.non_planar_faces.first),
-                             integration.max_non_planarity,
+                             u64(integration.non_planar_faces.first), integration.max_non_planarity,
                              context->options.planarity_tolerance,
                              u64(integration.non_planar_faces.count));
     if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
@@ -165,9 +164,7 @@ int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass
     return POLYMASS_OK;
 }
 
-void copy_matrix(const Eigen::Matrix3d& matrix, double (&out)[9]) {
-    RowMajor3d::Map(out) = matrix;
-}
+void copy_matrix(const Eigen::Matrix3d& matrix, double (&out)[9]) { RowMajor3d::Map(out) = matrix; }
 
 void copy_vector(const Eigen::Vector3d& vector, double (&out)[3]) {
     Eigen::Vector3d::Map(out) = vector;
@@ -209,8 +206,8 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
     report.face_count = input.face_count;
     report.first_non_finite_vertex = report.first_out_of_range_face = none;
     report.first_small_face = report.first_degenerate_face = report.first_non_planar_face = none;
-    for (uint64_t* edge : {report.first_open_edge, report.first_non_manifold_edge,
-                           report.first_misoriented_edge})
+    for (uint64_t* edge :
+         {report.first_open_edge, report.first_non_manifold_edge, report.first_misoriented_edge})
         edge[0] = edge[1] = none;
     report.signed_volume = std::numeric_limits<double>::quiet_NaN();
     report.small_faces = input.small_faces;
@@ -226,7 +223,7 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
     if (const auto& topology = analysis->topology) {
         report.edge_count = topology->edge_count;
         const auto copy_edges = [](const core::EdgeFinding& found, uint64_t& count,
-                                   uint64_t (&first)[2]) {
+                                   uint64_t(&first)[2]) {
             count = found.count;
             if (found.count) first[0] = found.first[0], first[1] = found.first[1];
         };

@@ -67,7 +67,8 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
 
 }  // namespace
 
-int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc, MeshInput& input) {
+int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc,
+                       MeshInput& input) {
     if (const int32_t status = check_struct(context, desc, "desc")) return status;
     if (desc->position_type != POLYMASS_POSITION_FLOAT64 &&
         desc->position_type != POLYMASS_POSITION_FLOAT32)
@@ -100,7 +101,8 @@ int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc
 
     const uint64_t index_bytes = desc->index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
     if (desc->index_count == 0)
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "the mesh has no faces (index_count is 0)");
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "the mesh has no faces (index_count is 0)");
     if (!desc->indices)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "indices is NULL but index_count is %llu", u64(desc->index_count));

@@ -38,10 +38,12 @@ decltype(auto) visit_mesh(const MeshInput& input, Visit&& visit) {
         using Scalar = decltype(scalar);
         auto view = [&](auto index) {
             using Index = decltype(index);
-            return core::MeshView<Scalar, Index>{
-                {input.positions, input.position_stride}, input.vertex_count,
-                {input.indices},  input.index_count,
-                input.face_sizes, input.face_count};
+            return core::MeshView<Scalar, Index>{{input.positions, input.position_stride},
+                                                 input.vertex_count,
+                                                 {input.indices},
+                                                 input.index_count,
+                                                 input.face_sizes,
+                                                 input.face_count};
         };
         return input.index_type == POLYMASS_INDEX_UINT16 ? visit(view(std::uint16_t{}))
                                                          : visit(view(std::uint32_t{}));

@@ -58,7 +58,8 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
                 return context->fail(POLYMASS_ERROR_NON_FINITE,
                                      "point %llu has a NaN or infinite coordinate", u64(i));
 
-        const core::PlanarPolygon polygon = core::planar_polygon(std::size_t(point_count), point_at);
+        const core::PlanarPolygon polygon =
+            core::planar_polygon(std::size_t(point_count), point_at);
         if (polygon.zero_area)
             return context->fail(POLYMASS_ERROR_ZERO_AREA,
                                  "the polygon encloses no area (signed area %.3g is at rounding "
@@ -67,7 +68,8 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
 
         polymass_polygon_properties result{};
         result.struct_size = sizeof result;
-        result.orientation = polygon.orientation > 0 ? POLYMASS_COUNTER_CLOCKWISE : POLYMASS_CLOCKWISE;
+        result.orientation =
+            polygon.orientation > 0 ? POLYMASS_COUNTER_CLOCKWISE : POLYMASS_CLOCKWISE;
         result.area = polygon.area;
         Eigen::Vector2d::Map(result.centroid) = polygon.centroid;
         Eigen::Vector3d::Map(result.second_moments) = polygon.moments;

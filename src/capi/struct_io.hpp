@@ -13,8 +13,8 @@ int32_t check_struct(polymass_context* context, const Struct* value, const char*
     if (!value) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
     if (value->struct_size != sizeof(Struct))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "%s->struct_size is %u; this library (version %s) expects %u",
-                             name, unsigned(value->struct_size), POLYMASS_VERSION_STRING,
+                             "%s->struct_size is %u; this library (version %s) expects %u", name,
+                             unsigned(value->struct_size), POLYMASS_VERSION_STRING,
                              unsigned(sizeof(Struct)));
     return POLYMASS_OK;
 }

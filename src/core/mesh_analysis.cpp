@@ -22,8 +22,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
             for (std::size_t vertex = 0; vertex < welded.size(); ++vertex)
                 analysis.used_vertex_count += scan.is_used(vertex) && welded[vertex] == vertex;
         }
-        analysis.topology =
-            analyse_topology(mesh, settings.weld ? welded.data() : nullptr, memory);
+        analysis.topology = analyse_topology(mesh, settings.weld ? welded.data() : nullptr, memory);
         if (settings.stop_at_first_problem &&
             !analysis.topology->closed_and_oriented(accept_balanced_non_manifold))
             return analysis;
@@ -38,9 +37,9 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     return analysis;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                               \
-    template MeshAnalysis analyse_mesh<Scalar, Index>(const MeshView<Scalar, Index>&,   \
-                                                      const AnalysisSettings&, bool,   \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                           \
+    template MeshAnalysis analyse_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
+                                                      const AnalysisSettings&, bool,  \
                                                       std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

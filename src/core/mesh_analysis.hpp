@@ -24,8 +24,8 @@ struct AnalysisSettings {
 
 struct MeshAnalysis {
     MeshScan scan;
-    std::size_t used_vertex_count = 0;        // after welding
-    std::optional<TopologyReport> topology;   // when checked
+    std::size_t used_vertex_count = 0;             // after welding
+    std::optional<TopologyReport> topology;        // when checked
     std::optional<IntegrationResult> integration;  // when the faces could be integrated
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();
 

@@ -1,58 +1,135 @@
 #include "mesh_integration.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "lanes.hpp"
 #include "polygon_integrals.hpp"
 #include "triangle_integrals.hpp"
 
 namespace polymass::core {
 namespace {
 
-// Faces are summed in blocks, and blocks into the total, so that rounding
-// grows with the number of blocks rather than the number of faces.
-constexpr std::size_t block_size = 1024;
+// Triangles wait here, as coordinates relative to the reference point laid out
+// axis by vertex by slot, until lane_count of them can go through the closed
+// forms at once. A batch is also a block of the summation: its sums are
+// reduced before they join the total, so rounding grows with the number of
+// batches rather than of triangles.
+struct TriangleBatch {
+    static constexpr std::size_t capacity = 64;  // a multiple of lane_count
+    alignas(64) double coordinates[3][3][capacity];
+    std::size_t faces[capacity];
+    std::size_t size = 0;
 
-struct BlockSums {
-    FaceSums unscaled_triangles;  // see add_unscaled_triangle_sums
-    FaceSums polygons;
-    double surface_area = 0.0;
-};
-
-struct Integrator {
-    const IntegrationSettings& settings;
-    IntegrationResult result;
-    FaceSums total;
-    BlockSums block;
-
-    void flush_block() {
-        total += scaled_triangle_sums(block.unscaled_triangles);
-        total += block.polygons;
-        result.surface_area += block.surface_area;
-        block = BlockSums{};
+    void add(std::size_t face, const Eigen::Vector3d (&vertices)[3]) {
+        for (int axis = 0; axis < 3; ++axis)
+            for (int vertex = 0; vertex < 3; ++vertex)
+                coordinates[axis][vertex][size] = vertices[vertex][axis];
+        faces[size++] = face;
     }
 
-    void add_triangle(std::size_t face, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                      const Eigen::Vector3d& p2) {
-        const Eigen::Vector3d delta = add_unscaled_triangle_sums(block.unscaled_triangles, p0, p1, p2);
-        const double twice_area = delta.norm();
-        block.surface_area += twice_area / 2.0;
-        const double extent_squared = std::max((p1 - p0).squaredNorm(), (p2 - p0).squaredNorm());
-        if (is_degenerate_face(twice_area, extent_squared)) result.degenerate_faces.record(face);
+    // Empty slots of the last lane group become zero triangles, which add nothing.
+    void pad() {
+        const std::size_t end = (size + lane_count - 1) / lane_count * lane_count;
+        for (auto& axis : coordinates)
+            for (auto& vertex : axis) std::fill(vertex + size, vertex + end, 0.0);
+    }
+};
+
+struct BatchResult {
+    FaceSums sums;
+    double surface_area = 0.0;
+    FaceFinding degenerate_faces;
+};
+
+// Built for baseline x86-64 and for x86-64-v3 (AVX2, FMA); the loader picks
+// the best one the processor runs.
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_triangle_batch(
+    const TriangleBatch& batch, BatchResult& result) {
+    UnscaledTriangleSums<Lanes> sums;
+    Lanes twice_areas{};
+    for (std::size_t first = 0; first < batch.size; first += lane_count) {
+        Lanes p[3][3];
+        for (int axis = 0; axis < 3; ++axis)
+            for (int vertex = 0; vertex < 3; ++vertex)
+                p[axis][vertex] = load_lanes(&batch.coordinates[axis][vertex][first]);
+        Lanes delta[3];
+        add_unscaled_triangle_sums(sums, p, delta);
+
+        Lanes twice_area_squared{}, e1_squared{}, e2_squared{};
+        for (int axis = 0; axis < 3; ++axis) {
+            const Lanes e1 = p[axis][1] - p[axis][0], e2 = p[axis][2] - p[axis][0];
+            twice_area_squared += delta[axis] * delta[axis];
+            e1_squared += e1 * e1;
+            e2_squared += e2 * e2;
+        }
+        const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+        Lanes twice_area;
+        for (int lane = 0; lane < lane_count; ++lane)
+            twice_area[lane] = std::sqrt(twice_area_squared[lane]);
+        twice_areas += twice_area;  // padding lanes add sqrt(0)
+        const auto degenerate = is_degenerate_face(twice_area, extent_squared);
+        const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
+        for (std::size_t lane = 0; lane < used; ++lane)
+            if (degenerate[lane]) result.degenerate_faces.record(batch.faces[first + lane]);
+    }
+    result.surface_area += sum_lanes(twice_areas) / 2.0;
+    UnscaledTriangleSums<double> reduced;
+    reduced.x = sum_lanes(sums.x);
+    for (int axis = 0; axis < 3; ++axis) {
+        reduced.squares[axis] = sum_lanes(sums.squares[axis]);
+        reduced.cubes[axis] = sum_lanes(sums.cubes[axis]);
+        reduced.mixed[axis] = sum_lanes(sums.mixed[axis]);
+    }
+    result.sums += scaled(reduced);
+}
+
+class Integrator {
+public:
+    explicit Integrator(const IntegrationSettings& settings) : settings_(settings) {}
+
+    void add_triangle(std::size_t face, const Eigen::Vector3d (&vertices)[3]) {
+        batch_.add(face, vertices);
+        if (batch_.size == TriangleBatch::capacity) flush_triangles();
     }
 
     template <class VertexAt>
     void add_polygon(std::size_t face, std::size_t count, VertexAt&& vertex_at) {
         const FacePlane plane = face_plane(count, vertex_at);
         if (plane.degenerate) {
-            result.degenerate_faces.record(face);
+            result_.degenerate_faces.record(face);
             return;
         }
-        if (settings.check_planarity) {
+        if (settings_.check_planarity) {
             const double relative = plane_deviation(plane, count, vertex_at) / (2.0 * plane.extent);
-            result.max_non_planarity = std::max(result.max_non_planarity, relative);
-            if (relative > settings.planarity_tolerance) result.non_planar_faces.record(face);
+            result_.max_non_planarity = std::max(result_.max_non_planarity, relative);
+            if (relative > settings_.planarity_tolerance) result_.non_planar_faces.record(face);
         }
-        block.polygons += polygon_face_sums(plane, count, vertex_at);
-        block.surface_area += plane.area;
+        total_ += polygon_face_sums(plane, count, vertex_at);
+        result_.surface_area += plane.area;
     }
+
+    IntegrationResult finish() {
+        flush_triangles();
+        result_.integrals = volume_integrals_from(total_);
+        return result_;
+    }
+
+private:
+    void flush_triangles() {
+        batch_.pad();
+        BatchResult batch_result;
+        integrate_triangle_batch(batch_, batch_result);
+        total_ += batch_result.sums;
+        result_.surface_area += batch_result.surface_area;
+        result_.degenerate_faces.merge(batch_result.degenerate_faces);
+        batch_.size = 0;
+    }
+
+    const IntegrationSettings& settings_;
+    TriangleBatch batch_;
+    FaceSums total_;
+    IntegrationResult result_;
 };
 
 }  // namespace
@@ -60,26 +137,23 @@ struct Integrator {
 template <class Scalar, class Index>
 IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
                                  const IntegrationSettings& settings) {
-    Integrator integrator{settings, {}, {}, {}};
+    Integrator integrator(settings);
     const Eigen::Vector3d reference = settings.reference;
     auto vertex = [&](std::size_t position) {
         return Eigen::Vector3d(mesh.positions[mesh.indices[position]] - reference);
     };
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
         if (size == 3)
-            integrator.add_triangle(face, vertex(first), vertex(first + 1), vertex(first + 2));
+            integrator.add_triangle(face, {vertex(first), vertex(first + 1), vertex(first + 2)});
         else
             integrator.add_polygon(face, size, [&](std::size_t i) { return vertex(first + i); });
-        if ((face + 1) % block_size == 0) integrator.flush_block();
     });
-    integrator.flush_block();
-    integrator.result.integrals = volume_integrals_from(integrator.total);
-    return integrator.result;
+    return integrator.finish();
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                     \
-    template IntegrationResult integrate_mesh<Scalar, Index>( \
-        const MeshView<Scalar, Index>&, const IntegrationSettings&);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                  \
+    template IntegrationResult integrate_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
+                                                             const IntegrationSettings&);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

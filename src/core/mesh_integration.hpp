@@ -19,10 +19,15 @@ struct IntegrationSettings {
 
 struct FaceFinding {
     std::size_t count = 0;
-    std::size_t first = 0;  // face index, when count > 0
+    std::size_t first = 0;  // the lowest face index, when count > 0
 
     void record(std::size_t face) {
-        if (count++ == 0) first = face;
+        if (count++ == 0 || face < first) first = face;
+    }
+
+    void merge(const FaceFinding& other) {
+        if (other.count > 0 && (count == 0 || other.first < first)) first = other.first;
+        count += other.count;
     }
 };
 

@@ -17,7 +17,8 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
         for (std::size_t i = first; i < first + size; ++i) {
             const std::size_t vertex = mesh.indices[i];
             if (vertex >= mesh.vertex_count) {
-                if (scan.out_of_range_indices++ == 0) scan.first_out_of_range_index = mesh.indices[i];
+                if (scan.out_of_range_indices++ == 0)
+                    scan.first_out_of_range_index = mesh.indices[i];
                 in_range = false;
                 continue;
             }
@@ -38,8 +39,9 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     return scan;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index) \
-    template MeshScan scan_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
+    template MeshScan scan_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
+                                               std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -20,11 +20,11 @@ struct VertexFinding {
 
 struct MeshScan {
     std::size_t out_of_range_indices = 0;
-    FaceFinding out_of_range_faces;  // faces with an index past the vertex array
+    FaceFinding out_of_range_faces;              // faces with an index past the vertex array
     std::uint32_t first_out_of_range_index = 0;  // its value, in out_of_range_faces.first
-    VertexFinding non_finite;        // used vertices with a NaN or infinite coordinate
+    VertexFinding non_finite;                    // used vertices with a NaN or infinite coordinate
     std::size_t used_vertex_count = 0;
-    Eigen::AlignedBox3d bounds;         // of the used, finite vertices
+    Eigen::AlignedBox3d bounds;            // of the used, finite vertices
     std::pmr::vector<std::uint64_t> used;  // bit v: vertex v is used by a face
 
     explicit MeshScan(std::pmr::memory_resource* memory) : used(memory) {}
@@ -33,7 +33,8 @@ struct MeshScan {
     // A point near every face: integrating about it keeps the digits of a mesh
     // far from the origin. Only vertices the faces use count.
     Eigen::Vector3d reference_point() const {
-        return bounds.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : Eigen::Vector3d(bounds.center());
+        return bounds.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero())
+                                : Eigen::Vector3d(bounds.center());
     }
     double diagonal() const { return bounds.isEmpty() ? 0.0 : bounds.diagonal().norm(); }
 };

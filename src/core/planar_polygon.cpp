@@ -15,7 +15,8 @@ PlanarPolygon planar_polygon_from(const ProjectionIntegrals& about_reference,
     if (polygon.zero_area) return polygon;
 
     const double area = polygon.area;
-    const Eigen::Vector2d centroid(sign * about_reference.a / area, sign * about_reference.b / area);
+    const Eigen::Vector2d centroid(sign * about_reference.a / area,
+                                   sign * about_reference.b / area);
     polygon.centroid = reference + centroid;
     const double ixx = sign * about_reference.bb - area * centroid.y() * centroid.y();
     const double iyy = sign * about_reference.aa - area * centroid.x() * centroid.x();

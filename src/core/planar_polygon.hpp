@@ -14,8 +14,8 @@ struct PlanarPolygon {
     double area = 0.0;    // > 0
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
     // Second moments of area (Ixx = ∫y², Iyy = ∫x², Ixy = +∫xy).
-    Eigen::Vector3d moments = Eigen::Vector3d::Zero();         // about the centroid
-    Eigen::Vector3d moments_origin = Eigen::Vector3d::Zero();  // about (0, 0)
+    Eigen::Vector3d moments = Eigen::Vector3d::Zero();            // about the centroid
+    Eigen::Vector3d moments_origin = Eigen::Vector3d::Zero();     // about (0, 0)
     Eigen::Vector2d principal_moments = Eigen::Vector2d::Zero();  // ascending
     double principal_angle = 0.0;  // of the axis of principal_moments[0], in (−π/2, π/2]
     bool zero_area = false;        // area at rounding level: nothing else is meaningful
@@ -36,7 +36,8 @@ PlanarPolygon planar_polygon(std::size_t count, PointAt&& point_at) {
     const Eigen::Vector2d reference = bounds.center();
     const ProjectionIntegrals integrals = projection_integrals(
         count, [&](std::size_t i) { return Eigen::Vector2d(point_at(i) - reference); });
-    return planar_polygon_from(integrals, reference, double(count) * bounds.diagonal().squaredNorm());
+    return planar_polygon_from(integrals, reference,
+                               double(count) * bounds.diagonal().squaredNorm());
 }
 
 }  // namespace polymass::core

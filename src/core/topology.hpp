@@ -18,7 +18,7 @@ namespace polymass::core {
 
 struct EdgeFinding {
     std::size_t count = 0;
-    std::uint32_t first[2] = {0, 0};  // vertex indices, in the (most frequent) direction
+    std::uint32_t first[2] = {0, 0};   // vertex indices, in the (most frequent) direction
     std::size_t first_traversals = 0;  // how many times faces traverse the first one
 
     void record(std::uint32_t from, std::uint32_t to, std::size_t traversals) {
@@ -49,7 +49,6 @@ struct TopologyReport {
 // the same vertex (a repeated index) are no edges.
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
-                                const std::uint32_t* vertex_ids,
-                                std::pmr::memory_resource* memory);
+                                const std::uint32_t* vertex_ids, std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

@@ -4,66 +4,87 @@
 // δ = E1 × E2, and the face integrals collapse to polynomials in the vertex
 // coordinates (algorithm.md, with its erratum on the x²y term). This is the
 // fast path: no normalisation, no projection, no division per triangle.
+//
+// T is double or a vector of doubles (lanes.hpp): the same expressions then
+// integrate several triangles at once.
 #pragma once
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "volume_integrals.hpp"
 
 namespace polymass::core {
 
+// The face sums of triangles, each times a constant (6 for x, 12 for the
+// squares, 20 for the cubes, 60 for the mixed terms) that scaled() divides out
+// once per batch instead of once per triangle.
+template <class T>
+struct UnscaledTriangleSums {
+    T x{};
+    T squares[3]{};
+    T cubes[3]{};
+    T mixed[3]{};  // x²y, y²z, z²x
+};
+
+inline FaceSums scaled(const UnscaledTriangleSums<double>& unscaled) {
+    FaceSums sums;
+    sums.x = unscaled.x / 6.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        sums.squares[axis] = unscaled.squares[axis] / 12.0;
+        sums.cubes[axis] = unscaled.cubes[axis] / 20.0;
+        sums.mixed[axis] = unscaled.mixed[axis] / 60.0;
+    }
+    return sums;
+}
+
 namespace detail {
 
 // f1, f2, f3 and g0, g1, g2 of one coordinate w at the three vertices:
 //   f1 = w0 + w1 + w2, fn = sn(w0, w1) + w2 f(n-1), gi = f2 + wi f1 + wi².
+template <class T>
 struct TriangleCoordinateTerms {
-    double f1, f2, f3;
-    double g0, g1, g2;
+    T f1, f2, f3;
+    T g[3];
 
-    TriangleCoordinateTerms(double w0, double w1, double w2) {
-        const double s1 = w0 + w1;
-        const double w0w0 = w0 * w0;
-        const double s2 = w0w0 + w1 * s1;  // w0² + w0 w1 + w1²
-        f1 = s1 + w2;
-        f2 = s2 + w2 * f1;
-        f3 = w0 * w0w0 + w1 * s2 + w2 * f2;  // s3 + w2 f2
-        g0 = f2 + w0 * (f1 + w0);
-        g1 = f2 + w1 * (f1 + w1);
-        g2 = f2 + w2 * (f1 + w2);
+    __attribute__((always_inline)) explicit TriangleCoordinateTerms(const T (&w)[3]) {
+        const T s1 = w[0] + w[1];
+        const T w0w0 = w[0] * w[0];
+        const T s2 = w0w0 + w[1] * s1;  // w0² + w0 w1 + w1²
+        f1 = s1 + w[2];
+        f2 = s2 + w[2] * f1;
+        f3 = w[0] * w0w0 + w[1] * s2 + w[2] * f2;  // s3 + w2 f2
+        for (int i = 0; i < 3; ++i) g[i] = f2 + w[i] * (f1 + w[i]);
     }
 };
 
 }  // namespace detail
 
-// Adds the triangle's face sums, each times a constant (6 for x, 12 for the
-// squares, 20 for the cubes, 60 for the mixed terms) that scaled_triangle_sums()
-// divides out once per batch instead of once per triangle. Returns δ, whose
-// length is twice the triangle's area.
-inline Eigen::Vector3d add_unscaled_triangle_sums(FaceSums& unscaled, const Eigen::Vector3d& p0,
-                                         const Eigen::Vector3d& p1, const Eigen::Vector3d& p2) {
-    const Eigen::Vector3d delta = (p1 - p0).cross(p2 - p0);
-    const detail::TriangleCoordinateTerms x(p0.x(), p1.x(), p2.x());
-    const detail::TriangleCoordinateTerms y(p0.y(), p1.y(), p2.y());
-    const detail::TriangleCoordinateTerms z(p0.z(), p1.z(), p2.z());
+// Adds one triangle (per lane) with vertex coordinates p[axis][vertex], and
+// stores δ = (p1 − p0) × (p2 − p0), whose length is twice the area.
+template <class T>
+__attribute__((always_inline)) inline void add_unscaled_triangle_sums(UnscaledTriangleSums<T>& sums,
+                                                                      const T (&p)[3][3],
+                                                                      T (&delta)[3]) {
+    T e1[3], e2[3];
+    for (int axis = 0; axis < 3; ++axis) {
+        e1[axis] = p[axis][1] - p[axis][0];
+        e2[axis] = p[axis][2] - p[axis][0];
+    }
+    delta[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    delta[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    delta[2] = e1[0] * e2[1] - e1[1] * e2[0];
 
-    unscaled.x += delta.x() * x.f1;
-    unscaled.squares += delta.cwiseProduct(Eigen::Vector3d(x.f2, y.f2, z.f2));
-    unscaled.cubes += delta.cwiseProduct(Eigen::Vector3d(x.f3, y.f3, z.f3));
-    unscaled.mixed += delta.cwiseProduct(
-        Eigen::Vector3d(p0.y() * x.g0 + p1.y() * x.g1 + p2.y() * x.g2,
-                        p0.z() * y.g0 + p1.z() * y.g1 + p2.z() * y.g2,
-                        p0.x() * z.g0 + p1.x() * z.g1 + p2.x() * z.g2));
-    return delta;
-}
-
-inline FaceSums scaled_triangle_sums(const FaceSums& unscaled) {
-    FaceSums sums;
-    sums.x = unscaled.x / 6.0;
-    sums.squares = unscaled.squares / 12.0;
-    sums.cubes = unscaled.cubes / 20.0;
-    sums.mixed = unscaled.mixed / 60.0;
-    return sums;
+    const detail::TriangleCoordinateTerms<T> terms[3] = {detail::TriangleCoordinateTerms<T>(p[0]),
+                                                         detail::TriangleCoordinateTerms<T>(p[1]),
+                                                         detail::TriangleCoordinateTerms<T>(p[2])};
+    sums.x += delta[0] * terms[0].f1;
+    for (int axis = 0; axis < 3; ++axis) {
+        // The mixed term of axis a is ∫a²b with b the next axis (x²y, y²z, z²x).
+        const int next = (axis + 1) % 3;
+        const detail::TriangleCoordinateTerms<T>& t = terms[axis];
+        sums.squares[axis] += delta[axis] * t.f2;
+        sums.cubes[axis] += delta[axis] * t.f3;
+        sums.mixed[axis] +=
+            delta[axis] * (p[next][0] * t.g[0] + p[next][1] * t.g[1] + p[next][2] * t.g[2]);
+    }
 }
 
 }  // namespace polymass::core

@@ -1,0 +1,28 @@
+// A few doubles processed as one value (GCC/Clang vector extension).
+//
+// Baseline x86-64 code runs a Lanes operation as two SSE2 instructions; the
+// x86-64-v3 clone of a function (see mesh_integration.cpp) as one AVX
+// instruction. The shipped library is built for the baseline: wider code is
+// only ever chosen at run time.
+#pragma once
+
+#include <cstring>
+
+namespace polymass::core {
+
+constexpr int lane_count = 4;
+using Lanes = double __attribute__((vector_size(lane_count * sizeof(double))));
+
+__attribute__((always_inline)) inline Lanes load_lanes(const double* values) {
+    Lanes lanes;
+    std::memcpy(&lanes, values, sizeof lanes);
+    return lanes;
+}
+
+__attribute__((always_inline)) inline double sum_lanes(Lanes lanes) {
+    double sum = 0.0;
+    for (int lane = 0; lane < lane_count; ++lane) sum += lanes[lane];
+    return sum;
+}
+
+}  // namespace polymass::core
