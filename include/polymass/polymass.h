@@ -40,9 +40,9 @@
  *   Every fallible function returns an int32_t status (POLYMASS_OK == 0) and
  *   never throws, asserts or aborts on bad input. Output structs are written
  *   only on success (polymass_mesh_check's report: whenever its arguments are
- *   valid). polymass_status_string()
- *   names a status; polymass_context_message() says what and where ("face 17
- *   has 2 vertices", "edge (4, 9) is used by 3 faces").
+ *   valid). polymass_status_string() names a status;
+ *   polymass_context_message() says what and where ("face 17 has 2 vertices",
+ *   "edge (4, 9) is used by 3 faces").
  *
  * STABILITY
  *   Within a major version the ABI only grows: functions and status codes are
