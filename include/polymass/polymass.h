@@ -39,8 +39,8 @@
  * ERRORS
  *   Every fallible function returns an int32_t status (POLYMASS_OK == 0) and
  *   never throws, asserts or aborts on bad input. Output structs are written
- *   only on success (polymass_mesh_check's report: whenever its arguments are
- *   valid). polymass_status_string() names a status;
+ *   only on success (polymass_mesh_check's report: whenever out_report itself
+ *   is valid). polymass_status_string() names a status;
  *   polymass_context_message() says what and where ("face 17 has 2 vertices",
  *   "edge (4, 9) is used by 3 faces").
  *

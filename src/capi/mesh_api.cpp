@@ -253,9 +253,9 @@ extern "C" {
 
 POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_context* context,
                                           const polymass_mesh_desc* desc) {
+    if (out_mesh) *out_mesh = nullptr;  // on every failure, even without a context
     return guarded(context, [&] {
         if (!out_mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_mesh is NULL");
-        *out_mesh = nullptr;
         polymass_mesh mesh{context->allocator, {}, Eigen::Vector3d::Zero(), 0.0, 0};
         if (const int32_t status = build_mesh(context, desc, mesh)) return status;
         void* memory = allocate_object(context->allocator, sizeof mesh, alignof(polymass_mesh));
@@ -307,9 +307,8 @@ POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
         MeshInput input;
         polymass_diagnostics report;
         int32_t status = read_mesh_desc(context, desc, input);
-        if (status == POLYMASS_ERROR_INVALID_ARGUMENT) return status;
         if (status != POLYMASS_OK) {
-            fill_report(report, input, nullptr);
+            fill_report(report, input, nullptr);  // what the arguments tell, if anything
         } else {
             const polymass::core::MeshAnalysis analysis = analyse(context, input, true);
             fill_report(report, input, &analysis);

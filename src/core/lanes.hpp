@@ -13,13 +13,14 @@ namespace polymass::core {
 constexpr int lane_count = 4;
 using Lanes = double __attribute__((vector_size(lane_count * sizeof(double))));
 
-__attribute__((always_inline)) inline Lanes load_lanes(const double* values) {
-    Lanes lanes;
+// Lanes are passed by reference, never by value: a function compiled for
+// another instruction set than its caller would disagree on how a vector is
+// passed (GCC's -Wpsabi warning), and at -O0 nothing is inlined.
+__attribute__((always_inline)) inline void load_lanes(Lanes& lanes, const double* values) {
     std::memcpy(&lanes, values, sizeof lanes);
-    return lanes;
 }
 
-__attribute__((always_inline)) inline double sum_lanes(Lanes lanes) {
+__attribute__((always_inline)) inline double sum_lanes(const Lanes& lanes) {
     double sum = 0.0;
     for (int lane = 0; lane < lane_count; ++lane) sum += lanes[lane];
     return sum;

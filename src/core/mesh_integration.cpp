@@ -52,7 +52,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         Lanes p[3][3];
         for (int axis = 0; axis < 3; ++axis)
             for (int vertex = 0; vertex < 3; ++vertex)
-                p[axis][vertex] = load_lanes(&batch.coordinates[axis][vertex][first]);
+                load_lanes(p[axis][vertex], &batch.coordinates[axis][vertex][first]);
         Lanes delta[3];
         add_unscaled_triangle_sums(sums, p, delta);
 
@@ -68,10 +68,10 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         for (int lane = 0; lane < lane_count; ++lane)
             twice_area[lane] = std::sqrt(twice_area_squared[lane]);
         twice_areas += twice_area;  // padding lanes add sqrt(0)
-        const auto degenerate = is_degenerate_face(twice_area, extent_squared);
         const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
         for (std::size_t lane = 0; lane < used; ++lane)
-            if (degenerate[lane]) result.degenerate_faces.record(batch.faces[first + lane]);
+            if (is_degenerate_face(twice_area[lane], extent_squared[lane]))
+                result.degenerate_faces.record(batch.faces[first + lane]);
     }
     result.surface_area += sum_lanes(twice_areas) / 2.0;
     UnscaledTriangleSums<double> reduced;

@@ -3,9 +3,15 @@
 namespace polymass::core {
 namespace {
 
-// |d|² 𝟙 − d dᵀ: the inertia of a unit point mass at d.
-Eigen::Matrix3d point_inertia(const Eigen::Vector3d& d) {
-    return d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose();
+// tr(S) 𝟙 − S for a symmetric S, with each diagonal term summed from the two
+// others (Iyy + Izz, not tr − Ixx): a body long in one direction would
+// otherwise lose its small moments to cancellation.
+Eigen::Matrix3d inertia_from_second_moments(const Eigen::Matrix3d& s) {
+    Eigen::Matrix3d inertia = -s;
+    inertia(0, 0) = s(1, 1) + s(2, 2);
+    inertia(1, 1) = s(2, 2) + s(0, 0);
+    inertia(2, 2) = s(0, 0) + s(1, 1);
+    return inertia;
 }
 
 }  // namespace
@@ -29,12 +35,14 @@ RigidBody rigid_body(const VolumeIntegrals& integrals, const Eigen::Vector3d& re
         pr.x(), sq.y(), pr.y(),         //
         pr.z(), pr.y(), sq.z();
     const Eigen::Matrix3d central = moments - integrals.volume * centroid * centroid.transpose();
-    body.inertia = density * (central.trace() * Eigen::Matrix3d::Identity() - central);
+    body.inertia = density * inertia_from_second_moments(central);
     return body;
 }
 
 Eigen::Matrix3d inertia_about(const RigidBody& body, const Eigen::Vector3d& point) {
-    return body.inertia + body.mass * point_inertia(body.center_of_mass - point);
+    // A unit point mass at d has second moments d dᵀ.
+    const Eigen::Vector3d d = body.center_of_mass - point;
+    return body.inertia + body.mass * inertia_from_second_moments(d * d.transpose());
 }
 
 }  // namespace polymass::core

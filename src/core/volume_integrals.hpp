@@ -57,9 +57,7 @@ namespace polymass::core {
 // speak of; it adds nothing to the integrals and is reported as degenerate.
 // twice_area is |E1 × E2| (or the Newell vector's length); extent_squared
 // bounds |E1|·|E2| from above.
-// For T = Lanes the answer is a lane mask.
-template <class T>
-inline auto is_degenerate_face(T twice_area, T extent_squared) {
+inline bool is_degenerate_face(double twice_area, double extent_squared) {
     constexpr double rounding = 32.0 * 2.220446049250313e-16;
     return twice_area <= rounding * extent_squared;
 }

@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# Runs every test of libpolymass, step by step, and prints a summary.
+#
+#   scripts/test.sh            all steps
+#   scripts/test.sh dev asan   only the named steps
+#
+# Steps (each one a function step_<name> below; add new ones to STEPS):
+#   deps    scripts/install-deps.sh (apt-get only for what is missing)
+#   format  clang-format --dry-run --Werror over the C/C++ sources
+#   dev     configure, build and ctest the `dev` preset (Debug, -Werror)
+#   asan    configure, build and ctest the `asan` preset (ASan + UBSan)
+#
+# Exits non-zero if any step fails; the later steps still run, so one run
+# shows every failure. Idempotent: build trees under build/ are reused.
+set -uo pipefail
+
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT"
+LOG_DIR=$ROOT/build/test-logs
+mkdir -p "$LOG_DIR"
+export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
+export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-2}
+
+STEPS=(deps format dev asan)
+
+# Counts of test cases (ctest) across the steps, for the closing line.
+TESTS_PASSED=0
+TESTS_FAILED=0
+
+# Adds ctest's "N% tests passed, F tests failed out of T" from a log.
+count_ctest() { # <log>
+    local line total failed
+    line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$1" | tail -n 1)
+    if [ -z "$line" ]; then
+        return
+    fi
+    failed=$(sed -E 's/.* ([0-9]+) tests? failed out of.*/\1/' <<<"$line")
+    total=$(sed -E 's/.*out of ([0-9]+).*/\1/' <<<"$line")
+    TESTS_FAILED=$((TESTS_FAILED + failed))
+    TESTS_PASSED=$((TESTS_PASSED + total - failed))
+}
+
+step_deps() {
+    bash scripts/install-deps.sh
+}
+
+step_format() {
+    local files=()
+    mapfile -t files < <(find include src tests examples -type f \
+        \( -name '*.c' -o -name '*.h' -o -name '*.cpp' -o -name '*.hpp' -o -name '*.cc' -o -name '*.hh' \) \
+        -not -path '*/build/*' 2>/dev/null | sort)
+    if [ ${#files[@]} -eq 0 ]; then
+        echo "no C/C++ files found"
+        return 1
+    fi
+    echo "clang-format $(clang-format --version | sed -E 's/.*version ([0-9.]+).*/\1/') on ${#files[@]} files"
+    local bad=() file
+    for file in "${files[@]}"; do
+        # Generated files (e.g. tests/unit/reference/exact_reference.h) are
+        # what their generator writes, formatted or not.
+        if head -n 5 "$file" | grep -qE 'DO NOT EDIT|@generated'; then
+            echo "  skipped (generated): $file"
+            continue
+        fi
+        if ! clang-format --dry-run --Werror "$file" >/dev/null 2>&1; then
+            bad+=("$file")
+        fi
+    done
+    if [ ${#bad[@]} -eq 0 ]; then
+        echo "all formatted"
+        return 0
+    fi
+    echo "${#bad[@]} file(s) not formatted (fix: clang-format -i <file>...):"
+    printf '  %s\n' "${bad[@]}"
+    # The changes clang-format wants, at most 150 lines of them.
+    for file in "${bad[@]}"; do
+        clang-format "$file" | diff -u --label "$file" --label "$file (clang-format)" "$file" - || true
+    done | head -n 150
+    return 1
+}
+
+# configure + build + ctest of one preset, logged to build/test-logs/<preset>.log
+preset_workflow() { # <preset>
+    local preset=$1 log=$LOG_DIR/$1.log rc=0
+    : >"$log"
+    cmake --preset "$preset" 2>&1 | tee -a "$log" || return 1
+    cmake --build --preset "$preset" 2>&1 | tee -a "$log" || return 1
+    ctest --preset "$preset" 2>&1 | tee -a "$log" || rc=1
+    count_ctest "$log"
+    return $rc
+}
+
+step_dev() {
+    preset_workflow dev
+}
+
+step_asan() {
+    preset_workflow asan
+}
+
+# --------------------------------------------------------------------------
+
+selected=("$@")
+if [ ${#selected[@]} -eq 0 ]; then
+    selected=("${STEPS[@]}")
+fi
+for step in "${selected[@]}"; do
+    if ! declare -F "step_$step" >/dev/null; then
+        echo "test.sh: unknown step '$step' (steps: ${STEPS[*]})" >&2
+        exit 2
+    fi
+done
+
+declare -A RESULT SECONDS_TAKEN
+failed_steps=0
+for step in "${selected[@]}"; do
+    echo
+    echo "==================== step: $step ===================="
+    start=$SECONDS
+    if "step_$step"; then
+        RESULT[$step]=PASS
+        [ "$step" = format ] && TESTS_PASSED=$((TESTS_PASSED + 1))
+    else
+        RESULT[$step]=FAIL
+        [ "$step" = format ] && TESTS_FAILED=$((TESTS_FAILED + 1))
+        failed_steps=$((failed_steps + 1))
+        if [ "$step" = deps ]; then
+            echo "test.sh: installing the dependencies failed; stopping" >&2
+            SECONDS_TAKEN[$step]=$((SECONDS - start))
+            break
+        fi
+    fi
+    SECONDS_TAKEN[$step]=$((SECONDS - start))
+done
+
+echo
+echo "==================== summary ===================="
+for step in "${selected[@]}"; do
+    printf '  %-8s %-5s %4ss\n' "$step" "${RESULT[$step]:-SKIP}" "${SECONDS_TAKEN[$step]:-0}"
+done
+echo "  logs: $LOG_DIR"
+# The closing line counts every ctest test of every preset, plus the format
+# check as one.
+if [ $failed_steps -ne 0 ]; then
+    echo "test.sh: $failed_steps step(s) failed"
+    echo "tests: $TESTS_PASSED passed, $TESTS_FAILED failed"
+    exit 1
+fi
+echo "test.sh: all steps passed"
+echo "tests: $TESTS_PASSED passed, $TESTS_FAILED failed"

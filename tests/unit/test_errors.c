@@ -1,0 +1,1212 @@
+/* Every status code, with its message, the diagnostics report, and the
+ * options that relax the checks (skip, accept inverted, accept non-manifold,
+ * weld, planarity tolerance). */
+#include "test_support.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double unit_lo[3] = {0, 0, 0}, unit_hi[3] = {1, 1, 1};
+
+/* ------------------------------------------------------------------------ */
+/* Helpers                                                                  */
+/* ------------------------------------------------------------------------ */
+
+/* The description fails with `status` through polymass_mesh_create (which
+   leaves *out_mesh NULL), polymass_mass_properties_compute and
+   polymass_mesh_check (same status, in the report too, same message). The
+   message is non-empty. The context then holds the message. */
+static void expect_failure_at(const char* file, int line, polymass_context* ctx,
+                              const polymass_mesh_desc* desc, int32_t status) {
+    polymass_mesh* mesh = (polymass_mesh*)&mesh; /* garbage, must become NULL */
+    polymass_mass_properties p;
+    polymass_diagnostics d;
+    char message[1024];
+    pm_check_status(file, line, "polymass_mesh_create", status,
+                    polymass_mesh_create(&mesh, ctx, desc), ctx);
+    if (mesh != NULL) {
+        print_error("%s:%d: *out_mesh not NULL after a failure\n", file, line);
+        _fail(file, line);
+    }
+    snprintf(message, sizeof message, "%s", polymass_context_message(ctx));
+    if (message[0] == '\0') {
+        print_error("%s:%d: empty message for status %d\n", file, line, (int)status);
+        _fail(file, line);
+    }
+    pm_props_init(&p);
+    pm_check_status(file, line, "polymass_mass_properties_compute", status,
+                    polymass_mass_properties_compute(&p, ctx, desc, NULL), ctx);
+    if (strcmp(message, polymass_context_message(ctx)) != 0) {
+        print_error("%s:%d: compute's message \"%s\" differs from create's \"%s\"\n", file, line,
+                    polymass_context_message(ctx), message);
+        _fail(file, line);
+    }
+    pm_diagnostics_init(&d);
+    pm_check_status(file, line, "polymass_mesh_check", status, polymass_mesh_check(&d, ctx, desc),
+                    ctx);
+    /* (the report's status for an invalid description: see
+       test_check_report_status_on_invalid_argument) */
+    if (status != POLYMASS_ERROR_INVALID_ARGUMENT) {
+        pm_check_status(file, line, "polymass_diagnostics.status", status, d.status, ctx);
+    }
+    if (strcmp(message, polymass_context_message(ctx)) != 0) {
+        print_error("%s:%d: check's message \"%s\" differs from create's \"%s\"\n", file, line,
+                    polymass_context_message(ctx), message);
+        _fail(file, line);
+    }
+}
+#define EXPECT_FAILURE(ctx, desc, status) \
+    expect_failure_at(__FILE__, __LINE__, (ctx), (desc), (status))
+
+static void expect_mesh_failure_at(const char* file, int line, polymass_context* ctx,
+                                   const pm_mesh* m, int32_t status) {
+    const polymass_mesh_desc d = pm_mesh_desc(m);
+    expect_failure_at(file, line, ctx, &d, status);
+}
+#define EXPECT_MESH_FAILURE(ctx, m, status) \
+    expect_mesh_failure_at(__FILE__, __LINE__, (ctx), (m), (status))
+
+/* Only the argument check: create fails with INVALID_ARGUMENT, out NULL. */
+static void expect_invalid_at(const char* file, int line, polymass_context* ctx,
+                              const polymass_mesh_desc* desc) {
+    expect_failure_at(file, line, ctx, desc, POLYMASS_ERROR_INVALID_ARGUMENT);
+}
+#define EXPECT_INVALID(ctx, desc) expect_invalid_at(__FILE__, __LINE__, (ctx), (desc))
+
+static void make_unit_cube(pm_mesh* m, int triangulate) {
+    pm_mesh_init(m);
+    pm_mesh_add_box(m, unit_lo, unit_hi, triangulate);
+}
+
+/* Vertices at exactly equal positions become one (the first). */
+static void weld_exact(pm_mesh* m) {
+    size_t i, k;
+    for (k = 0; k < m->index_count; ++k) {
+        const size_t v = m->indices[k];
+        for (i = 0; i < v; ++i) {
+            if (memcmp(m->positions + 3 * i, m->positions + 3 * v, 3 * sizeof(double)) == 0) {
+                m->indices[k] = (uint32_t)i;
+                break;
+            }
+        }
+    }
+}
+
+static int is_edge(const uint64_t e[2], uint64_t a, uint64_t b) {
+    return (e[0] == a && e[1] == b) || (e[0] == b && e[1] == a);
+}
+
+/* The edge e is one of the face's edges. */
+static int edge_of_face(const pm_mesh* m, size_t face, const uint64_t e[2]) {
+    const size_t offset = pm_mesh_face_offset(m, face), n = m->face_sizes[face];
+    size_t k;
+    for (k = 0; k < n; ++k) {
+        if (is_edge(e, m->indices[offset + k], m->indices[offset + (k + 1) % n])) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------------------------ */
+/* INVALID_ARGUMENT                                                         */
+/* ------------------------------------------------------------------------ */
+
+static void test_null_pointers(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    polymass_mesh_desc d;
+    polymass_mass_properties p;
+    polymass_diagnostics diag;
+    polymass_polygon_properties pp;
+    polymass_mesh* mesh = NULL;
+    static const double square[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    (void)state;
+    make_unit_cube(&m, 0);
+    d = pm_mesh_desc(&m);
+    pm_props_init(&p);
+    pm_diagnostics_init(&diag);
+    memset(&pp, 0, sizeof pp);
+    pp.struct_size = sizeof pp;
+
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_create(NULL, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_create(&mesh, NULL, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_create(&mesh, ctx, NULL));
+    assert_true(strlen(polymass_context_message(ctx)) > 0);
+
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mass_properties_compute(NULL, ctx, &d, NULL));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mass_properties_compute(&p, NULL, &d, NULL));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mass_properties_compute(&p, ctx, NULL, NULL));
+    assert_true(strlen(polymass_context_message(ctx)) > 0);
+
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_check(NULL, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_check(&diag, NULL, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_check(&diag, ctx, NULL));
+
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_mass_properties(NULL, ctx, mesh, NULL));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_mass_properties(&p, NULL, mesh, NULL));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_mass_properties(&p, ctx, NULL, NULL));
+    assert_true(strlen(polymass_context_message(ctx)) > 0);
+    polymass_mesh_destroy(mesh);
+    mesh = NULL;
+
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_polygon_compute(NULL, ctx, square, 4, 0));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_polygon_compute(&pp, NULL, square, 4, 0));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_polygon_compute(&pp, ctx, NULL, 4, 0));
+
+    /* NULL arrays with nonzero counts */
+    d = pm_mesh_desc(&m);
+    d.positions = NULL;
+    EXPECT_INVALID(ctx, &d);
+    d = pm_mesh_desc(&m);
+    d.indices = NULL;
+    EXPECT_INVALID(ctx, &d);
+    d = pm_mesh_desc(&m);
+    d.face_sizes = NULL; /* face_count stays 6 */
+    EXPECT_INVALID(ctx, &d);
+
+    /* A later success clears the message. */
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_string_equal(polymass_context_message(ctx), "");
+
+    /* Destroy functions accept NULL. */
+    polymass_mesh_destroy(NULL);
+    polymass_context_destroy(NULL);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* "On failure *out_mesh is NULL": also when the failure is a NULL context or
+   a NULL description. */
+static void test_out_mesh_cleared_on_every_failure(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_mesh* mesh;
+    pm_mesh m;
+    polymass_mesh_desc d;
+    (void)state;
+    make_unit_cube(&m, 0);
+    d = pm_mesh_desc(&m);
+    mesh = (polymass_mesh*)&mesh;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_create(&mesh, ctx, NULL));
+    assert_null(mesh);
+    mesh = (polymass_mesh*)&mesh;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_create(&mesh, NULL, &d));
+    assert_null(mesh);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* polymass_mesh_check "returns the status polymass_mesh_create would (also in
+   out_report->status)": also for an invalid description (the report itself
+   is valid). */
+static void test_check_report_status_on_invalid_argument(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    pm_mesh m;
+    polymass_mesh_desc d;
+    (void)state;
+    make_unit_cube(&m, 0);
+    d = pm_mesh_desc(&m);
+    d.reserved = 1;
+    pm_diagnostics_init(&diag);
+    diag.status = 12345;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_check(&diag, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, diag.status);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+static void test_struct_sizes_checked(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    polymass_mesh_desc d;
+    polymass_mass_properties p;
+    polymass_diagnostics diag;
+    polymass_mass_desc md = pm_mass_density(1.0);
+    polymass_polygon_properties pp;
+    polymass_mesh* mesh = NULL;
+    static const double square[] = {0, 0, 1, 0, 1, 1, 0, 1};
+    static const uint32_t bad_sizes[] = {0,
+                                         1,
+                                         8,
+                                         sizeof(polymass_mesh_desc) - 1,
+                                         sizeof(polymass_mesh_desc) + 4096,
+                                         0x7FFFFFFFu,
+                                         0xFFFFFFFFu};
+    size_t k;
+    (void)state;
+    make_unit_cube(&m, 0);
+    for (k = 0; k < sizeof bad_sizes / sizeof bad_sizes[0]; ++k) {
+        d = pm_mesh_desc(&m);
+        d.struct_size = bad_sizes[k];
+        EXPECT_INVALID(ctx, &d);
+    }
+    d = pm_mesh_desc(&m);
+
+    pm_props_init(&p);
+    p.struct_size = 0;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    p.struct_size = 0x7FFFFFFFu;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mass_properties_compute(&p, ctx, &d, NULL));
+
+    pm_diagnostics_init(&diag);
+    diag.struct_size = 0;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_check(&diag, ctx, &d));
+    diag.struct_size = 0x7FFFFFFFu;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_mesh_check(&diag, ctx, &d));
+
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &d));
+    pm_props_init(&p);
+    md.struct_size = 0;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+    md.struct_size = 0x7FFFFFFFu;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+    polymass_mesh_destroy(mesh);
+
+    memset(&pp, 0, sizeof pp);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_polygon_compute(&pp, ctx, square, 4, 0));
+    pp.struct_size = 0x7FFFFFFFu;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_polygon_compute(&pp, ctx, square, 4, 0));
+    assert_true(strlen(polymass_context_message(ctx)) > 0);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+static void test_bad_types_strides_reserved(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    polymass_mesh_desc d;
+    static const uint64_t small_double_strides[] = {1, 8, 16, 23};
+    static const uint64_t small_float_strides[] = {4, 8, 11};
+    size_t k;
+    (void)state;
+    make_unit_cube(&m, 0);
+    for (k = 0; k < sizeof small_double_strides / sizeof small_double_strides[0]; ++k) {
+        d = pm_mesh_desc(&m);
+        d.position_stride = small_double_strides[k];
+        EXPECT_INVALID(ctx, &d);
+    }
+    for (k = 0; k < sizeof small_float_strides / sizeof small_float_strides[0]; ++k) {
+        d = pm_mesh_desc(&m);
+        d.position_type = POLYMASS_POSITION_FLOAT32;
+        d.position_stride = small_float_strides[k];
+        EXPECT_INVALID(ctx, &d);
+    }
+    d = pm_mesh_desc(&m);
+    d.position_type = 2;
+    EXPECT_INVALID(ctx, &d);
+    d.position_type = 0xFFFFFFFFu;
+    EXPECT_INVALID(ctx, &d);
+    d = pm_mesh_desc(&m);
+    d.index_type = 2;
+    EXPECT_INVALID(ctx, &d);
+    d.index_type = 0x80000000u;
+    EXPECT_INVALID(ctx, &d);
+    d = pm_mesh_desc(&m);
+    d.reserved = 1;
+    EXPECT_INVALID(ctx, &d);
+    d.reserved = 0x80000000u;
+    EXPECT_INVALID(ctx, &d);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+static void test_counts_that_do_not_add_up(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh quads, tris;
+    polymass_mesh_desc d;
+    uint32_t sizes[6];
+    (void)state;
+    make_unit_cube(&quads, 0);
+    make_unit_cube(&tris, 1);
+    memcpy(sizes, quads.face_sizes, sizeof sizes);
+
+    /* face sizes adding up to more, and to less, than index_count */
+    d = pm_mesh_desc(&quads);
+    d.face_sizes = sizes;
+    sizes[5] = 5;
+    EXPECT_INVALID(ctx, &d);
+    sizes[5] = 3;
+    EXPECT_INVALID(ctx, &d);
+    sizes[5] = 4;
+    d.face_count = 5;
+    EXPECT_INVALID(ctx, &d);
+    /* face_sizes given with face_count 0 while there are indices */
+    d.face_count = 0;
+    EXPECT_INVALID(ctx, &d);
+    /* triangles: index_count not a multiple of 3 */
+    d = pm_mesh_desc(&tris);
+    assert_null(d.face_sizes);
+    d.index_count = 35;
+    EXPECT_INVALID(ctx, &d);
+    d.index_count = 34;
+    EXPECT_INVALID(ctx, &d);
+    pm_mesh_free(&tris);
+    pm_mesh_free(&quads);
+    polymass_context_destroy(ctx);
+}
+
+/* Counts whose byte sizes overflow 64 bits are rejected before anything is
+   read (ASan would catch a read past the small arrays given). */
+static void test_overflowing_counts(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    polymass_mesh_desc d;
+    uint32_t sizes[2] = {3, 3};
+    (void)state;
+    make_unit_cube(&m, 1);
+
+    d = pm_mesh_desc(&m);
+    d.vertex_count = UINT64_MAX / 8; /* * 24 bytes overflows */
+    d.position_stride = 24;
+    EXPECT_INVALID(ctx, &d);
+    d.position_stride = 0; /* packed: still 24 bytes a vertex */
+    EXPECT_INVALID(ctx, &d);
+    d.vertex_count = 8;
+    d.position_stride = UINT64_MAX / 4; /* 8 * stride overflows */
+    EXPECT_INVALID(ctx, &d);
+
+    d = pm_mesh_desc(&m);
+    d.index_count = UINT64_MAX / 2; /* not a multiple of 3 either */
+    EXPECT_INVALID(ctx, &d);
+    d.index_count = UINT64_MAX / 2 - 1; /* a multiple of 3; * 4 bytes overflows */
+    assert_int_equal(d.index_count % 3, 0);
+    EXPECT_INVALID(ctx, &d);
+    d.index_count = UINT64_MAX;
+    EXPECT_INVALID(ctx, &d);
+
+    d = pm_mesh_desc(&m);
+    d.face_sizes = sizes;
+    d.face_count = UINT64_MAX / 2; /* * 4 bytes overflows */
+    EXPECT_INVALID(ctx, &d);
+    d.face_count = UINT64_MAX;
+    EXPECT_INVALID(ctx, &d);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+static void test_invalid_mass_desc(void** state) {
+    const pm_reference_solid* ref = &pm_reference_solids[PM_REF_BOX];
+    const polymass_mesh_desc d = pm_reference_desc(ref);
+    static const double bad_values[] = {0.0, -0.0, -1.0, NAN, INFINITY, -INFINITY};
+    polymass_context* ctx = pm_context_new(0);
+    polymass_mesh* mesh = NULL;
+    polymass_mass_properties p;
+    polymass_mass_desc md;
+    size_t k;
+    (void)state;
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &d));
+    for (k = 0; k < sizeof bad_values / sizeof bad_values[0]; ++k) {
+        md = pm_mass_density(bad_values[k]);
+        pm_props_init(&p);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+        assert_true(strlen(polymass_context_message(ctx)) > 0);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_mass_properties_compute(&p, ctx, &d, &md));
+        md = pm_mass_total(bad_values[k]);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_mass_properties_compute(&p, ctx, &d, &md));
+    }
+    md = pm_mass_density(1.0);
+    md.mass_mode = 2;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+    /* A non-finite point is a caller error (or a non-finite input). */
+    md = pm_mass_density(1.0);
+    md.point[1] = NAN;
+    {
+        const int32_t s = polymass_mesh_mass_properties(&p, ctx, mesh, &md);
+        assert_true(s == POLYMASS_ERROR_INVALID_ARGUMENT || s == POLYMASS_ERROR_NON_FINITE);
+    }
+    /* The field the mode does not read is not checked. */
+    md = pm_mass_density(2.0);
+    md.mass = NAN;
+    PM_ASSERT_OK(ctx, polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+    PM_ASSERT_REL("mass = density * volume", 2.0 * ref->volume, p.mass, PM_TOL);
+    md = pm_mass_total(3.0);
+    md.density = -INFINITY;
+    PM_ASSERT_OK(ctx, polymass_mesh_mass_properties(&p, ctx, mesh, &md));
+    PM_ASSERT_REL("mass as given", 3.0, p.mass, PM_TOL);
+    polymass_mesh_destroy(mesh);
+    polymass_context_destroy(ctx);
+}
+
+/* ------------------------------------------------------------------------ */
+/* NON_FINITE, INDEX_OUT_OF_RANGE, FACE_TOO_SMALL                           */
+/* ------------------------------------------------------------------------ */
+
+static void test_non_finite(void** state) {
+    static const double bad[] = {NAN, INFINITY, -INFINITY};
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    int k, axis;
+    (void)state;
+    for (k = 0; k < 3; ++k) {
+        for (axis = 0; axis < 3; ++axis) {
+            make_unit_cube(&m, 0);
+            m.positions[3 * 5 + axis] = bad[k];
+            EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_FINITE);
+            PM_ASSERT_MENTIONS(ctx, "vertex", 5);
+            PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_check(&diag, ctx, &m));
+            assert_int_equal(diag.non_finite_vertices, 1);
+            assert_int_equal(diag.first_non_finite_vertex, 5);
+            assert_true(isnan(diag.signed_volume));
+            /* Never skipped. */
+            pm_context_set_flags(
+                ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
+                         POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+            PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_compute(&p, ctx, &m, NULL));
+            pm_context_set_flags(ctx, 0);
+            pm_mesh_free(&m);
+        }
+    }
+    /* Two bad vertices: both counted, the first reported. */
+    make_unit_cube(&m, 1);
+    m.positions[3 * 6] = NAN;
+    m.positions[3 * 2 + 1] = INFINITY;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.non_finite_vertices, 2);
+    assert_int_equal(diag.first_non_finite_vertex, 2);
+    pm_mesh_free(&m);
+
+    /* An unused NaN vertex is fine. */
+    make_unit_cube(&m, 0);
+    pm_mesh_add_vertex(&m, NAN, INFINITY, -INFINITY);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    PM_ASSERT_REL("volume with an unused NaN vertex", 1.0, p.volume, PM_TOL);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.non_finite_vertices, 0);
+    assert_true(diag.first_non_finite_vertex == POLYMASS_NONE);
+    pm_mesh_free(&m);
+
+    /* float32 NaN */
+    {
+        float positions[8 * 3];
+        polymass_mesh_desc d;
+        int i;
+        make_unit_cube(&m, 0);
+        for (i = 0; i < 24; ++i) {
+            positions[i] = (float)m.positions[i];
+        }
+        positions[3 * 7 + 2] = NAN;
+        d = pm_mesh_desc(&m);
+        d.position_type = POLYMASS_POSITION_FLOAT32;
+        d.positions = positions;
+        EXPECT_FAILURE(ctx, &d, POLYMASS_ERROR_NON_FINITE);
+        PM_ASSERT_MENTIONS(ctx, "vertex", 7);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+static void test_index_out_of_range(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    (void)state;
+    make_unit_cube(&m, 0);
+    m.indices[pm_mesh_face_offset(&m, 3) + 2] = 8; /* vertex_count is 8 */
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+    PM_ASSERT_MENTIONS(ctx, "face", 3);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.out_of_range_indices, 1);
+    assert_int_equal(diag.first_out_of_range_face, 3);
+    assert_true(isnan(diag.signed_volume));
+    /* never skipped */
+    pm_context_set_flags(ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, pm_compute(&p, ctx, &m, NULL));
+    pm_context_set_flags(ctx, POLYMASS_OPTION_WELD_VERTICES);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, pm_compute(&p, ctx, &m, NULL));
+    pm_context_set_flags(ctx, 0);
+    m.indices[pm_mesh_face_offset(&m, 3) + 2] = UINT32_MAX;
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+    /* two bad faces: both counted, the first reported */
+    m.indices[pm_mesh_face_offset(&m, 5)] = 1000;
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+    PM_ASSERT_MENTIONS(ctx, "face", 3);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.out_of_range_indices, 2);
+    assert_int_equal(diag.first_out_of_range_face, 3);
+    pm_mesh_free(&m);
+
+    /* uint16 indices */
+    {
+        uint16_t idx[36];
+        polymass_mesh_desc d;
+        int i;
+        make_unit_cube(&m, 1);
+        for (i = 0; i < 36; ++i) {
+            idx[i] = (uint16_t)m.indices[i];
+        }
+        idx[3 * 7 + 1] = 0xFFFF;
+        d = pm_mesh_desc(&m);
+        d.index_type = POLYMASS_INDEX_UINT16;
+        d.indices = idx;
+        EXPECT_FAILURE(ctx, &d, POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+        PM_ASSERT_MENTIONS(ctx, "face", 7);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+static void test_face_too_small(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    polymass_mesh_desc d;
+    uint32_t sizes[7];
+    (void)state;
+    make_unit_cube(&m, 0);
+    d = pm_mesh_desc(&m);
+    d.face_sizes = sizes;
+    /* faces 4 and 5 of 2 vertices each instead of one quad */
+    sizes[0] = sizes[1] = sizes[2] = sizes[3] = 4;
+    sizes[4] = 2;
+    sizes[5] = 2;
+    sizes[6] = 4;
+    d.face_count = 7;
+    EXPECT_FAILURE(ctx, &d, POLYMASS_ERROR_FACE_TOO_SMALL);
+    PM_ASSERT_MENTIONS(ctx, "face", 4);
+    pm_diagnostics_init(&diag);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_FACE_TOO_SMALL, polymass_mesh_check(&diag, ctx, &d));
+    assert_int_equal(diag.small_faces, 2);
+    assert_int_equal(diag.first_small_face, 4);
+    /* a face of 0 vertices */
+    sizes[4] = 4;
+    sizes[5] = 0;
+    sizes[6] = 4;
+    EXPECT_FAILURE(ctx, &d, POLYMASS_ERROR_FACE_TOO_SMALL);
+    PM_ASSERT_MENTIONS(ctx, "face", 5);
+    /* never skipped */
+    pm_context_set_flags(ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    pm_props_init(&p);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_FACE_TOO_SMALL,
+                     polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Topology                                                                 */
+/* ------------------------------------------------------------------------ */
+
+static void test_open(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    pm_mesh full, m;
+    size_t f;
+    (void)state;
+    make_unit_cube(&full, 0);
+    for (f = 0; f < 6; ++f) {
+        pm_mesh_copy(&m, &full);
+        pm_mesh_remove_face(&m, f);
+        EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_OPEN);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, pm_check(&diag, ctx, &m));
+        assert_int_equal(diag.face_count, 5);
+        assert_int_equal(diag.used_vertex_count, 8);
+        assert_int_equal(diag.edge_count, 12);
+        assert_int_equal(diag.open_edges, 4);
+        assert_true(edge_of_face(&full, f, diag.first_open_edge));
+        PM_ASSERT_EDGE_MENTIONED(ctx, diag.first_open_edge[0], diag.first_open_edge[1]);
+        assert_int_equal(diag.non_manifold_edges, 0);
+        assert_int_equal(diag.misoriented_edges, 0);
+        assert_true(diag.first_non_manifold_edge[0] == POLYMASS_NONE);
+        assert_true(diag.first_misoriented_edge[0] == POLYMASS_NONE);
+        pm_mesh_free(&m);
+    }
+    /* a single triangle */
+    pm_mesh_init(&m);
+    pm_mesh_add_vertex(&m, 0, 0, 0);
+    pm_mesh_add_vertex(&m, 1, 0, 0);
+    pm_mesh_add_vertex(&m, 0, 1, 0);
+    pm_mesh_add_tri(&m, 0, 1, 2);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_OPEN);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.open_edges, 3);
+    pm_mesh_free(&m);
+    pm_mesh_free(&full);
+    polymass_context_destroy(ctx);
+}
+
+/* Two unit cubes sharing one edge (x = 1, y = 1): the edge is used by four
+   faces, twice in each direction. */
+static void make_two_cubes_sharing_an_edge(pm_mesh* m, int share_indices) {
+    static const double lo2[3] = {1, 1, 0}, hi2[3] = {2, 2, 1};
+    make_unit_cube(m, 0);
+    pm_mesh_add_box(m, lo2, hi2, 1);
+    if (share_indices) {
+        weld_exact(m);
+    }
+}
+
+static void test_non_manifold(void** state) {
+    static const double lo2[3] = {1, 1, 0}, hi2[3] = {2, 2, 1};
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    const pm_expected a = pm_expected_box(unit_lo, unit_hi), b = pm_expected_box(lo2, hi2);
+    pm_expected both = pm_expected_sum(&a, &b);
+    (void)state;
+    both.size = 3.0; /* [0, 2] x [0, 2] x [0, 1] */
+    make_two_cubes_sharing_an_edge(&m, 1);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_MANIFOLD);
+    /* the shared edge joins vertices 3 (1, 1, 0) and 7 (1, 1, 1) */
+    PM_ASSERT_EDGE_MENTIONED(ctx, 3, 7);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_MANIFOLD, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.non_manifold_edges, 1);
+    assert_true(is_edge(diag.first_non_manifold_edge, 3, 7));
+    assert_int_equal(diag.open_edges, 0);
+    assert_int_equal(diag.used_vertex_count, 14);
+
+    /* balanced: accepted with the option, and the solid is the two cubes */
+    pm_context_set_flags(ctx, POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_int_equal(p.warnings, POLYMASS_WARNING_NON_MANIFOLD);
+    PM_ASSERT_PROPERTIES("two cubes sharing an edge", &both, &p, PM_TOL);
+    pm_mesh_free(&m);
+
+    /* the same made of separate vertices, joined by welding */
+    make_two_cubes_sharing_an_edge(&m, 0);
+    pm_context_set_flags(ctx, POLYMASS_OPTION_WELD_VERTICES);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_MANIFOLD);
+    pm_context_set_flags(ctx, POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_true(p.warnings & POLYMASS_WARNING_NON_MANIFOLD);
+    PM_ASSERT_PROPERTIES("two welded cubes sharing an edge", &both, &p, PM_TOL);
+    /* unwelded they are two separate closed shells: fine */
+    pm_context_set_flags(ctx, 0);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_int_equal(p.warnings, 0);
+    PM_ASSERT_PROPERTIES("two cubes touching at an edge", &both, &p, PM_TOL);
+    pm_mesh_free(&m);
+
+    /* unbalanced: a tetrahedron with one face listed twice: its edges are
+       used three times, twice one way. Never accepted. */
+    {
+        const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TETRA_IRREGULAR];
+        pm_mesh_from_reference(&m, ref);
+        pm_mesh_add_tri(&m, m.indices[0], m.indices[1], m.indices[2]);
+        EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_MANIFOLD);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_MANIFOLD, pm_check(&diag, ctx, &m));
+        assert_int_equal(diag.non_manifold_edges, 3);
+        pm_context_set_flags(ctx, POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+        {
+            const int32_t s = pm_compute(&p, ctx, &m, NULL);
+            if (s != POLYMASS_ERROR_NON_MANIFOLD && s != POLYMASS_ERROR_INCONSISTENT_ORIENTATION) {
+                PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_MANIFOLD, s);
+            }
+        }
+        pm_context_set_flags(ctx, 0);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+static void test_inconsistent_orientation(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    pm_mesh full, m;
+    size_t f;
+    (void)state;
+    make_unit_cube(&full, 0);
+    for (f = 0; f < 6; ++f) {
+        pm_mesh_copy(&m, &full);
+        pm_mesh_reverse_face(&m, f);
+        EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INCONSISTENT_ORIENTATION);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INCONSISTENT_ORIENTATION, pm_check(&diag, ctx, &m));
+        assert_int_equal(diag.misoriented_edges, 4);
+        assert_true(edge_of_face(&full, f, diag.first_misoriented_edge));
+        PM_ASSERT_EDGE_MENTIONED(ctx, diag.first_misoriented_edge[0],
+                                 diag.first_misoriented_edge[1]);
+        assert_int_equal(diag.open_edges, 0);
+        assert_int_equal(diag.non_manifold_edges, 0);
+        pm_mesh_free(&m);
+    }
+    /* triangles: one triangle of the torus flipped */
+    pm_mesh_from_reference(&m, &pm_reference_solids[PM_REF_TORUS_TRIS]);
+    pm_mesh_reverse_face(&m, 17);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INCONSISTENT_ORIENTATION);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INCONSISTENT_ORIENTATION, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.misoriented_edges, 3);
+    pm_mesh_free(&m);
+    pm_mesh_free(&full);
+    polymass_context_destroy(ctx);
+}
+
+/* The unit cube with vertex 4 (0, 0, 1) lifted along z: it stays in the
+   planes x = 0 and y = 0, so only the top face (face 1) bends. */
+static void make_lifted_cube(pm_mesh* m, double lift) {
+    make_unit_cube(m, 0);
+    m->positions[3 * 4 + 2] += lift;
+}
+
+static void test_non_planar_face(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    polymass_options o;
+    pm_mesh m;
+    (void)state;
+    make_lifted_cube(&m, 1e-3);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_PLANAR_FACE);
+    PM_ASSERT_MENTIONS(ctx, "face", 1);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_PLANAR_FACE, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.non_planar_faces, 1);
+    assert_int_equal(diag.first_non_planar_face, 1);
+    assert_true(diag.max_non_planarity > 1e-5 && diag.max_non_planarity < 1e-2);
+    assert_int_equal(diag.open_edges + diag.misoriented_edges + diag.non_manifold_edges, 0);
+
+    /* a looser tolerance accepts it */
+    memset(&o, 0, sizeof o);
+    o.struct_size = sizeof o;
+    o.planarity_tolerance = 1e-2;
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    PM_ASSERT_CLOSE("volume of the slightly bent cube", 1.0, p.volume, 1e-3, 0.0);
+    /* skipping the checks accepts it too */
+    pm_context_set_flags(ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_true(p.warnings & POLYMASS_WARNING_UNCHECKED);
+    pm_context_set_flags(ctx, 0);
+    pm_mesh_free(&m);
+
+    /* 1e-9 relative is well within the default 1e-6 */
+    make_lifted_cube(&m, 1e-9);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    PM_ASSERT_CLOSE("volume of the cube bent by 1e-9", 1.0, p.volume, 1e-8, 0.0);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.non_planar_faces, 0);
+    assert_true(diag.max_non_planarity > 0 && diag.max_non_planarity < 1e-6);
+    /* ... but not within 1e-12 */
+    o.planarity_tolerance = 1e-12;
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_PLANAR_FACE);
+    pm_mesh_free(&m);
+
+    /* The tolerance is relative to the face's size: the same bend scaled by
+       2^30 is just as (non-)planar. */
+    o.planarity_tolerance = 0;
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    make_lifted_cube(&m, 1e-3);
+    pm_mesh_transform(&m, NULL, 1073741824.0, NULL);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_NON_PLANAR_FACE);
+    pm_mesh_free(&m);
+    make_lifted_cube(&m, 1e-9);
+    pm_mesh_transform(&m, NULL, 1.0 / 1073741824.0, NULL);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* ------------------------------------------------------------------------ */
+/* INVERTED, ZERO_VOLUME                                                    */
+/* ------------------------------------------------------------------------ */
+
+static void test_inverted(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    int k;
+    (void)state;
+    for (k = 0; k < PM_REF_COUNT; ++k) {
+        const pm_reference_solid* ref = &pm_reference_solids[k];
+        const pm_expected e = pm_expected_from_reference(ref);
+        pm_mesh m;
+        pm_mesh_from_reference(&m, ref);
+        pm_mesh_reverse_all(&m);
+        EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INVERTED);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_check(&diag, ctx, &m));
+        PM_ASSERT_REL("signed volume of the inverted solid", -ref->volume, diag.signed_volume,
+                      PM_TOL);
+        pm_context_set_flags(ctx, POLYMASS_OPTION_ACCEPT_INVERTED);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        assert_int_equal(p.warnings, POLYMASS_WARNING_INVERTED);
+        PM_ASSERT_PROPERTIES(ref->name, &e, &p, PM_TOL);
+        pm_context_set_flags(ctx, 0);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+static void test_zero_volume(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    (void)state;
+    /* a flat double-sided square: two coincident quads of opposite
+       orientation; closed, manifold, consistent, planar, and empty */
+    pm_mesh_init(&m);
+    pm_mesh_add_vertex(&m, 0, 0, 0);
+    pm_mesh_add_vertex(&m, 1, 0, 0);
+    pm_mesh_add_vertex(&m, 1, 1, 0);
+    pm_mesh_add_vertex(&m, 0, 1, 0);
+    pm_mesh_add_quad(&m, 0, 1, 2, 3);
+    pm_mesh_add_quad(&m, 3, 2, 1, 0);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_ZERO_VOLUME);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_ZERO_VOLUME, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.open_edges + diag.non_manifold_edges + diag.misoriented_edges, 0);
+    PM_ASSERT_ABS("signed volume", 0.0, diag.signed_volume, 1e-15);
+    pm_context_set_flags(ctx, POLYMASS_OPTION_ACCEPT_INVERTED);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_ZERO_VOLUME, pm_compute(&p, ctx, &m, NULL));
+    pm_context_set_flags(ctx, 0);
+    pm_mesh_free(&m);
+
+    /* a tetrahedron flattened into the plane z = 0.5 (and moved far away) */
+    {
+        static const double t[3] = {1e6, -1e6, 0};
+        int scale;
+        for (scale = 0; scale < 2; ++scale) {
+            pm_mesh_init(&m);
+            pm_mesh_add_vertex(&m, 0, 0, 0.5);
+            pm_mesh_add_vertex(&m, 2, 0, 0.5);
+            pm_mesh_add_vertex(&m, 0, 1, 0.5);
+            pm_mesh_add_vertex(&m, 2, 3, 0.5);
+            pm_mesh_add_tri(&m, 0, 2, 1);
+            pm_mesh_add_tri(&m, 0, 1, 3);
+            pm_mesh_add_tri(&m, 0, 3, 2);
+            pm_mesh_add_tri(&m, 1, 2, 3);
+            if (scale) {
+                pm_mesh_transform(&m, NULL, 1.0, t);
+            }
+            EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_ZERO_VOLUME);
+            pm_mesh_free(&m);
+        }
+    }
+    /* nothing at all */
+    pm_mesh_init(&m);
+    pm_mesh_add_vertex(&m, 0, 0, 0);
+    {
+        const int32_t s = pm_compute(&p, ctx, &m, NULL);
+        assert_true(s == POLYMASS_ERROR_ZERO_VOLUME || s == POLYMASS_ERROR_INVALID_ARGUMENT);
+        assert_true(strlen(polymass_context_message(ctx)) > 0);
+    }
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Skip, degenerate faces, welding                                          */
+/* ------------------------------------------------------------------------ */
+
+/* A triangle soup of a cube: every triangle has its own three vertices, at
+   exactly the positions of its neighbours'. */
+static void make_cube_soup(pm_mesh* m) {
+    make_unit_cube(m, 1);
+    pm_mesh_to_soup(m);
+    assert_int_equal(m->vertex_count, 36);
+}
+
+static void test_skip_topology_checks(void** state) {
+    const pm_expected e = pm_expected_box(unit_lo, unit_hi);
+    polymass_context* ctx = pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    (void)state;
+    /* topologically open (nothing shared), geometrically the closed cube */
+    make_cube_soup(&m);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_int_equal(p.warnings, POLYMASS_WARNING_UNCHECKED);
+    PM_ASSERT_PROPERTIES("unchecked soup cube", &e, &p, PM_TOL);
+    /* polymass_mesh_check runs the topology checks anyway */
+    pm_check(&diag, ctx, &m);
+    assert_int_equal(diag.open_edges, 36);
+    assert_int_equal(diag.edge_count, 36);
+    assert_int_equal(diag.used_vertex_count, 36);
+    /* but out-of-range indices and NaN are still rejected */
+    m.indices[10] = 36;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, pm_compute(&p, ctx, &m, NULL));
+    m.indices[10] = 10;
+    m.positions[3 * 10] = NAN;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_compute(&p, ctx, &m, NULL));
+    pm_mesh_free(&m);
+
+    /* a valid solid through the unchecked path: same numbers, flagged */
+    {
+        const pm_reference_solid* ref = &pm_reference_solids[PM_REF_SQUARE_RING];
+        const pm_expected r = pm_expected_from_reference(ref);
+        pm_mesh_from_reference(&m, ref);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        assert_true(p.warnings & POLYMASS_WARNING_UNCHECKED);
+        PM_ASSERT_PROPERTIES(ref->name, &r, &p, PM_TOL);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+/* The unit cube whose front face (y = 0) is split at x = 0.5 by vertices
+   8 (0.5, 0, 0) and 9 (0.5, 0, 1): T-junctions on the bottom and top edges,
+   closed by zero-area sliver triangles (collinear distinct vertices), faces 7
+   and 8. */
+static void make_t_junction_cube(pm_mesh* m) {
+    pm_mesh_init(m);
+    {
+        int k;
+        for (k = 0; k < 8; ++k) {
+            pm_mesh_add_vertex(m, k & 1, (k >> 1) & 1, (k >> 2) & 1);
+        }
+    }
+    pm_mesh_add_vertex(m, 0.5, 0, 0); /* 8 */
+    pm_mesh_add_vertex(m, 0.5, 0, 1); /* 9 */
+    pm_mesh_add_quad(m, 0, 2, 3, 1);  /* 0: bottom */
+    pm_mesh_add_quad(m, 4, 5, 7, 6);  /* 1: top */
+    pm_mesh_add_quad(m, 0, 8, 9, 4);  /* 2: front, left half */
+    pm_mesh_add_quad(m, 8, 1, 5, 9);  /* 3: front, right half */
+    pm_mesh_add_quad(m, 2, 6, 7, 3);  /* 4: back */
+    pm_mesh_add_quad(m, 0, 4, 6, 2);  /* 5: x = 0 */
+    pm_mesh_add_quad(m, 1, 3, 7, 5);  /* 6: x = 1 */
+    pm_mesh_add_tri(m, 0, 1, 8);      /* 7: sliver on the bottom edge */
+    pm_mesh_add_tri(m, 5, 4, 9);      /* 8: sliver on the top edge */
+}
+
+static void test_degenerate_faces(void** state) {
+    const pm_expected e = pm_expected_box(unit_lo, unit_hi);
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    (void)state;
+    make_t_junction_cube(&m);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_int_equal(p.warnings, POLYMASS_WARNING_DEGENERATE_FACES);
+    PM_ASSERT_PROPERTIES("cube with T-junctions closed by slivers", &e, &p, PM_TOL);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.degenerate_faces, 2);
+    assert_int_equal(diag.first_degenerate_face, 7);
+    assert_int_equal(diag.open_edges, 0);
+    assert_int_equal(diag.used_vertex_count, 10);
+    pm_mesh_free(&m);
+
+    /* the same translated far away: still exactly degenerate, still exact */
+    {
+        static const double t[3] = {1e8, 1e8, 1e8};
+        const pm_expected et = pm_expected_transform(&e, NULL, 1.0, t);
+        make_t_junction_cube(&m);
+        pm_mesh_transform(&m, NULL, 1.0, t);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        assert_true(p.warnings & POLYMASS_WARNING_DEGENERATE_FACES);
+        PM_ASSERT_PROPERTIES("T-junction cube at 1e8", &et, &p, PM_TOL);
+        pm_mesh_free(&m);
+    }
+    /* the slivers removed: open */
+    make_t_junction_cube(&m);
+    pm_mesh_remove_face(&m, 8);
+    pm_mesh_remove_face(&m, 7);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_OPEN);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+static void test_welding(void** state) {
+    const pm_expected e = pm_expected_box(unit_lo, unit_hi);
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    (void)state;
+    make_cube_soup(&m);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_OPEN);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.open_edges, 36);
+
+    pm_context_set_flags(ctx, POLYMASS_OPTION_WELD_VERTICES);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_int_equal(p.warnings, 0);
+    PM_ASSERT_PROPERTIES("welded soup cube", &e, &p, PM_TOL);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.used_vertex_count, 8);
+    assert_int_equal(diag.edge_count, 18);
+    assert_int_equal(diag.open_edges, 0);
+    assert_int_equal(diag.face_count, 12);
+
+    /* welded vertex numbers are the lowest index at the position: flip a
+       triangle and the misoriented edge is named by such indices */
+    pm_mesh_reverse_face(&m, 4);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_INCONSISTENT_ORIENTATION);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INCONSISTENT_ORIENTATION, pm_check(&diag, ctx, &m));
+    {
+        size_t i, k;
+        for (k = 0; k < 2; ++k) {
+            const uint64_t v = diag.first_misoriented_edge[k];
+            assert_true(v < m.vertex_count);
+            for (i = 0; i < v; ++i) { /* no lower index at the same position */
+                assert_true(memcmp(m.positions + 3 * i, m.positions + 3 * v, 3 * sizeof(double)) !=
+                            0);
+            }
+        }
+    }
+    pm_mesh_reverse_face(&m, 4);
+
+    /* only exactly equal positions weld: one ulp apart stays open */
+    m.positions[3 * 20] = nextafter(m.positions[3 * 20], 2.0);
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_OPEN);
+    pm_mesh_free(&m);
+
+    /* a soup of the reference torus welds into the torus */
+    {
+        const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TORUS_TRIS];
+        const pm_expected t = pm_expected_from_reference(ref);
+        pm_mesh_from_reference(&m, ref);
+        pm_mesh_to_soup(&m);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        PM_ASSERT_PROPERTIES("welded torus soup", &t, &p, PM_TOL);
+        PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+        assert_int_equal(diag.used_vertex_count, ref->vertex_count);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+/* ------------------------------------------------------------------------ */
+/* polymass_mesh_check                                                      */
+/* ------------------------------------------------------------------------ */
+
+static void test_check_reports_everything(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    pm_mesh m;
+    (void)state;
+    /* A clean cube: counts, NONE locations, signed volume */
+    make_unit_cube(&m, 0);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.status, POLYMASS_OK);
+    assert_string_equal(polymass_context_message(ctx), "");
+    assert_int_equal(diag.face_count, 6);
+    assert_int_equal(diag.used_vertex_count, 8);
+    assert_int_equal(diag.edge_count, 12);
+    assert_int_equal(diag.non_finite_vertices, 0);
+    assert_true(diag.first_non_finite_vertex == POLYMASS_NONE);
+    assert_int_equal(diag.out_of_range_indices, 0);
+    assert_true(diag.first_out_of_range_face == POLYMASS_NONE);
+    assert_int_equal(diag.small_faces, 0);
+    assert_true(diag.first_small_face == POLYMASS_NONE);
+    assert_int_equal(diag.degenerate_faces, 0);
+    assert_true(diag.first_degenerate_face == POLYMASS_NONE);
+    assert_int_equal(diag.open_edges, 0);
+    assert_true(diag.first_open_edge[0] == POLYMASS_NONE &&
+                diag.first_open_edge[1] == POLYMASS_NONE);
+    assert_int_equal(diag.non_manifold_edges, 0);
+    assert_true(diag.first_non_manifold_edge[0] == POLYMASS_NONE &&
+                diag.first_non_manifold_edge[1] == POLYMASS_NONE);
+    assert_int_equal(diag.misoriented_edges, 0);
+    assert_true(diag.first_misoriented_edge[0] == POLYMASS_NONE &&
+                diag.first_misoriented_edge[1] == POLYMASS_NONE);
+    assert_int_equal(diag.non_planar_faces, 0);
+    assert_true(diag.first_non_planar_face == POLYMASS_NONE);
+    assert_true(diag.max_non_planarity >= 0 && diag.max_non_planarity < 1e-15);
+    PM_ASSERT_REL("signed_volume", 1.0, diag.signed_volume, PM_TOL);
+    pm_mesh_free(&m);
+
+    /* Several problems at once: a missing face (open), a flipped face and a
+       bent face: every one counted, without stopping at the first. */
+    make_lifted_cube(&m, 1e-2);  /* bends face 1 */
+    pm_mesh_remove_face(&m, 5);  /* opens the x = 1 side */
+    pm_mesh_reverse_face(&m, 4); /* flips x = 0 */
+    pm_check(&diag, ctx, &m);
+    assert_int_not_equal(diag.status, POLYMASS_OK);
+    assert_int_equal(diag.non_planar_faces, 1);
+    assert_int_equal(diag.first_non_planar_face, 1);
+    assert_true(diag.open_edges >= 4);
+    assert_true(diag.misoriented_edges >= 1);
+    pm_mesh_free(&m);
+
+    /* an out-of-range index and a NaN: both counted */
+    make_unit_cube(&m, 0);
+    m.indices[5] = 99;
+    m.positions[3 * 3 + 1] = NAN;
+    pm_check(&diag, ctx, &m);
+    assert_true(diag.status == POLYMASS_ERROR_NON_FINITE ||
+                diag.status == POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+    assert_int_equal(diag.out_of_range_indices, 1);
+    assert_int_equal(diag.first_out_of_range_face, 1);
+    assert_int_equal(diag.non_finite_vertices, 1);
+    assert_int_equal(diag.first_non_finite_vertex, 3);
+    assert_true(isnan(diag.signed_volume));
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* Every status has its own name. */
+static void test_status_strings(void** state) {
+    static const int32_t statuses[] = {POLYMASS_OK,
+                                       POLYMASS_ERROR_INVALID_ARGUMENT,
+                                       POLYMASS_ERROR_OUT_OF_MEMORY,
+                                       POLYMASS_ERROR_INTERNAL,
+                                       POLYMASS_ERROR_NON_FINITE,
+                                       POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                                       POLYMASS_ERROR_FACE_TOO_SMALL,
+                                       POLYMASS_ERROR_OPEN,
+                                       POLYMASS_ERROR_NON_MANIFOLD,
+                                       POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
+                                       POLYMASS_ERROR_NON_PLANAR_FACE,
+                                       POLYMASS_ERROR_INVERTED,
+                                       POLYMASS_ERROR_ZERO_VOLUME,
+                                       POLYMASS_ERROR_ZERO_AREA};
+    size_t i, j;
+    (void)state;
+    for (i = 0; i < sizeof statuses / sizeof statuses[0]; ++i) {
+        const char* s = polymass_status_string(statuses[i]);
+        assert_non_null(s);
+        assert_true(s[0] != '\0');
+        assert_string_not_equal(s, "unknown status");
+        for (j = 0; j < i; ++j) {
+            assert_string_not_equal(s, polymass_status_string(statuses[j]));
+        }
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_null_pointers),
+        cmocka_unit_test(test_out_mesh_cleared_on_every_failure),
+        cmocka_unit_test(test_check_report_status_on_invalid_argument),
+        cmocka_unit_test(test_struct_sizes_checked),
+        cmocka_unit_test(test_bad_types_strides_reserved),
+        cmocka_unit_test(test_counts_that_do_not_add_up),
+        cmocka_unit_test(test_overflowing_counts),
+        cmocka_unit_test(test_invalid_mass_desc),
+        cmocka_unit_test(test_non_finite),
+        cmocka_unit_test(test_index_out_of_range),
+        cmocka_unit_test(test_face_too_small),
+        cmocka_unit_test(test_open),
+        cmocka_unit_test(test_non_manifold),
+        cmocka_unit_test(test_inconsistent_orientation),
+        cmocka_unit_test(test_non_planar_face),
+        cmocka_unit_test(test_inverted),
+        cmocka_unit_test(test_zero_volume),
+        cmocka_unit_test(test_skip_topology_checks),
+        cmocka_unit_test(test_degenerate_faces),
+        cmocka_unit_test(test_welding),
+        cmocka_unit_test(test_check_reports_everything),
+        cmocka_unit_test(test_status_strings),
+    };
+    return cmocka_run_group_tests_name("errors", tests, NULL, NULL);
+}
