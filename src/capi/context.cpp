@@ -36,11 +36,6 @@ polymass_allocator allocator_or_default(const polymass_allocator* allocator) {
     return {default_allocate, default_deallocate, nullptr};
 }
 
-void* allocate_object(const polymass_allocator& allocator, std::size_t size,
-                      std::size_t alignment) {
-    return allocator.allocate(allocator.user_data, size, alignment);
-}
-
 }  // namespace polymass::capi
 
 int32_t polymass_context::fail(int32_t status, const char* format, ...) {
@@ -62,18 +57,11 @@ POLYMASS_API int32_t polymass_context_create(polymass_context** out_context,
     if (allocator && (!allocator->allocate || !allocator->deallocate))
         return POLYMASS_ERROR_INVALID_ARGUMENT;
     const polymass_allocator hook = allocator_or_default(allocator);
-    void* memory = allocate_object(hook, sizeof(polymass_context), alignof(polymass_context));
-    if (!memory) return POLYMASS_ERROR_OUT_OF_MEMORY;
-    *out_context = new (memory) polymass_context(hook);
-    return POLYMASS_OK;
+    *out_context = create_object<polymass_context>(hook, hook);
+    return *out_context ? POLYMASS_OK : POLYMASS_ERROR_OUT_OF_MEMORY;
 }
 
-POLYMASS_API void polymass_context_destroy(polymass_context* context) {
-    if (!context) return;
-    const polymass_allocator hook = context->allocator;
-    context->~polymass_context();
-    hook.deallocate(hook.user_data, context);
-}
+POLYMASS_API void polymass_context_destroy(polymass_context* context) { destroy_object(context); }
 
 POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
                                                   const polymass_options* options) {

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <memory_resource>
+#include <new>
+#include <utility>
 
 namespace polymass::capi {
 
@@ -28,9 +30,21 @@ private:
 // The allocator to use: the caller's, or malloc-backed when NULL.
 polymass_allocator allocator_or_default(const polymass_allocator* allocator);
 
-// Memory for a library object (context, mesh) from the caller's allocator;
-// nullptr on failure.
-void* allocate_object(const polymass_allocator& allocator, std::size_t size, std::size_t alignment);
+// Library objects (context, mesh) live in memory from the caller's allocator
+// and keep a copy of it, their `allocator` member, to be freed with.
+template <class Object, class... Arguments>
+Object* create_object(const polymass_allocator& allocator, Arguments&&... arguments) {
+    void* memory = allocator.allocate(allocator.user_data, sizeof(Object), alignof(Object));
+    return memory ? new (memory) Object(std::forward<Arguments>(arguments)...) : nullptr;
+}
+
+template <class Object>
+void destroy_object(Object* object) {
+    if (!object) return;
+    const polymass_allocator allocator = object->allocator;
+    object->~Object();
+    allocator.deallocate(allocator.user_data, object);
+}
 
 }  // namespace polymass::capi
 

@@ -4,7 +4,6 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <limits>
-#include <new>
 
 #include "api_guard.hpp"
 #include "core/mesh_analysis.hpp"
@@ -258,21 +257,15 @@ POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_con
         if (!out_mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_mesh is NULL");
         polymass_mesh mesh{context->allocator, {}, Eigen::Vector3d::Zero(), 0.0, 0};
         if (const int32_t status = build_mesh(context, desc, mesh)) return status;
-        void* memory = allocate_object(context->allocator, sizeof mesh, alignof(polymass_mesh));
-        if (!memory)
+        *out_mesh = create_object<polymass_mesh>(context->allocator, mesh);
+        if (!*out_mesh)
             return context->fail(POLYMASS_ERROR_OUT_OF_MEMORY,
                                  "out of memory: the allocator could not provide the mesh");
-        *out_mesh = new (memory) polymass_mesh(mesh);
         return POLYMASS_OK;
     });
 }
 
-POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh) {
-    if (!mesh) return;
-    const polymass_allocator allocator = mesh->allocator;
-    mesh->~polymass_mesh();
-    allocator.deallocate(allocator.user_data, mesh);
-}
+POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh) { destroy_object(mesh); }
 
 POLYMASS_API int32_t polymass_mesh_mass_properties(polymass_mass_properties* out_properties,
                                                    polymass_context* context,

@@ -47,16 +47,20 @@ struct MeshView {
     std::size_t face_count = 0;
 
     bool all_triangles() const { return face_sizes == nullptr; }
-    std::size_t face_size(std::size_t face) const { return face_sizes ? face_sizes[face] : 3; }
 };
 
 // Calls visit(face, first, size) for each face in order, where `first` is the
 // position in the index array of the face's first vertex.
 template <class View, class Visit>
 void for_each_face(const View& mesh, Visit&& visit) {
+    if (mesh.all_triangles()) {
+        // A separate loop, so that visit() is compiled for a constant size of 3.
+        for (std::size_t face = 0; face < mesh.face_count; ++face) visit(face, 3 * face, 3);
+        return;
+    }
     std::size_t first = 0;
     for (std::size_t face = 0; face < mesh.face_count; ++face) {
-        const std::size_t size = mesh.face_size(face);
+        const std::size_t size = mesh.face_sizes[face];
         visit(face, first, size);
         first += size;
     }
