@@ -113,6 +113,9 @@ extern "C" {
 #define POLYMASS_ERROR_ZERO_VOLUME 31
 /* A 2D polygon encloses no area (to rounding). */
 #define POLYMASS_ERROR_ZERO_AREA 32
+/* A result does not fit in a double (the coordinates, density, mass or point
+   are so large or small that a moment overflows or the mass underflows). */
+#define POLYMASS_ERROR_OVERFLOW 40
 
 /* ========================================================================== */
 /* Version                                                                    */

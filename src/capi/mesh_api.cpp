@@ -2,6 +2,7 @@
 #include <polymass/polymass.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -102,7 +103,15 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              u64(integration.non_planar_faces.count));
     if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
 
-    const double volume = integration.integrals.volume;
+    const core::VolumeIntegrals& integrals = integration.integrals;
+    if (!(std::isfinite(integration.surface_area) && std::isfinite(integrals.volume) &&
+          integrals.first.allFinite() && integrals.second.allFinite() &&
+          integrals.products.allFinite()))
+        return context->fail(POLYMASS_ERROR_OVERFLOW,
+                             "the volume integrals overflow double precision: the mesh is too "
+                             "large (size %.3g); scale its coordinates down",
+                             scan.diagonal());
+    const double volume = integrals.volume;
     if (integration.encloses_no_volume(scan.diagonal()))
         return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
                              "the surface encloses no volume: signed volume %.3g is at rounding "
@@ -169,6 +178,14 @@ void copy_vector(const Eigen::Vector3d& vector, double (&out)[3]) {
     Eigen::Vector3d::Map(out) = vector;
 }
 
+// Every value finite, and the mass neither overflowed nor underflowed to zero.
+bool result_in_range(const polymass_mass_properties& p) {
+    const double scalars[] = {p.volume, p.mass, p.density, p.surface_area};
+    return all_finite(scalars) && p.mass > 0 && p.density > 0 && all_finite(p.center_of_mass) &&
+           all_finite(p.inertia) && all_finite(p.inertia_origin) && all_finite(p.inertia_point) &&
+           all_finite(p.principal_moments) && all_finite(p.principal_axes);
+}
+
 int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
                         const polymass_mesh& mesh, const polymass_mass_desc* mass) {
     polymass_mass_desc body_desc;
@@ -193,6 +210,15 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
                 result.inertia_point);
     copy_vector(principal.moments, result.principal_moments);
     copy_matrix(principal.axes, result.principal_axes);
+    if (!(result_in_range(result)))
+        return context->fail(
+            POLYMASS_ERROR_OVERFLOW,
+            "the mass properties do not fit in a double (mass %g, density %g, "
+            "largest coordinate of the centre of mass or point %g): scale the "
+            "coordinates, the density or mass, or the point",
+            result.mass, result.density,
+            std::max(body.center_of_mass.cwiseAbs().maxCoeff(),
+                     Eigen::Map<const Eigen::Vector3d>(body_desc.point).cwiseAbs().maxCoeff()));
     *out = result;
     return POLYMASS_OK;
 }
@@ -295,23 +321,23 @@ POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* 
 POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
                                          polymass_context* context,
                                          const polymass_mesh_desc* desc) {
-    return guarded(context, [&] {
+    const bool report_valid = out_report && out_report->struct_size == sizeof *out_report;
+    const int32_t status = guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_report, "out_report")) return status;
         MeshInput input;
-        polymass_diagnostics report;
-        int32_t status = read_mesh_desc(context, desc, input);
-        if (status != POLYMASS_OK) {
-            fill_report(report, input, nullptr);  // what the arguments tell, if anything
-        } else {
+        int32_t found = read_mesh_desc(context, desc, input);
+        fill_report(*out_report, input, nullptr);  // what the arguments tell, if anything
+        if (found == POLYMASS_OK) {
             const polymass::core::MeshAnalysis analysis = analyse(context, input, true);
-            fill_report(report, input, &analysis);
             uint32_t warnings = 0;
-            status = judge(context, input, analysis, warnings);
+            found = judge(context, input, analysis, warnings);
+            fill_report(*out_report, input, &analysis);
         }
-        report.status = status;
-        *out_report = report;
-        return status;
+        return found;
     });
+    // Also when the checks could not finish (out of memory) or there is no context.
+    if (report_valid) out_report->status = status;
+    return status;
 }
 
 }  // extern "C"

@@ -23,6 +23,12 @@ bool span_fits(const double* points, uint64_t count, uint64_t stride) {
            last + 16 <= UINTPTR_MAX - reinterpret_cast<std::uintptr_t>(points);
 }
 
+bool in_range(const polymass_polygon_properties& p) {
+    const double scalars[] = {p.area, p.polar_moment, p.principal_angle};
+    return all_finite(scalars) && all_finite(p.centroid) && all_finite(p.second_moments) &&
+           all_finite(p.second_moments_origin) && all_finite(p.principal_moments);
+}
+
 }  // namespace
 
 extern "C" {
@@ -77,6 +83,11 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
         result.polar_moment = polygon.moments.x() + polygon.moments.y();
         Eigen::Vector2d::Map(result.principal_moments) = polygon.principal_moments;
         result.principal_angle = polygon.principal_angle;
+        if (!in_range(result))
+            return context->fail(POLYMASS_ERROR_OVERFLOW,
+                                 "the polygon's second moments do not fit in a double (area %g): "
+                                 "scale its coordinates down",
+                                 result.area);
         *out_properties = result;
         return POLYMASS_OK;
     });

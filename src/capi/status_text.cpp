@@ -31,6 +31,8 @@ extern "C" POLYMASS_API const char* polymass_status_string(int32_t status) {
             return "zero volume";
         case POLYMASS_ERROR_ZERO_AREA:
             return "zero area";
+        case POLYMASS_ERROR_OVERFLOW:
+            return "result out of double range";
         default:
             return "unknown status";
     }

@@ -4,6 +4,10 @@
 // accept the sizes of the versions before it (fields are only ever appended).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
 #include "context.hpp"
 
 namespace polymass::capi {
@@ -17,6 +21,13 @@ int32_t check_struct(polymass_context* context, const Struct* value, const char*
                              unsigned(value->struct_size), POLYMASS_VERSION_STRING,
                              unsigned(sizeof(Struct)));
     return POLYMASS_OK;
+}
+
+// Output structs are only written when every value in them is a number.
+template <class Values>
+bool all_finite(const Values& values) {
+    return std::all_of(std::begin(values), std::end(values),
+                       [](double value) { return std::isfinite(value); });
 }
 
 }  // namespace polymass::capi

@@ -12,23 +12,10 @@
 
 cmake_minimum_required(VERSION 3.25)
 
-foreach(var LIBRARY HEADER EXPECTED_SONAME)
-    if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-        message(FATAL_ERROR "check_exports.cmake: -D${var}=... is required")
-    endif()
-endforeach()
-if(NOT NM)
-    set(NM nm)
-endif()
-if(NOT READELF)
-    set(READELF readelf)
-endif()
-
-set(failures 0)
-macro(fail text)
-    message(SEND_ERROR "FAIL: ${text}")
-    math(EXPR failures "${failures} + 1")
-endmacro()
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake_helpers/script_checks.cmake")
+polymass_require_args(check_exports.cmake LIBRARY HEADER EXPECTED_SONAME)
+polymass_default_arg(NM nm)
+polymass_default_arg(READELF readelf)
 
 # --- 1. the header's functions ----------------------------------------------
 file(READ "${HEADER}" header_text)
@@ -129,9 +116,7 @@ if(readelf_output MATCHES "\\((RPATH|RUNPATH)\\)")
     message(STATUS "note: the build tree's library has a ${CMAKE_MATCH_1}")
 endif()
 
-if(failures GREATER 0)
-    message(FATAL_ERROR "${failures} check(s) failed for ${LIBRARY}")
-endif()
+polymass_exit_if_failed(${LIBRARY})
 list(JOIN expected ", " expected_text)
 message(STATUS "OK: ${LIBRARY} (SONAME ${EXPECTED_SONAME}) exports exactly the "
                "${expected_count} functions of the header: ${expected_text}")

@@ -69,6 +69,7 @@ void polymass_header_c99_uses(void) {
         POLYMASS_ERROR_INVERTED,
         POLYMASS_ERROR_ZERO_VOLUME,
         POLYMASS_ERROR_ZERO_AREA,
+        POLYMASS_ERROR_OVERFLOW,
     };
     static const uint32_t flags[] = {
         POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS,

@@ -16,11 +16,8 @@
 
 cmake_minimum_required(VERSION 3.25)
 
-foreach(var MODE PREFIX WORK_DIR SOURCE_DIR C_COMPILER)
-    if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-        message(FATAL_ERROR "build_consumer.cmake: -D${var}=... is required")
-    endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake_helpers/script_checks.cmake")
+polymass_require_args(build_consumer.cmake MODE PREFIX WORK_DIR SOURCE_DIR C_COMPILER)
 separate_arguments(c_flags UNIX_COMMAND "${C_FLAGS}")
 separate_arguments(link_flags UNIX_COMMAND "${LINK_FLAGS}")
 
@@ -90,11 +87,7 @@ if(MODE STREQUAL "find_package")
     run_consumer("${WORK_DIR}/consumer_static")
 
 elseif(MODE STREQUAL "pkg_config")
-    foreach(var PKG_CONFIG PKGCONFIGDIR LIBDIR)
-        if(NOT ${var})
-            message(FATAL_ERROR "build_consumer.cmake: -D${var}=... is required")
-        endif()
-    endforeach()
+    polymass_require_args(build_consumer.cmake PKG_CONFIG PKGCONFIGDIR LIBDIR)
     # PKG_CONFIG_LIBDIR replaces the default search path: only our prefix.
     set(ENV{PKG_CONFIG_LIBDIR} "${PREFIX}/${PKGCONFIGDIR}")
     set(ENV{PKG_CONFIG_PATH} "")

@@ -11,21 +11,12 @@
 
 cmake_minimum_required(VERSION 3.25)
 
-foreach(var BUILD_DIR WORK_DIR VERSION MAJOR)
-    if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-        message(FATAL_ERROR "check_deb.cmake: -D${var}=... is required")
-    endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake_helpers/script_checks.cmake")
+polymass_require_args(check_deb.cmake BUILD_DIR WORK_DIR VERSION MAJOR)
 find_program(DPKG_DEB dpkg-deb)
 if(NOT DPKG_DEB)
     message(FATAL_ERROR "dpkg-deb not found")
 endif()
-
-set(failures 0)
-macro(fail text)
-    message(SEND_ERROR "FAIL: ${text}")
-    math(EXPR failures "${failures} + 1")
-endmacro()
 
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
@@ -109,7 +100,5 @@ foreach(deb IN LISTS debs)
     endforeach()
 endforeach()
 
-if(failures GREATER 0)
-    message(FATAL_ERROR "${failures} check(s) failed")
-endif()
+polymass_exit_if_failed()
 message(STATUS "OK: libpolymass${MAJOR} and libpolymass-dev are as expected")

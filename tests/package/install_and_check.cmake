@@ -12,20 +12,10 @@
 
 cmake_minimum_required(VERSION 3.25)
 
-foreach(var BUILD_DIR PREFIX LIBDIR INCLUDEDIR CMAKEDIR PKGCONFIGDIR SONAME)
-    if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-        message(FATAL_ERROR "install_and_check.cmake: -D${var}=... is required")
-    endif()
-endforeach()
-if(NOT READELF)
-    set(READELF readelf)
-endif()
-
-set(failures 0)
-macro(fail text)
-    message(SEND_ERROR "FAIL: ${text}")
-    math(EXPR failures "${failures} + 1")
-endmacro()
+include("${CMAKE_CURRENT_LIST_DIR}/../cmake_helpers/script_checks.cmake")
+polymass_require_args(install_and_check.cmake
+    BUILD_DIR PREFIX LIBDIR INCLUDEDIR CMAKEDIR PKGCONFIGDIR SONAME)
+polymass_default_arg(READELF readelf)
 
 function(install_into prefix) # [component]
     set(args --install "${BUILD_DIR}" --prefix "${prefix}")
@@ -143,7 +133,5 @@ foreach(line IN LISTS includes)
     endif()
 endforeach()
 
-if(failures GREATER 0)
-    message(FATAL_ERROR "${failures} check(s) failed")
-endif()
+polymass_exit_if_failed()
 message(STATUS "OK: components runtime and development install as expected into ${PREFIX}")

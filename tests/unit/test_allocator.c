@@ -139,12 +139,10 @@ typedef struct scenario_input {
 } scenario_input;
 
 static void scenario_input_init(scenario_input* in) {
-    static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     pm_mesh_from_reference(&in->soup, &pm_reference_solids[PM_REF_TORUS_TRIS]);
     pm_mesh_to_soup(&in->soup);
     pm_mesh_from_reference(&in->star, &pm_reference_solids[PM_REF_PRISM_STAR]);
-    pm_mesh_init(&in->open_cube);
-    pm_mesh_add_box(&in->open_cube, lo, hi, 0);
+    pm_mesh_unit_cube(&in->open_cube, 0);
     pm_mesh_remove_face(&in->open_cube, 2);
 }
 
@@ -172,9 +170,7 @@ static void run_scenario(const scenario_input* in, counting_allocator* a, scenar
         assert_null(ctx);
         return;
     }
-    memset(&o, 0, sizeof o);
-    o.struct_size = sizeof o;
-    o.flags = POLYMASS_OPTION_WELD_VERTICES;
+    o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0);
     r->status[1] = polymass_context_set_options(ctx, &o);
     {
         const polymass_mesh_desc d = pm_mesh_desc(&in->soup);
@@ -206,8 +202,7 @@ static void run_scenario(const scenario_input* in, counting_allocator* a, scenar
         r->status[6] = polymass_mass_properties_compute(&p, ctx, &d, NULL);
         assert_true(strlen(polymass_context_message(ctx)) > 0);
     }
-    memset(&r->polygon, 0, sizeof r->polygon);
-    r->polygon.struct_size = sizeof r->polygon;
+    pm_polygon_props_init(&r->polygon);
     r->status[7] = polymass_polygon_compute(&r->polygon, ctx, hexagon, 6, 0);
     polymass_context_destroy(ctx);
 }

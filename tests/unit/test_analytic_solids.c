@@ -5,64 +5,66 @@
 #include <math.h>
 #include <string.h>
 
-/* Every reference solid, straight from the committed arrays, through
-   polymass_mass_properties_compute. */
-static void test_reference_solids_exact(void** state) {
+/* Runs check on every reference solid, all through one context. */
+static void for_each_reference_solid(void (*check)(polymass_context*, const pm_reference_solid*)) {
     polymass_context* ctx = pm_context_new(0);
     int k;
-    (void)state;
     for (k = 0; k < PM_REF_COUNT; ++k) {
-        const pm_reference_solid* ref = &pm_reference_solids[k];
-        const polymass_mesh_desc desc = pm_reference_desc(ref);
-        const pm_expected e = pm_expected_from_reference(ref);
-        polymass_mass_properties p;
-        pm_props_init(&p);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &desc, NULL));
-        PM_ASSERT_PROPERTIES(ref->name, &e, &p, PM_TOL);
-        assert_int_equal(p.warnings, 0);
-        assert_string_equal(polymass_context_message(ctx), "");
+        check(ctx, &pm_reference_solids[k]);
     }
     polymass_context_destroy(ctx);
+}
+
+/* Straight from the committed arrays, through
+   polymass_mass_properties_compute: the exact values, no warning. */
+static void check_reference_solid_exact(polymass_context* ctx, const pm_reference_solid* ref) {
+    polymass_mass_properties p;
+    PM_ASSERT_REFERENCE_COMPUTE(ctx, ref, &p);
+    assert_int_equal(p.warnings, 0);
+    assert_string_equal(polymass_context_message(ctx), "");
+}
+
+static void test_reference_solids_exact(void** state) {
+    (void)state;
+    for_each_reference_solid(check_reference_solid_exact);
 }
 
 /* polymass_mesh_create + polymass_mesh_mass_properties give the very same
    numbers as polymass_mass_properties_compute, and the diagnostics of a valid
    solid are clean with signed_volume = volume. */
-static void test_reference_solids_via_mesh_object(void** state) {
-    polymass_context* ctx = pm_context_new(0);
-    int k;
-    (void)state;
-    for (k = 0; k < PM_REF_COUNT; ++k) {
-        const pm_reference_solid* ref = &pm_reference_solids[k];
-        const polymass_mesh_desc desc = pm_reference_desc(ref);
-        polymass_mesh* mesh = NULL;
-        polymass_mass_properties a, b;
-        polymass_diagnostics d;
-        pm_props_init(&a);
-        pm_props_init(&b);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&a, ctx, &desc, NULL));
-        PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc));
-        assert_non_null(mesh);
-        PM_ASSERT_OK(ctx, polymass_mesh_mass_properties(&b, ctx, mesh, NULL));
-        PM_ASSERT_SAME_PROPERTIES(ref->name, &a, &b);
-        polymass_mesh_destroy(mesh);
+static void check_reference_solid_via_mesh_object(polymass_context* ctx,
+                                                  const pm_reference_solid* ref) {
+    const polymass_mesh_desc desc = pm_reference_desc(ref);
+    polymass_mesh* mesh = NULL;
+    polymass_mass_properties a, b;
+    polymass_diagnostics d;
+    pm_props_init(&b);
+    PM_ASSERT_OK(ctx, pm_compute_reference(&a, ctx, ref));
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc));
+    assert_non_null(mesh);
+    PM_ASSERT_OK(ctx, polymass_mesh_mass_properties(&b, ctx, mesh, NULL));
+    PM_ASSERT_SAME_PROPERTIES(ref->name, &a, &b);
+    polymass_mesh_destroy(mesh);
 
-        pm_diagnostics_init(&d);
-        PM_ASSERT_OK(ctx, polymass_mesh_check(&d, ctx, &desc));
-        assert_int_equal(d.status, POLYMASS_OK);
-        assert_int_equal(d.face_count, ref->face_count);
-        assert_int_equal(d.used_vertex_count, ref->vertex_count);
-        assert_int_equal(d.edge_count, ref->index_count / 2); /* closed, 2-manifold */
-        assert_int_equal(d.open_edges, 0);
-        assert_int_equal(d.non_manifold_edges, 0);
-        assert_int_equal(d.misoriented_edges, 0);
-        assert_int_equal(d.non_planar_faces, 0);
-        assert_int_equal(d.degenerate_faces, 0);
-        assert_true(d.first_open_edge[0] == POLYMASS_NONE);
-        assert_true(d.first_non_planar_face == POLYMASS_NONE);
-        PM_ASSERT_REL(ref->name, ref->volume, d.signed_volume, PM_TOL);
-    }
-    polymass_context_destroy(ctx);
+    pm_diagnostics_init(&d);
+    PM_ASSERT_OK(ctx, polymass_mesh_check(&d, ctx, &desc));
+    assert_int_equal(d.status, POLYMASS_OK);
+    assert_int_equal(d.face_count, ref->face_count);
+    assert_int_equal(d.used_vertex_count, ref->vertex_count);
+    assert_int_equal(d.edge_count, ref->index_count / 2); /* closed, 2-manifold */
+    assert_int_equal(d.open_edges, 0);
+    assert_int_equal(d.non_manifold_edges, 0);
+    assert_int_equal(d.misoriented_edges, 0);
+    assert_int_equal(d.non_planar_faces, 0);
+    assert_int_equal(d.degenerate_faces, 0);
+    assert_true(d.first_open_edge[0] == POLYMASS_NONE);
+    assert_true(d.first_non_planar_face == POLYMASS_NONE);
+    PM_ASSERT_REL(ref->name, ref->volume, d.signed_volume, PM_TOL);
+}
+
+static void test_reference_solids_via_mesh_object(void** state) {
+    (void)state;
+    for_each_reference_solid(check_reference_solid_via_mesh_object);
 }
 
 /* Closed-form boxes, as quads and as triangles, at and away from the origin. */
@@ -83,8 +85,7 @@ static void test_boxes_closed_form(void** state) {
         for (triangulate = 0; triangulate < 2; ++triangulate) {
             pm_mesh m;
             polymass_mass_properties p;
-            pm_mesh_init(&m);
-            pm_mesh_add_box(&m, boxes[k][0], boxes[k][1], triangulate);
+            pm_mesh_box(&m, boxes[k][0], boxes[k][1], triangulate);
             PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
             PM_ASSERT_PROPERTIES(triangulate ? "box (triangles)" : "box (quads)", &e, &p, PM_TOL);
             pm_mesh_free(&m);
@@ -96,14 +97,12 @@ static void test_boxes_closed_form(void** state) {
 /* The unit cube at the origin corner: simple numbers, products of inertia
    about the origin negative (I = integral (|r|^2 Id - r r^T)). */
 static void test_unit_cube_sign_convention(void** state) {
-    static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     polymass_context* ctx = pm_context_new(0);
     polymass_mass_properties p;
     pm_mesh m;
     int i;
     (void)state;
-    pm_mesh_init(&m);
-    pm_mesh_add_box(&m, lo, hi, 0);
+    pm_mesh_unit_cube(&m, 0);
     PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
     PM_ASSERT_REL("volume", 1.0, p.volume, PM_TOL);
     PM_ASSERT_REL("surface_area", 6.0, p.surface_area, PM_TOL);
@@ -174,11 +173,8 @@ static void test_corner_tetrahedron_closed_form(void** state) {
     {
         static const double p[3] = {0.5, 0.25, -0.125};
         const pm_expected closed = corner_tetra_expected(p, 2, 1.5, 0.75);
-        const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TETRA_CORNER];
-        const polymass_mesh_desc desc = pm_reference_desc(ref);
         polymass_mass_properties r;
-        pm_props_init(&r);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&r, ctx, &desc, NULL));
+        PM_ASSERT_OK(ctx, pm_compute_reference(&r, ctx, &pm_reference_solids[PM_REF_TETRA_CORNER]));
         PM_ASSERT_PROPERTIES("reference corner tetrahedron vs closed form", &closed, &r, PM_TOL);
     }
     polymass_context_destroy(ctx);
@@ -187,7 +183,6 @@ static void test_corner_tetrahedron_closed_form(void** state) {
 /* Regular tetrahedron of edge e: V = e^3 / (6 sqrt 2), I = m e^2 / 20 Id. */
 static void test_regular_tetrahedron_closed_form(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TETRA_REGULAR];
-    const polymass_mesh_desc desc = pm_reference_desc(ref);
     const double edge = 1.5 * sqrt(2.0);
     const double volume = edge * edge * edge / (6 * sqrt(2.0));
     const double moment = volume * edge * edge / 20;
@@ -195,8 +190,7 @@ static void test_regular_tetrahedron_closed_form(void** state) {
     polymass_mass_properties p;
     int i;
     (void)state;
-    pm_props_init(&p);
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &desc, NULL));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&p, ctx, ref));
     PM_ASSERT_REL("volume", volume, p.volume, PM_TOL);
     PM_ASSERT_REL("surface area = sqrt(3) e^2", sqrt(3.0) * edge * edge, p.surface_area, PM_TOL);
     PM_ASSERT_ABS("com x", 0.5, p.center_of_mass[0], PM_TOL);
@@ -258,10 +252,8 @@ static void test_cube_with_cavity_closed_form(void** state) {
     }
     e = pm_expected_sum(&outer, &inner); /* the cavity's area adds */
     e.size = outer.size;
-    pm_mesh_init(&m);
-    pm_mesh_add_box(&m, olo, ohi, 0);
-    pm_mesh_init(&cavity);
-    pm_mesh_add_box(&cavity, ilo, ihi, 1);
+    pm_mesh_box(&m, olo, ohi, 0);
+    pm_mesh_box(&cavity, ilo, ihi, 1);
     pm_mesh_reverse_all(&cavity);
     pm_mesh_append(&m, &cavity);
     PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
@@ -284,7 +276,6 @@ static void test_ring_of_boxes_closed_form(void** state) {
     static const double hi[4][3] = {
         {1.5, -0.75, 0.5}, {1.5, 1.5, 0.5}, {-0.75, 0.75, 0.5}, {1.5, 0.75, 0.5}};
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_RING_OF_BOXES];
-    const polymass_mesh_desc desc = pm_reference_desc(ref);
     polymass_context* ctx = pm_context_new(0);
     polymass_mass_properties p;
     pm_expected e = pm_expected_box(lo[0], hi[0]);
@@ -295,8 +286,7 @@ static void test_ring_of_boxes_closed_form(void** state) {
         e = pm_expected_sum(&e, &b);
     }
     e.size = pm_expected_from_reference(ref).size;
-    pm_props_init(&p);
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &desc, NULL));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&p, ctx, ref));
     PM_ASSERT_PROPERTIES("ring of four boxes", &e, &p, PM_TOL);
     /* centred ring: centre of mass on the z axis */
     PM_ASSERT_ABS("com x", 0.0, p.center_of_mass[0], PM_TOL);
@@ -308,15 +298,11 @@ static void test_ring_of_boxes_closed_form(void** state) {
 static void test_cube_quads_equals_triangles(void** state) {
     polymass_context* ctx = pm_context_new(0);
     polymass_mass_properties q, t;
-    const polymass_mesh_desc dq = pm_reference_desc(&pm_reference_solids[PM_REF_CUBE_QUADS]);
-    const polymass_mesh_desc dt = pm_reference_desc(&pm_reference_solids[PM_REF_CUBE_TRIS]);
     const double lo[3] = {0.25, -0.5, 0.75}, hi[3] = {1.75, 1.0, 2.25};
     const pm_expected e = pm_expected_box(lo, hi);
     (void)state;
-    pm_props_init(&q);
-    pm_props_init(&t);
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&q, ctx, &dq, NULL));
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&t, ctx, &dt, NULL));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&q, ctx, &pm_reference_solids[PM_REF_CUBE_QUADS]));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&t, ctx, &pm_reference_solids[PM_REF_CUBE_TRIS]));
     PM_ASSERT_PROPERTIES("cube quads vs closed form", &e, &q, PM_TOL);
     PM_ASSERT_PROPERTIES("cube triangles vs closed form", &e, &t, PM_TOL);
     polymass_context_destroy(ctx);

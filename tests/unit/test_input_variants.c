@@ -13,125 +13,65 @@ static const int solids[] = {PM_REF_CUBE_QUADS, PM_REF_CUBE_TRIS,   PM_REF_PRISM
                              PM_REF_HOUSE,      PM_REF_CUBE_CAVITY, PM_REF_TORUS_TRIS};
 #define SOLID_COUNT (sizeof solids / sizeof solids[0])
 
-/* A vertex buffer: `stride` bytes per vertex, positions of `type` at the
-   start of each record, the rest filled with junk (normals, uv), the whole
-   buffer starting `misalign` bytes past a malloc'ed block. */
-typedef struct vertex_buffer {
-    unsigned char* block;
-    const void* positions;
-} vertex_buffer;
+/* Every combination of: float64 or float32 positions; a stride of 0 (packed,
+   the default), 3 elements (packed, given explicitly), 3 elements + 1 byte
+   (unaligned), 6 elements (position + normal), 28 bytes (unaligned for
+   doubles) or 32 bytes (float position, normal, uv); the buffer misaligned
+   by 0 to 3 bytes; uint32 or uint16 indices. */
+#define POSITION_TYPE_COUNT 2
+#define STRIDE_COUNT 6
+#define MISALIGN_COUNT 4
+#define INDEX_TYPE_COUNT 2
+#define LAYOUT_COUNT (POSITION_TYPE_COUNT * STRIDE_COUNT * MISALIGN_COUNT * INDEX_TYPE_COUNT)
 
-static vertex_buffer make_vertex_buffer(const pm_reference_solid* ref, uint32_t type, size_t stride,
-                                        size_t misalign) {
-    const size_t element = type == POLYMASS_POSITION_FLOAT32 ? sizeof(float) : sizeof(double);
-    const size_t record = stride ? stride : 3 * element;
-    vertex_buffer vb;
-    unsigned char* base;
-    size_t v;
-    int i;
-    vb.block = malloc(record * ref->vertex_count + misalign + 16);
-    assert_non_null(vb.block);
-    memset(vb.block, 0x7F, record * ref->vertex_count + misalign + 16); /* junk */
-    base = vb.block + misalign;
-    for (v = 0; v < ref->vertex_count; ++v) {
-        unsigned char* r = base + v * record;
-        for (i = 0; i < 3; ++i) {
-            const double x = ref->positions[3 * v + (size_t)i];
-            if (type == POLYMASS_POSITION_FLOAT32) {
-                const float f = (float)x;
-                assert_true((double)f == x); /* the same data */
-                memcpy(r + (size_t)i * sizeof f, &f, sizeof f);
-            } else {
-                memcpy(r + (size_t)i * sizeof x, &x, sizeof x);
-            }
-        }
-        /* a "normal" after the position, where the record has room */
-        if (record >= 6 * element) {
-            for (i = 3; i < 6; ++i) {
-                if (type == POLYMASS_POSITION_FLOAT32) {
-                    const float n = -1.0f / (float)i;
-                    memcpy(r + (size_t)i * sizeof n, &n, sizeof n);
-                } else {
-                    const double n = NAN; /* not a position: must not be read */
-                    memcpy(r + (size_t)i * sizeof n, &n, sizeof n);
-                }
-            }
-        }
-    }
-    vb.positions = base;
-    return vb;
+static pm_layout layout_number(size_t n) {
+    pm_layout layout;
+    size_t element, strides[STRIDE_COUNT];
+    layout.position_type =
+        n % POSITION_TYPE_COUNT ? POLYMASS_POSITION_FLOAT32 : POLYMASS_POSITION_FLOAT64;
+    n /= POSITION_TYPE_COUNT;
+    element = layout.position_type == POLYMASS_POSITION_FLOAT32 ? sizeof(float) : sizeof(double);
+    strides[0] = 0;
+    strides[1] = 3 * element;
+    strides[2] = 3 * element + 1;
+    strides[3] = 6 * element;
+    strides[4] = 28;
+    strides[5] = 32;
+    layout.stride = strides[n % STRIDE_COUNT];
+    n /= STRIDE_COUNT;
+    layout.misalign = n % MISALIGN_COUNT;
+    n /= MISALIGN_COUNT;
+    layout.index_type = n % INDEX_TYPE_COUNT ? POLYMASS_INDEX_UINT16 : POLYMASS_INDEX_UINT32;
+    return layout;
 }
-
-static uint16_t* make_uint16_indices(const pm_reference_solid* ref) {
-    uint16_t* out = malloc(ref->index_count * sizeof *out);
-    uint32_t i;
-    assert_non_null(out);
-    for (i = 0; i < ref->index_count; ++i) {
-        assert_true(ref->indices[i] <= 0xFFFF);
-        out[i] = (uint16_t)ref->indices[i];
-    }
-    return out;
-}
-
-typedef struct variant {
-    const char* name;
-    uint32_t position_type;
-    size_t stride; /* 0: packed */
-    size_t misalign;
-    int uint16_indices;
-} variant;
-
-static const variant variants[] = {
-    {"float64 packed, stride 24 given explicitly", POLYMASS_POSITION_FLOAT64, 24, 0, 0},
-    {"float64, stride 48 (position + normal)", POLYMASS_POSITION_FLOAT64, 48, 0, 0},
-    {"float64, unaligned stride 28", POLYMASS_POSITION_FLOAT64, 28, 0, 0},
-    {"float64, packed, buffer misaligned by 3 bytes", POLYMASS_POSITION_FLOAT64, 0, 3, 0},
-    {"float64, stride 28, misaligned by 1, uint16", POLYMASS_POSITION_FLOAT64, 28, 1, 1},
-    {"float64 packed, uint16 indices", POLYMASS_POSITION_FLOAT64, 0, 0, 1},
-    {"float32 packed", POLYMASS_POSITION_FLOAT32, 0, 0, 0},
-    {"float32, stride 12 given explicitly", POLYMASS_POSITION_FLOAT32, 12, 0, 0},
-    {"float32, stride 32 (position, normal, uv)", POLYMASS_POSITION_FLOAT32, 32, 0, 0},
-    {"float32, unaligned stride 28", POLYMASS_POSITION_FLOAT32, 28, 0, 0},
-    {"float32, stride 13, misaligned by 1", POLYMASS_POSITION_FLOAT32, 13, 1, 0},
-    {"float32 packed, uint16 indices", POLYMASS_POSITION_FLOAT32, 0, 0, 1},
-    {"float32, stride 32, uint16 indices", POLYMASS_POSITION_FLOAT32, 32, 2, 1},
-};
-#define VARIANT_COUNT (sizeof variants / sizeof variants[0])
 
 static void test_variants_equal_packed_double(void** state) {
     polymass_context* ctx = pm_context_new(0);
-    size_t s, v;
+    size_t s, n;
     (void)state;
     for (s = 0; s < SOLID_COUNT; ++s) {
         const pm_reference_solid* ref = &pm_reference_solids[solids[s]];
-        const polymass_mesh_desc base_desc = pm_reference_desc(ref);
-        const pm_expected e = pm_expected_from_reference(ref);
         polymass_mass_properties base;
-        pm_props_init(&base);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&base, ctx, &base_desc, NULL));
-        PM_ASSERT_PROPERTIES(ref->name, &e, &base, PM_TOL);
-        for (v = 0; v < VARIANT_COUNT; ++v) {
-            const variant* var = &variants[v];
-            vertex_buffer vb =
-                make_vertex_buffer(ref, var->position_type, var->stride, var->misalign);
-            uint16_t* idx16 = var->uint16_indices ? make_uint16_indices(ref) : NULL;
-            polymass_mesh_desc d = base_desc;
+        pm_mesh m;
+        PM_ASSERT_REFERENCE_COMPUTE(ctx, ref, &base);
+        pm_mesh_from_reference(&m, ref);
+        for (n = 0; n < LAYOUT_COUNT; ++n) {
+            const pm_layout layout = layout_number(n);
+            pm_laid_out_mesh laid_out;
             polymass_mass_properties p;
             char label[256];
-            d.position_type = var->position_type;
-            d.positions = vb.positions;
-            d.position_stride = var->stride;
-            if (idx16) {
-                d.index_type = POLYMASS_INDEX_UINT16;
-                d.indices = idx16;
-            }
+            pm_lay_out(&laid_out, &m, &layout);
+            snprintf(label, sizeof label, "%s, %s, stride %u, misaligned by %u, %s indices",
+                     ref->name,
+                     layout.position_type == POLYMASS_POSITION_FLOAT32 ? "float32" : "float64",
+                     (unsigned)layout.stride, (unsigned)layout.misalign,
+                     layout.index_type == POLYMASS_INDEX_UINT16 ? "uint16" : "uint32");
             pm_props_init(&p);
-            snprintf(label, sizeof label, "%s, %s", ref->name, var->name);
-            PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+            PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &laid_out.desc, NULL));
             PM_ASSERT_SAME_PROPERTIES(label, &base, &p);
-            free(idx16);
-            free(vb.block);
+            pm_laid_out_free(&laid_out);
         }
+        pm_mesh_free(&m);
     }
     polymass_context_destroy(ctx);
 }
@@ -177,14 +117,12 @@ static void test_unused_vertices(void** state) {
 /* The mesh keeps the integrals, not the caller's arrays. */
 static void test_mesh_does_not_keep_caller_arrays(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_HOUSE];
-    const polymass_mesh_desc ref_desc = pm_reference_desc(ref);
     polymass_context* ctx = pm_context_new(0);
     polymass_mass_properties before, after;
     polymass_mesh* mesh = NULL;
     pm_mesh m;
     (void)state;
-    pm_props_init(&before);
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&before, ctx, &ref_desc, NULL));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&before, ctx, ref));
     pm_mesh_from_reference(&m, ref);
     {
         const polymass_mesh_desc d = pm_mesh_desc(&m);
@@ -235,8 +173,7 @@ static void test_float32_rounded_values(void** state) {
     polymass_mass_properties p, pd;
     size_t k;
     (void)state;
-    pm_mesh_init(&m);
-    pm_mesh_add_box(&m, dlo, dhi, 1);
+    pm_mesh_box(&m, dlo, dhi, 1);
     positions = malloc(m.vertex_count * 3 * sizeof *positions);
     assert_non_null(positions);
     for (k = 0; k < 3 * m.vertex_count; ++k) {

@@ -108,8 +108,7 @@ static void check_polygon_at(const char* file, int line, const char* what,
 
 static int32_t polygon(polymass_polygon_properties* out, polymass_context* ctx, const double* xy,
                        size_t n) {
-    memset(out, 0, sizeof *out);
-    out->struct_size = sizeof *out;
+    pm_polygon_props_init(out);
     return polymass_polygon_compute(out, ctx, xy, n, 0);
 }
 
@@ -336,8 +335,7 @@ static void test_stride(void** state) {
                 buffer[doubles * (size_t)i + j] = NAN; /* not a point: never read */
             }
         }
-        memset(&p, 0, sizeof p);
-        p.struct_size = sizeof p;
+        pm_polygon_props_init(&p);
         PM_ASSERT_OK(ctx, polymass_polygon_compute(&p, ctx, buffer, 6, strides[k]));
         assert_memory_equal(&packed, &p, sizeof p);
         free(buffer);
@@ -375,8 +373,7 @@ static void test_polygon_errors(void** state) {
     /* stride smaller than a point; counts whose size overflows */
     {
         double tri[6] = {0, 0, 1, 0, 0, 1};
-        memset(&p, 0, sizeof p);
-        p.struct_size = sizeof p;
+        pm_polygon_props_init(&p);
         PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
                          polymass_polygon_compute(&p, ctx, tri, 3, 8));
         PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,

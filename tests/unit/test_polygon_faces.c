@@ -97,17 +97,9 @@ static void test_star_prism_polygon_vs_correct_triangulation(void** state) {
     pm_mesh fan_mesh;
     double fan_area;
     (void)state;
-    {
-        const polymass_mesh_desc dp = pm_reference_desc(star);
-        const polymass_mesh_desc dt = pm_reference_desc(tris);
-        const polymass_mesh_desc df = pm_reference_desc(fan);
-        pm_props_init(&p);
-        pm_props_init(&t);
-        pm_props_init(&f);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &dp, NULL));
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&t, ctx, &dt, NULL));
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&f, ctx, &df, NULL));
-    }
+    PM_ASSERT_OK(ctx, pm_compute_reference(&p, ctx, star));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&t, ctx, tris));
+    PM_ASSERT_OK(ctx, pm_compute_reference(&f, ctx, fan));
     PM_ASSERT_PROPERTIES("star prism, polygon caps", &e, &p, PM_TOL);
     PM_ASSERT_PROPERTIES("star prism, ear-clipped caps", &e, &t, PM_TOL);
     assert_agree("star prism: polygon vs correct triangulation", &p, &t, e.size, 1);
@@ -174,8 +166,7 @@ static void test_mixed_triangles_and_polygons(void** state) {
     size_t f;
     (void)state;
     /* A box with faces 0, 2, 4 as quads and faces 1, 3, 5 as triangle pairs. */
-    pm_mesh_init(&quads);
-    pm_mesh_add_box(&quads, lo, hi, 0);
+    pm_mesh_box(&quads, lo, hi, 0);
     pm_mesh_init(&mixed);
     for (f = 0; f < quads.vertex_count; ++f) {
         pm_mesh_add_vertex(&mixed, quads.positions[3 * f], quads.positions[3 * f + 1],
@@ -196,13 +187,8 @@ static void test_mixed_triangles_and_polygons(void** state) {
 
     /* The reference hexagonal prism with one cap a hexagon and the other in
        triangles, side quads alternately split. */
-    {
-        const polymass_mesh_desc d =
-            pm_reference_desc(&pm_reference_solids[PM_REF_PRISM_HEX_MIXED]);
-        pm_props_init(&p);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
-        PM_ASSERT_PROPERTIES("hexagonal prism, mixed faces", &hex, &p, PM_TOL);
-    }
+    PM_ASSERT_OK(ctx, pm_compute_reference(&p, ctx, &pm_reference_solids[PM_REF_PRISM_HEX_MIXED]));
+    PM_ASSERT_PROPERTIES("hexagonal prism, mixed faces", &hex, &p, PM_TOL);
     /* All-triangle mesh given with an explicit face_sizes of 3s. */
     {
         const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TORUS_TRIS];

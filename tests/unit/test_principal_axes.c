@@ -76,8 +76,7 @@ static void test_box_axes(void** state) {
         static const double t[3] = {3.25, -1.5, 7};
         pm_mesh m;
         polymass_mass_properties p;
-        pm_mesh_init(&m);
-        pm_mesh_add_box(&m, lo, hi, 1);
+        pm_mesh_box(&m, lo, hi, 1);
         pm_mesh_transform(&m, rotated ? q : NULL, 1.0, t);
         PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
         assert_principal_decomposition("box 4 x 2 x 1", &p);
@@ -110,12 +109,10 @@ static void test_isotropic_axes_are_identity(void** state) {
         const char* what = "";
         if (variant < 2) {
             what = variant ? "cube (triangles)" : "cube (quads)";
-            pm_mesh_init(&m);
-            pm_mesh_add_box(&m, lo, hi, variant);
+            pm_mesh_box(&m, lo, hi, variant);
         } else if (variant == 2) {
             what = "cube rotated by a general rotation";
-            pm_mesh_init(&m);
-            pm_mesh_add_box(&m, lo, hi, 0);
+            pm_mesh_box(&m, lo, hi, 0);
             pm_mesh_transform(&m, q, 1.0, NULL);
         } else {
             what = variant == 3 ? "regular tetrahedron" : "regular tetrahedron rotated";
@@ -146,8 +143,7 @@ static void test_two_equal_moments(void** state) {
     pm_mesh m;
     int i;
     (void)state;
-    pm_mesh_init(&m);
-    pm_mesh_add_box(&m, lo, hi, 0);
+    pm_mesh_box(&m, lo, hi, 0);
     PM_ASSERT_OK(ctx, pm_compute(&a, ctx, &m, NULL));
     assert_principal_decomposition("square-section box", &a);
     PM_ASSERT_REL("Izz = m (1 + 1) / 12", 3.0 * 2 / 12, a.principal_moments[0], PM_TOL);

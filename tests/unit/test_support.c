@@ -6,6 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* A public struct as a caller compiled with this header makes it: zeroed,
+   struct_size set. */
+#define PM_INIT_STRUCT(s) (memset(&(s), 0, sizeof(s)), (s).struct_size = sizeof(s))
+
 /* ------------------------------------------------------------------------ */
 /* Mesh builder                                                             */
 /* ------------------------------------------------------------------------ */
@@ -111,6 +115,16 @@ void pm_mesh_add_box(pm_mesh* m, const double lo[3], const double hi[3], int tri
             pm_mesh_add_tri(m, b, d, a);
         }
     }
+}
+
+void pm_mesh_box(pm_mesh* m, const double lo[3], const double hi[3], int triangulate) {
+    pm_mesh_init(m);
+    pm_mesh_add_box(m, lo, hi, triangulate);
+}
+
+void pm_mesh_unit_cube(pm_mesh* m, int triangulate) {
+    static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    pm_mesh_box(m, lo, hi, triangulate);
 }
 
 void pm_mesh_add_prism(pm_mesh* m, const double* xy, size_t n, double z0, double z1) {
@@ -275,41 +289,97 @@ static double pm_bbox_diagonal(const double* positions, size_t count) {
 
 double pm_mesh_size(const pm_mesh* m) { return pm_bbox_diagonal(m->positions, m->vertex_count); }
 
-polymass_mesh_desc pm_mesh_desc_ex(const pm_mesh* m, int force_face_sizes) {
+/* Packed doubles and uint32 indices; face_sizes may be NULL (triangles). */
+static polymass_mesh_desc pm_packed_desc(const double* positions, uint64_t vertex_count,
+                                         const uint32_t* indices, uint64_t index_count,
+                                         const uint32_t* face_sizes, uint64_t face_count) {
     polymass_mesh_desc d;
-    memset(&d, 0, sizeof d);
-    d.struct_size = sizeof d;
+    PM_INIT_STRUCT(d);
     d.position_type = POLYMASS_POSITION_FLOAT64;
-    d.positions = m->positions;
-    d.vertex_count = m->vertex_count;
+    d.positions = positions;
+    d.vertex_count = vertex_count;
     d.position_stride = 0;
     d.index_type = POLYMASS_INDEX_UINT32;
-    d.indices = m->indices;
-    d.index_count = m->index_count;
-    if (force_face_sizes || !pm_mesh_all_triangles(m)) {
-        d.face_sizes = m->face_sizes;
-        d.face_count = m->face_count;
+    d.indices = indices;
+    d.index_count = index_count;
+    if (face_sizes) {
+        d.face_sizes = face_sizes;
+        d.face_count = face_count;
     }
     return d;
+}
+
+polymass_mesh_desc pm_mesh_desc_ex(const pm_mesh* m, int force_face_sizes) {
+    const int give_sizes = force_face_sizes || !pm_mesh_all_triangles(m);
+    return pm_packed_desc(m->positions, m->vertex_count, m->indices, m->index_count,
+                          give_sizes ? m->face_sizes : NULL, m->face_count);
 }
 
 polymass_mesh_desc pm_mesh_desc(const pm_mesh* m) { return pm_mesh_desc_ex(m, 0); }
 
 polymass_mesh_desc pm_reference_desc(const pm_reference_solid* ref) {
-    polymass_mesh_desc d;
-    memset(&d, 0, sizeof d);
-    d.struct_size = sizeof d;
-    d.position_type = POLYMASS_POSITION_FLOAT64;
-    d.positions = ref->positions;
-    d.vertex_count = ref->vertex_count;
-    d.index_type = POLYMASS_INDEX_UINT32;
-    d.indices = ref->indices;
-    d.index_count = ref->index_count;
-    if (ref->face_sizes) {
-        d.face_sizes = ref->face_sizes;
-        d.face_count = ref->face_count;
+    return pm_packed_desc(ref->positions, ref->vertex_count, ref->indices, ref->index_count,
+                          ref->face_sizes, ref->face_count);
+}
+
+/* Writes x as a float or a double at dst, asserting it converts exactly. */
+static void pm_store_coordinate(unsigned char* dst, uint32_t position_type, double x) {
+    if (position_type == POLYMASS_POSITION_FLOAT32) {
+        const float f = (float)x;
+        assert_true((double)f == x || (isnan(f) && isnan(x)));
+        memcpy(dst, &f, sizeof f);
+    } else {
+        memcpy(dst, &x, sizeof x);
     }
-    return d;
+}
+
+void pm_lay_out(pm_laid_out_mesh* out, const pm_mesh* m, const pm_layout* layout) {
+    const size_t element =
+        layout->position_type == POLYMASS_POSITION_FLOAT32 ? sizeof(float) : sizeof(double);
+    const size_t record = layout->stride ? layout->stride : 3 * element;
+    const size_t bytes = record * m->vertex_count + layout->misalign + 16;
+    unsigned char* base;
+    size_t v, k;
+    int i;
+    out->block = malloc(bytes);
+    assert_non_null(out->block);
+    memset(out->block, 0x7F, bytes); /* junk */
+    base = out->block + layout->misalign;
+    for (v = 0; v < m->vertex_count; ++v) {
+        unsigned char* r = base + v * record;
+        for (i = 0; i < 3; ++i) {
+            pm_store_coordinate(r + (size_t)i * element, layout->position_type,
+                                m->positions[3 * v + (size_t)i]);
+        }
+        /* a "normal" after the position, where the record has room */
+        for (i = 3; i < 6 && record >= 6 * element; ++i) {
+            const double not_a_position = layout->position_type == POLYMASS_POSITION_FLOAT32
+                                              ? (double)(-1.0f / (float)i)
+                                              : NAN;
+            pm_store_coordinate(r + (size_t)i * element, layout->position_type, not_a_position);
+        }
+    }
+    out->indices16 = NULL;
+    out->desc = pm_mesh_desc(m);
+    out->desc.position_type = layout->position_type;
+    out->desc.positions = base;
+    out->desc.position_stride = layout->stride;
+    out->desc.index_type = layout->index_type;
+    if (layout->index_type == POLYMASS_INDEX_UINT16) {
+        out->indices16 = malloc(m->index_count * sizeof *out->indices16 + 1);
+        assert_non_null(out->indices16);
+        for (k = 0; k < m->index_count; ++k) {
+            assert_true(m->indices[k] <= 0xFFFF);
+            out->indices16[k] = (uint16_t)m->indices[k];
+        }
+        out->desc.indices = out->indices16;
+    }
+}
+
+void pm_laid_out_free(pm_laid_out_mesh* out) {
+    free(out->block);
+    free(out->indices16);
+    memset(out, 0, sizeof *out);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -440,6 +510,35 @@ pm_expected pm_expected_sum(const pm_expected* a, const pm_expected* b) {
 /* Library calls                                                            */
 /* ------------------------------------------------------------------------ */
 
+const int32_t pm_all_statuses[] = {
+    POLYMASS_OK,
+    POLYMASS_ERROR_INVALID_ARGUMENT,
+    POLYMASS_ERROR_OUT_OF_MEMORY,
+    POLYMASS_ERROR_INTERNAL,
+    POLYMASS_ERROR_NON_FINITE,
+    POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+    POLYMASS_ERROR_FACE_TOO_SMALL,
+    POLYMASS_ERROR_OPEN,
+    POLYMASS_ERROR_NON_MANIFOLD,
+    POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
+    POLYMASS_ERROR_NON_PLANAR_FACE,
+    POLYMASS_ERROR_INVERTED,
+    POLYMASS_ERROR_ZERO_VOLUME,
+    POLYMASS_ERROR_ZERO_AREA,
+    POLYMASS_ERROR_OVERFLOW,
+};
+const size_t pm_status_count = sizeof pm_all_statuses / sizeof pm_all_statuses[0];
+
+int pm_is_documented_status(int32_t status) {
+    size_t i;
+    for (i = 0; i < pm_status_count; ++i) {
+        if (pm_all_statuses[i] == status) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
 polymass_context* pm_context_new(uint32_t flags) {
     polymass_context* ctx = NULL;
     assert_int_equal(polymass_context_create(&ctx, NULL), POLYMASS_OK);
@@ -451,40 +550,40 @@ polymass_context* pm_context_new(uint32_t flags) {
 }
 
 void pm_context_set_flags(polymass_context* ctx, uint32_t flags) {
-    polymass_options o;
-    memset(&o, 0, sizeof o);
-    o.struct_size = sizeof o;
-    o.flags = flags;
-    o.planarity_tolerance = 0.0;
+    const polymass_options o = pm_options(flags, 0.0);
     PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
 }
 
-void pm_props_init(polymass_mass_properties* p) {
-    memset(p, 0, sizeof *p);
-    p->struct_size = sizeof *p;
+polymass_options pm_options(uint32_t flags, double planarity_tolerance) {
+    polymass_options o;
+    PM_INIT_STRUCT(o);
+    o.flags = flags;
+    o.planarity_tolerance = planarity_tolerance;
+    return o;
 }
 
-void pm_diagnostics_init(polymass_diagnostics* d) {
-    memset(d, 0, sizeof *d);
-    d->struct_size = sizeof *d;
+void pm_props_init(polymass_mass_properties* p) { PM_INIT_STRUCT(*p); }
+
+void pm_diagnostics_init(polymass_diagnostics* d) { PM_INIT_STRUCT(*d); }
+
+void pm_polygon_props_init(polymass_polygon_properties* p) { PM_INIT_STRUCT(*p); }
+
+/* The field the mode does not read stays 0; point = origin. */
+static polymass_mass_desc pm_mass_desc_of(uint32_t mode, double density, double mass) {
+    polymass_mass_desc d;
+    PM_INIT_STRUCT(d);
+    d.mass_mode = mode;
+    d.density = density;
+    d.mass = mass;
+    return d;
 }
 
 polymass_mass_desc pm_mass_density(double density) {
-    polymass_mass_desc d;
-    memset(&d, 0, sizeof d);
-    d.struct_size = sizeof d;
-    d.mass_mode = POLYMASS_MASS_FROM_DENSITY;
-    d.density = density;
-    return d;
+    return pm_mass_desc_of(POLYMASS_MASS_FROM_DENSITY, density, 0.0);
 }
 
 polymass_mass_desc pm_mass_total(double mass) {
-    polymass_mass_desc d;
-    memset(&d, 0, sizeof d);
-    d.struct_size = sizeof d;
-    d.mass_mode = POLYMASS_MASS_FROM_TOTAL;
-    d.mass = mass;
-    return d;
+    return pm_mass_desc_of(POLYMASS_MASS_FROM_TOTAL, 0.0, mass);
 }
 
 int32_t pm_compute(polymass_mass_properties* out, polymass_context* ctx, const pm_mesh* m,
@@ -498,6 +597,20 @@ int32_t pm_check(polymass_diagnostics* out, polymass_context* ctx, const pm_mesh
     const polymass_mesh_desc d = pm_mesh_desc(m);
     pm_diagnostics_init(out);
     return polymass_mesh_check(out, ctx, &d);
+}
+
+int32_t pm_compute_reference(polymass_mass_properties* out, polymass_context* ctx,
+                             const pm_reference_solid* ref) {
+    const polymass_mesh_desc d = pm_reference_desc(ref);
+    pm_props_init(out);
+    return polymass_mass_properties_compute(out, ctx, &d, NULL);
+}
+
+void pm_check_reference_compute(const char* file, int line, polymass_context* ctx,
+                                const pm_reference_solid* ref, polymass_mass_properties* out) {
+    const pm_expected e = pm_expected_from_reference(ref);
+    pm_check_status(file, line, ref->name, POLYMASS_OK, pm_compute_reference(out, ctx, ref), ctx);
+    pm_check_properties(file, line, ref->name, &e, out, PM_TOL);
 }
 
 /* ------------------------------------------------------------------------ */

@@ -54,6 +54,12 @@ void pm_mesh_add_quad(pm_mesh* m, uint32_t a, uint32_t b, uint32_t c, uint32_t d
 void pm_mesh_append(pm_mesh* dst, const pm_mesh* src);
 /* An axis-aligned box [lo, hi], outward quads (or 12 triangles). */
 void pm_mesh_add_box(pm_mesh* m, const double lo[3], const double hi[3], int triangulate);
+/* A new mesh holding only the box [lo, hi]. */
+void pm_mesh_box(pm_mesh* m, const double lo[3], const double hi[3], int triangulate);
+/* A new mesh holding only the unit cube [0, 1]^3: vertex k at (k & 1,
+   (k >> 1) & 1, (k >> 2) & 1); faces z = 0, z = 1, y = 0, y = 1, x = 0, x = 1
+   (each one quad, or two triangles). */
+void pm_mesh_unit_cube(pm_mesh* m, int triangulate);
 /* Extrusion of a counter-clockwise polygon (n points, x y pairs) from z0 to
    z1, caps as single polygon faces, sides as quads. */
 void pm_mesh_add_prism(pm_mesh* m, const double* xy, size_t n, double z0, double z1);
@@ -76,6 +82,28 @@ double pm_mesh_size(const pm_mesh* m); /* bounding-box diagonal */
 polymass_mesh_desc pm_mesh_desc_ex(const pm_mesh* m, int force_face_sizes);
 polymass_mesh_desc pm_mesh_desc(const pm_mesh* m);
 polymass_mesh_desc pm_reference_desc(const pm_reference_solid* ref);
+
+/* A mesh's data laid out as a caller's vertex and index buffers may be. */
+typedef struct pm_layout {
+    uint32_t position_type; /* POLYMASS_POSITION_* */
+    size_t stride;          /* bytes from one vertex to the next; 0: packed */
+    size_t misalign;        /* bytes from the start of a malloc'ed block */
+    uint32_t index_type;    /* POLYMASS_INDEX_* */
+} pm_layout;
+
+typedef struct pm_laid_out_mesh {
+    unsigned char* block; /* the vertex buffer's allocation */
+    uint16_t* indices16;  /* the uint16 copy of the indices, or NULL */
+    polymass_mesh_desc desc;
+} pm_laid_out_mesh;
+
+/* Copies the mesh's positions and indices into buffers of the layout, each
+   value converted exactly (asserted; NaN stays NaN). The bytes of a vertex
+   record after its position are junk, and where the record has room for a
+   normal, one that is not a position (NaN for doubles). desc describes the
+   copy, face_sizes as pm_mesh_desc (the mesh's own array). */
+void pm_lay_out(pm_laid_out_mesh* out, const pm_mesh* m, const pm_layout* layout);
+void pm_laid_out_free(pm_laid_out_mesh* out);
 
 /* ------------------------------------------------------------------------ */
 /* Expected values                                                          */
@@ -107,16 +135,33 @@ void pm_parallel_axis(double out[9], const double inertia_com[9], double mass, c
 /* Library calls                                                            */
 /* ------------------------------------------------------------------------ */
 
+/* Every status code of the header, in the order of its values. */
+extern const int32_t pm_all_statuses[];
+extern const size_t pm_status_count;
+/* The status is one of pm_all_statuses. */
+int pm_is_documented_status(int32_t status);
+
 /* A context with the given option flags (asserts success). */
 polymass_context* pm_context_new(uint32_t flags);
 void pm_context_set_flags(polymass_context* ctx, uint32_t flags);
+/* Options with struct_size set (tolerance 0 means the default). */
+polymass_options pm_options(uint32_t flags, double planarity_tolerance);
+/* Output structs zeroed, with struct_size set. */
 void pm_props_init(polymass_mass_properties* p);
 void pm_diagnostics_init(polymass_diagnostics* d);
+void pm_polygon_props_init(polymass_polygon_properties* p);
 polymass_mass_desc pm_mass_density(double density);
 polymass_mass_desc pm_mass_total(double mass);
 int32_t pm_compute(polymass_mass_properties* out, polymass_context* ctx, const pm_mesh* m,
                    const polymass_mass_desc* mass);
 int32_t pm_check(polymass_diagnostics* out, polymass_context* ctx, const pm_mesh* m);
+/* polymass_mass_properties_compute (unit density) of the committed arrays of
+   a reference solid. */
+int32_t pm_compute_reference(polymass_mass_properties* out, polymass_context* ctx,
+                             const pm_reference_solid* ref);
+/* pm_compute_reference into *out, asserting success and the exact values. */
+void pm_check_reference_compute(const char* file, int line, polymass_context* ctx,
+                                const pm_reference_solid* ref, polymass_mass_properties* out);
 
 /* ------------------------------------------------------------------------ */
 /* Assertions                                                               */
@@ -172,6 +217,8 @@ void pm_check_message_tokens(const char* file, int line, const polymass_context*
 #define PM_ASSERT_STATUS(ctx, expected, got) \
     pm_check_status(__FILE__, __LINE__, #got, (expected), (got), (ctx))
 #define PM_ASSERT_OK(ctx, got) PM_ASSERT_STATUS((ctx), POLYMASS_OK, (got))
+#define PM_ASSERT_REFERENCE_COMPUTE(ctx, ref, out) \
+    pm_check_reference_compute(__FILE__, __LINE__, (ctx), (ref), (out))
 #define PM_ASSERT_MENTIONS(ctx, word, number) \
     pm_check_message_mentions(__FILE__, __LINE__, (ctx), (word), (number))
 #define PM_ASSERT_EDGE_MENTIONED(ctx, a, b)                                      \

@@ -23,10 +23,7 @@ static void* read_mesh(void* arg) {
         r->failures++;
         return NULL;
     }
-    memset(&md, 0, sizeof md);
-    md.struct_size = sizeof md;
-    md.mass_mode = POLYMASS_MASS_FROM_DENSITY;
-    md.density = 1.0;
+    md = pm_mass_density(1.0);
     for (round = 0; round < ROUNDS; ++round) {
         polymass_mass_properties p;
         pm_props_init(&p);
@@ -99,8 +96,7 @@ static void test_contexts_are_independent(void** state) {
     PM_ASSERT_STATUS(a, POLYMASS_ERROR_INVERTED, pm_compute(&p, a, &m, NULL));
     assert_true(strlen(polymass_context_message(a)) > 0);
     assert_string_equal(polymass_context_message(b), "");
-    memset(&o, 0, sizeof o);
-    o.struct_size = sizeof o;
+    o = pm_options(0, 0.0);
     PM_ASSERT_OK(a, polymass_context_get_options(&o, a));
     assert_int_equal(o.flags, 0);
     PM_ASSERT_OK(b, polymass_context_get_options(&o, b));

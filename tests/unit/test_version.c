@@ -34,24 +34,6 @@ static void test_struct_sizes_match_c(void** state) {
     assert_int_equal(polymass_sizeof_polygon_properties(), sizeof(polymass_polygon_properties));
 }
 
-static const int32_t all_statuses[] = {
-    POLYMASS_OK,
-    POLYMASS_ERROR_INVALID_ARGUMENT,
-    POLYMASS_ERROR_OUT_OF_MEMORY,
-    POLYMASS_ERROR_INTERNAL,
-    POLYMASS_ERROR_NON_FINITE,
-    POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-    POLYMASS_ERROR_FACE_TOO_SMALL,
-    POLYMASS_ERROR_OPEN,
-    POLYMASS_ERROR_NON_MANIFOLD,
-    POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
-    POLYMASS_ERROR_NON_PLANAR_FACE,
-    POLYMASS_ERROR_INVERTED,
-    POLYMASS_ERROR_ZERO_VOLUME,
-    POLYMASS_ERROR_ZERO_AREA,
-};
-#define STATUS_COUNT (sizeof all_statuses / sizeof all_statuses[0])
-
 static void test_status_values_are_the_documented_ones(void** state) {
     (void)state;
     /* The ABI: explicit values, never reused. */
@@ -69,8 +51,10 @@ static void test_status_values_are_the_documented_ones(void** state) {
     assert_int_equal(POLYMASS_ERROR_INVERTED, 30);
     assert_int_equal(POLYMASS_ERROR_ZERO_VOLUME, 31);
     assert_int_equal(POLYMASS_ERROR_ZERO_AREA, 32);
+    assert_int_equal(POLYMASS_ERROR_OVERFLOW, 40);
 }
 
+/* Every status has its own name; an unknown code has the "unknown" one. */
 static void test_status_strings_distinct_and_non_empty(void** state) {
     size_t i, j;
     const char* unknown = polymass_status_string(9999);
@@ -80,13 +64,13 @@ static void test_status_strings_distinct_and_non_empty(void** state) {
     assert_string_equal(polymass_status_string(-1), "unknown status");
     assert_string_equal(polymass_status_string(4), "unknown status");
     assert_string_equal(polymass_status_string(INT32_MIN), "unknown status");
-    for (i = 0; i < STATUS_COUNT; ++i) {
-        const char* s = polymass_status_string(all_statuses[i]);
+    for (i = 0; i < pm_status_count; ++i) {
+        const char* s = polymass_status_string(pm_all_statuses[i]);
         assert_non_null(s);
         assert_true(strlen(s) > 0);
         assert_string_not_equal(s, unknown);
         for (j = 0; j < i; ++j) {
-            assert_string_not_equal(s, polymass_status_string(all_statuses[j]));
+            assert_string_not_equal(s, polymass_status_string(pm_all_statuses[j]));
         }
     }
 }
@@ -107,15 +91,11 @@ static void test_context_default_options(void** state) {
 
 static void test_context_options_round_trip(void** state) {
     polymass_context* ctx = pm_context_new(0);
-    polymass_options in, out;
+    const polymass_options in =
+        pm_options(POLYMASS_OPTION_ACCEPT_INVERTED | POLYMASS_OPTION_WELD_VERTICES, 1e-4);
+    polymass_options out = pm_options(0, 0.0);
     (void)state;
-    memset(&in, 0, sizeof in);
-    in.struct_size = sizeof in;
-    in.flags = POLYMASS_OPTION_ACCEPT_INVERTED | POLYMASS_OPTION_WELD_VERTICES;
-    in.planarity_tolerance = 1e-4;
     PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &in));
-    memset(&out, 0, sizeof out);
-    out.struct_size = sizeof out;
     PM_ASSERT_OK(ctx, polymass_context_get_options(&out, ctx));
     assert_int_equal(out.flags, in.flags);
     assert_true(out.planarity_tolerance == 1e-4);
@@ -124,10 +104,8 @@ static void test_context_options_round_trip(void** state) {
 
 static void test_context_options_invalid(void** state) {
     polymass_context* ctx = pm_context_new(0);
-    polymass_options o, out;
+    polymass_options o = pm_options(0, 0.0), out;
     (void)state;
-    memset(&o, 0, sizeof o);
-    o.struct_size = sizeof o;
 
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_context_set_options(NULL, &o));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_context_set_options(ctx, NULL));
@@ -150,8 +128,7 @@ static void test_context_options_invalid(void** state) {
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_context_set_options(ctx, &o));
 
     /* A rejected call leaves the options as they were. */
-    memset(&out, 0, sizeof out);
-    out.struct_size = sizeof out;
+    out = pm_options(0, 0.0);
     PM_ASSERT_OK(ctx, polymass_context_get_options(&out, ctx));
     assert_int_equal(out.flags, 0);
     assert_true(out.planarity_tolerance == POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
