@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -178,11 +179,16 @@ void copy_vector(const Eigen::Vector3d& vector, double (&out)[3]) {
     Eigen::Vector3d::Map(out) = vector;
 }
 
-// Every value finite, and the mass neither overflowed nor underflowed to zero.
+// Every value finite, and mass and moments not underflowed to zero or to
+// subnormal numbers (which keep too few digits).
 bool result_in_range(const polymass_mass_properties& p) {
     const double scalars[] = {p.volume, p.mass, p.density, p.surface_area};
-    return all_finite(scalars) && p.mass > 0 && p.density > 0 && all_finite(p.center_of_mass) &&
-           all_finite(p.inertia) && all_finite(p.inertia_origin) && all_finite(p.inertia_point) &&
+    // By magnitude: an unchecked non-solid can have negative moments.
+    const double largest_moment =
+        Eigen::Map<const Eigen::Vector3d>(p.principal_moments).cwiseAbs().maxCoeff();
+    return all_finite(scalars) && p.mass >= DBL_MIN && p.density >= DBL_MIN &&
+           largest_moment >= DBL_MIN && all_finite(p.center_of_mass) && all_finite(p.inertia) &&
+           all_finite(p.inertia_origin) && all_finite(p.inertia_point) &&
            all_finite(p.principal_moments) && all_finite(p.principal_axes);
 }
 

@@ -2,6 +2,7 @@
 #include <polymass/polymass.h>
 
 #include <Eigen/Core>
+#include <cfloat>
 #include <cstring>
 
 #include "api_guard.hpp"
@@ -25,7 +26,9 @@ bool span_fits(const double* points, uint64_t count, uint64_t stride) {
 
 bool in_range(const polymass_polygon_properties& p) {
     const double scalars[] = {p.area, p.polar_moment, p.principal_angle};
-    return all_finite(scalars) && all_finite(p.centroid) && all_finite(p.second_moments) &&
+    // Subnormal or zero area and moments keep too few digits to be reported.
+    return all_finite(scalars) && p.area >= DBL_MIN && p.polar_moment >= DBL_MIN &&
+           all_finite(p.centroid) && all_finite(p.second_moments) &&
            all_finite(p.second_moments_origin) && all_finite(p.principal_moments);
 }
 

@@ -111,7 +111,9 @@ public:
 
     IntegrationResult finish() {
         flush_triangles();
-        result_.integrals = volume_integrals_from(total_);
+        const double unit = settings_.unit_length;
+        result_.integrals = volume_integrals_from(total_).scaled(unit);
+        result_.surface_area *= unit * unit;
         return result_;
     }
 
@@ -139,8 +141,9 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
                                  const IntegrationSettings& settings) {
     Integrator integrator(settings);
     const Eigen::Vector3d reference = settings.reference;
+    const double inverse_unit = 1.0 / settings.unit_length;  // a power of two: exact
     auto vertex = [&](std::size_t position) {
-        return Eigen::Vector3d(mesh.positions[mesh.indices[position]] - reference);
+        return Eigen::Vector3d((mesh.positions[mesh.indices[position]] - reference) * inverse_unit);
     };
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
         if (size == 3)

@@ -13,6 +13,7 @@ namespace polymass::core {
 
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
+    double unit_length = 1.0;  // in this unit (unit_length_near the mesh size)
     bool check_planarity = true;
     double planarity_tolerance = 1e-6;  // off-plane distance / face diameter
 };

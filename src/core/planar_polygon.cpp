@@ -4,14 +4,16 @@
 
 namespace polymass::core {
 
-PlanarPolygon planar_polygon_from(const ProjectionIntegrals& about_reference,
-                                  const Eigen::Vector2d& reference, double extent_squared) {
+PlanarPolygon planar_polygon_from(const ProjectionIntegrals& in_units,
+                                  const Eigen::Vector2d& reference, double unit_length,
+                                  double extent_squared) {
     PlanarPolygon polygon;
     // A clockwise polygon gives every region integral negated.
-    const double sign = about_reference.one < 0 ? -1.0 : 1.0;
+    const double sign = in_units.one < 0 ? -1.0 : 1.0;
     polygon.orientation = int(sign);
+    const ProjectionIntegrals about_reference = in_units.scaled(unit_length);
     polygon.area = sign * about_reference.one;
-    polygon.zero_area = is_degenerate_face(2.0 * polygon.area, extent_squared);
+    polygon.zero_area = is_degenerate_face(2.0 * sign * in_units.one, extent_squared);
     if (polygon.zero_area) return polygon;
 
     const double area = polygon.area;

@@ -21,23 +21,27 @@ struct PlanarPolygon {
     bool zero_area = false;        // area at rounding level: nothing else is meaningful
 };
 
-// From the region integrals of the polygon about `reference` (as the caller
-// ordered its points); `extent_squared` is the square of the polygon's size
-// times its point count, the scale of the area's rounding.
-PlanarPolygon planar_polygon_from(const ProjectionIntegrals& about_reference,
-                                  const Eigen::Vector2d& reference, double extent_squared);
+// From the region integrals of the polygon about `reference` in units of
+// `unit_length` (as the caller ordered its points); `extent_squared` is, in the
+// same unit, the square of the polygon's size times its point count: the
+// scale of the area's rounding.
+PlanarPolygon planar_polygon_from(const ProjectionIntegrals& in_units,
+                                  const Eigen::Vector2d& reference, double unit_length,
+                                  double extent_squared);
 
 // point_at(i) returns point i as a 2-vector; count >= 3, all finite.
 template <class PointAt>
 PlanarPolygon planar_polygon(std::size_t count, PointAt&& point_at) {
     Eigen::AlignedBox2d bounds;
     for (std::size_t i = 0; i < count; ++i) bounds.extend(point_at(i));
-    // About the centre of the bounds, so a polygon far from the origin keeps its digits.
+    // About the centre of the bounds, so a polygon far from the origin keeps
+    // its digits, and in a unit near its size, so no power overflows.
     const Eigen::Vector2d reference = bounds.center();
+    const double unit = unit_length_near(bounds.diagonal().norm());
     const ProjectionIntegrals integrals = projection_integrals(
-        count, [&](std::size_t i) { return Eigen::Vector2d(point_at(i) - reference); });
-    return planar_polygon_from(integrals, reference,
-                               double(count) * bounds.diagonal().squaredNorm());
+        count, [&](std::size_t i) { return Eigen::Vector2d((point_at(i) - reference) / unit); });
+    const double size = bounds.diagonal().norm() / unit;
+    return planar_polygon_from(integrals, reference, unit, double(count) * size * size);
 }
 
 }  // namespace polymass::core

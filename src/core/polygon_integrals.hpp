@@ -22,6 +22,13 @@ namespace polymass::core {
 // 1, a, b, a², ab, b², a³, a²b, ab², b³: positive for a counter-clockwise polygon.
 struct ProjectionIntegrals {
     double one = 0, a = 0, b = 0, aa = 0, ab = 0, bb = 0, aaa = 0, aab = 0, abb = 0, bbb = 0;
+
+    // The integrals of the polygon scaled by `length` (dimensions L² to L⁵).
+    ProjectionIntegrals scaled(double length) const {
+        const double l2 = length * length, l3 = l2 * length, l4 = l3 * length, l5 = l4 * length;
+        return {one * l2, a * l3,   b * l3,   aa * l4,  ab * l4,
+                bb * l4,  aaa * l5, aab * l5, abb * l5, bbb * l5};
+    }
 };
 
 // Green's theorem on each edge (a0, b0) → (a1, b1), written with the shoelace

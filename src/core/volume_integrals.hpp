@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 
 namespace polymass::core {
 
@@ -41,7 +42,21 @@ struct VolumeIntegrals {
     Eigen::Vector3d products = Eigen::Vector3d::Zero();  // ∫xy, ∫yz, ∫zx
 
     VolumeIntegrals negated() const { return {-volume, -first, -second, -products}; }
+
+    // The integrals of the solid scaled by `length` (dimensions L³, L⁴, L⁵).
+    VolumeIntegrals scaled(double length) const {
+        const double cube = length * length * length;
+        return {volume * cube, first * (cube * length), second * (cube * length * length),
+                products * (cube * length * length)};
+    }
 };
+
+// A power of two near `length`: coordinates divided by it keep every bit and
+// are of order one, so no intermediate product (up to the sixth power of a
+// coordinate) overflows or underflows for any mesh whose results fit.
+inline double unit_length_near(double length) {
+    return length > 0 && std::isfinite(length) ? std::ldexp(1.0, std::ilogb(length)) : 1.0;
+}
 
 // Divergence theorem with F = (x, 0, 0), (x²/2, 0, 0), (x³/3, 0, 0), (x²y/2, 0, 0)
 // and their cyclic counterparts.

@@ -44,6 +44,10 @@ static const exact_entry exact_transforms[] = {
     {"scale 2^-20", 0, {0}, 1.0 / 1048576.0, {0, 0, 0}},
     {"scale 2^60", 0, {0}, 1152921504606846976.0, {0, 0, 0}},
     {"scale 2^-60", 0, {0}, 1.0 / 1152921504606846976.0, {0, 0, 0}},
+    /* Where a coordinate's fourth power underflows and its sixth overflows:
+       the library must integrate in a unit near the mesh's size. */
+    {"scale 2^-200", 0, {0}, 0x1p-200, {0, 0, 0}},
+    {"scale 2^200", 0, {0}, 0x1p200, {0, 0, 0}},
     {"scale 2^-20, translate (1, 2, 3)", 0, {0}, 1.0 / 1048576.0, {1, 2, 3}},
 };
 #define EXACT_TRANSFORM_COUNT (sizeof exact_transforms / sizeof exact_transforms[0])
