@@ -67,6 +67,11 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              "vertex %llu, used by a face, has a NaN or infinite coordinate "
                              "(%llu such vertices)",
                              u64(scan.non_finite.first), u64(scan.non_finite.count));
+    if (!std::isfinite(scan.diagonal()))
+        return context->fail(POLYMASS_ERROR_OVERFLOW,
+                             "the mesh spans more than a double can hold (its bounding box "
+                             "reaches from %g to %g)",
+                             scan.bounds.min().minCoeff(), scan.bounds.max().maxCoeff());
 
     if (const auto& topology = analysis.topology) {
         if (topology->open.count > 0)

@@ -36,7 +36,8 @@ struct MeshScan {
         return bounds.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Zero())
                                 : Eigen::Vector3d(bounds.center());
     }
-    double diagonal() const { return bounds.isEmpty() ? 0.0 : bounds.diagonal().norm(); }
+    // stableNorm: the square of a diagonal of 1e155 would overflow.
+    double diagonal() const { return bounds.isEmpty() ? 0.0 : bounds.diagonal().stableNorm(); }
 };
 
 template <class Scalar, class Index>

@@ -37,10 +37,11 @@ PlanarPolygon planar_polygon(std::size_t count, PointAt&& point_at) {
     // About the centre of the bounds, so a polygon far from the origin keeps
     // its digits, and in a unit near its size, so no power overflows.
     const Eigen::Vector2d reference = bounds.center();
-    const double unit = unit_length_near(bounds.diagonal().norm());
+    const double diagonal = bounds.diagonal().stableNorm();  // norm() would overflow at 1e155
+    const double unit = unit_length_near(diagonal);
     const ProjectionIntegrals integrals = projection_integrals(
         count, [&](std::size_t i) { return Eigen::Vector2d((point_at(i) - reference) / unit); });
-    const double size = bounds.diagonal().norm() / unit;
+    const double size = diagonal / unit;
     return planar_polygon_from(integrals, reference, unit, double(count) * size * size);
 }
 
