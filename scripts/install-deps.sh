@@ -11,6 +11,7 @@ packages=(
     libeigen3-dev                          # the library's (private) dependency
     libcmocka-dev                          # unit tests
     clang-format                           # style check
+    clang libclang-rt-14-dev               # fuzz preset: clang, libFuzzer + sanitizer runtimes
     abigail-tools binutils                 # ABI gate (abidw, abidiff), nm, readelf
     dpkg-dev file                          # CPack DEB: dpkg-shlibdeps, shlibs
     python3

@@ -9,6 +9,8 @@
 #   format  clang-format --dry-run --Werror over the C/C++ sources
 #   dev     configure, build and ctest the `dev` preset (Debug, -Werror)
 #   asan    configure, build and ctest the `asan` preset (ASan + UBSan)
+#   fuzz    configure, build and ctest the `fuzz` preset (Clang, libFuzzer):
+#           a bounded, fixed-seed run of tests/fuzz/fuzz_mesh.c
 #
 # Exits non-zero if any step fails; the later steps still run, so one run
 # shows every failure. Idempotent: build trees under build/ are reused.
@@ -21,7 +23,7 @@ mkdir -p "$LOG_DIR"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-2}
 
-STEPS=(deps format dev asan)
+STEPS=(deps format dev asan fuzz)
 
 # Counts of test cases (ctest) across the steps, for the closing line.
 TESTS_PASSED=0
@@ -96,6 +98,10 @@ step_dev() {
 
 step_asan() {
     preset_workflow asan
+}
+
+step_fuzz() {
+    preset_workflow fuzz
 }
 
 # --------------------------------------------------------------------------

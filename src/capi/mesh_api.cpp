@@ -109,6 +109,12 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              u64(integration.non_planar_faces.count));
     if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
 
+    if (integration.encloses_no_volume)
+        return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
+                             "the surface encloses no volume: signed volume %.3g is at rounding "
+                             "level for its area %.3g and size %.3g",
+                             integration.integrals.volume, integration.surface_area,
+                             scan.diagonal());
     const core::VolumeIntegrals& integrals = integration.integrals;
     if (!(std::isfinite(integration.surface_area) && std::isfinite(integrals.volume) &&
           integrals.first.allFinite() && integrals.second.allFinite() &&
@@ -118,11 +124,6 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              "large (size %.3g); scale its coordinates down",
                              scan.diagonal());
     const double volume = integrals.volume;
-    if (integration.encloses_no_volume(scan.diagonal()))
-        return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
-                             "the surface encloses no volume: signed volume %.3g is at rounding "
-                             "level for its area %.3g and size %.3g",
-                             volume, integration.surface_area, scan.diagonal());
     if (volume < 0) {
         if (!(flags & POLYMASS_OPTION_ACCEPT_INVERTED))
             return context->fail(POLYMASS_ERROR_INVERTED,

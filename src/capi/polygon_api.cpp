@@ -88,8 +88,9 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
         result.principal_angle = polygon.principal_angle;
         if (!in_range(result))
             return context->fail(POLYMASS_ERROR_OVERFLOW,
-                                 "the polygon's second moments do not fit in a double (area %g): "
-                                 "scale its coordinates down",
+                                 "the polygon's area and second moments do not fit in a double "
+                                 "(area %g): its coordinates are too large or too small; scale "
+                                 "them",
                                  result.area);
         *out_properties = result;
         return POLYMASS_OK;

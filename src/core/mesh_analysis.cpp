@@ -31,7 +31,8 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     analysis.reference = scan.reference_point();
     IntegrationSettings integration;
     integration.reference = analysis.reference;
-    integration.unit_length = unit_length_near(scan.diagonal());
+    integration.size = scan.diagonal();
+    integration.unit_length = unit_length_near(integration.size);
     integration.check_planarity = settings.check_topology;
     integration.planarity_tolerance = settings.planarity_tolerance;
     analysis.integration = integrate_mesh(mesh, integration);

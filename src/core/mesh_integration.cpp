@@ -53,25 +53,28 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         for (int axis = 0; axis < 3; ++axis)
             for (int vertex = 0; vertex < 3; ++vertex)
                 load_lanes(p[axis][vertex], &batch.coordinates[axis][vertex][first]);
-        Lanes delta[3];
-        add_unscaled_triangle_sums(sums, p, delta);
-
+        TriangleEdges<Lanes> edges(p);
         Lanes twice_area_squared{}, e1_squared{}, e2_squared{};
         for (int axis = 0; axis < 3; ++axis) {
-            const Lanes e1 = p[axis][1] - p[axis][0], e2 = p[axis][2] - p[axis][0];
-            twice_area_squared += delta[axis] * delta[axis];
-            e1_squared += e1 * e1;
-            e2_squared += e2 * e2;
+            twice_area_squared += edges.delta[axis] * edges.delta[axis];
+            e1_squared += edges.e1[axis] * edges.e1[axis];
+            e2_squared += edges.e2[axis] * edges.e2[axis];
         }
         const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
         Lanes twice_area;
         for (int lane = 0; lane < lane_count; ++lane)
             twice_area[lane] = std::sqrt(twice_area_squared[lane]);
-        twice_areas += twice_area;  // padding lanes add sqrt(0)
+        // A degenerate triangle adds nothing, like a degenerate polygon; padding
+        // lanes are zero triangles and add nothing either.
         const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
-        for (std::size_t lane = 0; lane < used; ++lane)
-            if (is_degenerate_face(twice_area[lane], extent_squared[lane]))
-                result.degenerate_faces.record(batch.faces[first + lane]);
+        for (std::size_t lane = 0; lane < used; ++lane) {
+            if (!is_degenerate_face(twice_area[lane], extent_squared[lane])) continue;
+            result.degenerate_faces.record(batch.faces[first + lane]);
+            twice_area[lane] = 0.0;
+            for (Lanes& component : edges.delta) component[lane] = 0.0;
+        }
+        twice_areas += twice_area;
+        add_unscaled_triangle_sums(sums, p, edges.delta);
     }
     result.surface_area += sum_lanes(twice_areas) / 2.0;
     UnscaledTriangleSums<double> reduced;
@@ -112,7 +115,11 @@ public:
     IntegrationResult finish() {
         flush_triangles();
         const double unit = settings_.unit_length;
-        result_.integrals = volume_integrals_from(total_).scaled(unit);
+        const VolumeIntegrals in_units = volume_integrals_from(total_);
+        constexpr double slack = 1024.0 * 2.220446049250313e-16;
+        result_.encloses_no_volume =
+            std::abs(in_units.volume) <= slack * result_.surface_area * (settings_.size / unit);
+        result_.integrals = in_units.scaled(unit);
         result_.surface_area *= unit * unit;
         return result_;
     }

@@ -14,6 +14,7 @@ namespace polymass::core {
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
     double unit_length = 1.0;  // in this unit (unit_length_near the mesh size)
+    double size = 0.0;         // the mesh's bounding-box diagonal
     bool check_planarity = true;
     double planarity_tolerance = 1e-6;  // off-plane distance / face diameter
 };
@@ -38,14 +39,12 @@ struct IntegrationResult {
     FaceFinding degenerate_faces;
     FaceFinding non_planar_faces;
     double max_non_planarity = 0.0;  // relative to the face's diameter
-
     // The signed volume is at rounding level: each face's term carries an
     // error of order ε·area·size, so a surface of area A and size L (bounding
     // box diagonal) cannot tell |V| ≲ ε·A·L from zero. A slack of 1024 keeps
-    // plates as thin as 1e-13 of their width solid.
-    bool encloses_no_volume(double size) const {
-        return std::abs(integrals.volume) <= 1024.0 * 2.220446049250313e-16 * surface_area * size;
-    }
+    // plates as thin as 1e-13 of their width solid. Decided in the integration
+    // unit, where neither side can overflow.
+    bool encloses_no_volume = false;
 };
 
 // Indices must be in range and used coordinates finite (checked before).

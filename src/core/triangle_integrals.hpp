@@ -57,21 +57,29 @@ struct TriangleCoordinateTerms {
 
 }  // namespace detail
 
-// Adds one triangle (per lane) with vertex coordinates p[axis][vertex], and
-// stores δ = (p1 − p0) × (p2 − p0), whose length is twice the area.
+// The edges E1 = p1 − p0, E2 = p2 − p0 of a triangle (per lane) with vertex
+// coordinates p[axis][vertex], and δ = E1 × E2, whose length is twice the area.
+template <class T>
+struct TriangleEdges {
+    T e1[3], e2[3], delta[3];
+
+    __attribute__((always_inline)) explicit TriangleEdges(const T (&p)[3][3]) {
+        for (int axis = 0; axis < 3; ++axis) {
+            e1[axis] = p[axis][1] - p[axis][0];
+            e2[axis] = p[axis][2] - p[axis][0];
+        }
+        delta[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        delta[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        delta[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    }
+};
+
+// Adds one triangle (per lane) with vertex coordinates p[axis][vertex] and
+// δ from TriangleEdges; a lane whose δ is zero adds nothing.
 template <class T>
 __attribute__((always_inline)) inline void add_unscaled_triangle_sums(UnscaledTriangleSums<T>& sums,
                                                                       const T (&p)[3][3],
-                                                                      T (&delta)[3]) {
-    T e1[3], e2[3];
-    for (int axis = 0; axis < 3; ++axis) {
-        e1[axis] = p[axis][1] - p[axis][0];
-        e2[axis] = p[axis][2] - p[axis][0];
-    }
-    delta[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    delta[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    delta[2] = e1[0] * e2[1] - e1[1] * e2[0];
-
+                                                                      const T (&delta)[3]) {
     const detail::TriangleCoordinateTerms<T> terms[3] = {detail::TriangleCoordinateTerms<T>(p[0]),
                                                          detail::TriangleCoordinateTerms<T>(p[1]),
                                                          detail::TriangleCoordinateTerms<T>(p[2])};

@@ -1,0 +1,667 @@
+/* libFuzzer target: arbitrary bytes as a mesh (and as a 2D polygon) through the
+ * C API, with the documented invariants checked on every result.
+ *
+ * Input format (little-endian; tests/fuzz/make_corpus.py writes it; bytes past
+ * the end of the input read as 0, bytes after what the header asks for are
+ * ignored):
+ *
+ *   offset size
+ *   0      1    layout bits
+ *                 0    position type: 0 FLOAT64, 1 FLOAT32
+ *                 1    index type: 0 UINT32, 1 UINT16
+ *                 2    face_sizes given (else NULL: triangles)
+ *                 3-4  position_stride: 0 packed (0), 1 one vertex (12/24),
+ *                      2 one vertex + 8 bytes, 3 one vertex - 4 (too small: invalid)
+ *                 5    index_count = the faces' total + the signed byte at 7
+ *                      (indices past the total are 0; a negative delta cuts)
+ *                 6    polygon points: 0 x, y of each vertex (the position array
+ *                      itself when FLOAT64); 1 every coordinate as packed pairs
+ *                 7    positions and indices at an odd address
+ *   1      1    option flags (low 4 bits: POLYMASS_OPTION_*)
+ *   2      1    planarity tolerance: entry (byte % 8) of `tolerances` below
+ *   3      1    mass: bits 0-1: 0 NULL, 1 FROM_DENSITY, 2 FROM_TOTAL, 3 an
+ *               unknown mode (2 + the byte's high bits)
+ *   4      1    vertex_count V of one copy
+ *   5      1    face_count F of one copy
+ *   6      1    copies - 1: the mesh is repeated, copy c's indices + c * V
+ *               (truncated to the index type) and its vertices the same;
+ *               fewer copies when they would pass 8192 vertices or indices
+ *   7      1    index_count delta (int8), when layout bit 5 is set
+ *   8      8    density or mass (double, raw bits)
+ *   16     24   point (3 doubles, raw bits)
+ *   40          F face sizes, one byte each (only when layout bit 2 is set)
+ *               V vertices: 3 doubles or 3 floats each, raw bits
+ *               the indices of one copy (sum of the face sizes, or 3 F): raw
+ *               uint32 or uint16
+ *
+ * Every array handed to the library is exactly as large as the counts and
+ * stride claim (allocated to that size, so AddressSanitizer sees any read
+ * past it), never larger. A violated invariant prints what failed and traps.
+ * The invariants: every status is one the function documents (never
+ * POLYMASS_ERROR_INTERNAL), and the message is "" exactly after a success;
+ * after a success every output is finite, volume, mass, density and surface
+ * area are positive, principal moments ascend and the axes are a rotation
+ * (orthonormal to 1e-9, det +1), the warnings match the options, and the
+ * density or mass is the one asked for; after a failure the output struct is
+ * untouched and *out_mesh is NULL; polymass_mesh_check's report has its
+ * status and consistent counts and first locations, and (topology checks on)
+ * the status and message of polymass_mesh_create; polymass_mass_properties_compute
+ * equals polymass_mesh_create + polymass_mesh_mass_properties, bit for bit.
+ *
+ * POLYMASS_FUZZ_VERBOSE=1 in the environment prints the decoded input and the
+ * statuses, for reproducing a finding by hand. */
+#include <math.h>
+#include <polymass/polymass.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define HEADER_SIZE 40
+/* Bounds on the replicated mesh, to keep one execution fast. */
+#define MAX_TOTAL_VERTICES 8192u
+#define MAX_TOTAL_INDICES 8192u
+
+static const double tolerances[8] = {0.0, 1e-15, 1e-9, 1e-6, 1e-3, 0.5, 0.999999, 1.0 /* bad */};
+
+static int verbose = -1;
+
+static const char* current_call = "";
+
+static void fail(const char* file, int line, const char* what, int32_t status,
+                 const polymass_context* context) {
+    fprintf(stderr, "\n%s:%d: invariant violated after %s: %s\n  status %d (%s), message \"%s\"\n",
+            file, line, current_call, what, (int)status, polymass_status_string(status),
+            context ? polymass_context_message(context) : "");
+    fflush(stderr);
+    __builtin_trap();
+}
+
+#define CHECK(condition, status, context)                                        \
+    do {                                                                         \
+        if (!(condition)) fail(__FILE__, __LINE__, #condition, status, context); \
+    } while (0)
+
+/* ------------------------------------------------------------------------ */
+/* Reading the input                                                        */
+/* ------------------------------------------------------------------------ */
+
+typedef struct reader {
+    const uint8_t* data;
+    size_t size;
+    size_t at;
+} reader;
+
+/* Copies n bytes to out; past the end of the input they are 0. */
+static void take(reader* r, void* out, size_t n) {
+    size_t have = r->at < r->size ? r->size - r->at : 0;
+    if (have > n) have = n;
+    if (have) memcpy(out, r->data + r->at, have);
+    memset((uint8_t*)out + have, 0, n - have);
+    r->at += n;
+}
+
+static uint8_t take_u8(reader* r) {
+    uint8_t value;
+    take(r, &value, 1);
+    return value;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Invariants                                                               */
+/* ------------------------------------------------------------------------ */
+
+static int is_mesh_status(int32_t status) {
+    switch (status) {
+        case POLYMASS_OK:
+        case POLYMASS_ERROR_INVALID_ARGUMENT:
+        case POLYMASS_ERROR_OUT_OF_MEMORY:
+        case POLYMASS_ERROR_NON_FINITE:
+        case POLYMASS_ERROR_INDEX_OUT_OF_RANGE:
+        case POLYMASS_ERROR_FACE_TOO_SMALL:
+        case POLYMASS_ERROR_OPEN:
+        case POLYMASS_ERROR_NON_MANIFOLD:
+        case POLYMASS_ERROR_INCONSISTENT_ORIENTATION:
+        case POLYMASS_ERROR_NON_PLANAR_FACE:
+        case POLYMASS_ERROR_INVERTED:
+        case POLYMASS_ERROR_ZERO_VOLUME:
+        case POLYMASS_ERROR_OVERFLOW:
+            return 1;
+        default: /* POLYMASS_ERROR_INTERNAL is a library bug */
+            return 0;
+    }
+}
+
+static int is_polygon_status(int32_t status) {
+    switch (status) {
+        case POLYMASS_OK:
+        case POLYMASS_ERROR_INVALID_ARGUMENT:
+        case POLYMASS_ERROR_OUT_OF_MEMORY:
+        case POLYMASS_ERROR_NON_FINITE:
+        case POLYMASS_ERROR_FACE_TOO_SMALL:
+        case POLYMASS_ERROR_ZERO_AREA:
+        case POLYMASS_ERROR_OVERFLOW:
+            return 1;
+        default:
+            return 0;
+    }
+}
+
+/* A status is named, and the message is "" exactly after a success. */
+static void check_status_and_message(int32_t status, const polymass_context* context) {
+    const char* message = polymass_context_message(context);
+    CHECK(message != NULL, status, context);
+    CHECK(strcmp(polymass_status_string(status), "unknown status") != 0, status, context);
+    if (status == POLYMASS_OK)
+        CHECK(message[0] == '\0', status, context);
+    else
+        CHECK(message[0] != '\0', status, context);
+}
+
+static int all_finite(const double* values, size_t count) {
+    size_t i;
+    for (i = 0; i < count; ++i)
+        if (!isfinite(values[i])) return 0;
+    return 1;
+}
+
+static void check_report(const polymass_diagnostics* d, int32_t status, uint64_t vertex_count,
+                         const polymass_context* context) {
+    const uint64_t none = POLYMASS_NONE;
+    CHECK(d->struct_size == sizeof *d, status, context);
+    CHECK(d->status == status, status, context);
+    /* A first_* location is POLYMASS_NONE exactly when its count is 0. */
+    CHECK((d->non_finite_vertices == 0) == (d->first_non_finite_vertex == none), status, context);
+    CHECK((d->out_of_range_indices == 0) == (d->first_out_of_range_face == none), status, context);
+    CHECK((d->small_faces == 0) == (d->first_small_face == none), status, context);
+    CHECK((d->degenerate_faces == 0) == (d->first_degenerate_face == none), status, context);
+    CHECK((d->non_planar_faces == 0) == (d->first_non_planar_face == none), status, context);
+    CHECK((d->open_edges == 0) == (d->first_open_edge[0] == none), status, context);
+    CHECK((d->non_manifold_edges == 0) == (d->first_non_manifold_edge[0] == none), status, context);
+    CHECK((d->misoriented_edges == 0) == (d->first_misoriented_edge[0] == none), status, context);
+    if (d->non_finite_vertices) CHECK(d->first_non_finite_vertex < vertex_count, status, context);
+    if (d->out_of_range_indices) CHECK(d->first_out_of_range_face < d->face_count, status, context);
+    if (d->small_faces) CHECK(d->first_small_face < d->face_count, status, context);
+    if (d->degenerate_faces) CHECK(d->first_degenerate_face < d->face_count, status, context);
+    if (d->non_planar_faces) CHECK(d->first_non_planar_face < d->face_count, status, context);
+    if (status == POLYMASS_OK) {
+        CHECK(d->non_finite_vertices == 0 && d->out_of_range_indices == 0 && d->small_faces == 0,
+              status, context);
+        CHECK(d->open_edges == 0 && d->misoriented_edges == 0 && d->non_planar_faces == 0, status,
+              context);
+        CHECK(isfinite(d->signed_volume) && d->signed_volume != 0.0, status, context);
+        CHECK(d->used_vertex_count <= vertex_count, status, context);
+    }
+}
+
+/* The principal axes: columns of a proper rotation. */
+static void check_rotation(const double* r, int32_t status, const polymass_context* context) {
+    int i, j, k;
+    double det;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) {
+            double dot = 0.0;
+            for (k = 0; k < 3; ++k) dot += r[3 * k + i] * r[3 * k + j];
+            CHECK(fabs(dot - (i == j ? 1.0 : 0.0)) <= 1e-9, status, context);
+        }
+    det = r[0] * (r[4] * r[8] - r[5] * r[7]) - r[1] * (r[3] * r[8] - r[5] * r[6]) +
+          r[2] * (r[3] * r[7] - r[4] * r[6]);
+    CHECK(fabs(det - 1.0) <= 1e-9, status, context);
+}
+
+static void check_properties(const polymass_mass_properties* p, uint32_t flags,
+                             const polymass_mass_desc* mass, int32_t status,
+                             const polymass_context* context) {
+    const uint32_t known = POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES |
+                           POLYMASS_WARNING_UNCHECKED | POLYMASS_WARNING_NON_MANIFOLD;
+    CHECK(p->struct_size == sizeof *p, status, context);
+    /* Every double of the struct, from volume to principal_axes. */
+    CHECK(all_finite(&p->volume,
+                     (sizeof *p - offsetof(polymass_mass_properties, volume)) / sizeof(double)),
+          status, context);
+    CHECK(p->volume > 0.0, status, context);
+    CHECK(p->mass > 0.0 && p->density > 0.0, status, context);
+    CHECK(p->surface_area > 0.0, status, context);
+    CHECK(p->principal_moments[0] <= p->principal_moments[1] &&
+              p->principal_moments[1] <= p->principal_moments[2],
+          status, context);
+    check_rotation(p->principal_axes, status, context);
+
+    CHECK((p->warnings & ~known) == 0, status, context);
+    CHECK(!!(p->warnings & POLYMASS_WARNING_UNCHECKED) ==
+              !!(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS),
+          status, context);
+    if (p->warnings & POLYMASS_WARNING_INVERTED)
+        CHECK(flags & POLYMASS_OPTION_ACCEPT_INVERTED, status, context);
+    if (p->warnings & POLYMASS_WARNING_NON_MANIFOLD)
+        CHECK(flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, status, context);
+
+    if (!mass)
+        CHECK(p->density == 1.0, status, context);
+    else if (mass->mass_mode == POLYMASS_MASS_FROM_DENSITY)
+        CHECK(p->density == mass->density, status, context);
+    else
+        /* mass = (mass / volume) * volume: a few roundings, or the density's
+           last place when it is subnormal. */
+        CHECK(fabs(p->mass - mass->mass) <=
+                  1e-12 * mass->mass + 4.0 * p->volume * 4.9406564584124654e-324,
+              status, context);
+}
+
+static void check_polygon(const polymass_polygon_properties* q, int32_t status,
+                          const polymass_context* context) {
+    const double half_pi = 1.5707963267948966;
+    CHECK(q->struct_size == sizeof *q, status, context);
+    CHECK(q->orientation == POLYMASS_COUNTER_CLOCKWISE || q->orientation == POLYMASS_CLOCKWISE,
+          status, context);
+    CHECK(all_finite(&q->area,
+                     (sizeof *q - offsetof(polymass_polygon_properties, area)) / sizeof(double)),
+          status, context);
+    CHECK(q->area > 0.0, status, context);
+    CHECK(q->principal_moments[0] <= q->principal_moments[1], status, context);
+    CHECK(q->principal_angle > -half_pi - 1e-12 && q->principal_angle <= half_pi + 1e-12, status,
+          context);
+}
+
+static void print_doubles(const char* name, const double* values, size_t count) {
+    size_t i;
+    fprintf(stderr, "  %s", name);
+    for (i = 0; i < count; ++i) fprintf(stderr, " %.17g", values[i]);
+    fprintf(stderr, "\n");
+}
+
+static void print_properties(const polymass_mass_properties* p) {
+    fprintf(stderr, "  warnings 0x%x\n", (unsigned)p->warnings);
+    print_doubles("volume mass density surface_area", &p->volume, 4);
+    print_doubles("center_of_mass", p->center_of_mass, 3);
+    print_doubles("inertia", p->inertia, 9);
+    print_doubles("inertia_origin", p->inertia_origin, 9);
+    print_doubles("inertia_point", p->inertia_point, 9);
+    print_doubles("principal_moments", p->principal_moments, 3);
+    print_doubles("principal_axes", p->principal_axes, 9);
+}
+
+static void print_polygon(const polymass_polygon_properties* q) {
+    fprintf(stderr, "  orientation %d\n", (int)q->orientation);
+    print_doubles("area", &q->area, 1);
+    print_doubles("centroid", q->centroid, 2);
+    print_doubles("second_moments", q->second_moments, 3);
+    print_doubles("second_moments_origin", q->second_moments_origin, 3);
+    print_doubles("polar_moment", &q->polar_moment, 1);
+    print_doubles("principal_moments", q->principal_moments, 2);
+    print_doubles("principal_angle", &q->principal_angle, 1);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Buffers exactly as large as claimed, optionally at an odd address        */
+/* ------------------------------------------------------------------------ */
+
+typedef struct buffer {
+    uint8_t* block; /* what malloc returned */
+    uint8_t* data;  /* block, or block + 1 */
+} buffer;
+
+static uint8_t* buffer_make(buffer* b, size_t size, int odd) {
+    const size_t total = size + (size_t)odd;
+    b->block = (uint8_t*)malloc(total ? total : 1);
+    if (!b->block) abort();
+    /* The claimed array ends where the block ends: a read past it is a heap
+       overflow. */
+    b->data = b->block + odd;
+    return b->data;
+}
+
+static void put_index(uint8_t* indices, int index16, size_t position, uint64_t value) {
+    if (index16) {
+        const uint16_t v = (uint16_t)value;
+        memcpy(indices + 2 * position, &v, 2);
+    } else {
+        const uint32_t v = (uint32_t)value;
+        memcpy(indices + 4 * position, &v, 4);
+    }
+}
+
+/* ------------------------------------------------------------------------ */
+
+int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    reader r = {data, size, 0};
+    uint8_t header[HEADER_SIZE];
+    int float32, index16, with_face_sizes, stride_choice, adjust_count, packed_pairs, odd;
+    uint32_t flags;
+    size_t vertex_bytes, index_bytes, one_v, one_f, copies, one_i, total_v, total_f, base_i;
+    size_t index_count, c, i, positions_size;
+    uint64_t stride;
+    uint8_t one_sizes[256];
+    polymass_context* context = NULL;
+    polymass_options options, effective;
+    polymass_mass_desc mass_desc, *mass = NULL;
+    polymass_mesh_desc desc;
+    polymass_diagnostics report;
+    polymass_mass_properties p_mesh, p_compute, untouched;
+    polymass_polygon_properties q, q_untouched;
+    polymass_mesh* mesh;
+    buffer positions_buffer, indices_buffer;
+    uint8_t *positions, *indices, *one_positions, *one_indices;
+    uint32_t* face_sizes = NULL;
+    double* points;
+    size_t point_count;
+    uint64_t point_stride;
+    int32_t status_check, status_create, status_mesh_props = -1, status_compute, status_polygon;
+    char check_message[1024], create_message[1024];
+
+    if (verbose < 0) verbose = getenv("POLYMASS_FUZZ_VERBOSE") != NULL;
+
+    take(&r, header, sizeof header);
+    float32 = header[0] & 1;
+    index16 = (header[0] >> 1) & 1;
+    with_face_sizes = (header[0] >> 2) & 1;
+    stride_choice = (header[0] >> 3) & 3;
+    adjust_count = (header[0] >> 5) & 1;
+    packed_pairs = (header[0] >> 6) & 1;
+    odd = (header[0] >> 7) & 1;
+    flags = header[1] & 0x0Fu;
+    vertex_bytes = float32 ? 12 : 24;
+    index_bytes = index16 ? 2 : 4;
+    one_v = header[4];
+    one_f = header[5];
+    copies = (size_t)header[6] + 1;
+
+    /* One copy's face sizes and index count. */
+    one_i = 0;
+    for (i = 0; i < one_f; ++i) {
+        one_sizes[i] = with_face_sizes ? take_u8(&r) : 3;
+        one_i += one_sizes[i];
+    }
+    /* Fewer copies when the whole would be too large. */
+    while (copies > 1 &&
+           (copies * one_v > MAX_TOTAL_VERTICES || copies * one_i > MAX_TOTAL_INDICES))
+        --copies;
+    total_v = copies * one_v;
+    total_f = copies * one_f;
+    base_i = copies * one_i;
+    index_count = base_i;
+    if (adjust_count) {
+        const int delta = (int8_t)header[7];
+        if (delta >= 0)
+            index_count = base_i + (size_t)delta;
+        else
+            index_count = (size_t)-delta > base_i ? 0 : base_i - (size_t)-delta;
+    }
+
+    /* The stride the description claims, and the position array it implies:
+       (V - 1) * stride + one vertex, exactly. */
+    switch (stride_choice) {
+        case 0:
+            stride = 0;
+            break;
+        case 1:
+            stride = vertex_bytes;
+            break;
+        case 2:
+            stride = vertex_bytes + 8;
+            break;
+        default:
+            stride = vertex_bytes - 4; /* invalid: smaller than a vertex */
+            break;
+    }
+    {
+        const size_t step = stride >= vertex_bytes ? (size_t)stride : vertex_bytes;
+        positions_size = total_v ? (total_v - 1) * step + vertex_bytes : 0;
+        positions = buffer_make(&positions_buffer, positions_size, odd);
+        memset(positions, 0, positions_size);
+        one_positions = (uint8_t*)malloc(one_v * vertex_bytes + 1);
+        if (!one_positions) abort();
+        take(&r, one_positions, one_v * vertex_bytes);
+        for (c = 0; c < copies; ++c)
+            for (i = 0; i < one_v; ++i)
+                memcpy(positions + (c * one_v + i) * step, one_positions + i * vertex_bytes,
+                       vertex_bytes);
+        free(one_positions);
+    }
+
+    /* Indices: the copies, then zeros up to index_count. */
+    indices = buffer_make(&indices_buffer, index_count * index_bytes, odd);
+    memset(indices, 0, index_count * index_bytes);
+    one_indices = (uint8_t*)malloc(one_i * index_bytes + 1);
+    if (!one_indices) abort();
+    take(&r, one_indices, one_i * index_bytes);
+    for (c = 0; c < copies; ++c)
+        for (i = 0; i < one_i && c * one_i + i < index_count; ++i) {
+            uint64_t value;
+            if (index16) {
+                uint16_t v;
+                memcpy(&v, one_indices + 2 * i, 2);
+                value = v;
+            } else {
+                uint32_t v;
+                memcpy(&v, one_indices + 4 * i, 4);
+                value = v;
+            }
+            put_index(indices, index16, c * one_i + i, value + (uint64_t)c * one_v);
+        }
+    free(one_indices);
+
+    if (with_face_sizes) {
+        face_sizes = (uint32_t*)malloc(total_f ? total_f * sizeof *face_sizes : sizeof *face_sizes);
+        if (!face_sizes) abort();
+        for (c = 0; c < copies; ++c)
+            for (i = 0; i < one_f; ++i) face_sizes[c * one_f + i] = one_sizes[i];
+    }
+
+    memset(&desc, 0, sizeof desc);
+    desc.struct_size = sizeof desc;
+    desc.position_type = float32 ? POLYMASS_POSITION_FLOAT32 : POLYMASS_POSITION_FLOAT64;
+    desc.positions = positions;
+    desc.vertex_count = total_v;
+    desc.position_stride = stride;
+    desc.index_type = index16 ? POLYMASS_INDEX_UINT16 : POLYMASS_INDEX_UINT32;
+    desc.indices = indices;
+    desc.index_count = index_count;
+    desc.face_sizes = face_sizes;
+    desc.face_count = with_face_sizes ? total_f : 0;
+
+    switch (header[3] & 3) {
+        case 0:
+            mass = NULL;
+            break;
+        default:
+            memset(&mass_desc, 0, sizeof mass_desc);
+            mass_desc.struct_size = sizeof mass_desc;
+            mass_desc.mass_mode = (header[3] & 3) == 1   ? POLYMASS_MASS_FROM_DENSITY
+                                  : (header[3] & 3) == 2 ? POLYMASS_MASS_FROM_TOTAL
+                                                         : 2u + (header[3] >> 2);
+            memcpy(&mass_desc.density, header + 8, 8);
+            memcpy(&mass_desc.mass, header + 8, 8);
+            memcpy(mass_desc.point, header + 16, 24);
+            mass = &mass_desc;
+            break;
+    }
+
+    if (verbose)
+        fprintf(stderr,
+                "fuzz_mesh: %s positions, %s indices, vertex_count %llu, stride %llu, "
+                "index_count %llu, face_sizes %s, face_count %llu (copies %zu), flags 0x%x, "
+                "tolerance %g, mass mode %s %g, point (%g, %g, %g)\n",
+                float32 ? "float32" : "float64", index16 ? "uint16" : "uint32",
+                (unsigned long long)total_v, (unsigned long long)stride,
+                (unsigned long long)index_count, with_face_sizes ? "given" : "NULL",
+                (unsigned long long)desc.face_count, copies, (unsigned)flags,
+                tolerances[header[2] % 8],
+                !mass                                           ? "NULL"
+                : mass->mass_mode == POLYMASS_MASS_FROM_DENSITY ? "density"
+                : mass->mass_mode == POLYMASS_MASS_FROM_TOTAL   ? "total"
+                                                                : "unknown",
+                mass ? mass->density : 0.0, mass ? mass->point[0] : 0.0,
+                mass ? mass->point[1] : 0.0, mass ? mass->point[2] : 0.0);
+
+    /* --- context and options -------------------------------------------- */
+    current_call = "polymass_context_create";
+    CHECK(polymass_context_create(&context, NULL) == POLYMASS_OK && context, -1, NULL);
+    memset(&options, 0, sizeof options);
+    options.struct_size = sizeof options;
+    options.flags = flags;
+    options.planarity_tolerance = tolerances[header[2] % 8];
+    current_call = "polymass_context_set_options";
+    {
+        const int32_t status = polymass_context_set_options(context, &options);
+        check_status_and_message(status, context);
+        CHECK(status == (options.planarity_tolerance < 1.0 ? POLYMASS_OK
+                                                           : POLYMASS_ERROR_INVALID_ARGUMENT),
+              status, context);
+    }
+    memset(&effective, 0, sizeof effective);
+    effective.struct_size = sizeof effective;
+    current_call = "polymass_context_get_options";
+    CHECK(polymass_context_get_options(&effective, context) == POLYMASS_OK, -1, context);
+    CHECK(effective.planarity_tolerance > 0.0 && effective.planarity_tolerance < 1.0, -1, context);
+    flags = effective.flags;
+
+    /* --- polymass_mesh_check --------------------------------------------- */
+    current_call = "polymass_mesh_check";
+    memset(&report, 0xA5, sizeof report);
+    report.struct_size = sizeof report;
+    status_check = polymass_mesh_check(&report, context, &desc);
+    CHECK(is_mesh_status(status_check), status_check, context);
+    snprintf(check_message, sizeof check_message, "%s", polymass_context_message(context));
+    if (verbose)
+        fprintf(stderr,
+                "fuzz_mesh: check %d (%s)\n  report: faces %llu, used vertices %llu, edges %llu, "
+                "degenerate faces %llu, max non-planarity %.17g, signed volume %.17g\n",
+                (int)status_check, check_message, (unsigned long long)report.face_count,
+                (unsigned long long)report.used_vertex_count, (unsigned long long)report.edge_count,
+                (unsigned long long)report.degenerate_faces, report.max_non_planarity,
+                report.signed_volume);
+    check_status_and_message(status_check, context);
+    check_report(&report, status_check, total_v, context);
+
+    /* --- polymass_mesh_create + polymass_mesh_mass_properties ------------ */
+    current_call = "polymass_mesh_create";
+    mesh = (polymass_mesh*)&mesh; /* garbage: must become NULL on failure */
+    status_create = polymass_mesh_create(&mesh, context, &desc);
+    CHECK(is_mesh_status(status_create), status_create, context);
+    check_status_and_message(status_create, context);
+    snprintf(create_message, sizeof create_message, "%s", polymass_context_message(context));
+    if (verbose) fprintf(stderr, "fuzz_mesh: create %d (%s)\n", (int)status_create, create_message);
+    /* polymass_mesh_check returns what polymass_mesh_create would with the
+       topology checks on, with the same message. */
+    if (!(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS)) {
+        CHECK(status_check == status_create, status_create, context);
+        CHECK(strcmp(check_message, create_message) == 0, status_create, context);
+    }
+    if (status_create != POLYMASS_OK) {
+        CHECK(mesh == NULL, status_create, context);
+    } else {
+        CHECK(mesh != NULL && mesh != (polymass_mesh*)&mesh, status_create, context);
+        current_call = "polymass_mesh_mass_properties";
+        memset(&p_mesh, 0xA5, sizeof p_mesh);
+        p_mesh.struct_size = sizeof p_mesh;
+        untouched = p_mesh;
+        status_mesh_props = polymass_mesh_mass_properties(&p_mesh, context, mesh, mass);
+        check_status_and_message(status_mesh_props, context);
+        CHECK(status_mesh_props == POLYMASS_OK ||
+                  status_mesh_props == POLYMASS_ERROR_INVALID_ARGUMENT ||
+                  status_mesh_props == POLYMASS_ERROR_OUT_OF_MEMORY ||
+                  status_mesh_props == POLYMASS_ERROR_OVERFLOW,
+              status_mesh_props, context);
+        if (verbose && status_mesh_props == POLYMASS_OK) print_properties(&p_mesh);
+        if (status_mesh_props == POLYMASS_OK)
+            check_properties(&p_mesh, flags, mass, status_mesh_props, context);
+        else
+            CHECK(memcmp(&p_mesh, &untouched, sizeof p_mesh) == 0, status_mesh_props, context);
+        if (verbose)
+            fprintf(stderr, "fuzz_mesh: mesh_mass_properties %d (%s)\n", (int)status_mesh_props,
+                    polymass_context_message(context));
+        polymass_mesh_destroy(mesh);
+    }
+
+    /* --- polymass_mass_properties_compute: create + mass_properties ------ */
+    current_call = "polymass_mass_properties_compute";
+    memset(&p_compute, 0xA5, sizeof p_compute);
+    p_compute.struct_size = sizeof p_compute;
+    untouched = p_compute;
+    status_compute = polymass_mass_properties_compute(&p_compute, context, &desc, mass);
+    CHECK(is_mesh_status(status_compute), status_compute, context);
+    check_status_and_message(status_compute, context);
+    if (verbose)
+        fprintf(stderr, "fuzz_mesh: compute %d (%s)\n", (int)status_compute,
+                polymass_context_message(context));
+    if (status_create != POLYMASS_OK) {
+        CHECK(status_compute == status_create, status_compute, context);
+        CHECK(strcmp(create_message, polymass_context_message(context)) == 0, status_compute,
+              context);
+    } else {
+        CHECK(status_compute == status_mesh_props, status_compute, context);
+    }
+    if (status_compute == POLYMASS_OK) {
+        check_properties(&p_compute, flags, mass, status_compute, context);
+        CHECK(memcmp(&p_compute, &p_mesh, sizeof p_compute) == 0, status_compute, context);
+    } else {
+        CHECK(memcmp(&p_compute, &untouched, sizeof p_compute) == 0, status_compute, context);
+    }
+
+    /* --- polymass_polygon_compute on the coordinates as 2D points ---------- */
+    if (!float32 && !packed_pairs) {
+        /* x, y of each vertex, read in place from the position array, at its
+           (possibly odd) address and with the mesh's stride (or 20 bytes when
+           that stride was the invalid one: still a whole point). */
+        points = NULL;
+        point_count = total_v;
+        point_stride = stride ? stride : vertex_bytes;
+    } else {
+        /* Every coordinate, as consecutive (x, y) pairs of doubles. */
+        const size_t step = stride >= vertex_bytes ? (size_t)stride : vertex_bytes;
+        size_t k, n = 0;
+        point_count = 3 * total_v / 2;
+        points = (double*)malloc(point_count ? 2 * point_count * sizeof(double) : 1);
+        if (!points) abort();
+        for (i = 0; i < total_v && n < 2 * point_count; ++i)
+            for (k = 0; k < 3 && n < 2 * point_count; ++k) {
+                if (float32) {
+                    float f;
+                    memcpy(&f, positions + i * step + 4 * k, 4);
+                    points[n++] = (double)f;
+                } else {
+                    memcpy(&points[n++], positions + i * step + 8 * k, 8);
+                }
+            }
+        point_stride = 0;
+    }
+    current_call = "polymass_polygon_compute";
+    memset(&q, 0xA5, sizeof q);
+    q.struct_size = sizeof q;
+    q_untouched = q;
+    status_polygon = polymass_polygon_compute(
+        &q, context, points ? points : (const double*)(const void*)positions, point_count,
+        point_stride);
+    CHECK(is_polygon_status(status_polygon), status_polygon, context);
+    check_status_and_message(status_polygon, context);
+    if (verbose)
+        fprintf(stderr, "fuzz_mesh: polygon %d (%s)\n", (int)status_polygon,
+                polymass_context_message(context));
+    if (verbose && status_polygon == POLYMASS_OK) print_polygon(&q);
+    if (verbose) {
+        const uint8_t* base = points ? (const uint8_t*)points : positions;
+        const uint64_t step = point_stride ? point_stride : 16;
+        for (i = 0; i < point_count && i < 64; ++i) {
+            double xy[2];
+            memcpy(xy, base + i * step, sizeof xy);
+            fprintf(stderr, "  point %zu: %.17g %.17g\n", i, xy[0], xy[1]);
+        }
+    }
+    if (status_polygon == POLYMASS_OK)
+        check_polygon(&q, status_polygon, context);
+    else
+        CHECK(memcmp(&q, &q_untouched, sizeof q) == 0, status_polygon, context);
+    if (point_count < 3)
+        CHECK(status_polygon == POLYMASS_ERROR_FACE_TOO_SMALL, status_polygon, context);
+
+    polymass_context_destroy(context);
+    free(points);
+    free(face_sizes);
+    free(indices_buffer.block);
+    free(positions_buffer.block);
+    return 0;
+}

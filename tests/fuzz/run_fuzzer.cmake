@@ -1,0 +1,78 @@
+# Runs a libFuzzer target for a bounded, reproducible time (ctest fuzz.*).
+#
+#   cmake -DFUZZER=<exe> -DSEEDS=<dir> [-DREGRESSIONS=<dir>] -DWORK_DIR=<dir>
+#         -DRUNS=<n> -DMAX_TIME=<s> -P run_fuzzer.cmake
+#
+# 1. Every file in REGRESSIONS (inputs that once crashed) is run once; the
+#    test stops there if one fails, and names it.
+# 2. The seeds are copied to WORK_DIR/corpus, and the fuzzer runs there with a
+#    fixed seed for RUNS executions (at most MAX_TIME seconds): what it adds to
+#    the corpus, and any crash-*/leak-*/timeout-* file, stays in WORK_DIR.
+#    Without address randomisation (below) runs stay alike.
+foreach(var FUZZER SEEDS WORK_DIR RUNS MAX_TIME)
+    if(NOT DEFINED ${var})
+        message(FATAL_ERROR "run_fuzzer.cmake: ${var} is not set")
+    endif()
+endforeach()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR}/corpus)
+file(GLOB seeds LIST_DIRECTORIES false ${SEEDS}/*)
+if(NOT seeds)
+    message(FATAL_ERROR "no seed inputs in ${SEEDS}")
+endif()
+file(COPY ${seeds} DESTINATION ${WORK_DIR}/corpus)
+
+set(common_options -rss_limit_mb=2048 -timeout=10 -artifact_prefix=${WORK_DIR}/)
+
+# The library compares addresses (its array bounds checks) and libFuzzer feeds
+# compared values back into its mutations, so with address space layout
+# randomisation two runs of one seed soon part ways. setarch -R (util-linux)
+# turns it off for the fuzzer, where the system allows it, so that runs stay alike.
+set(launcher)
+find_program(SETARCH setarch)
+if(SETARCH)
+    execute_process(COMMAND ${SETARCH} -R true RESULT_VARIABLE result OUTPUT_QUIET ERROR_QUIET)
+    if(result EQUAL 0)
+        set(launcher ${SETARCH} -R)
+    endif()
+endif()
+if(NOT launcher)
+    message(STATUS "setarch -R is not available: runs of one seed will differ")
+endif()
+
+if(DEFINED REGRESSIONS AND IS_DIRECTORY ${REGRESSIONS})
+    file(GLOB regressions LIST_DIRECTORIES false ${REGRESSIONS}/*)
+    list(FILTER regressions EXCLUDE REGEX "/README[^/]*$")
+    set(failed)
+    foreach(input IN LISTS regressions)
+        execute_process(COMMAND ${launcher} ${FUZZER} ${common_options} ${input}
+            WORKING_DIRECTORY ${WORK_DIR}
+            RESULT_VARIABLE result)
+        if(NOT result EQUAL 0)
+            list(APPEND failed ${input})
+        endif()
+    endforeach()
+    list(LENGTH regressions count)
+    if(failed)
+        list(JOIN failed "\n  " failed_list)
+        message(FATAL_ERROR "regression input(s) that fail (see above):\n  ${failed_list}\n"
+                            "look at one: POLYMASS_FUZZ_VERBOSE=1 ${FUZZER} <input>")
+    endif()
+    message(STATUS "${count} regression input(s) from ${REGRESSIONS}: all pass")
+endif()
+
+message(STATUS "fuzzing: ${RUNS} runs, seed 1, at most ${MAX_TIME} s, corpus ${WORK_DIR}/corpus")
+execute_process(
+    COMMAND ${launcher} ${FUZZER} ${common_options}
+        -seed=1 -runs=${RUNS} -max_total_time=${MAX_TIME} -max_len=8192
+        -print_final_stats=1
+        ${WORK_DIR}/corpus
+    WORKING_DIRECTORY ${WORK_DIR}
+    RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+    file(GLOB artifacts ${WORK_DIR}/crash-* ${WORK_DIR}/leak-* ${WORK_DIR}/timeout-*
+         ${WORK_DIR}/oom-*)
+    message(FATAL_ERROR "the fuzzer failed (exit ${result}); input(s): ${artifacts}\n"
+                        "reproduce: ${FUZZER} <input>  (POLYMASS_FUZZ_VERBOSE=1 decodes it)")
+endif()
