@@ -111,9 +111,9 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
 
     if (integration.encloses_no_volume)
         return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
-                             "the surface encloses no volume: signed volume %.3g is at rounding "
-                             "level for its area %.3g and size %.3g",
-                             integration.integrals.volume, integration.surface_area,
+                             "the surface encloses no volume: its signed volume is at rounding "
+                             "level for its area and its size %.3g (a flat or double-sided "
+                             "surface)",
                              scan.diagonal());
     const core::VolumeIntegrals& integrals = integration.integrals;
     if (!(std::isfinite(integration.surface_area) && std::isfinite(integrals.volume) &&

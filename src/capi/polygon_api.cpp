@@ -71,9 +71,9 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
             core::planar_polygon(std::size_t(point_count), point_at);
         if (polygon.zero_area)
             return context->fail(POLYMASS_ERROR_ZERO_AREA,
-                                 "the polygon encloses no area (signed area %.3g is at rounding "
-                                 "level for its size)",
-                                 polygon.orientation * polygon.area);
+                                 "the polygon encloses no area: its signed area is at rounding "
+                                 "level for its size and number of points (%llu)",
+                                 u64(point_count));
 
         polymass_polygon_properties result{};
         result.struct_size = sizeof result;

@@ -120,7 +120,7 @@ public:
         result_.encloses_no_volume =
             std::abs(in_units.volume) <= slack * result_.surface_area * (settings_.size / unit);
         result_.integrals = in_units.scaled(unit);
-        result_.surface_area *= unit * unit;
+        result_.surface_area = times_unit_power(result_.surface_area, unit, 2);
         return result_;
     }
 

@@ -23,11 +23,14 @@ namespace polymass::core {
 struct ProjectionIntegrals {
     double one = 0, a = 0, b = 0, aa = 0, ab = 0, bb = 0, aaa = 0, aab = 0, abb = 0, bbb = 0;
 
-    // The integrals of the polygon scaled by `length` (dimensions L² to L⁵).
-    ProjectionIntegrals scaled(double length) const {
-        const double l2 = length * length, l3 = l2 * length, l4 = l3 * length, l5 = l4 * length;
-        return {one * l2, a * l3,   b * l3,   aa * l4,  ab * l4,
-                bb * l4,  aaa * l5, aab * l5, abb * l5, bbb * l5};
+    // The integrals of the polygon measured in `unit` (a power of two;
+    // dimensions L² to L⁵) in the caller's unit.
+    ProjectionIntegrals scaled(double unit) const {
+        auto times = [unit](double value, int power) {
+            return times_unit_power(value, unit, power);
+        };
+        return {times(one, 2), times(a, 3),   times(b, 3),   times(aa, 4),  times(ab, 4),
+                times(bb, 4),  times(aaa, 5), times(aab, 5), times(abb, 5), times(bbb, 5)};
     }
 };
 

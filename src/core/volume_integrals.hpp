@@ -43,12 +43,9 @@ struct VolumeIntegrals {
 
     VolumeIntegrals negated() const { return {-volume, -first, -second, -products}; }
 
-    // The integrals of the solid scaled by `length` (dimensions L³, L⁴, L⁵).
-    VolumeIntegrals scaled(double length) const {
-        const double cube = length * length * length;
-        return {volume * cube, first * (cube * length), second * (cube * length * length),
-                products * (cube * length * length)};
-    }
+    // The integrals of the solid measured in `unit` (a power of two; dimensions
+    // L³, L⁴, L⁵) in the caller's unit.
+    VolumeIntegrals scaled(double unit) const;
 };
 
 // A power of two near `length`: coordinates divided by it keep every bit and
@@ -56,6 +53,20 @@ struct VolumeIntegrals {
 // coordinate) overflows or underflows for any mesh whose results fit.
 inline double unit_length_near(double length) {
     return length > 0 && std::isfinite(length) ? std::ldexp(1.0, std::ilogb(length)) : 1.0;
+}
+
+// value · unit^power for a power-of-two unit, exactly and with no
+// intermediate overflow (unit^5 alone may not fit where the product does).
+inline double times_unit_power(double value, double unit, int power) {
+    return std::ldexp(value, power * std::ilogb(unit));
+}
+
+inline VolumeIntegrals VolumeIntegrals::scaled(double unit) const {
+    auto times = [unit](int power) {
+        return [unit, power](double value) { return times_unit_power(value, unit, power); };
+    };
+    return {times_unit_power(volume, unit, 3), first.unaryExpr(times(4)),
+            second.unaryExpr(times(5)), products.unaryExpr(times(5))};
 }
 
 // Divergence theorem with F = (x, 0, 0), (x²/2, 0, 0), (x³/3, 0, 0), (x²y/2, 0, 0)
