@@ -1,0 +1,101 @@
+#include "mass_properties.hpp"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "core/principal_axes.hpp"
+#include "core/rigid_body.hpp"
+#include "struct_io.hpp"
+
+namespace polymass::capi {
+namespace {
+
+using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
+
+// A NULL mass description means unit density, inertia_point about the origin.
+int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass,
+                       polymass_mass_desc& out) {
+    out = {sizeof(polymass_mass_desc), POLYMASS_MASS_FROM_DENSITY, 1.0, 0.0, {0.0, 0.0, 0.0}};
+    if (!mass) return POLYMASS_OK;
+    if (const int32_t status = check_struct(context, mass, "mass")) return status;
+    const bool from_density = mass->mass_mode == POLYMASS_MASS_FROM_DENSITY;
+    if (!from_density && mass->mass_mode != POLYMASS_MASS_FROM_TOTAL)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "mass->mass_mode %u is not POLYMASS_MASS_FROM_DENSITY (0) or "
+                             "POLYMASS_MASS_FROM_TOTAL (1)",
+                             unsigned(mass->mass_mode));
+    const double value = from_density ? mass->density : mass->mass;
+    if (!(value > 0.0 && std::isfinite(value)))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "mass->%s is %g; it must be positive and finite",
+                             from_density ? "density" : "mass", value);
+    for (int axis = 0; axis < 3; ++axis)
+        if (!std::isfinite(mass->point[axis]))
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "mass->point[%d] is %g; it must be finite", axis,
+                                 mass->point[axis]);
+    out = *mass;
+    return POLYMASS_OK;
+}
+
+void copy_matrix(const Eigen::Matrix3d& matrix, double (&out)[9]) { RowMajor3d::Map(out) = matrix; }
+
+void copy_vector(const Eigen::Vector3d& vector, double (&out)[3]) {
+    Eigen::Vector3d::Map(out) = vector;
+}
+
+// Every value finite, and mass and moments not underflowed to zero or to
+// subnormal numbers (which keep too few digits).
+bool result_in_range(const polymass_mass_properties& p) {
+    const double scalars[] = {p.volume, p.mass, p.density, p.surface_area};
+    // By magnitude: an unchecked non-solid can have negative moments.
+    const double largest_moment =
+        Eigen::Map<const Eigen::Vector3d>(p.principal_moments).cwiseAbs().maxCoeff();
+    return all_finite(scalars) && p.mass >= DBL_MIN && p.density >= DBL_MIN &&
+           largest_moment >= DBL_MIN && all_finite(p.center_of_mass) && all_finite(p.inertia) &&
+           all_finite(p.inertia_origin) && all_finite(p.inertia_point) &&
+           all_finite(p.principal_moments) && all_finite(p.principal_axes);
+}
+
+}  // namespace
+
+int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
+                        const polymass_mesh& mesh, const polymass_mass_desc* mass) {
+    polymass_mass_desc body_desc;
+    if (const int32_t status = read_mass_desc(context, mass, body_desc)) return status;
+    const double density = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL
+                               ? body_desc.mass / mesh.integrals.volume
+                               : body_desc.density;
+    const core::RigidBody body = core::rigid_body(mesh.integrals, mesh.reference, density);
+    const core::PrincipalAxes principal = core::principal_axes(body.inertia);
+
+    polymass_mass_properties result{};
+    result.struct_size = sizeof result;
+    result.warnings = mesh.warnings;
+    result.volume = body.volume;
+    result.mass = body.mass;
+    result.density = body.density;
+    result.surface_area = mesh.surface_area;
+    copy_vector(body.center_of_mass, result.center_of_mass);
+    copy_matrix(body.inertia, result.inertia);
+    copy_matrix(core::inertia_about(body, Eigen::Vector3d::Zero()), result.inertia_origin);
+    copy_matrix(core::inertia_about(body, Eigen::Map<const Eigen::Vector3d>(body_desc.point)),
+                result.inertia_point);
+    copy_vector(principal.moments, result.principal_moments);
+    copy_matrix(principal.axes, result.principal_axes);
+    if (!(result_in_range(result)))
+        return context->fail(
+            POLYMASS_ERROR_OVERFLOW,
+            "the mass properties do not fit in a double (mass %g, density %g, "
+            "largest coordinate of the centre of mass or point %g): scale the "
+            "coordinates, the density or mass, or the point",
+            result.mass, result.density,
+            std::max(body.center_of_mass.cwiseAbs().maxCoeff(),
+                     Eigen::Map<const Eigen::Vector3d>(body_desc.point).cwiseAbs().maxCoeff()));
+    *out = result;
+    return POLYMASS_OK;
+}
+
+}  // namespace polymass::capi

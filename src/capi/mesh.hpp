@@ -1,0 +1,18 @@
+// The object behind polymass_mesh: a validated solid, kept as its integrals.
+#pragma once
+
+#include <polymass/polymass.h>
+
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "core/volume_integrals.hpp"
+
+// A solid: its integrals, not the caller's arrays.
+struct polymass_mesh {
+    polymass_allocator allocator;               // to free it with; the context may be gone by then
+    polymass::core::VolumeIntegrals integrals;  // about `reference`, outward-oriented
+    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+    double surface_area = 0.0;
+    uint32_t warnings = 0;
+};
