@@ -22,10 +22,14 @@ struct TriangleBatch {
     std::size_t size = 0;
 
     void add(std::size_t face, const Eigen::Vector3d (&vertices)[3]) {
-        for (int axis = 0; axis < 3; ++axis)
-            for (int vertex = 0; vertex < 3; ++vertex)
-                coordinates[axis][vertex][size] = vertices[vertex][axis];
-        faces[size++] = face;
+        const std::size_t slot = size++;
+        auto put = [&](int vertex) {
+            coordinates[0][vertex][slot] = vertices[vertex].x();
+            coordinates[1][vertex][slot] = vertices[vertex].y();
+            coordinates[2][vertex][slot] = vertices[vertex].z();
+        };
+        put(0), put(1), put(2);  // not a loop: GCC -O2 would keep its counter
+        faces[slot] = face;
     }
 
     // Empty slots of the last lane group become zero triangles, which add nothing.
