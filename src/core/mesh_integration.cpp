@@ -57,28 +57,36 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         for (int axis = 0; axis < 3; ++axis)
             for (int vertex = 0; vertex < 3; ++vertex)
                 load_lanes(p[axis][vertex], &batch.coordinates[axis][vertex][first]);
-        TriangleEdges<Lanes> edges(p);
-        Lanes twice_area_squared{}, e1_squared{}, e2_squared{};
+        const TriangleEdges<Lanes> edges(p);
+        add_unscaled_triangle_sums(sums, p, edges.delta);  // padding lanes add zero
+
+        // |δ| as m·|δ/m| with m its largest component, so that a sliver's δ
+        // does not underflow when squared.
+        Lanes largest{}, e1_squared{}, e2_squared{};
         for (int axis = 0; axis < 3; ++axis) {
-            twice_area_squared += edges.delta[axis] * edges.delta[axis];
+            const Lanes magnitude = edges.delta[axis] < 0 ? -edges.delta[axis] : edges.delta[axis];
+            largest = magnitude > largest ? magnitude : largest;
             e1_squared += edges.e1[axis] * edges.e1[axis];
             e2_squared += edges.e2[axis] * edges.e2[axis];
         }
-        const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+        const Lanes divisor = largest > 0 ? largest : Lanes{} + 1.0;
+        Lanes normalized_squared{};
+        for (int axis = 0; axis < 3; ++axis) {
+            const Lanes normalized = edges.delta[axis] / divisor;
+            normalized_squared += normalized * normalized;
+        }
         Lanes twice_area;
         for (int lane = 0; lane < lane_count; ++lane)
-            twice_area[lane] = std::sqrt(twice_area_squared[lane]);
-        // A degenerate triangle adds nothing, like a degenerate polygon; padding
-        // lanes are zero triangles and add nothing either.
-        const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
-        for (std::size_t lane = 0; lane < used; ++lane) {
-            if (!is_degenerate_face(twice_area[lane], extent_squared[lane])) continue;
-            result.degenerate_faces.record(batch.faces[first + lane]);
-            twice_area[lane] = 0.0;
-            for (Lanes& component : edges.delta) component[lane] = 0.0;
-        }
+            twice_area[lane] = largest[lane] * std::sqrt(normalized_squared[lane]);
         twice_areas += twice_area;
-        add_unscaled_triangle_sums(sums, p, edges.delta);
+
+        // A degenerate triangle is reported; its terms, at rounding level, stay:
+        // they are what keeps a closed surface's sum balanced.
+        const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+        const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
+        for (std::size_t lane = 0; lane < used; ++lane)
+            if (is_degenerate_face(twice_area[lane], extent_squared[lane]))
+                result.degenerate_faces.record(batch.faces[first + lane]);
     }
     result.surface_area += sum_lanes(twice_areas) / 2.0;
     UnscaledTriangleSums<double> reduced;
@@ -103,7 +111,9 @@ public:
     template <class VertexAt>
     void add_polygon(std::size_t face, std::size_t count, VertexAt&& vertex_at) {
         const FacePlane plane = face_plane(count, vertex_at);
+        result_.surface_area += plane.area;
         if (plane.degenerate) {
+            // No normal to project along; its terms would be at rounding level.
             result_.degenerate_faces.record(face);
             return;
         }
@@ -113,7 +123,6 @@ public:
             if (relative > settings_.planarity_tolerance) result_.non_planar_faces.record(face);
         }
         total_ += polygon_face_sums(plane, count, vertex_at);
-        result_.surface_area += plane.area;
     }
 
     IntegrationResult finish() {

@@ -271,6 +271,43 @@ static void print_doubles(const char* name, const double* values, size_t count) 
     fprintf(stderr, "\n");
 }
 
+/* The decoded mesh, for POLYMASS_FUZZ_VERBOSE: positions in %a, exactly. */
+static void print_mesh(const polymass_mesh_desc* d) {
+    const size_t element = d->position_type == POLYMASS_POSITION_FLOAT32 ? 4 : 8;
+    const size_t stride = d->position_stride ? (size_t)d->position_stride : 3 * element;
+    uint64_t i;
+    int k;
+    for (i = 0; i < d->vertex_count; ++i) {
+        fprintf(stderr, "  v%llu", (unsigned long long)i);
+        for (k = 0; k < 3; ++k) {
+            const unsigned char* at = (const unsigned char*)d->positions + i * stride + k * element;
+            double value;
+            if (element == 4) {
+                float f;
+                memcpy(&f, at, 4);
+                value = f;
+            } else {
+                memcpy(&value, at, 8);
+            }
+            fprintf(stderr, " %a", value);
+        }
+        fprintf(stderr, "\n");
+    }
+    fprintf(stderr, "  indices");
+    for (i = 0; i < d->index_count; ++i) {
+        uint32_t index;
+        if (d->index_type == POLYMASS_INDEX_UINT16) {
+            uint16_t small;
+            memcpy(&small, (const unsigned char*)d->indices + 2 * i, 2);
+            index = small;
+        } else {
+            memcpy(&index, (const unsigned char*)d->indices + 4 * i, 4);
+        }
+        fprintf(stderr, " %u", (unsigned)index);
+    }
+    fprintf(stderr, "\n");
+}
+
 static void print_properties(const polymass_mass_properties* p) {
     fprintf(stderr, "  warnings 0x%x\n", (unsigned)p->warnings);
     print_doubles("volume mass density surface_area", &p->volume, 4);
@@ -496,6 +533,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                                                 : "unknown",
                 mass ? mass->density : 0.0, mass ? mass->point[0] : 0.0,
                 mass ? mass->point[1] : 0.0, mass ? mass->point[2] : 0.0);
+    if (verbose) print_mesh(&desc);
 
     /* --- context and options -------------------------------------------- */
     current_call = "polymass_context_create";
