@@ -261,7 +261,7 @@ typedef struct polymass_diagnostics {
     uint64_t first_out_of_range_face;
     uint64_t small_faces; /* fewer than 3 vertices */
     uint64_t first_small_face;
-    uint64_t degenerate_faces; /* zero area: legal, they add nothing */
+    uint64_t degenerate_faces; /* zero area: legal, harmless */
     uint64_t first_degenerate_face;
     uint64_t open_edges; /* used by one face */
     uint64_t first_open_edge[2];

@@ -80,7 +80,7 @@ inline VolumeIntegrals volume_integrals_from(const FaceSums& sums) {
 namespace polymass::core {
 
 // A face whose area is at rounding level for its extent has no orientation to
-// speak of; it adds nothing to the integrals and is reported as degenerate.
+// speak of: it is reported as degenerate, and its terms are at rounding level.
 // twice_area is |E1 × E2| (or the Newell vector's length); extent_squared
 // bounds |E1|·|E2| from above.
 inline bool is_degenerate_face(double twice_area, double extent_squared) {
