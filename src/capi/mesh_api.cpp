@@ -22,7 +22,7 @@ int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc, po
     const core::IntegrationResult& integration = *analysis.integration;
     mesh.integrals = (warnings & POLYMASS_WARNING_INVERTED) ? integration.integrals.negated()
                                                             : integration.integrals;
-    mesh.reference = analysis.reference;
+    mesh.reference = analysis.scan.reference_point();
     mesh.surface_area = integration.surface_area;
     mesh.warnings = warnings;
     return POLYMASS_OK;

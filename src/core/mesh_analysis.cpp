@@ -28,11 +28,9 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
             return analysis;
     }
 
-    analysis.reference = scan.reference_point();
     IntegrationSettings integration;
-    integration.reference = analysis.reference;
+    integration.reference = scan.reference_point();
     integration.size = scan.diagonal();
-    integration.unit_length = unit_length_near(integration.size);
     integration.check_planarity = settings.check_topology;
     integration.planarity_tolerance = settings.planarity_tolerance;
     analysis.integration = integrate_mesh(mesh, integration);

@@ -26,8 +26,7 @@ struct MeshAnalysis {
     MeshScan scan;
     std::size_t used_vertex_count = 0;             // after welding
     std::optional<TopologyReport> topology;        // when checked
-    std::optional<IntegrationResult> integration;  // when the faces could be integrated
-    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+    std::optional<IntegrationResult> integration;  // about scan.reference_point()
 
     explicit MeshAnalysis(MeshScan scanned) : scan(std::move(scanned)) {}
 };

@@ -43,7 +43,7 @@ struct TriangleBatch {
 struct BatchResult {
     FaceSums sums;
     double surface_area = 0.0;
-    FaceFinding degenerate_faces;
+    Finding degenerate_faces;
 };
 
 // Built for baseline x86-64 and for x86-64-v3 (AVX2, FMA); the loader picks
@@ -101,7 +101,11 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
 
 class Integrator {
 public:
-    explicit Integrator(const IntegrationSettings& settings) : settings_(settings) {}
+    explicit Integrator(const IntegrationSettings& settings)
+        : settings_(settings), unit_(unit_length_near(settings.size)) {}
+
+    // Coordinates relative to the reference point are divided by this.
+    double unit() const { return unit_; }
 
     void add_triangle(std::size_t face, const Eigen::Vector3d (&vertices)[3]) {
         batch_.add(face, vertices);
@@ -127,7 +131,7 @@ public:
 
     IntegrationResult finish() {
         flush_triangles();
-        const double unit = settings_.unit_length;
+        const double unit = unit_;
         const VolumeIntegrals in_units = volume_integrals_from(total_);
         constexpr double slack = 1024.0 * 2.220446049250313e-16;
         result_.encloses_no_volume =
@@ -149,6 +153,7 @@ private:
     }
 
     const IntegrationSettings& settings_;
+    const double unit_;  // a power of two near the mesh size
     TriangleBatch batch_;
     FaceSums total_;
     IntegrationResult result_;
@@ -161,7 +166,7 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
                                  const IntegrationSettings& settings) {
     Integrator integrator(settings);
     const Eigen::Vector3d reference = settings.reference;
-    const double inverse_unit = 1.0 / settings.unit_length;  // a power of two: exact
+    const double inverse_unit = 1.0 / integrator.unit();  // a power of two: exact
     auto vertex = [&](std::size_t position) {
         return Eigen::Vector3d((mesh.positions[mesh.indices[position]] - reference) * inverse_unit);
     };

@@ -3,9 +3,9 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <cmath>
 #include <cstddef>
 
+#include "findings.hpp"
 #include "mesh_view.hpp"
 #include "volume_integrals.hpp"
 
@@ -13,31 +13,16 @@ namespace polymass::core {
 
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
-    double unit_length = 1.0;  // in this unit (unit_length_near the mesh size)
-    double size = 0.0;         // the mesh's bounding-box diagonal
+    double size = 0.0;  // the mesh's bounding-box diagonal: sets the integration unit
     bool check_planarity = true;
     double planarity_tolerance = 1e-6;  // off-plane distance / face diameter
-};
-
-struct FaceFinding {
-    std::size_t count = 0;
-    std::size_t first = 0;  // the lowest face index, when count > 0
-
-    void record(std::size_t face) {
-        if (count++ == 0 || face < first) first = face;
-    }
-
-    void merge(const FaceFinding& other) {
-        if (other.count > 0 && (count == 0 || other.first < first)) first = other.first;
-        count += other.count;
-    }
 };
 
 struct IntegrationResult {
     VolumeIntegrals integrals;  // about settings.reference
     double surface_area = 0.0;
-    FaceFinding degenerate_faces;
-    FaceFinding non_planar_faces;
+    Finding degenerate_faces;
+    Finding non_planar_faces;
     double max_non_planarity = 0.0;  // relative to the face's diameter
     // The signed volume is at rounding level: each face's term carries an
     // error of order ε·area·size, so a surface of area A and size L (bounding

@@ -31,7 +31,7 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
         ++scan.used_vertex_count;
         const Eigen::Vector3d p = mesh.positions[vertex];
         if (!p.allFinite()) {
-            if (scan.non_finite.count++ == 0) scan.non_finite.first = vertex;
+            scan.non_finite.record(vertex);
             continue;
         }
         scan.bounds.extend(p);

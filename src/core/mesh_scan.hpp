@@ -8,21 +8,16 @@
 #include <memory_resource>
 #include <vector>
 
-#include "mesh_integration.hpp"
+#include "findings.hpp"
 #include "mesh_view.hpp"
 
 namespace polymass::core {
 
-struct VertexFinding {
-    std::size_t count = 0;
-    std::size_t first = 0;  // vertex index, when count > 0
-};
-
 struct MeshScan {
     std::size_t out_of_range_indices = 0;
-    FaceFinding out_of_range_faces;              // faces with an index past the vertex array
+    Finding out_of_range_faces;                  // faces with an index past the vertex array
     std::uint32_t first_out_of_range_index = 0;  // its value, in out_of_range_faces.first
-    VertexFinding non_finite;                    // used vertices with a NaN or infinite coordinate
+    Finding non_finite;                          // used vertices with a NaN or infinite coordinate
     std::size_t used_vertex_count = 0;
     Eigen::AlignedBox3d bounds;            // of the used, finite vertices
     std::pmr::vector<std::uint64_t> used;  // bit v: vertex v is used by a face
