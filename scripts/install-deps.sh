@@ -14,7 +14,9 @@ packages=(
     clang libclang-rt-14-dev               # fuzz preset: clang, libFuzzer + sanitizer runtimes
     abigail-tools binutils                 # ABI gate (abidw, abidiff), nm, readelf
     dpkg-dev file                          # CPack DEB: dpkg-shlibdeps, shlibs
-    python3
+    python3 python3-venv                   # Python binding: a venv with cffi, pytest from PyPI
+    libclang-dev                           # Rust binding: bindgen's libclang
+    libassimp-dev                          # the polymass CLI's mesh file readers
     "$@"
 )
 

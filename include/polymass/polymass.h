@@ -159,8 +159,9 @@ typedef struct polymass_allocator {
 /* Accept an inverted solid: report it with POLYMASS_WARNING_INVERTED and the
    properties of the solid with its faces turned the right way. */
 #define POLYMASS_OPTION_ACCEPT_INVERTED (1u << 1)
-/* Treat vertices at exactly equal positions as one (STL-style triangle soups)
-   for the topology checks. The integrals do not depend on it. */
+/* Treat vertices at the same position as one (STL-style triangle soups) for
+   the topology checks: exactly equal positions, or within
+   polymass_options.weld_tolerance. The integrals do not depend on it. */
 #define POLYMASS_OPTION_WELD_VERTICES (1u << 2)
 /* Accept edges shared by more than two faces when they are traversed as often
    in one direction as in the other (two solids touching along an edge). */
@@ -168,6 +169,9 @@ typedef struct polymass_allocator {
 
 /* Default of polymass_options.planarity_tolerance. */
 #define POLYMASS_DEFAULT_PLANARITY_TOLERANCE 1e-6
+/* Largest polymass_options.weld_tolerance: a coarser weld would merge
+   vertices of distinct features. */
+#define POLYMASS_MAX_WELD_TOLERANCE 1e-3
 
 typedef struct polymass_options {
     uint32_t struct_size; /* sizeof(polymass_options) */
@@ -175,6 +179,13 @@ typedef struct polymass_options {
     /* Largest distance of a polygon face's vertex from the face's plane,
        relative to the face's diameter; 0 means the default. */
     double planarity_tolerance;
+    /* With POLYMASS_OPTION_WELD_VERTICES: two vertices whose coordinates each
+       differ by at most weld_tolerance times the largest extent of the used
+       vertices' bounding box are one vertex, and so are chains of such
+       vertices. 0 (the default) welds exactly equal positions only; CAD
+       exports whose coordinates carry rounding noise want about 1e-9. In
+       [0, POLYMASS_MAX_WELD_TOLERANCE]. */
+    double weld_tolerance;
 } polymass_options;
 
 /* polymass_mesh_desc.position_type */
