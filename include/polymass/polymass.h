@@ -181,9 +181,10 @@ typedef struct polymass_options {
     double planarity_tolerance;
     /* With POLYMASS_OPTION_WELD_VERTICES: two vertices whose coordinates each
        differ by at most weld_tolerance times the largest extent of the used
-       vertices' bounding box are one vertex, and so are chains of such
-       vertices. 0 (the default) welds exactly equal positions only; CAD
-       exports whose coordinates carry rounding noise want about 1e-9. In
+       vertices' bounding box are one vertex (up to rounding), and so are
+       chains of such vertices. 0 (the default) welds exactly equal positions
+       only; CAD exports whose coordinates carry rounding noise want about
+       1e-9. A non-zero value below 2^-50 acts as 2^-50. In
        [0, POLYMASS_MAX_WELD_TOLERANCE]. */
     double weld_tolerance;
 } polymass_options;

@@ -80,6 +80,11 @@ POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
                                  "options->planarity_tolerance is %g; it must be in [0, 1) "
                                  "(0 selects the default %g)",
                                  tolerance, POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
+        const double weld = options->weld_tolerance;
+        if (!(weld >= 0.0 && weld <= POLYMASS_MAX_WELD_TOLERANCE))  // also rejects NaN
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "options->weld_tolerance is %g; it must be in [0, %g]", weld,
+                                 POLYMASS_MAX_WELD_TOLERANCE);
         context->options = *options;
         if (tolerance == 0.0)
             context->options.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;

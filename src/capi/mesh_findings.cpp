@@ -22,6 +22,7 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bo
     settings.check_topology =
         full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
     settings.weld = options.flags & POLYMASS_OPTION_WELD_VERTICES;
+    settings.weld_tolerance = options.weld_tolerance;
     settings.stop_at_first_problem = !full_report;
     settings.planarity_tolerance = options.planarity_tolerance;
     const bool accept_non_manifold = options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;

@@ -17,7 +17,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     if (settings.check_topology) {
         std::pmr::vector<std::uint32_t> welded(memory);
         if (settings.weld) {
-            welded = weld_vertices(mesh, scan, memory);
+            welded = weld_vertices(mesh, scan, settings.weld_tolerance, memory);
             analysis.used_vertex_count = 0;
             for (std::size_t vertex = 0; vertex < welded.size(); ++vertex)
                 analysis.used_vertex_count += scan.is_used(vertex) && welded[vertex] == vertex;

@@ -17,7 +17,8 @@ namespace polymass::core {
 
 struct AnalysisSettings {
     bool check_topology = true;  // closed, manifold, oriented, planar
-    bool weld = false;           // identify exactly coincident vertices first
+    bool weld = false;           // identify coincident vertices first
+    double weld_tolerance = 0;   // relative to the mesh's extent; 0: exact
     bool stop_at_first_problem = true;
     double planarity_tolerance = 1e-6;
 };

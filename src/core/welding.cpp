@@ -1,23 +1,33 @@
 #include "welding.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <tuple>
 
 namespace polymass::core {
+namespace {
 
+// Identity for every vertex, and the used vertices in index order.
 template <class Scalar, class Index>
-std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
-                                              const MeshScan& scan,
-                                              std::pmr::memory_resource* memory) {
+std::pmr::vector<std::uint32_t> identity_map(const MeshView<Scalar, Index>& mesh,
+                                             const MeshScan& scan,
+                                             std::pmr::vector<std::uint32_t>& used,
+                                             std::pmr::memory_resource* memory) {
     const std::size_t addressable = scan.used.size() * 64;
     std::pmr::vector<std::uint32_t> representative(std::min(mesh.vertex_count, addressable),
                                                    memory);
-    std::pmr::vector<std::uint32_t> used(memory);
     used.reserve(scan.used_vertex_count);
     for (std::size_t vertex = 0; vertex < representative.size(); ++vertex) {
         representative[vertex] = std::uint32_t(vertex);
         if (scan.is_used(vertex)) used.push_back(std::uint32_t(vertex));
     }
+    return representative;
+}
+
+template <class Scalar, class Index>
+void weld_exact(const MeshView<Scalar, Index>& mesh, std::pmr::vector<std::uint32_t>& used,
+                std::pmr::vector<std::uint32_t>& representative) {
     auto key = [&](std::uint32_t vertex) {
         const Eigen::Vector3d p = mesh.positions[vertex];
         return std::make_tuple(p.x(), p.y(), p.z());
@@ -29,12 +39,116 @@ std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mes
     for (std::size_t i = 1; i < used.size(); ++i) {
         if (key(used[i]) == key(used[i - 1])) representative[used[i]] = representative[used[i - 1]];
     }
+}
+
+// Union-find whose root is always the smallest index of its set.
+class SmallestIndexSets {
+public:
+    explicit SmallestIndexSets(std::pmr::vector<std::uint32_t>& parent) : parent_(parent) {}
+
+    std::uint32_t find(std::uint32_t vertex) {
+        while (parent_[vertex] != vertex) {
+            parent_[vertex] = parent_[parent_[vertex]];  // path halving
+            vertex = parent_[vertex];
+        }
+        return vertex;
+    }
+    void join(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+    }
+
+private:
+    std::pmr::vector<std::uint32_t>& parent_;
+};
+
+// A grid of cells `distance` wide: vertices in one cell are within `distance`
+// of each other in every coordinate (up to rounding), so they are one; vertices
+// in adjacent cells are one when any pair across them is that close. Sorting
+// the vertices by cell lets each cell meet only its 26 neighbours, so the cost
+// is O(n log n) unless many distinct vertices crowd two adjacent cells without
+// touching (then it is their product).
+template <class Scalar, class Index>
+void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, double distance,
+                 const std::pmr::vector<std::uint32_t>& used,
+                 std::pmr::vector<std::uint32_t>& representative,
+                 std::pmr::memory_resource* memory) {
+    using Cell = std::array<std::int64_t, 3>;
+    struct Entry {
+        Cell cell;
+        std::uint32_t vertex;
+        bool operator<(const Entry& other) const {
+            return std::tie(cell, vertex) < std::tie(other.cell, other.vertex);
+        }
+    };
+    const Eigen::Vector3d origin = scan.bounds.min();
+    std::pmr::vector<Entry> entries(memory);
+    entries.reserve(used.size());
+    for (const std::uint32_t vertex : used) {
+        const Eigen::Vector3d p = (Eigen::Vector3d(mesh.positions[vertex]) - origin) / distance;
+        entries.push_back(
+            {Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())}, vertex});
+    }
+    std::sort(entries.begin(), entries.end());
+    auto cell_less = [](const Entry& a, const Entry& b) { return a.cell < b.cell; };
+    auto close = [&](const Entry& a, const Entry& b) {
+        const Eigen::Vector3d pa = mesh.positions[a.vertex];
+        const Eigen::Vector3d pb = mesh.positions[b.vertex];
+        return ((pa - pb).cwiseAbs().array() <= distance).all();
+    };
+    SmallestIndexSets sets(representative);
+    for (auto first = entries.begin(); first != entries.end();) {
+        const auto last = std::upper_bound(first, entries.end(), *first, cell_less);
+        for (auto entry = first + 1; entry != last; ++entry)
+            sets.join(first->vertex, entry->vertex);
+        // The 13 neighbours after this cell in sort order; the other 13 meet
+        // it from their side.
+        for (std::int64_t dx = 0; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    if (dx == 0 && (dy < 0 || (dy == 0 && dz <= 0))) continue;
+                    const Cell& here = first->cell;
+                    const Entry key{{here[0] + dx, here[1] + dy, here[2] + dz}, 0};
+                    const auto [near_first, near_last] =
+                        std::equal_range(last, entries.end(), key, cell_less);
+                    auto touching = [&] {
+                        for (auto a = first; a != last; ++a)
+                            for (auto b = near_first; b != near_last; ++b)
+                                if (close(*a, *b)) return true;
+                        return false;
+                    };
+                    if (near_first != near_last && touching())
+                        sets.join(first->vertex, near_first->vertex);
+                }
+        first = last;
+    }
+    for (const std::uint32_t vertex : used) representative[vertex] = sets.find(vertex);
+}
+
+}  // namespace
+
+template <class Scalar, class Index>
+std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
+                                              const MeshScan& scan, double tolerance,
+                                              std::pmr::memory_resource* memory) {
+    std::pmr::vector<std::uint32_t> used(memory);
+    std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, used, memory);
+    // At least 2^-50 of the extent (a few of its ulps), so that every cell
+    // coordinate fits in an int64. Zero (an exact weld, or a mesh that is one
+    // point) and an extent past the largest double weld exact copies only.
+    const double extent = scan.bounds.isEmpty() ? 0.0 : scan.bounds.sizes().maxCoeff();
+    const double distance = std::max(tolerance, 0x1p-50) * extent;
+    if (tolerance > 0.0 && distance > 0.0 && std::isfinite(distance))
+        weld_within(mesh, scan, distance, used, representative, memory);
+    else
+        weld_exact(mesh, used, representative);
     return representative;
 }
 
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                \
     template std::pmr::vector<std::uint32_t> weld_vertices<Scalar, Index>( \
-        const MeshView<Scalar, Index>&, const MeshScan&, std::pmr::memory_resource*);
+        const MeshView<Scalar, Index>&, const MeshScan&, double, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -1,8 +1,12 @@
-// Welding: vertices at exactly the same position are one vertex.
+// Welding: vertices at the same position are one vertex.
 //
 // An STL file or any triangle soup repeats a vertex once per triangle; the
-// surface is closed only once those copies are identified. Only exact equality
-// counts (a tolerance would change the solid), and +0 equals −0.
+// surface is closed only once those copies are identified. By default only
+// exact equality counts (+0 equals −0). CAD exports whose coordinates carry
+// rounding noise need a tolerance: two vertices whose coordinates each differ
+// by at most tolerance (at least 2^-50) × the largest extent of the used
+// vertices' bounding box are one, and so are chains of such vertices. Welding
+// only serves the topology checks: the integrals use the positions as given.
 #pragma once
 
 #include <cstdint>
@@ -14,12 +18,12 @@
 
 namespace polymass::core {
 
-// For every vertex the faces use, the smallest used vertex index at the same
-// position (unused vertices map to themselves). scan must say the mesh is in
-// range and finite.
+// For every vertex the faces use, the smallest used vertex index welded to it
+// (unused vertices map to themselves). scan must say the mesh is in range and
+// finite; tolerance is relative, >= 0.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
-                                              const MeshScan& scan,
+                                              const MeshScan& scan, double tolerance,
                                               std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

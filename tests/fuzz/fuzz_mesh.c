@@ -18,7 +18,8 @@
  *                      itself when FLOAT64); 1 every coordinate as packed pairs
  *                 7    positions and indices at an odd address
  *   1      1    option flags (low 4 bits: POLYMASS_OPTION_*)
- *   2      1    planarity tolerance: entry (byte % 8) of `tolerances` below
+ *   2      1    planarity tolerance: entry (byte % 8) of `tolerances` below;
+ *               weld tolerance: entry (byte / 8 % 4) of `weld_tolerances`
  *   3      1    mass: bits 0-1: 0 NULL, 1 FROM_DENSITY, 2 FROM_TOTAL, 3 an
  *               unknown mode (2 + the byte's high bits)
  *   4      1    vertex_count V of one copy
@@ -64,6 +65,8 @@
 #define MAX_TOTAL_INDICES 8192u
 
 static const double tolerances[8] = {0.0, 1e-15, 1e-9, 1e-6, 1e-3, 0.5, 0.999999, 1.0 /* bad */};
+/* With POLYMASS_OPTION_WELD_VERTICES: exact, finer than rounding, CAD noise, the largest. */
+static const double weld_tolerances[4] = {0.0, 1e-18, 1e-9, POLYMASS_MAX_WELD_TOLERANCE};
 
 static int verbose = -1;
 
@@ -542,6 +545,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     options.struct_size = sizeof options;
     options.flags = flags;
     options.planarity_tolerance = tolerances[header[2] % 8];
+    options.weld_tolerance = weld_tolerances[header[2] / 8 % 4];
     current_call = "polymass_context_set_options";
     {
         const int32_t status = polymass_context_set_options(context, &options);

@@ -85,6 +85,7 @@ static void test_context_default_options(void** state) {
     assert_int_equal(o.struct_size, sizeof o);
     assert_int_equal(o.flags, 0);
     assert_true(o.planarity_tolerance == POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
+    assert_true(o.weld_tolerance == 0.0);
     assert_string_equal(polymass_context_message(ctx), "");
     polymass_context_destroy(ctx);
 }

@@ -1,0 +1,187 @@
+/* Welding with a tolerance (polymass_options.weld_tolerance): CAD exports
+ * repeat a vertex once per face with rounding noise in its coordinates; a
+ * weld tolerance larger than the noise closes the surface, one smaller than
+ * the gap between distinct features keeps them apart. */
+#include "test_support.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Deterministic noise in [-1, 1) (an LCG: the same on every platform). */
+static double next_noise(uint64_t* state) {
+    *state = *state * 6364136223846793005u + 1442695040888963407u;
+    return (double)(*state >> 11) / 4503599627370496.0 - 1.0; /* 2^52 */
+}
+
+/* Moves every vertex by up to `amount` in each coordinate. */
+static void add_noise(pm_mesh* m, double amount, uint64_t seed) {
+    size_t i;
+    for (i = 0; i < 3 * m->vertex_count; ++i) {
+        m->positions[i] += amount * next_noise(&seed);
+    }
+}
+
+static double largest_extent(const pm_mesh* m) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double extent = 0.0;
+    size_t v;
+    int i;
+    for (v = 0; v < m->vertex_count; ++v) {
+        for (i = 0; i < 3; ++i) {
+            lo[i] = fmin(lo[i], m->positions[3 * v + i]);
+            hi[i] = fmax(hi[i], m->positions[3 * v + i]);
+        }
+    }
+    for (i = 0; i < 3; ++i) {
+        extent = fmax(extent, hi[i] - lo[i]);
+    }
+    return extent;
+}
+
+static void set_weld(polymass_context* ctx, double tolerance) {
+    polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0);
+    o.weld_tolerance = tolerance;
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+}
+
+static const pm_reference_solid* reference(const char* name) {
+    size_t i;
+    for (i = 0; i < PM_REF_COUNT; ++i) {
+        if (strcmp(pm_reference_solids[i].name, name) == 0) {
+            return &pm_reference_solids[i];
+        }
+    }
+    fail_msg("no reference solid named %s", name);
+    return NULL;
+}
+
+/* Noise of up to 0.4 tolerance x extent per copy: two copies of a vertex
+ * differ by at most 0.8 of the tolerance, and many straddle a cell border of
+ * the welding grid. Far from the origin, polygon faces and a cavity. */
+static void test_noisy_soup_closes(void** state) {
+    static const char* const names[] = {"cube_cavity", "prism_star", "octahedron_irregular"};
+    static const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    static const double far[3] = {1e6, -2e6, 3e6};
+    const double tolerance = 1e-9;
+    polymass_context* ctx = pm_context_new(0);
+    size_t n;
+    (void)state;
+    for (n = 0; n < sizeof names / sizeof names[0]; ++n) {
+        const pm_reference_solid* ref = reference(names[n]);
+        const pm_expected at_origin = pm_expected_from_reference(ref);
+        const pm_expected exact = pm_expected_transform(&at_origin, identity, 1.0, far);
+        polymass_mass_properties p;
+        polymass_diagnostics d;
+        pm_mesh m;
+        pm_mesh_from_reference(&m, ref);
+        pm_mesh_transform(&m, identity, 1.0, far);
+        pm_mesh_to_soup(&m);
+        add_noise(&m, 0.4 * tolerance * largest_extent(&m), 7 + n);
+
+        set_weld(ctx, 0.0); /* exact welding leaves the copies apart */
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, pm_compute(&p, ctx, &m, NULL));
+
+        set_weld(ctx, tolerance);
+        PM_ASSERT_OK(ctx, pm_check(&d, ctx, &m));
+        assert_int_equal(d.used_vertex_count, ref->vertex_count);
+        assert_int_equal(d.open_edges, 0);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        /* The integrals use the noisy positions: 1e-9 of the size off. */
+        PM_ASSERT_PROPERTIES(names[n], &exact, &p, 1e-7);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+/* Two closed boxes a gap of 1e-6 of the extent apart stay two solids under a
+ * 1e-9 weld; a 1e-5 weld merges the facing vertices, and says so. */
+static void test_tolerance_is_a_distance(void** state) {
+    static const double lo_a[3] = {0, 0, 0}, hi_a[3] = {1, 1, 1};
+    static const double lo_b[3] = {1 + 2e-6, 0, 0}, hi_b[3] = {2 + 2e-6, 1, 1};
+    polymass_context* ctx = pm_context_new(0);
+    polymass_mass_properties p;
+    polymass_diagnostics d;
+    pm_mesh m;
+    (void)state;
+    pm_mesh_box(&m, lo_a, hi_a, 1);
+    pm_mesh_add_box(&m, lo_b, hi_b, 1);
+    pm_mesh_to_soup(&m);
+
+    set_weld(ctx, 1e-9);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    PM_ASSERT_REL("volume", 2.0, p.volume, PM_TOL);
+    PM_ASSERT_OK(ctx, pm_check(&d, ctx, &m));
+    assert_int_equal(d.used_vertex_count, 16);
+
+    set_weld(ctx, 1e-5);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_MANIFOLD, pm_compute(&p, ctx, &m, NULL));
+    assert_non_null(strstr(polymass_context_message(ctx), "edge ("));
+    pm_check(&d, ctx, &m);
+    assert_int_equal(d.status, POLYMASS_ERROR_NON_MANIFOLD);
+    assert_int_equal(d.used_vertex_count, 12);
+    assert_true(d.non_manifold_edges >= 4); /* the four of the facing square */
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* A fan of many triangles around one apex: thousands of copies of one vertex
+ * in one cell are joined in one pass (no pairwise comparison among them). */
+static void test_many_copies_of_one_vertex(void** state) {
+    enum { SEGMENTS = 20000 };
+    const double pi = 3.14159265358979323846;
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics d;
+    polymass_mass_properties p;
+    pm_mesh cone;
+    uint32_t apex, base, ring[SEGMENTS];
+    size_t k;
+    (void)state;
+    pm_mesh_init(&cone);
+    apex = pm_mesh_add_vertex(&cone, 0, 0, 1);
+    base = pm_mesh_add_vertex(&cone, 0, 0, 0);
+    for (k = 0; k < SEGMENTS; ++k) {
+        ring[k] =
+            pm_mesh_add_vertex(&cone, cos(2 * pi * k / SEGMENTS), sin(2 * pi * k / SEGMENTS), 0);
+    }
+    for (k = 0; k < SEGMENTS; ++k) {
+        pm_mesh_add_tri(&cone, ring[k], ring[(k + 1) % SEGMENTS], apex);
+        pm_mesh_add_tri(&cone, ring[(k + 1) % SEGMENTS], ring[k], base);
+    }
+    pm_mesh_to_soup(&cone);
+    set_weld(ctx, 1e-12);
+    PM_ASSERT_OK(ctx, pm_check(&d, ctx, &cone));
+    assert_int_equal(d.used_vertex_count, SEGMENTS + 2);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &cone, NULL));
+    pm_mesh_free(&cone);
+    polymass_context_destroy(ctx);
+}
+
+static void test_invalid_tolerances(void** state) {
+    const double bad[] = {-1e-12, 2 * POLYMASS_MAX_WELD_TOLERANCE, INFINITY, NAN};
+    polymass_context* ctx = pm_context_new(0);
+    polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0), out;
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        o.weld_tolerance = bad[i];
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_context_set_options(ctx, &o));
+        assert_non_null(strstr(polymass_context_message(ctx), "weld_tolerance"));
+    }
+    o.weld_tolerance = POLYMASS_MAX_WELD_TOLERANCE;
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    out = pm_options(0, 0.0);
+    PM_ASSERT_OK(ctx, polymass_context_get_options(&out, ctx));
+    assert_true(out.weld_tolerance == POLYMASS_MAX_WELD_TOLERANCE);
+    polymass_context_destroy(ctx);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_noisy_soup_closes),
+        cmocka_unit_test(test_tolerance_is_a_distance),
+        cmocka_unit_test(test_many_copies_of_one_vertex),
+        cmocka_unit_test(test_invalid_tolerances),
+    };
+    return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
+}
