@@ -1,0 +1,75 @@
+"""Exact mass properties of polyhedra and polygons: the Python binding of libpolymass.
+
+    import polymass
+    p = polymass.mass_properties(vertices, faces, density=2700.0)
+    p.mass, p.center_of_mass, p.inertia
+
+Units are the caller's (lengths L, density M/L^3, mass M, inertia M*L^2). The
+inertia tensor has the negated products of inertia off its diagonal
+(Ixy = -integral rho x y dV), as URDF, SDFormat, MuJoCo, PhysX and Bullet expect.
+Integration runs about a point inside the mesh, so parts far from the origin
+keep their digits. The C library is found by its SONAME (libpolymass.so.1) or
+at the path in the environment variable POLYMASS_LIBRARY.
+"""
+
+from . import _header
+from ._library import ffi as _ffi
+from ._library import lib as _lib
+from .diagnostics import Diagnostics, check
+from .errors import (
+    Error,
+    FaceTooSmallError,
+    InconsistentOrientationError,
+    IndexOutOfRangeError,
+    InternalError,
+    InvalidArgumentError,
+    InvertedError,
+    NonFiniteError,
+    NonManifoldError,
+    NonPlanarFaceError,
+    OpenSurfaceError,
+    OutOfMemoryError,
+    ResultOutOfRangeError,
+    TopologyError,
+    ZeroAreaError,
+    ZeroVolumeError,
+)
+from .polygons import PolygonProperties, polygon_properties
+from .solids import MassProperties, Mesh, Warnings, mass_properties
+
+__version__: str = _header.POLYMASS_VERSION_STRING
+"""The version of the header this binding was built from (the package's version)."""
+
+
+def library_version() -> str:
+    """The version of the C library loaded at run time ("MAJOR.MINOR.PATCH")."""
+    return _ffi.string(_lib.polymass_version_string()).decode()
+
+__all__ = [
+    "Diagnostics",
+    "Error",
+    "FaceTooSmallError",
+    "InconsistentOrientationError",
+    "IndexOutOfRangeError",
+    "InternalError",
+    "InvalidArgumentError",
+    "InvertedError",
+    "MassProperties",
+    "Mesh",
+    "NonFiniteError",
+    "NonManifoldError",
+    "NonPlanarFaceError",
+    "OpenSurfaceError",
+    "OutOfMemoryError",
+    "PolygonProperties",
+    "ResultOutOfRangeError",
+    "TopologyError",
+    "Warnings",
+    "ZeroAreaError",
+    "ZeroVolumeError",
+    "__version__",
+    "check",
+    "library_version",
+    "mass_properties",
+    "polygon_properties",
+]

@@ -1,0 +1,122 @@
+"""`check`: every finding about a surface, instead of the first one as an exception."""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy.typing as npt
+
+from . import _header
+from ._arrays import FacesLike, mesh_description
+from ._library import context, ffi, lib, new_struct
+from ._options import Weld, apply_options
+from .errors import Error, error_class, raise_for_status
+
+# Statuses that are about the call, not the mesh: raised rather than reported.
+_CALL_FAILURES = (
+    _header.POLYMASS_ERROR_INVALID_ARGUMENT,
+    _header.POLYMASS_ERROR_OUT_OF_MEMORY,
+    _header.POLYMASS_ERROR_INTERNAL,
+)
+
+Edge = tuple[int, int]
+
+
+@dataclass(frozen=True)
+class Diagnostics:
+    """What `check` found. Vertex numbers are the caller's indices (after welding:
+    the lowest index at that position); a ``first_*`` location is None when the
+    count beside it is 0."""
+
+    status: int
+    """What `mass_properties` would report: 0 (POLYMASS_OK) or an error status."""
+    message: str
+    """The library's message for that status ("" when it is OK)."""
+    face_count: int
+    used_vertex_count: int
+    edge_count: int
+    non_finite_vertices: int
+    first_non_finite_vertex: int | None
+    out_of_range_indices: int
+    first_out_of_range_face: int | None
+    small_faces: int
+    first_small_face: int | None
+    degenerate_faces: int
+    """Zero-area faces: legal and harmless."""
+    first_degenerate_face: int | None
+    open_edges: int
+    first_open_edge: Edge | None
+    non_manifold_edges: int
+    first_non_manifold_edge: Edge | None
+    misoriented_edges: int
+    first_misoriented_edge: Edge | None
+    non_planar_faces: int
+    first_non_planar_face: int | None
+    max_non_planarity: float
+    """The largest off-plane distance of a polygon face's vertex, relative to its diameter."""
+    signed_volume: float
+    """Negative when every face is reversed; NaN when the faces could not be integrated."""
+
+    @property
+    def ok(self) -> bool:
+        """Whether `mass_properties` would succeed with the same options."""
+        return self.status == _header.POLYMASS_OK
+
+    @property
+    def error(self) -> type[Error] | None:
+        """The exception class `mass_properties` would raise, or None."""
+        return None if self.ok else error_class(self.status)
+
+    def raise_if_error(self) -> None:
+        """Raises what `mass_properties` would raise, if anything."""
+        if not self.ok:
+            raise error_class(self.status)(self.message, self.status)
+
+
+def _location(value) -> int | Edge | None:
+    if isinstance(value, int):
+        return None if value == _header.POLYMASS_NONE else value
+    first, second = value[0], value[1]
+    return None if first == _header.POLYMASS_NONE else (first, second)
+
+
+def check(
+    vertices: npt.ArrayLike,
+    faces: FacesLike,
+    *,
+    face_sizes: npt.ArrayLike | None = None,
+    weld: Weld = False,
+    accept_inverted: bool = False,
+    accept_non_manifold: bool = False,
+    planarity_tolerance: float | None = None,
+) -> Diagnostics:
+    """Runs every check on a surface without stopping at the first finding.
+
+    Takes the arguments of `mass_properties` (the topology checks always run).
+    Problems with the mesh are reported in the result, not raised; problems with
+    the call itself (InvalidArgumentError, OutOfMemoryError) are raised.
+    """
+    mesh = mesh_description(vertices, faces, face_sizes)
+    ctx = context()
+    apply_options(
+        ctx,
+        weld=weld,
+        accept_inverted=accept_inverted,
+        accept_non_manifold=accept_non_manifold,
+        planarity_tolerance=planarity_tolerance,
+    )
+    report = new_struct("polymass_diagnostics")
+    status = lib.polymass_mesh_check(report, ctx, mesh.desc)
+    if status in _CALL_FAILURES:
+        raise_for_status(status, ctx)
+    message = ffi.string(lib.polymass_context_message(ctx)).decode()
+    values = {}
+    for item in dataclasses.fields(Diagnostics):
+        if item.name == "message":
+            values[item.name] = message
+        elif item.name.startswith("first_"):
+            values[item.name] = _location(getattr(report, item.name))
+        else:
+            values[item.name] = getattr(report, item.name)
+    return Diagnostics(**values)
