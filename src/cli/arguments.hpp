@@ -1,0 +1,44 @@
+// The command line: what to do, to which files, with which settings.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polymass_cli {
+
+enum class Command { kProperties, kCheck, kHelp, kVersion };
+enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf };
+enum class About { kCenterOfMass, kOrigin, kPoint };
+
+struct Arguments {
+    Command command = Command::kProperties;
+    OutputFormat output = OutputFormat::kTable;
+    std::vector<std::string> files;
+    std::string format;  // --format: empty means by extension
+    std::optional<double> density;
+    std::optional<double> mass;
+    double scale = 1.0;  // --scale times the --units factor
+    std::string units;   // --units as given; empty: lengths are the file's
+    About about = About::kCenterOfMass;
+    std::array<double, 3> point{0.0, 0.0, 0.0};  // --about X,Y,Z
+    bool accept_inverted = false;
+    bool no_check = false;
+    bool timings = false;
+    double weld_tolerance = 1e-9;
+};
+
+// A command line the tool cannot run; the message says what is wrong.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+Arguments parse_arguments(int argc, const char* const* argv);
+
+// The --help text.
+std::string help_text();
+
+}  // namespace polymass_cli

@@ -1,0 +1,29 @@
+// Reading a mesh file into a Model. OBJ, STL, PLY and OFF are read by the
+// project's own readers (text_formats, stl_reader, ply_reader): they keep
+// polygon faces and every index as written, so a bad index or a NaN reaches the
+// library's checks instead of being dropped or clamped, and a truncated file is
+// an error, not a read past its end. glTF/GLB and 3MF go through assimp.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "model.hpp"
+
+namespace polymass_cli {
+
+// A file that cannot be read as a mesh: missing, empty, truncated, malformed,
+// or of an unknown format. The message says what and where.
+class ReadError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// The format names --format accepts and the extensions that select them.
+const char* supported_formats();
+
+// Reads path. format is a name from supported_formats(), or empty to choose
+// by the file's extension. Throws ReadError.
+Model read_mesh_file(const std::string& path, const std::string& format);
+
+}  // namespace polymass_cli

@@ -1,0 +1,28 @@
+#include <polymass/polymass.h>
+
+#include "categories.hpp"
+#include "report.hpp"
+
+namespace polymass_cli {
+
+ExitCode FileReport::exit_code() const {
+    if (!readable) return kExitUnreadable;
+    return exit_code_of(solid.result.status);
+}
+
+std::vector<std::string> warning_names(uint32_t warnings) {
+    static const struct {
+        uint32_t bit;
+        const char* name;
+    } kWarnings[] = {{POLYMASS_WARNING_INVERTED, "inverted"},
+                     {POLYMASS_WARNING_DEGENERATE_FACES, "degenerate_faces"},
+                     {POLYMASS_WARNING_UNCHECKED, "unchecked"},
+                     {POLYMASS_WARNING_NON_MANIFOLD, "non_manifold"}};
+    std::vector<std::string> names;
+    for (const auto& warning : kWarnings) {
+        if (warnings & warning.bit) names.emplace_back(warning.name);
+    }
+    return names;
+}
+
+}  // namespace polymass_cli

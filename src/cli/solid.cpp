@@ -1,0 +1,63 @@
+#include "solid.hpp"
+
+#include <new>
+#include <stdexcept>
+
+namespace polymass_cli {
+namespace {
+
+polymass_mesh_desc describe(const Model& model, const Part& part) {
+    polymass_mesh_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.position_type = POLYMASS_POSITION_FLOAT64;
+    desc.positions = model.positions.data();
+    desc.vertex_count = model.vertex_count();
+    desc.index_type = POLYMASS_INDEX_UINT32;
+    desc.indices = part.indices.data();
+    desc.index_count = part.indices.size();
+    desc.face_sizes = part.face_sizes.data();
+    desc.face_count = part.face_sizes.size();
+    return desc;
+}
+
+}  // namespace
+
+Library::Library(const polymass_options& options) {
+    const int32_t created = polymass_context_create(&context_, nullptr);
+    if (created == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (created != POLYMASS_OK) {
+        throw std::runtime_error(std::string("polymass_context_create: ") +
+                                 polymass_status_string(created));
+    }
+    const int32_t set = polymass_context_set_options(context_, &options);
+    if (set != POLYMASS_OK) {
+        const std::string message = polymass_context_message(context_);
+        polymass_context_destroy(context_);
+        throw std::invalid_argument(message);
+    }
+}
+
+Library::~Library() { polymass_context_destroy(context_); }
+
+SolidResult compute_solid(const Library& library, const Model& model, const Part& part,
+                          const polymass_mass_desc& mass) {
+    const polymass_mesh_desc desc = describe(model, part);
+    SolidResult result;
+    result.properties.struct_size = sizeof result.properties;
+    result.status =
+        polymass_mass_properties_compute(&result.properties, library.context(), &desc, &mass);
+    if (result.status != POLYMASS_OK) result.message = library.message();
+    return result;
+}
+
+CheckResult check_solid(const Library& library, const Model& model, const Part& part) {
+    const polymass_mesh_desc desc = describe(model, part);
+    CheckResult result;
+    result.diagnostics.struct_size = sizeof result.diagnostics;
+    if (polymass_mesh_check(&result.diagnostics, library.context(), &desc) != POLYMASS_OK) {
+        result.message = library.message();
+    }
+    return result;
+}
+
+}  // namespace polymass_cli
