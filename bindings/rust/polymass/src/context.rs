@@ -1,0 +1,332 @@
+//! The library's per-thread working state (`polymass_context`).
+
+use std::ffi::CStr;
+use std::fmt;
+use std::mem::MaybeUninit;
+use std::ptr::{self, NonNull};
+
+use polymass_sys as sys;
+
+use crate::body::Body;
+use crate::diagnostics::Diagnostics;
+use crate::error::{Error, Result};
+use crate::mesh::Mesh;
+use crate::options::Options;
+use crate::polygon::PolygonProperties;
+use crate::properties::MassProperties;
+use crate::surface::{struct_size, Surface};
+
+/// A context: the [`Options`] calls use and the message of the last failure.
+///
+/// It is `Send` but not `Sync`: one thread at a time may use it, which every
+/// method taking `&mut self` enforces; threads computing at once each take
+/// their own. The free functions ([`mass_properties`](crate::mass_properties)
+/// and friends) and [`Mesh`]'s methods make a context per call; keep one to
+/// set options, or to save its allocation in a loop.
+///
+/// ```
+/// use polymass::{Body, Context, Options, Surface, Warnings};
+///
+/// // An inverted tetrahedron (every face reversed), accepted and turned.
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let reversed = [[0u32, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]];
+/// let mut context = Context::with_options(&Options::new().accept_inverted(true))?;
+/// let p = context.mass_properties(&Surface::triangles(&positions, &reversed), &Body::default())?;
+/// assert!(p.volume > 0.0 && p.warnings.contains(Warnings::INVERTED));
+/// # Ok::<(), polymass::Error>(())
+/// ```
+///
+/// A context cannot be shared between threads:
+///
+/// ```compile_fail
+/// fn shared<T: Sync>(_: &T) {}
+/// shared(&polymass::Context::new().unwrap());
+/// ```
+pub struct Context {
+    raw: NonNull<sys::polymass_context>,
+}
+
+// SAFETY: the library has no thread affinity: a context may be used from any
+// thread, one at a time. Context is not Sync, and every call through it takes
+// &mut self, so two threads never use it at once.
+unsafe impl Send for Context {}
+
+impl Context {
+    /// A context with the default options (every check on).
+    ///
+    /// ```
+    /// let context = polymass::Context::new()?;
+    /// # drop(context);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn new() -> Result<Context> {
+        let mut raw = ptr::null_mut();
+        // SAFETY: out-pointer to a local; NULL allocator means malloc.
+        let status = unsafe { sys::polymass_context_create(&mut raw, ptr::null()) };
+        if status != sys::POLYMASS_OK {
+            // No context: no message beyond the status.
+            return Err(Error::new(status, String::new()));
+        }
+        let raw = NonNull::new(raw).expect("polymass_context_create succeeded with NULL");
+        Ok(Context { raw })
+    }
+
+    /// A context with the given options.
+    ///
+    /// ```
+    /// use polymass::{Context, Options};
+    ///
+    /// let mut context = Context::with_options(&Options::new().weld_vertices(true))?;
+    /// assert!(context.options()?.welds_vertices());
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn with_options(options: &Options) -> Result<Context> {
+        let mut context = Context::new()?;
+        context.set_options(options)?;
+        Ok(context)
+    }
+
+    /// Sets the options later calls use; fails with
+    /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) for
+    /// a tolerance out of range, leaving the options as they were.
+    ///
+    /// ```
+    /// use polymass::{Context, ErrorKind, Options};
+    ///
+    /// let mut context = Context::new()?;
+    /// let too_coarse = Options::new().weld_vertices(true).weld_tolerance(0.5);
+    /// assert_eq!(context.set_options(&too_coarse).unwrap_err().kind(), ErrorKind::InvalidArgument);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn set_options(&mut self, options: &Options) -> Result<()> {
+        let raw = options.to_raw();
+        // SAFETY: live context, used by this thread only (&mut self); the
+        // options struct outlives the call.
+        let status = unsafe { sys::polymass_context_set_options(self.raw.as_ptr(), &raw) };
+        self.result(status)
+    }
+
+    /// The options in use, as the library holds them.
+    ///
+    /// ```
+    /// let mut context = polymass::Context::new()?;
+    /// assert!(!context.options()?.accepts_inverted());
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn options(&mut self) -> Result<Options> {
+        let mut raw = sys::polymass_options {
+            struct_size: struct_size::<sys::polymass_options>(),
+            ..Default::default()
+        };
+        // SAFETY: live context, this thread only; out-pointer to a local.
+        let status = unsafe { sys::polymass_context_get_options(&mut raw, self.raw.as_ptr()) };
+        self.result(status)?;
+        Ok(Options::from_raw(&raw))
+    }
+
+    /// Validates and integrates a surface once, for mass properties of any
+    /// number of bodies afterwards. The mesh keeps only the integrals: the
+    /// surface's slices may go once this returns.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let mut context = Context::new()?;
+    /// let mesh = context.mesh(&Surface::triangles(&positions, &triangles))?;
+    /// let light = context.mesh_mass_properties(&mesh, &Body::mass(1.0))?;
+    /// let heavy = context.mesh_mass_properties(&mesh, &Body::mass(2.0))?;
+    /// assert_eq!(2.0 * light.inertia[0][0], heavy.inertia[0][0]);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn mesh(&mut self, surface: &Surface<'_>) -> Result<Mesh> {
+        let desc = surface.desc();
+        let mut raw = ptr::null_mut();
+        // SAFETY: live context, this thread only; desc points into slices
+        // borrowed by `surface` for the whole call.
+        let status = unsafe { sys::polymass_mesh_create(&mut raw, self.raw.as_ptr(), &desc) };
+        self.result(status)?;
+        let raw = NonNull::new(raw).expect("polymass_mesh_create succeeded with NULL");
+        // SAFETY: a mesh polymass_mesh_create just made, owned by no one else.
+        Ok(unsafe { Mesh::from_raw(raw) })
+    }
+
+    /// The mass properties of a mesh made before, as `body`.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, Mesh, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let mesh = Mesh::new(&Surface::triangles(&positions, &triangles))?;
+    /// let mut context = Context::new()?;
+    /// for density in [1000.0, 2700.0, 7850.0] {
+    ///     let p = context.mesh_mass_properties(&mesh, &Body::density(density))?;
+    ///     assert!((p.mass - density / 6.0).abs() < 1e-12 * p.mass);
+    /// }
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn mesh_mass_properties(&mut self, mesh: &Mesh, body: &Body) -> Result<MassProperties> {
+        let mass = body.to_raw();
+        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
+        // SAFETY: the zeroed struct is a valid polymass_mass_properties (all
+        // numbers); struct_size is set before the call reads it.
+        unsafe { (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>() };
+        // SAFETY: live context, this thread only; the mesh is alive and may be
+        // read by several threads at once; out and mass outlive the call.
+        let status = unsafe {
+            sys::polymass_mesh_mass_properties(
+                out.as_mut_ptr(),
+                self.raw.as_ptr(),
+                mesh.as_raw(),
+                &mass,
+            )
+        };
+        self.result(status)?;
+        // SAFETY: zero-initialised, and filled on success.
+        Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
+    }
+
+    /// Validates and integrates a surface and returns its mass properties as
+    /// `body`, keeping no mesh.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let mut context = Context::new()?;
+    /// let p = context.mass_properties(&Surface::triangles(&positions, &triangles), &Body::default())?;
+    /// assert!((p.surface_area - (1.5 + 3f64.sqrt() / 2.0)).abs() < 1e-15);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn mass_properties(
+        &mut self,
+        surface: &Surface<'_>,
+        body: &Body,
+    ) -> Result<MassProperties> {
+        let desc = surface.desc();
+        let mass = body.to_raw();
+        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
+        // SAFETY: as in mesh_mass_properties.
+        unsafe { (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>() };
+        // SAFETY: live context, this thread only; desc points into slices
+        // borrowed by `surface`; out, desc and mass outlive the call.
+        let status = unsafe {
+            sys::polymass_mass_properties_compute(out.as_mut_ptr(), self.raw.as_ptr(), &desc, &mass)
+        };
+        self.result(status)?;
+        // SAFETY: zero-initialised, and filled on success.
+        Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
+    }
+
+    /// Runs every check on a surface without stopping at the first finding
+    /// (the topology checks even when the options skip them; welding and the
+    /// tolerances apply). A bad surface is not an `Err`: its failure is in
+    /// [`Diagnostics::error`]. `Err` means no report could be made.
+    ///
+    /// ```
+    /// use polymass::{Context, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let report = Context::new()?.check(&Surface::triangles(&positions, &triangles))?;
+    /// assert_eq!((report.face_count, report.edge_count, report.used_vertex_count), (4, 6, 4));
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn check(&mut self, surface: &Surface<'_>) -> Result<Diagnostics> {
+        let desc = surface.desc();
+        let mut report = MaybeUninit::<sys::polymass_diagnostics>::zeroed();
+        // The library writes the report whenever it can read the report's
+        // struct_size; a status left at a value no call returns tells that it
+        // could not (a library older than these bindings).
+        let unwritten = i32::MIN;
+        // SAFETY: the zeroed struct is a valid polymass_diagnostics (all
+        // numbers); these fields are set before the call reads them.
+        unsafe {
+            (*report.as_mut_ptr()).struct_size = struct_size::<sys::polymass_diagnostics>();
+            (*report.as_mut_ptr()).status = unwritten;
+        }
+        // SAFETY: live context, this thread only; desc points into slices
+        // borrowed by `surface`; report and desc outlive the call.
+        let status =
+            unsafe { sys::polymass_mesh_check(report.as_mut_ptr(), self.raw.as_ptr(), &desc) };
+        // SAFETY: zero-initialised, possibly filled.
+        let report = unsafe { report.assume_init_ref() };
+        if report.status != status {
+            self.result(status)?;
+            return Err(Error::new(
+                sys::POLYMASS_ERROR_INTERNAL,
+                format!(
+                    "polymass_mesh_check returned {status} but reported {}",
+                    report.status
+                ),
+            ));
+        }
+        Ok(Diagnostics::from_raw(report, self.result(status).err()))
+    }
+
+    /// Area, centroid and second moments of area of a simple polygon in the
+    /// xy plane, convex or not, either orientation. The polygon closes itself:
+    /// do not repeat the first point. Self-intersections are not detected.
+    ///
+    /// ```
+    /// let mut context = polymass::Context::new()?;
+    /// let triangle = context.polygon(&[[0.0, 0.0], [3.0, 0.0], [0.0, 3.0]])?;
+    /// assert_eq!(triangle.area, 4.5);
+    /// assert_eq!(triangle.centroid, [1.0, 1.0]);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn polygon(&mut self, points: &[[f64; 2]]) -> Result<PolygonProperties> {
+        let mut out = MaybeUninit::<sys::polymass_polygon_properties>::zeroed();
+        // SAFETY: the zeroed struct is a valid polymass_polygon_properties
+        // (all numbers); struct_size is set before the call reads it.
+        unsafe {
+            (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_polygon_properties>()
+        };
+        // SAFETY: live context, this thread only; points.len() packed (x, y)
+        // pairs (stride 0) that outlive the call.
+        let status = unsafe {
+            sys::polymass_polygon_compute(
+                out.as_mut_ptr(),
+                self.raw.as_ptr(),
+                points.as_flattened().as_ptr(),
+                points.len() as u64,
+                0,
+            )
+        };
+        self.result(status)?;
+        // SAFETY: zero-initialised, and filled on success.
+        Ok(PolygonProperties::from_raw(unsafe {
+            out.assume_init_ref()
+        }))
+    }
+
+    /// `Ok` for POLYMASS_OK, otherwise the error with this context's message
+    /// (copied now: the next call through the context replaces it).
+    fn result(&self, status: i32) -> Result<()> {
+        if status == sys::POLYMASS_OK {
+            return Ok(());
+        }
+        // SAFETY: live context; the message is never NULL and is valid until
+        // the next call through the context, which cannot happen before the
+        // copy below (&mut self borrows are not held across this).
+        let message = unsafe { CStr::from_ptr(sys::polymass_context_message(self.raw.as_ptr())) };
+        Err(Error::new(status, message.to_string_lossy().into_owned()))
+    }
+}
+
+impl Drop for Context {
+    fn drop(&mut self) {
+        // SAFETY: the context is ours and nothing uses it any more. Meshes
+        // made through it do not depend on it.
+        unsafe { sys::polymass_context_destroy(self.raw.as_ptr()) }
+    }
+}
+
+impl fmt::Debug for Context {
+    fn fmt(&self, formatter: &mut fmt::Formatter<'_>) -> fmt::Result {
+        formatter.debug_struct("Context").finish_non_exhaustive()
+    }
+}

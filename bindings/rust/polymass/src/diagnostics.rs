@@ -1,0 +1,142 @@
+//! What a full check of a surface finds (`polymass_diagnostics`).
+
+use polymass_sys as sys;
+
+use crate::error::Error;
+
+/// How often a problem occurs and where first.
+///
+/// ```
+/// let clean = polymass::Occurrences::<u64>::default();
+/// assert_eq!((clean.count, clean.first), (0, None));
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Occurrences<L> {
+    /// How many there are.
+    pub count: u64,
+    /// The first one (a face, vertex or edge as the caller's indices);
+    /// `None` when there is none.
+    pub first: Option<L>,
+}
+
+impl Occurrences<u64> {
+    fn new(count: u64, first: u64) -> Self {
+        Occurrences {
+            count,
+            first: (first != sys::POLYMASS_NONE).then_some(first),
+        }
+    }
+}
+
+impl Occurrences<[u64; 2]> {
+    fn new(count: u64, first: [u64; 2]) -> Self {
+        Occurrences {
+            count,
+            first: (first[0] != sys::POLYMASS_NONE).then_some(first),
+        }
+    }
+}
+
+/// The report of [`check`](crate::check): every check run to the end, with
+/// counts and first locations. Vertex numbers are the caller's indices (after
+/// welding: the lowest index at that position); edges are vertex pairs.
+///
+/// ```
+/// use polymass::{ErrorKind, Surface};
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
+/// let report = polymass::check(&Surface::triangles(&positions, &open))?;
+/// assert_eq!(report.error.as_ref().map(|e| e.kind()), Some(ErrorKind::Open));
+/// assert_eq!(report.open_edges.count, 3);
+/// assert!(report.open_edges.first.is_some());
+/// assert_eq!(report.misoriented_edges.first, None);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct Diagnostics {
+    /// What creating a mesh would fail with (topology checks on), with the
+    /// same message; `None` for a valid solid.
+    pub error: Option<Error>,
+    /// Number of faces.
+    pub face_count: u64,
+    /// Distinct vertices the faces use.
+    pub used_vertex_count: u64,
+    /// Distinct undirected edges.
+    pub edge_count: u64,
+    /// Vertices with a NaN or infinite coordinate.
+    pub non_finite_vertices: Occurrences<u64>,
+    /// Indices past the vertex slice; `first` is the face.
+    pub out_of_range_indices: Occurrences<u64>,
+    /// Faces of fewer than 3 vertices.
+    pub small_faces: Occurrences<u64>,
+    /// Faces of zero area: legal and harmless.
+    pub degenerate_faces: Occurrences<u64>,
+    /// Edges used by one face only.
+    pub open_edges: Occurrences<[u64; 2]>,
+    /// Edges used by more than two faces.
+    pub non_manifold_edges: Occurrences<[u64; 2]>,
+    /// Edges traversed twice the same way.
+    pub misoriented_edges: Occurrences<[u64; 2]>,
+    /// Polygon faces off their plane by more than the tolerance.
+    pub non_planar_faces: Occurrences<u64>,
+    /// Largest relative off-plane distance seen.
+    pub max_non_planarity: f64,
+    /// Signed enclosed volume (negative for an inverted solid); `None` when
+    /// the faces could not be integrated.
+    pub signed_volume: Option<f64>,
+}
+
+impl Diagnostics {
+    pub(crate) fn from_raw(raw: &sys::polymass_diagnostics, error: Option<Error>) -> Diagnostics {
+        Diagnostics {
+            error,
+            face_count: raw.face_count,
+            used_vertex_count: raw.used_vertex_count,
+            edge_count: raw.edge_count,
+            non_finite_vertices: Occurrences::<u64>::new(
+                raw.non_finite_vertices,
+                raw.first_non_finite_vertex,
+            ),
+            out_of_range_indices: Occurrences::<u64>::new(
+                raw.out_of_range_indices,
+                raw.first_out_of_range_face,
+            ),
+            small_faces: Occurrences::<u64>::new(raw.small_faces, raw.first_small_face),
+            degenerate_faces: Occurrences::<u64>::new(
+                raw.degenerate_faces,
+                raw.first_degenerate_face,
+            ),
+            open_edges: Occurrences::<[u64; 2]>::new(raw.open_edges, raw.first_open_edge),
+            non_manifold_edges: Occurrences::<[u64; 2]>::new(
+                raw.non_manifold_edges,
+                raw.first_non_manifold_edge,
+            ),
+            misoriented_edges: Occurrences::<[u64; 2]>::new(
+                raw.misoriented_edges,
+                raw.first_misoriented_edge,
+            ),
+            non_planar_faces: Occurrences::<u64>::new(
+                raw.non_planar_faces,
+                raw.first_non_planar_face,
+            ),
+            max_non_planarity: raw.max_non_planarity,
+            signed_volume: (!raw.signed_volume.is_nan()).then_some(raw.signed_volume),
+        }
+    }
+
+    /// Whether the surface is a valid solid (no [`error`](Diagnostics::error)).
+    ///
+    /// ```
+    /// use polymass::Surface;
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// assert!(polymass::check(&Surface::triangles(&positions, &triangles))?.is_solid());
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn is_solid(&self) -> bool {
+        self.error.is_none()
+    }
+}

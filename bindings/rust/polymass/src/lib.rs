@@ -1,0 +1,138 @@
+//! Mass properties of solid polyhedra and planar polygons: volume, mass,
+//! centre of mass, inertia tensor (about the centre of mass, the origin or any
+//! point), principal moments and axes, surface area — a safe binding of the
+//! libpolymass C library.
+//!
+//! ```
+//! use polymass::{Body, Surface};
+//!
+//! // A unit cube of aluminium (kg/m^3, positions in metres), as twelve triangles.
+//! let positions = [
+//!     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0],
+//!     [0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.0, 1.0, 1.0],
+//! ];
+//! let triangles = [
+//!     [0u32, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+//!     [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7],
+//! ];
+//! let cube = Surface::triangles(&positions, &triangles);
+//! let p = polymass::mass_properties(&cube, &Body::density(2700.0))?;
+//! assert!((p.mass - 2700.0).abs() < 1e-12);
+//! assert!((p.inertia[0][0] - 2700.0 / 6.0).abs() < 1e-10);
+//! # Ok::<(), polymass::Error>(())
+//! ```
+//!
+//! # Input
+//! A [`Surface`] borrows the caller's slices: positions as `&[[f64; 3]]` or
+//! `&[[f32; 3]]`, triangles as `&[[u32; 3]]` or `&[[u16; 3]]`, or polygon
+//! faces as indices plus face sizes. Faces are counter-clockwise seen from
+//! outside. The library checks everything (indices, finiteness, closed,
+//! manifold, consistently oriented, planar polygons, not inverted): bad input
+//! gives an [`Error`], never a crash. [`Options`] relax the checks (welding
+//! for STL triangle soups, trusted input, inverted solids); [`check`] reports
+//! every problem of a surface at once.
+//!
+//! # Conventions
+//! No units of its own: lengths in L, density in M/L³ ([`Body`]), mass in M,
+//! inertia in M·L². The inertia tensor is `∫ρ(|r|²𝟙 − r rᵀ) dV`, with the
+//! negated products of inertia off the diagonal (URDF, SDFormat, MuJoCo,
+//! PhysX, Bullet). Matrices are `[row][column]`.
+//!
+//! # Contexts and threads
+//! The C library keeps options and the last error message in a context that
+//! one thread uses at a time. Here:
+//! - the free functions [`mass_properties`], [`check`] and [`polygon`], and
+//!   [`Mesh::new`]/[`Mesh::mass_properties`], make a context for the call:
+//!   nothing to manage, and any thread may call them;
+//! - a [`Context`] (`Send`, not `Sync`) holds [`Options`] and is reused
+//!   across calls, one thread at a time;
+//! - a [`Mesh`] (`Send + Sync`) is a surface validated and integrated once,
+//!   immutable, from which any number of threads compute bodies at once.
+//!
+//! # Linking
+//! `polymass-sys` finds the C library through `POLYMASS_LIB_DIR`, pkg-config
+//! or the project's build tree, and links it dynamically (the `static`
+//! feature links `libpolymass.a`). See the crate README.
+#![warn(missing_docs)]
+
+mod body;
+mod context;
+mod diagnostics;
+mod error;
+mod mesh;
+mod options;
+mod polygon;
+mod properties;
+mod surface;
+
+use std::ffi::CStr;
+
+pub use body::Body;
+pub use context::Context;
+pub use diagnostics::{Diagnostics, Occurrences};
+pub use error::{Error, ErrorKind, Result};
+pub use mesh::Mesh;
+pub use options::Options;
+pub use polygon::{Orientation, PolygonProperties, SecondMoments};
+pub use properties::{MassProperties, Warnings};
+pub use surface::{Index, Surface, Vertex};
+
+use polymass_sys as sys;
+
+/// The mass properties of a surface as `body`, with the default options
+/// (every check on). To set options use a [`Context`]; to compute several
+/// bodies from one surface, a [`Mesh`].
+///
+/// ```
+/// use polymass::{Body, Surface};
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let p = polymass::mass_properties(&Surface::triangles(&positions, &triangles), &Body::mass(2.0))?;
+/// assert!((p.density - 12.0).abs() < 1e-13);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+pub fn mass_properties(surface: &Surface<'_>, body: &Body) -> Result<MassProperties> {
+    Context::new()?.mass_properties(surface, body)
+}
+
+/// Every check of a surface, run to the end, with the default options; see
+/// [`Context::check`].
+///
+/// ```
+/// use polymass::Surface;
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let report = polymass::check(&Surface::triangles(&positions, &triangles))?;
+/// assert!(report.is_solid());
+/// # Ok::<(), polymass::Error>(())
+/// ```
+pub fn check(surface: &Surface<'_>) -> Result<Diagnostics> {
+    Context::new()?.check(surface)
+}
+
+/// Area properties of a simple polygon in the xy plane; see
+/// [`Context::polygon`].
+///
+/// ```
+/// let p = polymass::polygon(&[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]])?;
+/// assert_eq!((p.area, p.centroid), (2.0, [1.0, 0.5]));
+/// # Ok::<(), polymass::Error>(())
+/// ```
+pub fn polygon(points: &[[f64; 2]]) -> Result<PolygonProperties> {
+    Context::new()?.polygon(points)
+}
+
+/// The version of the C library loaded at run time, "MAJOR.MINOR.PATCH".
+/// Its major version is that of the header the bindings were generated from
+/// (the shared library is linked by its SONAME, `libpolymass.so.MAJOR`).
+///
+/// ```
+/// assert!(polymass::version().starts_with("1."));
+/// ```
+pub fn version() -> &'static str {
+    // SAFETY: static, NUL-terminated text, never NULL.
+    let text = unsafe { CStr::from_ptr(sys::polymass_version_string()) };
+    text.to_str().unwrap_or("(version text is not UTF-8)")
+}

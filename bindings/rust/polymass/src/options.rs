@@ -1,0 +1,194 @@
+//! What a context checks and accepts (`polymass_options`).
+
+use polymass_sys as sys;
+
+use crate::surface::struct_size;
+
+/// How strictly surfaces are checked, set on a [`Context`](crate::Context)
+/// (or given to [`Mesh::with_options`](crate::Mesh::with_options)). Built
+/// with chained setters from the defaults: every check on, nothing welded,
+/// the default planarity tolerance. The library validates the values when
+/// the options are applied.
+///
+/// ```
+/// use polymass::Options;
+///
+/// // An STL triangle soup from a CAD export: weld vertices closer than 1e-9
+/// // of the part's size before checking that the surface is closed.
+/// let options = Options::new().weld_vertices(true).weld_tolerance(1e-9);
+/// assert!(options.welds_vertices());
+/// assert_eq!(options.weld_tolerance_value(), 1e-9);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Options {
+    flags: u32,
+    planarity_tolerance: f64,
+    weld_tolerance: f64,
+}
+
+impl Options {
+    /// The defaults: all checks on, nothing accepted, exact welding off.
+    ///
+    /// ```
+    /// assert!(!polymass::Options::new().skips_topology_checks());
+    /// ```
+    pub fn new() -> Options {
+        Options::default()
+    }
+
+    fn with_flag(mut self, flag: u32, on: bool) -> Options {
+        if on {
+            self.flags |= flag;
+        } else {
+            self.flags &= !flag;
+        }
+        self
+    }
+
+    /// Trusted input (a game engine at load time): skip the open,
+    /// non-manifold, orientation and planarity checks. Index range and
+    /// finiteness are always checked. Results then carry
+    /// [`Warnings::UNCHECKED`](crate::Warnings::UNCHECKED).
+    ///
+    /// ```
+    /// assert!(polymass::Options::new().skip_topology_checks(true).skips_topology_checks());
+    /// ```
+    pub fn skip_topology_checks(self, on: bool) -> Options {
+        self.with_flag(sys::POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, on)
+    }
+
+    /// Accept a solid whose faces are all reversed: its properties are those
+    /// of the solid turned the right way, with
+    /// [`Warnings::INVERTED`](crate::Warnings::INVERTED).
+    ///
+    /// ```
+    /// assert!(polymass::Options::new().accept_inverted(true).accepts_inverted());
+    /// ```
+    pub fn accept_inverted(self, on: bool) -> Options {
+        self.with_flag(sys::POLYMASS_OPTION_ACCEPT_INVERTED, on)
+    }
+
+    /// Treat vertices at the same position (within
+    /// [`weld_tolerance`](Options::weld_tolerance)) as one for the topology
+    /// checks, as STL-style triangle soups need. The integrals do not depend
+    /// on it.
+    ///
+    /// ```
+    /// assert!(polymass::Options::new().weld_vertices(true).welds_vertices());
+    /// ```
+    pub fn weld_vertices(self, on: bool) -> Options {
+        self.with_flag(sys::POLYMASS_OPTION_WELD_VERTICES, on)
+    }
+
+    /// Accept edges shared by more than two faces when they are traversed as
+    /// often in one direction as in the other (solids touching along an
+    /// edge), with [`Warnings::NON_MANIFOLD`](crate::Warnings::NON_MANIFOLD).
+    ///
+    /// ```
+    /// assert!(polymass::Options::new().accept_non_manifold(true).accepts_non_manifold());
+    /// ```
+    pub fn accept_non_manifold(self, on: bool) -> Options {
+        self.with_flag(sys::POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, on)
+    }
+
+    /// The largest distance of a polygon face's vertex from the face's plane,
+    /// relative to the face's diameter; 0 means the library's default
+    /// (`POLYMASS_DEFAULT_PLANARITY_TOLERANCE`, 1e-6).
+    ///
+    /// ```
+    /// let options = polymass::Options::new().planarity_tolerance(1e-4);
+    /// assert_eq!(options.planarity_tolerance_value(), 1e-4);
+    /// ```
+    pub fn planarity_tolerance(mut self, tolerance: f64) -> Options {
+        self.planarity_tolerance = tolerance;
+        self
+    }
+
+    /// With [`weld_vertices`](Options::weld_vertices): vertices whose
+    /// coordinates each differ by at most this fraction of the largest extent
+    /// of the mesh's bounding box are one. 0 (the default) welds equal
+    /// positions only; at most `POLYMASS_MAX_WELD_TOLERANCE` (1e-3).
+    ///
+    /// ```
+    /// let options = polymass::Options::new().weld_vertices(true).weld_tolerance(1e-9);
+    /// assert_eq!(options.weld_tolerance_value(), 1e-9);
+    /// ```
+    pub fn weld_tolerance(mut self, tolerance: f64) -> Options {
+        self.weld_tolerance = tolerance;
+        self
+    }
+
+    /// Whether the topology checks are skipped.
+    ///
+    /// ```
+    /// assert!(!polymass::Options::new().skips_topology_checks());
+    /// ```
+    pub fn skips_topology_checks(&self) -> bool {
+        self.flags & sys::POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS != 0
+    }
+
+    /// Whether inverted solids are accepted.
+    ///
+    /// ```
+    /// assert!(!polymass::Options::new().accepts_inverted());
+    /// ```
+    pub fn accepts_inverted(&self) -> bool {
+        self.flags & sys::POLYMASS_OPTION_ACCEPT_INVERTED != 0
+    }
+
+    /// Whether coincident vertices are welded for the checks.
+    ///
+    /// ```
+    /// assert!(!polymass::Options::new().welds_vertices());
+    /// ```
+    pub fn welds_vertices(&self) -> bool {
+        self.flags & sys::POLYMASS_OPTION_WELD_VERTICES != 0
+    }
+
+    /// Whether balanced non-manifold edges are accepted.
+    ///
+    /// ```
+    /// assert!(!polymass::Options::new().accepts_non_manifold());
+    /// ```
+    pub fn accepts_non_manifold(&self) -> bool {
+        self.flags & sys::POLYMASS_OPTION_ACCEPT_NON_MANIFOLD != 0
+    }
+
+    /// The planarity tolerance (0: the library's default; options read back
+    /// from a [`Context`](crate::Context) give the default's value instead).
+    ///
+    /// ```
+    /// assert_eq!(polymass::Options::new().planarity_tolerance_value(), 0.0);
+    /// ```
+    pub fn planarity_tolerance_value(&self) -> f64 {
+        self.planarity_tolerance
+    }
+
+    /// The weld tolerance (0: exactly equal positions).
+    ///
+    /// ```
+    /// assert_eq!(polymass::Options::new().weld_tolerance_value(), 0.0);
+    /// ```
+    pub fn weld_tolerance_value(&self) -> f64 {
+        self.weld_tolerance
+    }
+
+    pub(crate) fn to_raw(self) -> sys::polymass_options {
+        sys::polymass_options {
+            struct_size: struct_size::<sys::polymass_options>(),
+            flags: self.flags,
+            planarity_tolerance: self.planarity_tolerance,
+            weld_tolerance: self.weld_tolerance,
+        }
+    }
+
+    /// Keeps every flag bit, known to this crate or not, so options read from
+    /// a context and set again are unchanged.
+    pub(crate) fn from_raw(raw: &sys::polymass_options) -> Options {
+        Options {
+            flags: raw.flags,
+            planarity_tolerance: raw.planarity_tolerance,
+            weld_tolerance: raw.weld_tolerance,
+        }
+    }
+}

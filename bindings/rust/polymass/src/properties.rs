@@ -1,0 +1,138 @@
+//! The mass properties of a body (`polymass_mass_properties`).
+
+use polymass_sys as sys;
+
+/// Mass properties of a solid body. Matrices are `[row][column]`; the inertia
+/// tensor is `I = ∫ρ(|r|²𝟙 − r rᵀ) dV`, so the diagonal holds the moments
+/// (`Ixx = ∫ρ(y² + z²)`) and the off-diagonal terms are the *negated*
+/// products of inertia (`Ixy = −∫ρxy`): the tensor URDF, SDFormat, MuJoCo,
+/// PhysX and Bullet take.
+///
+/// ```
+/// use polymass::{Body, Surface};
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let surface = Surface::triangles(&positions, &triangles);
+/// let p = polymass::mass_properties(&surface, &Body::mass(6.0))?;
+/// assert!((p.center_of_mass[0] - 0.25).abs() < 1e-15);
+/// // Principal moments ascending; the axes are the columns of a rotation.
+/// assert!(p.principal_moments[0] <= p.principal_moments[1]);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct MassProperties {
+    /// Enclosed volume (L³), positive.
+    pub volume: f64,
+    /// Mass (M).
+    pub mass: f64,
+    /// Density (M/L³): the one given, or mass / volume.
+    pub density: f64,
+    /// Total area of the faces (L²).
+    pub surface_area: f64,
+    /// Centre of mass (L).
+    pub center_of_mass: [f64; 3],
+    /// Inertia tensor about the centre of mass (M·L²).
+    pub inertia: [[f64; 3]; 3],
+    /// Inertia tensor about the origin.
+    pub inertia_origin: [[f64; 3]; 3],
+    /// Inertia tensor about the body's reference point
+    /// ([`Body::about`](crate::Body::about)).
+    pub inertia_point: [[f64; 3]; 3],
+    /// Eigenvalues of `inertia`, ascending.
+    pub principal_moments: [f64; 3],
+    /// A rotation `R` (det +1) whose column `i` is the axis of
+    /// `principal_moments[i]`: `inertia = R diag(principal_moments) Rᵀ`.
+    pub principal_axes: [[f64; 3]; 3],
+    /// What was accepted on the way (all clear for a checked, proper solid).
+    pub warnings: Warnings,
+}
+
+impl MassProperties {
+    pub(crate) fn from_raw(raw: &sys::polymass_mass_properties) -> MassProperties {
+        MassProperties {
+            volume: raw.volume,
+            mass: raw.mass,
+            density: raw.density,
+            surface_area: raw.surface_area,
+            center_of_mass: raw.center_of_mass,
+            inertia: matrix(&raw.inertia),
+            inertia_origin: matrix(&raw.inertia_origin),
+            inertia_point: matrix(&raw.inertia_point),
+            principal_moments: raw.principal_moments,
+            principal_axes: matrix(&raw.principal_axes),
+            warnings: Warnings(raw.warnings),
+        }
+    }
+}
+
+/// A row-major 3x3 matrix as rows.
+fn matrix(row_major: &[f64; 9]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|row| std::array::from_fn(|column| row_major[3 * row + column]))
+}
+
+/// What the library accepted while computing, as bits (`POLYMASS_WARNING_*`).
+/// Bits this crate has no constant for are kept.
+///
+/// ```
+/// use polymass::Warnings;
+///
+/// let warnings = Warnings::INVERTED | Warnings::UNCHECKED;
+/// assert!(warnings.contains(Warnings::INVERTED));
+/// assert!(!warnings.contains(Warnings::DEGENERATE_FACES));
+/// assert!(Warnings::default().is_empty());
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct Warnings(u32);
+
+impl Warnings {
+    /// An inverted solid was accepted and turned
+    /// ([`Options::accept_inverted`](crate::Options::accept_inverted)).
+    pub const INVERTED: Warnings = Warnings(sys::POLYMASS_WARNING_INVERTED);
+    /// Some faces have zero area; they are harmless.
+    pub const DEGENERATE_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_DEGENERATE_FACES);
+    /// The topology checks were skipped
+    /// ([`Options::skip_topology_checks`](crate::Options::skip_topology_checks)).
+    pub const UNCHECKED: Warnings = Warnings(sys::POLYMASS_WARNING_UNCHECKED);
+    /// Balanced non-manifold edges were accepted
+    /// ([`Options::accept_non_manifold`](crate::Options::accept_non_manifold)).
+    pub const NON_MANIFOLD: Warnings = Warnings(sys::POLYMASS_WARNING_NON_MANIFOLD);
+
+    /// Whether every bit of `other` is set.
+    ///
+    /// ```
+    /// use polymass::Warnings;
+    ///
+    /// assert!(Warnings::UNCHECKED.contains(Warnings::UNCHECKED));
+    /// ```
+    pub fn contains(self, other: Warnings) -> bool {
+        self.0 & other.0 == other.0
+    }
+
+    /// Whether no warning is set.
+    ///
+    /// ```
+    /// assert!(polymass::Warnings::default().is_empty());
+    /// ```
+    pub fn is_empty(self) -> bool {
+        self.0 == 0
+    }
+
+    /// The raw `POLYMASS_WARNING_*` bits.
+    ///
+    /// ```
+    /// assert_eq!(polymass::Warnings::INVERTED.bits(), 1);
+    /// ```
+    pub fn bits(self) -> u32 {
+        self.0
+    }
+}
+
+impl std::ops::BitOr for Warnings {
+    type Output = Warnings;
+
+    fn bitor(self, other: Warnings) -> Warnings {
+        Warnings(self.0 | other.0)
+    }
+}

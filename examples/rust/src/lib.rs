@@ -1,0 +1,3 @@
+//! Helpers of the polymass example programs.
+
+pub mod binary_stl;
