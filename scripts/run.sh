@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job: install the dependencies, build the release preset and run the
-# C example (later: the command-line tool).
+# The main job: install the dependencies, build the release preset, and run
+# the polymass tool on a mesh bundled with the project: an aluminium L-bracket
+# drawn in millimetres (examples/data/bracket.obj), reported in SI units.
 #
 #   scripts/run.sh
 set -euo pipefail
@@ -9,4 +10,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release
-./build/release/examples/c/mass_properties
+./build/release/src/cli/polymass examples/data/bracket.obj --units mm --density 2700

@@ -1,0 +1,378 @@
+"""Tests of the polymass command-line tool, run by ctest:
+
+    POLYMASS_EXE=<polymass> POLYMASS_SOURCE_DIR=<repo> POLYMASS_WORK_DIR=<scratch> \
+        python3 tests/cli/test_cli.py
+
+Every format is generated here (fixtures.py) for one solid whose exact
+properties come from rational arithmetic (examples/data/generate.py), and the
+tool's outputs are parsed back with json and xml.etree, never matched as text.
+"""
+
+import importlib.util
+import json
+import math
+import os
+import struct
+import subprocess
+import sys
+import unittest
+import xml.etree.ElementTree as ElementTree
+from pathlib import Path
+
+import fixtures
+
+EXE = os.environ["POLYMASS_EXE"]
+SOURCE = Path(os.environ["POLYMASS_SOURCE_DIR"])
+WORK = Path(os.environ["POLYMASS_WORK_DIR"])
+
+_spec = importlib.util.spec_from_file_location("generate", SOURCE / "examples" / "data" / "generate.py")
+generate = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(generate)
+
+EXIT_OK, EXIT_INVALID_MESH, EXIT_USAGE, EXIT_UNREADABLE = 0, 1, 2, 3
+RTOL = 1e-12
+
+
+def run(*args):
+    result = subprocess.run([EXE, *map(str, args)], capture_output=True, text=True, timeout=120)
+    # A crash is a negative return code (a signal) or a sanitizer report.
+    assert result.returncode >= 0, f"polymass {args} crashed: {result.returncode}\n{result.stderr}"
+    assert "Sanitizer" not in result.stderr and "runtime error" not in result.stderr, result.stderr
+    return result
+
+
+def run_json(*args):
+    result = run("--json", *args)
+    return result, json.loads(result.stdout)
+
+
+def scaled(expected, factor):
+    """The exact properties of the solid with every length times factor."""
+    return {
+        "volume": expected["volume"] * factor**3,
+        "center_of_mass": [c * factor for c in expected["center_of_mass"]],
+        "inertia": [[x * factor**5 for x in row] for row in expected["inertia"]],
+        "inertia_origin": [[x * factor**5 for x in row] for row in expected["inertia_origin"]],
+        "surface_area": expected["surface_area"] * factor**2,
+    }
+
+
+class Case(unittest.TestCase):
+    def assert_close(self, actual, expected, scale, what):
+        self.assertLessEqual(abs(actual - expected), RTOL * scale, f"{what}: {actual} != {expected}")
+
+    def assert_matrix(self, actual, expected, what):
+        norm = max(abs(x) for row in expected for x in row)
+        for i in range(3):
+            for j in range(3):
+                self.assert_close(actual[i][j], expected[i][j], norm, f"{what}[{i}][{j}]")
+
+    def assert_properties(self, out, expected, density=1.0, what=""):
+        self.assertNotIn("error", out, what)
+        self.assert_close(out["volume"], expected["volume"], expected["volume"], what + " volume")
+        self.assert_close(out["mass"], density * expected["volume"], density * expected["volume"], what + " mass")
+        size = max(abs(c) for c in expected["center_of_mass"]) + expected["volume"] ** (1 / 3)
+        for k in range(3):
+            self.assert_close(out["center_of_mass"][k], expected["center_of_mass"][k], size, what + " com")
+        dens = lambda m: [[density * x for x in row] for row in m]
+        self.assert_matrix(out["inertia"], dens(expected["inertia"]), what + " inertia")
+        self.assert_matrix(out["inertia_origin"], dens(expected["inertia_origin"]), what + " inertia_origin")
+        self.assert_close(out["surface_area"], expected["surface_area"], expected["surface_area"], what + " area")
+
+
+class EveryFormat(Case):
+    """The same solid written in every format gives the same exact values."""
+
+    @classmethod
+    def setUpClass(cls):
+        WORK.mkdir(parents=True, exist_ok=True)
+        cls.vertices, cls.faces = fixtures.bracket()
+        cls.expected = generate.exact_properties(cls.vertices, cls.faces)
+        for name, writer in fixtures.WRITERS.items():
+            writer(WORK / name, cls.vertices, cls.faces)
+
+    def test_each_format_gives_the_exact_properties(self):
+        for name in fixtures.WRITERS:
+            with self.subTest(file=name):
+                result, out = run_json(WORK / name)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                self.assert_properties(out, self.expected, what=name)
+                self.assertEqual(out["warnings"], [])
+
+    def test_polygon_formats_keep_their_faces(self):
+        for name in ("bracket.obj", "bracket_ascii.ply", "bracket_binary.ply", "bracket.off"):
+            with self.subTest(file=name):
+                _, out = run_json(WORK / name)
+                self.assertEqual(out["faces"], len(self.faces))
+                self.assertEqual(out["vertices"], len(self.vertices))
+
+    def test_stl_soup_is_welded(self):
+        _, out = run_json(WORK / "bracket_binary.stl")
+        self.assertEqual(out["vertices"], len(self.vertices))
+        self.assertEqual(out["faces"], len(fixtures.triangles(self.faces)))
+
+    def test_units_and_scale(self):
+        for options, factor in ((["--units", "mm"], 1e-3), (["--units", "in"], 0.0254), (["--scale", "4"], 4.0),
+                                (["--units", "cm", "--scale", "2"], 0.02)):
+            with self.subTest(options=options):
+                _, out = run_json(*options, WORK / "bracket.obj")
+                self.assert_properties(out, scaled(self.expected, factor), what=str(options))
+
+    def test_density_and_mass(self):
+        _, out = run_json("--density", "2700", WORK / "bracket.obj")
+        self.assert_properties(out, self.expected, density=2700.0, what="density")
+        self.assertEqual(out["density"], 2700.0)
+        _, out = run_json("--mass", "3", WORK / "bracket.obj")
+        density = 3.0 / self.expected["volume"]
+        self.assert_properties(out, self.expected, density=density, what="mass")
+
+    def test_about_a_point(self):
+        point = (1.5, -0.5, 2.0)
+        _, out = run_json("--about", ",".join(map(str, point)), WORK / "bracket.obj")
+        # Parallel axes: I_P = I_C + m (|d|^2 1 - d d^T), d = C - P.
+        mass = out["mass"]
+        d = [c - p for c, p in zip(self.expected["center_of_mass"], point)]
+        expected = [[self.expected["inertia"][i][j] + mass * ((sum(x * x for x in d) if i == j else 0) - d[i] * d[j])
+                     for j in range(3)] for i in range(3)]
+        self.assert_matrix(out["inertia_point"], expected, "inertia_point")
+        self.assertEqual(out["about_point"], list(point))
+
+    def test_principal_axes_diagonalise_the_inertia(self):
+        _, out = run_json(WORK / "bracket.obj")
+        inertia = out["inertia"]
+        norm = max(abs(x) for row in inertia for x in row)
+        for moment, axis in zip(out["principal_moments"], out["principal_axes"]):
+            image = [sum(inertia[i][j] * axis[j] for j in range(3)) for i in range(3)]
+            for i in range(3):
+                self.assert_close(image[i], moment * axis[i], norm, "I a = lambda a")
+
+    def test_inertial_xml_of_each_format(self):
+        expected = self.expected
+        mass = 2.5
+        inertia = [[mass / expected["volume"] * x for x in row] for row in expected["inertia"]]
+        self.assertNotEqual(inertia[0][1], 0.0)  # the sign convention must show
+        com = expected["center_of_mass"]
+        floats = lambda text: [float(x) for x in text.split()]
+
+        urdf = ElementTree.fromstring(run("--urdf", "--mass", mass, WORK / "bracket.obj").stdout)
+        self.assertEqual(urdf.tag, "inertial")
+        origin = floats(urdf.find("origin").get("xyz"))
+        self.assertEqual(floats(urdf.find("origin").get("rpy")), [0, 0, 0])
+        self.assert_close(float(urdf.find("mass").get("value")), mass, mass, "urdf mass")
+        element = urdf.find("inertia")
+        urdf_values = {k: float(element.get(k)) for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")}
+
+        sdf = ElementTree.fromstring(run("--sdf", "--mass", mass, WORK / "bracket.obj").stdout)
+        pose = floats(sdf.find("pose").text)
+        self.assertEqual(pose[3:], [0, 0, 0])
+        self.assert_close(float(sdf.find("mass").text), mass, mass, "sdf mass")
+        sdf_values = {k: float(sdf.find("inertia/" + k).text) for k in urdf_values}
+
+        mjcf = ElementTree.fromstring(run("--mjcf", "--mass", mass, WORK / "bracket.obj").stdout)
+        self.assert_close(float(mjcf.get("mass")), mass, mass, "mjcf mass")
+        full = floats(mjcf.get("fullinertia"))
+        # MuJoCo's order: M11 M22 M33 M12 M13 M23.
+        mjcf_values = dict(zip(("ixx", "iyy", "izz", "ixy", "ixz", "iyz"), full))
+
+        # Every format takes the tensor element: ixy = I[0][1] = -integral rho x y dV.
+        element_of = {"ixx": (0, 0), "ixy": (0, 1), "ixz": (0, 2), "iyy": (1, 1), "iyz": (1, 2), "izz": (2, 2)}
+        norm = max(abs(x) for row in inertia for x in row)
+        for name, values in (("urdf", urdf_values), ("sdf", sdf_values), ("mjcf", mjcf_values)):
+            for key, (i, j) in element_of.items():
+                self.assert_close(values[key], inertia[i][j], norm, f"{name} {key}")
+        for name, position in (("urdf", origin), ("sdf", pose[:3]), ("mjcf", floats(mjcf.get("pos")))):
+            for k in range(3):
+                self.assert_close(position[k], com[k], abs(com[k]) + 1, f"{name} com")
+        # ixy is the negated product of inertia: for this L the product
+        # integral x' y' over the centroid is negative, so ixy is positive.
+        self.assertGreater(urdf_values["ixy"], 0.0)
+
+    def test_table_output(self):
+        result = run(WORK / "bracket.obj", "--about", "origin")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        for label in ("volume", "mass", "centre of mass", "inertia about COM", "inertia about origin",
+                      "principal moments", "surface area", "warnings"):
+            self.assertIn(label, result.stdout)
+
+    def test_several_files_and_a_summary(self):
+        result, out = run_json(WORK / "bracket.obj", WORK / "bracket.off", WORK / "missing.obj")
+        self.assertEqual(result.returncode, EXIT_UNREADABLE)
+        self.assertEqual([f["file"] for f in out["files"]],
+                         [str(WORK / "bracket.obj"), str(WORK / "bracket.off"), str(WORK / "missing.obj")])
+        self.assertEqual(out["summary"]["valid"], 2)
+        self.assertEqual(out["summary"]["failed"], 1)
+        self.assert_close(out["summary"]["total_volume"], 2 * self.expected["volume"], self.expected["volume"], "sum")
+        self.assertEqual(out["files"][2]["error"]["category"], "unreadable")
+
+    def test_parts_and_combined(self):
+        # Two OBJ objects: the bracket and the same bracket moved along x.
+        n = len(self.vertices)
+        moved = [(x + 10, y, z) for x, y, z in self.vertices]
+        lines = ["o first"] + [f"v {x!r} {y!r} {z!r}" for x, y, z in self.vertices + moved]
+        lines += ["f " + " ".join(str(i + 1) for i in f) for f in self.faces]
+        lines += ["o second"] + ["f " + " ".join(str(i + 1 + n) for i in f) for f in self.faces]
+        path = WORK / "two_parts.obj"
+        path.write_text("\n".join(lines) + "\n")
+        _, out = run_json(path)
+        self.assertEqual([p["name"] for p in out["parts"]], ["first", "second"])
+        self.assert_properties(out["parts"][0], self.expected, what="part 1")
+        self.assert_close(out["volume"], 2 * self.expected["volume"], self.expected["volume"], "combined")
+        self.assert_close(out["center_of_mass"][0], self.expected["center_of_mass"][0] + 5, 10, "combined com")
+
+
+class BadInput(Case):
+    """Malformed files and invalid solids: a clear error and exit status."""
+
+    @classmethod
+    def setUpClass(cls):
+        WORK.mkdir(parents=True, exist_ok=True)
+        cls.vertices, cls.faces = fixtures.bracket()
+
+    def expect_error(self, path, category, exit_code, message_part=""):
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, exit_code, result.stderr)
+        self.assertEqual(out["error"]["category"], category, out)
+        self.assertIn(message_part, out["error"]["message"])
+        self.assertIn(category, result.stderr)
+        return out
+
+    def write(self, name, data):
+        path = WORK / name
+        path.write_bytes(data if isinstance(data, bytes) else data.encode())
+        return path
+
+    def test_truncated_binary_stl(self):
+        data = fixtures.binary_stl_bytes(self.vertices, self.faces)
+        self.expect_error(self.write("truncated.stl", data[:-30]), "unreadable", EXIT_UNREADABLE, "truncated")
+
+    def test_garbage(self):
+        garbage = bytes((i * 7919 + 13) % 256 for i in range(3000))
+        for name in ("garbage.stl", "garbage.ply", "garbage.obj", "garbage.off", "garbage.glb", "garbage.3mf",
+                     "garbage.gltf"):
+            with self.subTest(file=name):
+                result, out = run_json(self.write(name, garbage))
+                self.assertIn(result.returncode, (EXIT_UNREADABLE, EXIT_INVALID_MESH), result.stderr)
+                self.assertIn("error", out)
+
+    def test_empty_files(self):
+        for name in ("empty.obj", "empty.stl", "empty.ply", "empty.off", "empty.glb"):
+            with self.subTest(file=name):
+                self.expect_error(self.write(name, b""), "unreadable", EXIT_UNREADABLE, "empty")
+
+    def test_missing_file_and_unknown_format(self):
+        self.expect_error(WORK / "does_not_exist.obj", "unreadable", EXIT_UNREADABLE, "cannot open")
+        self.expect_error(self.write("mesh.xyz", "1 2 3\n"), "unreadable", EXIT_UNREADABLE, "unknown format")
+
+    def test_index_past_the_end(self):
+        n = len(self.vertices)
+        obj = "\n".join([f"v {x!r} {y!r} {z!r}" for x, y, z in self.vertices] +
+                        ["f " + " ".join(str(i + 1) for i in f) for f in self.faces[:-1]] + [f"f 1 2 {n + 5}"])
+        self.expect_error(self.write("index.obj", obj), "index_out_of_range", EXIT_INVALID_MESH)
+        off = ["OFF", f"{n} {len(self.faces)} 0"] + [" ".join(map(repr, v)) for v in self.vertices]
+        off += [" ".join(map(str, [len(f)] + f)) for f in self.faces[:-1]] + [f"3 0 1 {n}"]
+        self.expect_error(self.write("index.off", "\n".join(off)), "index_out_of_range", EXIT_INVALID_MESH)
+        ply = fixtures.ply_header("ascii", n, 1) + b"\n".join(" ".join(map(repr, v)).encode() for v in self.vertices)
+        self.expect_error(self.write("index.ply", ply + f"\n3 0 1 {n + 100}\n".encode()), "index_out_of_range",
+                          EXIT_INVALID_MESH)
+
+    def test_nan_coordinates(self):
+        vertices = list(self.vertices)
+        vertices[2] = (float("nan"), 0.0, 0.0)
+        fixtures.write_obj(WORK / "nan.obj", vertices, self.faces)
+        self.expect_error(WORK / "nan.obj", "non_finite", EXIT_INVALID_MESH)
+        fixtures.write_binary_stl(WORK / "nan.stl", vertices, self.faces)
+        self.expect_error(WORK / "nan.stl", "non_finite", EXIT_INVALID_MESH)
+        fixtures.write_off(WORK / "nan.off", vertices, self.faces)
+        self.expect_error(WORK / "nan.off", "non_finite", EXIT_INVALID_MESH)
+
+    def test_invalid_solids(self):
+        fixtures.write_obj(WORK / "open.obj", self.vertices, self.faces[:-1])
+        self.expect_error(WORK / "open.obj", "open", EXIT_INVALID_MESH)
+        inverted = [list(reversed(f)) for f in self.faces]
+        fixtures.write_obj(WORK / "inverted.obj", self.vertices, inverted)
+        self.expect_error(WORK / "inverted.obj", "inverted", EXIT_INVALID_MESH)
+        flipped = self.faces[:-1] + [list(reversed(self.faces[-1]))]
+        fixtures.write_obj(WORK / "flipped.obj", self.vertices, flipped)
+        self.expect_error(WORK / "flipped.obj", "inconsistent_orientation", EXIT_INVALID_MESH)
+        small = self.faces + [[0, 1]]
+        fixtures.write_obj(WORK / "small.obj", self.vertices, small)
+        self.expect_error(WORK / "small.obj", "face_too_small", EXIT_INVALID_MESH)
+
+    def test_accept_inverted(self):
+        inverted = [list(reversed(f)) for f in self.faces]
+        fixtures.write_obj(WORK / "inverted.obj", self.vertices, inverted)
+        result, out = run_json("--accept-inverted", WORK / "inverted.obj")
+        self.assertEqual(result.returncode, EXIT_OK)
+        self.assertIn("inverted", out["warnings"])
+        self.assert_properties(out, generate.exact_properties(self.vertices, self.faces), what="turned")
+
+    def test_no_check(self):
+        fixtures.write_obj(WORK / "bracket.obj", self.vertices, self.faces)
+        result, out = run_json("--no-check", WORK / "bracket.obj")
+        self.assertEqual(result.returncode, EXIT_OK)
+        self.assertIn("unchecked", out["warnings"])
+
+    def test_usage_errors(self):
+        for args in ([], ["--density"], ["--density", "-1", "x.obj"], ["--mass", "1", "--density", "1", "x.obj"],
+                     ["--units", "furlong", "x.obj"], ["--about", "1,2", "x.obj"], ["--frobnicate", "x.obj"],
+                     ["--json", "--urdf", "x.obj"], ["--weld-tolerance", "1", "x.obj"]):
+            with self.subTest(args=args):
+                result = run(*args)
+                self.assertEqual(result.returncode, EXIT_USAGE)
+                self.assertTrue(result.stderr.startswith("polymass: "), result.stderr)
+
+    def test_help(self):
+        result = run("--help")
+        self.assertEqual(result.returncode, EXIT_OK)
+        for word in ("Usage", "--density", "--units", "--json", "--urdf", "check", "Exit status"):
+            self.assertIn(word, result.stdout)
+
+
+class Check(Case):
+    """polymass check: diagnostics and their exit status."""
+
+    def test_valid_solid_with_two_shells(self):
+        result = run("check", "--json", SOURCE / "examples" / "data" / "hollow_box.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        report = json.loads(result.stdout)
+        self.assertEqual(report["valid"], "yes")
+        self.assertEqual(report["shells"], 2)
+        self.assertEqual(report["open_edges"]["count"], 0)
+
+    def test_open_mesh_is_located(self):
+        vertices, faces = fixtures.bracket()
+        fixtures.write_obj(WORK / "open.obj", vertices, faces[:-1])
+        result = run("check", "--json", WORK / "open.obj")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH)
+        report = json.loads(result.stdout)
+        self.assertEqual(report["category"], "open")
+        self.assertEqual(report["open_edges"]["count"], len(faces[-1]))
+        edge = report["open_edges"]["first_edge"]
+        self.assertTrue(set(edge) <= set(faces[-1]), edge)
+        text = run("check", WORK / "open.obj")
+        self.assertEqual(text.returncode, EXIT_INVALID_MESH)
+        self.assertIn("NOT A VALID SOLID", text.stdout)
+
+    def test_unreadable(self):
+        result = run("check", WORK / "does_not_exist.stl")
+        self.assertEqual(result.returncode, EXIT_UNREADABLE)
+
+
+class BundledMeshes(Case):
+    """Every mesh of examples/data gives the properties expected.json documents."""
+
+    def test_bundled_meshes(self):
+        data = SOURCE / "examples" / "data"
+        expected = json.loads((data / "expected.json").read_text())
+        self.assertGreaterEqual(len(expected), 4)
+        for name, values in expected.items():
+            with self.subTest(mesh=name):
+                result, out = run_json(data / name)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                self.assert_properties(out, values, what=name)
+                self.assertEqual(out["faces"], values["faces"])
+                self.assertEqual(out["vertices"], values["vertices"])
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
