@@ -1,0 +1,94 @@
+"""check(): the full report, with locations, and welding of triangle soups."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from shapes import SHAPES
+
+import polymass
+
+
+def _soup(vertices, triangles):
+    """Each triangle with its own three vertices, as an STL file stores them."""
+    return vertices[np.asarray(triangles).reshape(-1)], np.arange(3 * len(triangles)).reshape(-1, 3)
+
+
+def test_a_closed_solid_is_ok_and_counted(tetrahedron):
+    report = polymass.check(*tetrahedron)
+    assert report.ok and report.error is None and report.message == ""
+    assert (report.face_count, report.used_vertex_count, report.edge_count) == (4, 4, 6)
+    assert report.open_edges == 0 and report.first_open_edge is None
+    assert report.signed_volume == pytest.approx(1 / 6, rel=1e-15)
+    report.raise_if_error()
+
+
+def test_an_open_surface_is_located(tetrahedron):
+    vertices, faces = tetrahedron
+    report = polymass.check(vertices, faces[1:])
+    assert report.error is polymass.OpenSurfaceError
+    assert report.open_edges == 3
+    assert set(report.first_open_edge) <= set(faces[0])
+
+
+def test_a_flipped_face_is_located(cube):
+    vertices, faces = cube
+    faces = [face[::-1] if k == 3 else face for k, face in enumerate(faces)]
+    report = polymass.check(vertices, faces)
+    assert report.error is polymass.InconsistentOrientationError
+    assert report.misoriented_edges == 4
+    assert set(report.first_misoriented_edge) <= set(faces[3])
+
+
+def test_non_planar_faces_are_counted_with_their_worst_deviation(cube):
+    vertices, faces = cube
+    bent = vertices.copy()
+    bent[7] += 0.01  # the corner (1, 1, 1) off the planes of its three squares
+    report = polymass.check(bent, faces)
+    assert report.error is polymass.NonPlanarFaceError
+    assert report.non_planar_faces == 3
+    assert report.first_non_planar_face in (1, 3, 5)
+    assert 1e-3 < report.max_non_planarity < 1e-2
+    # A looser tolerance accepts it.
+    assert polymass.check(bent, faces, planarity_tolerance=0.01).ok
+
+
+def test_degenerate_faces_are_harmless_and_reported(tetrahedron):
+    vertices, faces = tetrahedron
+    # A zero-area sliver (0, 1, 1)-style: a repeated vertex, used in both directions.
+    extra = np.array([[0, 1, 0], [0, 0, 1]])
+    report = polymass.check(vertices, np.vstack([faces, extra]))
+    assert report.degenerate_faces == 2 and report.first_degenerate_face == 4
+
+
+@pytest.mark.parametrize("shape", ["star", "hull"])
+def test_welding_makes_a_triangle_soup_a_solid(shape):
+    vertices, triangles = SHAPES[shape](np.random.default_rng(7))
+    soup_vertices, soup_faces = _soup(vertices, triangles)
+    assert polymass.check(soup_vertices, soup_faces).error is polymass.OpenSurfaceError
+    welded = polymass.check(soup_vertices, soup_faces, weld=True)
+    assert welded.ok and welded.used_vertex_count == len(vertices)
+    from_soup = polymass.mass_properties(soup_vertices, soup_faces, weld=True)
+    indexed = polymass.mass_properties(vertices, triangles)
+    assert from_soup.volume == pytest.approx(indexed.volume, rel=1e-14)
+
+
+def test_a_weld_tolerance_joins_vertices_carrying_rounding_noise(tetrahedron):
+    vertices, faces = tetrahedron
+    soup_vertices, soup_faces = _soup(vertices, faces)
+    noisy = soup_vertices + np.random.default_rng(8).uniform(-1e-12, 1e-12, soup_vertices.shape)
+    assert not polymass.check(noisy, soup_faces, weld=True).ok
+    assert polymass.check(noisy, soup_faces, weld=1e-9).ok
+
+
+@pytest.mark.parametrize("tolerance", [-1.0, 0.1, float("nan")])
+def test_a_weld_tolerance_out_of_range_is_refused(tetrahedron, tolerance):
+    with pytest.raises(polymass.InvalidArgumentError, match="weld_tolerance"):
+        polymass.check(*tetrahedron, weld=tolerance)
+
+
+def test_skip_checks_trusts_the_input_and_says_so(tetrahedron):
+    vertices, faces = tetrahedron
+    result = polymass.mass_properties(vertices, faces, skip_checks=True)
+    assert result.warnings & polymass.Warnings.UNCHECKED
+    assert result.volume == pytest.approx(1 / 6, rel=1e-15)
