@@ -2,12 +2,14 @@
 # they should.
 #
 #   cmake -DBUILD_DIR=<build> -DWORK_DIR=<scratch> -DCONFIG=<config> -DVERSION=1.0.0
-#         -DMAJOR=1 [-DEXPECT_SHLIBS=ON] -P check_deb.cmake
+#         -DMAJOR=1 [-DEXPECT_SHLIBS=ON] [-DEXPECT_TOOLS=ON] -P check_deb.cmake
 #
 # libpolymass<MAJOR>: only /usr/lib/.../libpolymass.so.<MAJOR>{,.<minor>.<patch>},
 #   a shlibs file and the ldconfig scripts.
 # libpolymass-dev: the headers, the namelink, the archive, polymass.pc and the
 #   CMake package; Depends on libpolymass<MAJOR> (= VERSION-release).
+# polymass-tools (with EXPECT_TOOLS): /usr/bin/polymass only; Depends on
+#   libpolymass<MAJOR> (= VERSION-release).
 
 cmake_minimum_required(VERSION 3.25)
 
@@ -33,8 +35,12 @@ endif()
 
 file(GLOB debs "${WORK_DIR}/*.deb")
 list(LENGTH debs deb_count)
-if(NOT deb_count EQUAL 2)
-    message(FATAL_ERROR "FAIL: expected 2 .deb files, got: ${debs}")
+set(expected_deb_count 2)
+if(EXPECT_TOOLS)
+    set(expected_deb_count 3)
+endif()
+if(NOT deb_count EQUAL expected_deb_count)
+    message(FATAL_ERROR "FAIL: expected ${expected_deb_count} .deb files, got: ${debs}")
 endif()
 
 function(deb_field deb field out_var)
@@ -75,6 +81,11 @@ foreach(deb IN LISTS debs)
         if(NOT depends MATCHES "^libpolymass${MAJOR} \\(= ${VERSION}-[0-9]+\\)")
             fail("${package} should depend on libpolymass${MAJOR} (= ${VERSION}-...), not '${depends}'")
         endif()
+    elseif(package STREQUAL "polymass-tools" AND EXPECT_TOOLS)
+        set(expected "polymass")
+        if(NOT depends MATCHES "^libpolymass${MAJOR} \\(= ${VERSION}-[0-9]+\\)")
+            fail("${package} should depend on libpolymass${MAJOR} (= ${VERSION}-...), not '${depends}'")
+        endif()
     else()
         fail("unexpected package ${package}")
         continue()
@@ -90,7 +101,7 @@ foreach(deb IN LISTS debs)
     foreach(pattern IN LISTS expected)
         set(found FALSE)
         foreach(file IN LISTS files)
-            if(file MATCHES "^usr/(include|lib)/(.*/)?${pattern}$")
+            if(file MATCHES "^usr/(include|lib|bin)/(.*/)?${pattern}$")
                 set(found TRUE)
             endif()
         endforeach()
@@ -101,4 +112,4 @@ foreach(deb IN LISTS debs)
 endforeach()
 
 polymass_exit_if_failed()
-message(STATUS "OK: libpolymass${MAJOR} and libpolymass-dev are as expected")
+message(STATUS "OK: the ${expected_deb_count} Debian packages are as expected")
