@@ -138,7 +138,9 @@ def exact_properties(vertices, faces):
     origin = [[(trace if i == j else 0) - second[i][j] for j in range(3)] for i in range(3)]
     com_second = [[second[i][j] - volume * com[i] * com[j] for j in range(3)] for i in range(3)]
     com_trace = sum(com_second[i][i] for i in range(3))
-    about_com = [[(com_trace if i == j else 0) - com_second[i][j] for j in range(3)] for i in range(3)]
+    about_com = [
+        [(com_trace if i == j else 0) - com_second[i][j] for j in range(3)] for i in range(3)
+    ]
     return {
         "volume": float(volume),
         "center_of_mass": [float(c) for c in com],

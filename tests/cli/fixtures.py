@@ -77,7 +77,9 @@ def ply_header(encoding, vertex_count, face_count):
 def write_ascii_ply(path, vertices, faces):
     body = [" ".join(repr(c) for c in v) for v in vertices]
     body += [" ".join(str(x) for x in [len(f)] + f) for f in faces]
-    path.write_bytes(ply_header("ascii", len(vertices), len(faces)) + ("\n".join(body) + "\n").encode())
+    path.write_bytes(
+        ply_header("ascii", len(vertices), len(faces)) + ("\n".join(body) + "\n").encode()
+    )
 
 
 def write_binary_ply(path, vertices, faces):
@@ -115,15 +117,29 @@ def gltf_document(vertices, faces, uri):
         "buffers": [{"byteLength": len(buffer)}],
         "bufferViews": [
             {"buffer": 0, "byteOffset": 0, "byteLength": len(positions), "target": 34962},
-            {"buffer": 0, "byteOffset": len(positions), "byteLength": len(indices), "target": 34963},
+            {
+                "buffer": 0,
+                "byteOffset": len(positions),
+                "byteLength": len(indices),
+                "target": 34963,
+            },
         ],
         "accessors": [
-            {"bufferView": 0, "componentType": 5126, "count": len(local), "type": "VEC3", "min": lo, "max": hi},
+            {
+                "bufferView": 0,
+                "componentType": 5126,
+                "count": len(local),
+                "type": "VEC3",
+                "min": lo,
+                "max": hi,
+            },
             {"bufferView": 1, "componentType": 5125, "count": 3 * len(tris), "type": "SCALAR"},
         ],
     }
     if uri:
-        document["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
+        document["buffers"][0]["uri"] = (
+            "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
+        )
     return document, buffer
 
 
@@ -137,13 +153,20 @@ def write_glb(path, vertices, faces):
     text = json.dumps(document).encode()
     text += b" " * (-len(text) % 4)
     buffer += b"\0" * (-len(buffer) % 4)
-    chunks = struct.pack("<I4s", len(text), b"JSON") + text + struct.pack("<I4s", len(buffer), b"BIN\0") + buffer
+    chunks = (
+        struct.pack("<I4s", len(text), b"JSON")
+        + text
+        + struct.pack("<I4s", len(buffer), b"BIN\0")
+        + buffer
+    )
     path.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
 
 
 def write_3mf(path, vertices, faces):
     vertex_xml = "".join('<vertex x="{!r}" y="{!r}" z="{!r}"/>'.format(*v) for v in vertices)
-    triangle_xml = "".join(f'<triangle v1="{a}" v2="{b}" v3="{c}"/>' for a, b, c in triangles(faces))
+    triangle_xml = "".join(
+        f'<triangle v1="{a}" v2="{b}" v3="{c}"/>' for a, b, c in triangles(faces)
+    )
     model = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<model unit="millimeter" xml:lang="en-US" '

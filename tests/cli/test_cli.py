@@ -10,14 +10,11 @@ tool's outputs are parsed back with json and xml.etree, never matched as text.
 
 import importlib.util
 import json
-import math
 import os
-import struct
 import subprocess
-import sys
 import unittest
-import xml.etree.ElementTree as ElementTree
 from pathlib import Path
+from xml.etree import ElementTree
 
 import fixtures
 
@@ -25,7 +22,9 @@ EXE = os.environ["POLYMASS_EXE"]
 SOURCE = Path(os.environ["POLYMASS_SOURCE_DIR"])
 WORK = Path(os.environ["POLYMASS_WORK_DIR"])
 
-_spec = importlib.util.spec_from_file_location("generate", SOURCE / "examples" / "data" / "generate.py")
+_spec = importlib.util.spec_from_file_location(
+    "generate", SOURCE / "examples" / "data" / "generate.py"
+)
 generate = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(generate)
 
@@ -34,7 +33,9 @@ RTOL = 1e-12
 
 
 def run(*args):
-    result = subprocess.run([EXE, *map(str, args)], capture_output=True, text=True, timeout=120)
+    result = subprocess.run(
+        [EXE, *map(str, args)], capture_output=True, text=True, timeout=120, check=False
+    )
     # A crash is a negative return code (a signal) or a sanitizer report.
     assert result.returncode >= 0, f"polymass {args} crashed: {result.returncode}\n{result.stderr}"
     assert "Sanitizer" not in result.stderr and "runtime error" not in result.stderr, result.stderr
@@ -59,7 +60,9 @@ def scaled(expected, factor):
 
 class Case(unittest.TestCase):
     def assert_close(self, actual, expected, scale, what):
-        self.assertLessEqual(abs(actual - expected), RTOL * scale, f"{what}: {actual} != {expected}")
+        self.assertLessEqual(
+            abs(actual - expected), RTOL * scale, f"{what}: {actual} != {expected}"
+        )
 
     def assert_matrix(self, actual, expected, what):
         norm = max(abs(x) for row in expected for x in row)
@@ -70,14 +73,22 @@ class Case(unittest.TestCase):
     def assert_properties(self, out, expected, density=1.0, what=""):
         self.assertNotIn("error", out, what)
         self.assert_close(out["volume"], expected["volume"], expected["volume"], what + " volume")
-        self.assert_close(out["mass"], density * expected["volume"], density * expected["volume"], what + " mass")
+        self.assert_close(
+            out["mass"], density * expected["volume"], density * expected["volume"], what + " mass"
+        )
         size = max(abs(c) for c in expected["center_of_mass"]) + expected["volume"] ** (1 / 3)
         for k in range(3):
-            self.assert_close(out["center_of_mass"][k], expected["center_of_mass"][k], size, what + " com")
+            self.assert_close(
+                out["center_of_mass"][k], expected["center_of_mass"][k], size, what + " com"
+            )
         dens = lambda m: [[density * x for x in row] for row in m]
         self.assert_matrix(out["inertia"], dens(expected["inertia"]), what + " inertia")
-        self.assert_matrix(out["inertia_origin"], dens(expected["inertia_origin"]), what + " inertia_origin")
-        self.assert_close(out["surface_area"], expected["surface_area"], expected["surface_area"], what + " area")
+        self.assert_matrix(
+            out["inertia_origin"], dens(expected["inertia_origin"]), what + " inertia_origin"
+        )
+        self.assert_close(
+            out["surface_area"], expected["surface_area"], expected["surface_area"], what + " area"
+        )
 
 
 class EveryFormat(Case):
@@ -112,8 +123,12 @@ class EveryFormat(Case):
         self.assertEqual(out["faces"], len(fixtures.triangles(self.faces)))
 
     def test_units_and_scale(self):
-        for options, factor in ((["--units", "mm"], 1e-3), (["--units", "in"], 0.0254), (["--scale", "4"], 4.0),
-                                (["--units", "cm", "--scale", "2"], 0.02)):
+        for options, factor in (
+            (["--units", "mm"], 1e-3),
+            (["--units", "in"], 0.0254),
+            (["--scale", "4"], 4.0),
+            (["--units", "cm", "--scale", "2"], 0.02),
+        ):
             with self.subTest(options=options):
                 _, out = run_json(*options, WORK / "bracket.obj")
                 self.assert_properties(out, scaled(self.expected, factor), what=str(options))
@@ -132,8 +147,14 @@ class EveryFormat(Case):
         # Parallel axes: I_P = I_C + m (|d|^2 1 - d d^T), d = C - P.
         mass = out["mass"]
         d = [c - p for c, p in zip(self.expected["center_of_mass"], point)]
-        expected = [[self.expected["inertia"][i][j] + mass * ((sum(x * x for x in d) if i == j else 0) - d[i] * d[j])
-                     for j in range(3)] for i in range(3)]
+        expected = [
+            [
+                self.expected["inertia"][i][j]
+                + mass * ((sum(x * x for x in d) if i == j else 0) - d[i] * d[j])
+                for j in range(3)
+            ]
+            for i in range(3)
+        ]
         self.assert_matrix(out["inertia_point"], expected, "inertia_point")
         self.assertEqual(out["about_point"], list(point))
 
@@ -175,12 +196,23 @@ class EveryFormat(Case):
         mjcf_values = dict(zip(("ixx", "iyy", "izz", "ixy", "ixz", "iyz"), full))
 
         # Every format takes the tensor element: ixy = I[0][1] = -integral rho x y dV.
-        element_of = {"ixx": (0, 0), "ixy": (0, 1), "ixz": (0, 2), "iyy": (1, 1), "iyz": (1, 2), "izz": (2, 2)}
+        element_of = {
+            "ixx": (0, 0),
+            "ixy": (0, 1),
+            "ixz": (0, 2),
+            "iyy": (1, 1),
+            "iyz": (1, 2),
+            "izz": (2, 2),
+        }
         norm = max(abs(x) for row in inertia for x in row)
         for name, values in (("urdf", urdf_values), ("sdf", sdf_values), ("mjcf", mjcf_values)):
             for key, (i, j) in element_of.items():
                 self.assert_close(values[key], inertia[i][j], norm, f"{name} {key}")
-        for name, position in (("urdf", origin), ("sdf", pose[:3]), ("mjcf", floats(mjcf.get("pos")))):
+        for name, position in (
+            ("urdf", origin),
+            ("sdf", pose[:3]),
+            ("mjcf", floats(mjcf.get("pos"))),
+        ):
             for k in range(3):
                 self.assert_close(position[k], com[k], abs(com[k]) + 1, f"{name} com")
         # ixy is the negated product of inertia: for this L the product
@@ -190,18 +222,33 @@ class EveryFormat(Case):
     def test_table_output(self):
         result = run(WORK / "bracket.obj", "--about", "origin")
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
-        for label in ("volume", "mass", "centre of mass", "inertia about COM", "inertia about origin",
-                      "principal moments", "surface area", "warnings"):
+        for label in (
+            "volume",
+            "mass",
+            "centre of mass",
+            "inertia about COM",
+            "inertia about origin",
+            "principal moments",
+            "surface area",
+            "warnings",
+        ):
             self.assertIn(label, result.stdout)
 
     def test_several_files_and_a_summary(self):
         result, out = run_json(WORK / "bracket.obj", WORK / "bracket.off", WORK / "missing.obj")
         self.assertEqual(result.returncode, EXIT_UNREADABLE)
-        self.assertEqual([f["file"] for f in out["files"]],
-                         [str(WORK / "bracket.obj"), str(WORK / "bracket.off"), str(WORK / "missing.obj")])
+        self.assertEqual(
+            [f["file"] for f in out["files"]],
+            [str(WORK / "bracket.obj"), str(WORK / "bracket.off"), str(WORK / "missing.obj")],
+        )
         self.assertEqual(out["summary"]["valid"], 2)
         self.assertEqual(out["summary"]["failed"], 1)
-        self.assert_close(out["summary"]["total_volume"], 2 * self.expected["volume"], self.expected["volume"], "sum")
+        self.assert_close(
+            out["summary"]["total_volume"],
+            2 * self.expected["volume"],
+            self.expected["volume"],
+            "sum",
+        )
         self.assertEqual(out["files"][2]["error"]["category"], "unreadable")
 
     def test_parts_and_combined(self):
@@ -216,8 +263,12 @@ class EveryFormat(Case):
         _, out = run_json(path)
         self.assertEqual([p["name"] for p in out["parts"]], ["first", "second"])
         self.assert_properties(out["parts"][0], self.expected, what="part 1")
-        self.assert_close(out["volume"], 2 * self.expected["volume"], self.expected["volume"], "combined")
-        self.assert_close(out["center_of_mass"][0], self.expected["center_of_mass"][0] + 5, 10, "combined com")
+        self.assert_close(
+            out["volume"], 2 * self.expected["volume"], self.expected["volume"], "combined"
+        )
+        self.assert_close(
+            out["center_of_mass"][0], self.expected["center_of_mass"][0] + 5, 10, "combined com"
+        )
 
 
 class BadInput(Case):
@@ -243,15 +294,26 @@ class BadInput(Case):
 
     def test_truncated_binary_stl(self):
         data = fixtures.binary_stl_bytes(self.vertices, self.faces)
-        self.expect_error(self.write("truncated.stl", data[:-30]), "unreadable", EXIT_UNREADABLE, "truncated")
+        self.expect_error(
+            self.write("truncated.stl", data[:-30]), "unreadable", EXIT_UNREADABLE, "truncated"
+        )
 
     def test_garbage(self):
         garbage = bytes((i * 7919 + 13) % 256 for i in range(3000))
-        for name in ("garbage.stl", "garbage.ply", "garbage.obj", "garbage.off", "garbage.glb", "garbage.3mf",
-                     "garbage.gltf"):
+        for name in (
+            "garbage.stl",
+            "garbage.ply",
+            "garbage.obj",
+            "garbage.off",
+            "garbage.glb",
+            "garbage.3mf",
+            "garbage.gltf",
+        ):
             with self.subTest(file=name):
                 result, out = run_json(self.write(name, garbage))
-                self.assertIn(result.returncode, (EXIT_UNREADABLE, EXIT_INVALID_MESH), result.stderr)
+                self.assertIn(
+                    result.returncode, (EXIT_UNREADABLE, EXIT_INVALID_MESH), result.stderr
+                )
                 self.assertIn("error", out)
 
     def test_empty_files(self):
@@ -261,19 +323,31 @@ class BadInput(Case):
 
     def test_missing_file_and_unknown_format(self):
         self.expect_error(WORK / "does_not_exist.obj", "unreadable", EXIT_UNREADABLE, "cannot open")
-        self.expect_error(self.write("mesh.xyz", "1 2 3\n"), "unreadable", EXIT_UNREADABLE, "unknown format")
+        self.expect_error(
+            self.write("mesh.xyz", "1 2 3\n"), "unreadable", EXIT_UNREADABLE, "unknown format"
+        )
 
     def test_index_past_the_end(self):
         n = len(self.vertices)
-        obj = "\n".join([f"v {x!r} {y!r} {z!r}" for x, y, z in self.vertices] +
-                        ["f " + " ".join(str(i + 1) for i in f) for f in self.faces[:-1]] + [f"f 1 2 {n + 5}"])
+        obj = "\n".join(
+            [f"v {x!r} {y!r} {z!r}" for x, y, z in self.vertices]
+            + ["f " + " ".join(str(i + 1) for i in f) for f in self.faces[:-1]]
+            + [f"f 1 2 {n + 5}"]
+        )
         self.expect_error(self.write("index.obj", obj), "index_out_of_range", EXIT_INVALID_MESH)
         off = ["OFF", f"{n} {len(self.faces)} 0"] + [" ".join(map(repr, v)) for v in self.vertices]
         off += [" ".join(map(str, [len(f)] + f)) for f in self.faces[:-1]] + [f"3 0 1 {n}"]
-        self.expect_error(self.write("index.off", "\n".join(off)), "index_out_of_range", EXIT_INVALID_MESH)
-        ply = fixtures.ply_header("ascii", n, 1) + b"\n".join(" ".join(map(repr, v)).encode() for v in self.vertices)
-        self.expect_error(self.write("index.ply", ply + f"\n3 0 1 {n + 100}\n".encode()), "index_out_of_range",
-                          EXIT_INVALID_MESH)
+        self.expect_error(
+            self.write("index.off", "\n".join(off)), "index_out_of_range", EXIT_INVALID_MESH
+        )
+        ply = fixtures.ply_header("ascii", n, 1) + b"\n".join(
+            " ".join(map(repr, v)).encode() for v in self.vertices
+        )
+        self.expect_error(
+            self.write("index.ply", ply + f"\n3 0 1 {n + 100}\n".encode()),
+            "index_out_of_range",
+            EXIT_INVALID_MESH,
+        )
 
     def test_nan_coordinates(self):
         vertices = list(self.vertices)
@@ -304,7 +378,9 @@ class BadInput(Case):
         result, out = run_json("--accept-inverted", WORK / "inverted.obj")
         self.assertEqual(result.returncode, EXIT_OK)
         self.assertIn("inverted", out["warnings"])
-        self.assert_properties(out, generate.exact_properties(self.vertices, self.faces), what="turned")
+        self.assert_properties(
+            out, generate.exact_properties(self.vertices, self.faces), what="turned"
+        )
 
     def test_no_check(self):
         fixtures.write_obj(WORK / "bracket.obj", self.vertices, self.faces)
@@ -313,9 +389,17 @@ class BadInput(Case):
         self.assertIn("unchecked", out["warnings"])
 
     def test_usage_errors(self):
-        for args in ([], ["--density"], ["--density", "-1", "x.obj"], ["--mass", "1", "--density", "1", "x.obj"],
-                     ["--units", "furlong", "x.obj"], ["--about", "1,2", "x.obj"], ["--frobnicate", "x.obj"],
-                     ["--json", "--urdf", "x.obj"], ["--weld-tolerance", "1", "x.obj"]):
+        for args in (
+            [],
+            ["--density"],
+            ["--density", "-1", "x.obj"],
+            ["--mass", "1", "--density", "1", "x.obj"],
+            ["--units", "furlong", "x.obj"],
+            ["--about", "1,2", "x.obj"],
+            ["--frobnicate", "x.obj"],
+            ["--json", "--urdf", "x.obj"],
+            ["--weld-tolerance", "1", "x.obj"],
+        ):
             with self.subTest(args=args):
                 result = run(*args)
                 self.assertEqual(result.returncode, EXIT_USAGE)
