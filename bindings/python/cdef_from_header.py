@@ -25,7 +25,9 @@ _STDINT_LIMITS = {"UINT64_MAX": 2**64 - 1, "UINT32_MAX": 2**32 - 1, "INT32_MAX":
 
 _INCLUDE = re.compile(r'#\s*include\s*[<"]([^>"]+)[>"]')
 _DEFINE = re.compile(r"#\s*define\s+([A-Za-z_]\w*)(\(.*?\))?\s*(.*)")
-_CONDITION_DEFINED = re.compile(r"!?\s*defined\s*\(\s*([A-Za-z_]\w*)\s*\)|!?\s*defined\s+([A-Za-z_]\w*)")
+_CONDITION_DEFINED = re.compile(
+    r"!?\s*defined\s*\(\s*([A-Za-z_]\w*)\s*\)|!?\s*defined\s+([A-Za-z_]\w*)"
+)
 
 
 class HeaderError(RuntimeError):

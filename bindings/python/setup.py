@@ -42,7 +42,9 @@ def _repository_include_dirs(scratch: Path) -> list[Path] | None:
     cmake_lists = REPOSITORY / "CMakeLists.txt"
     if not (include / "polymass/polymass.h").is_file() or not template.is_file():
         return None
-    match = re.search(r"project\(\s*polymass\s+VERSION\s+(\d+)\.(\d+)\.(\d+)", cmake_lists.read_text())
+    match = re.search(
+        r"project\(\s*polymass\s+VERSION\s+(\d+)\.(\d+)\.(\d+)", cmake_lists.read_text()
+    )
     if not match:
         raise RuntimeError(f"no project(polymass VERSION x.y.z) in {cmake_lists}")
     major, minor, patch = match.groups()

@@ -1,4 +1,5 @@
-"""Shared settings: hypothesis is derandomized so that CI runs are reproducible."""
+"""Shared settings: hypothesis is derandomized and keeps no example database, so that
+every run (CI included) tests the same examples and leaves nothing behind."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ settings.register_profile(
     "polymass",
     max_examples=100,
     derandomize=True,
+    database=None,
     deadline=None,
     suppress_health_check=[HealthCheck.too_slow],
 )

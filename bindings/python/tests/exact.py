@@ -43,9 +43,7 @@ def _norm(vector) -> Decimal:
 def _inertia_from_second_moments(second):
     """I = trace(S) Identity - S for S the second moments integral of x x^T."""
     trace = second[0][0] + second[1][1] + second[2][2]
-    return [
-        [(trace if i == j else 0) - second[i][j] for j in range(3)] for i in range(3)
-    ]
+    return [[(trace if i == j else 0) - second[i][j] for j in range(3)] for i in range(3)]
 
 
 def exact_solid(vertices: np.ndarray, faces) -> ExactSolid:

@@ -63,7 +63,10 @@ def extrusion(rng: np.random.Generator, count: int = 9):
     outline = random_simple_polygon(rng, count)
     height = rng.uniform(0.2, 2.0)
     vertices = np.vstack(
-        [np.column_stack([outline, np.zeros(count)]), np.column_stack([outline, np.full(count, height)])]
+        [
+            np.column_stack([outline, np.zeros(count)]),
+            np.column_stack([outline, np.full(count, height)]),
+        ]
     )
     bottom = list(range(count - 1, -1, -1))  # seen from below: counter-clockwise
     top = list(range(count, 2 * count))

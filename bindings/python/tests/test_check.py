@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from shapes import SHAPES
 
 import polymass
+from shapes import SHAPES
 
 
 def _soup(vertices, triangles):

@@ -41,7 +41,11 @@ def _bent_cube(cube):
 
 
 CASES = [
-    (polymass.NonFiniteError, "vertex 2", lambda t, c: (np.where([[0], [0], [1], [0]], np.nan, t[0]), t[1])),
+    (
+        polymass.NonFiniteError,
+        "vertex 2",
+        lambda t, c: (np.where([[0], [0], [1], [0]], np.nan, t[0]), t[1]),
+    ),
     (polymass.IndexOutOfRangeError, "9", lambda t, c: (t[0], np.where(t[1] == 3, 9, t[1]))),
     (polymass.FaceTooSmallError, "face 1 has 2 vertices", lambda t, c: (t[0], [[0, 2, 1], [0, 1]])),
     (polymass.OpenSurfaceError, "used by one face only", lambda t, c: _open_tetrahedron(t)),
@@ -55,7 +59,9 @@ CASES = [
 
 
 @pytest.mark.parametrize(("error", "where", "make"), CASES, ids=[c[0].__name__ for c in CASES])
-def test_each_mesh_error_is_its_own_exception_with_the_message(tetrahedron, cube, error, where, make):
+def test_each_mesh_error_is_its_own_exception_with_the_message(
+    tetrahedron, cube, error, where, make
+):
     vertices, faces = make(tetrahedron, cube)
     with pytest.raises(error) as raised:
         polymass.mass_properties(vertices, faces)

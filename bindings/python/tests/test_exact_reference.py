@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from exact import assert_close, exact_solid
-from shapes import ROTATIONS, SHAPES
 
 import polymass
+from exact import assert_close, exact_solid
+from shapes import ROTATIONS, SHAPES
 
 RELATIVE = 1e-12
 
@@ -78,7 +78,8 @@ def test_inertia_about_a_point_is_the_parallel_axis_tensor(about):
     d = [c - float(p) for c, p in zip(exact.center_of_mass, point)]
     shifted = [
         [
-            7.5 * exact.inertia[i][j] + mass * ((sum(x * x for x in d) if i == j else 0) - d[i] * d[j])
+            7.5 * exact.inertia[i][j]
+            + mass * ((sum(x * x for x in d) if i == j else 0) - d[i] * d[j])
             for j in range(3)
         ]
         for i in range(3)
@@ -94,4 +95,9 @@ def test_a_given_mass_sets_the_density():
     exact = exact_solid(vertices, faces)
     assert properties.mass == 2.0
     assert_close(properties.density, 2 / exact.volume, RELATIVE, "density")
-    assert_close(properties.inertia, [[2 / exact.volume * x for x in row] for row in exact.inertia], RELATIVE, "inertia")
+    assert_close(
+        properties.inertia,
+        [[2 / exact.volume * x for x in row] for row in exact.inertia],
+        RELATIVE,
+        "inertia",
+    )

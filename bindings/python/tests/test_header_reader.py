@@ -9,7 +9,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from cdef_from_header import HeaderError, read_header  # noqa: E402
+from cdef_from_header import HeaderError, read_header
 
 
 def _read(tmp_path: Path, text: str):

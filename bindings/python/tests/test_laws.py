@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from shapes import ROTATIONS, SHAPES
 
 import polymass
+from shapes import ROTATIONS, SHAPES
 
 RELATIVE = 1e-12
 
@@ -69,11 +69,13 @@ def test_scaling_by_s_scales_volume_by_s3_and_inertia_by_s5(shape, seed, s):
 def test_disjoint_solids_add(first, second, seed):
     a_vertices, a_faces = _solid(first, seed)
     b_vertices, b_faces = _solid(second, seed + 1)
-    b_vertices = b_vertices + [10.0, 0.0, 0.0]  # every shape fits in a radius-5 ball
+    b_vertices = b_vertices + np.array([10.0, 0.0, 0.0])  # every shape fits in a radius-5 ball
     a = polymass.mass_properties(a_vertices, a_faces, about="origin")
     b = polymass.mass_properties(b_vertices, b_faces, about="origin")
     both_vertices = np.vstack([a_vertices, b_vertices])
-    both_faces = [list(f) for f in a_faces] + [list(np.asarray(f) + len(a_vertices)) for f in b_faces]
+    both_faces = [list(f) for f in a_faces] + [
+        list(np.asarray(f) + len(a_vertices)) for f in b_faces
+    ]
     both = polymass.mass_properties(both_vertices, both_faces, about="origin")
     _close(both.volume, a.volume + b.volume)
     _close(both.inertia_origin, a.inertia_origin + b.inertia_origin)

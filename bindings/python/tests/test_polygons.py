@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from exact import assert_close, exact_polygon
-from shapes import random_simple_polygon
 
 import polymass
+from exact import assert_close, exact_polygon
+from shapes import random_simple_polygon
 
 RELATIVE = 1e-12
 

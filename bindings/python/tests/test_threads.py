@@ -5,9 +5,9 @@ from __future__ import annotations
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from shapes import SHAPES, torus
 
 import polymass
+from shapes import SHAPES, torus
 
 THREADS = 8
 

@@ -9,10 +9,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import trimesh
-from exact import assert_close, exact_solid
-from shapes import SHAPES, random_rotation, torus
 
 import polymass
+from exact import assert_close, exact_solid
+from shapes import SHAPES, random_rotation, torus
 
 
 def _triangles(vertices, faces) -> np.ndarray:

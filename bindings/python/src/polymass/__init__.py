@@ -45,6 +45,7 @@ def library_version() -> str:
     """The version of the C library loaded at run time ("MAJOR.MINOR.PATCH")."""
     return _ffi.string(_lib.polymass_version_string()).decode()
 
+
 __all__ = [
     "Diagnostics",
     "Error",

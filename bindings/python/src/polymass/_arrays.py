@@ -10,8 +10,9 @@ first, which copies it.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Sequence, Union
+from typing import Any, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -120,7 +121,9 @@ def mesh_description(
     desc.vertex_count = len(positions)
     desc.position_stride = row_stride(positions)
     desc.index_type = (
-        _header.POLYMASS_INDEX_UINT16 if indices.dtype == np.uint16 else _header.POLYMASS_INDEX_UINT32
+        _header.POLYMASS_INDEX_UINT16
+        if indices.dtype == np.uint16
+        else _header.POLYMASS_INDEX_UINT32
     )
     desc.indices = address(indices)
     desc.index_count = indices.size
@@ -138,9 +141,7 @@ def _faces(faces: FacesLike, face_sizes: npt.ArrayLike | None):
         if flat.ndim != 1:
             raise ValueError(f"with face_sizes, faces must be the flat indices; got {flat.shape}")
         starts = np.cumsum(sizes) - sizes
-        indices = _as_indices(
-            flat, lambda p: int(np.searchsorted(starts, p, side="right")) - 1
-        )
+        indices = _as_indices(flat, lambda p: int(np.searchsorted(starts, p, side="right")) - 1)
         return indices, (None if sizes.size and np.all(sizes == 3) else sizes)
     if isinstance(faces, np.ndarray) or _is_rectangular(faces):
         table = np.asarray(faces)

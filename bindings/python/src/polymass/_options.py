@@ -37,4 +37,3 @@ def apply_options(
     options.flags = flags
     options.planarity_tolerance = 0.0 if planarity_tolerance is None else planarity_tolerance
     raise_for_status(lib.polymass_context_set_options(context, options), context)
-

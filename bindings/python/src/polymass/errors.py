@@ -107,7 +107,7 @@ class ZeroAreaError(Error, ValueError):
 
 
 class ResultOutOfRangeError(Error, ArithmeticError):
-    """A result does not fit in a double (coordinates, density, mass or point too large or small)."""
+    """A result does not fit in a double: coordinates, density, mass or point too large or small."""
 
     status = _header.POLYMASS_ERROR_OVERFLOW
 

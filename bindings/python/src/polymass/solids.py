@@ -15,8 +15,9 @@ Faces are counter-clockwise seen from outside (normals point out).
 from __future__ import annotations
 
 import enum
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Literal, Sequence, Union
+from typing import Literal, Union
 
 import numpy as np
 import numpy.typing as npt
