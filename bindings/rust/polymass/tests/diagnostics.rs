@@ -1,0 +1,103 @@
+//! check() reports every problem with counts and first locations, and
+//! nothing for a valid solid.
+
+mod common;
+
+use common::*;
+use polymass::{Context, ErrorKind, Occurrences, Options};
+
+#[test]
+fn a_valid_solid_has_a_clean_report() {
+    let shape = cuboid([0.0; 3], [1.0, 2.0, 3.0]);
+    let report = polymass::check(&shape.surface()).unwrap();
+    assert!(report.is_solid(), "{report:?}");
+    assert_eq!(
+        (
+            report.face_count,
+            report.used_vertex_count,
+            report.edge_count
+        ),
+        (6, 8, 12)
+    );
+    for none in [
+        report.non_finite_vertices,
+        report.out_of_range_indices,
+        report.small_faces,
+        report.degenerate_faces,
+        report.non_planar_faces,
+    ] {
+        assert_eq!(none, Occurrences::default());
+    }
+    for none in [
+        report.open_edges,
+        report.non_manifold_edges,
+        report.misoriented_edges,
+    ] {
+        assert_eq!(none, Occurrences::default());
+    }
+    assert_close(report.signed_volume.unwrap(), 6.0, "signed volume");
+    assert!(report.max_non_planarity <= 1e-15);
+}
+
+#[test]
+fn an_open_surface_reports_its_edges_and_the_error_mesh_creation_gives() {
+    let mut shape = corner_tetrahedron(1.0, 1.0, 1.0);
+    shape.indices.truncate(9); // the slanted face (1, 2, 3) is gone
+    shape.face_sizes.truncate(3);
+    let report = polymass::check(&shape.surface()).unwrap();
+    let error = report.error.clone().unwrap();
+    assert_eq!(error.kind(), ErrorKind::Open);
+    let create_error = polymass::Mesh::new(&shape.surface()).unwrap_err();
+    assert_eq!(error, create_error);
+    assert_eq!(report.open_edges.count, 3);
+    let [a, b] = report.open_edges.first.unwrap();
+    assert!(
+        a != 0 && b != 0 && a != b,
+        "an edge of the missing face: ({a}, {b})"
+    );
+    assert_eq!(report.misoriented_edges.first, None);
+}
+
+#[test]
+fn every_problem_is_counted_not_only_the_first() {
+    let mut shape = cuboid([0.0; 3], [1.0; 3]);
+    shape.positions[7][2] = 1.25; // the top quad (face 1) bends
+    shape.indices.truncate(20); // and the face x = max is gone
+    shape.face_sizes.truncate(5);
+    let report = polymass::check(&shape.surface()).unwrap();
+    assert_eq!(report.error.unwrap().kind(), ErrorKind::Open);
+    assert_eq!(report.open_edges.count, 4);
+    assert_eq!(
+        report.non_planar_faces,
+        Occurrences {
+            count: 1,
+            first: Some(1)
+        }
+    );
+    assert!(report.max_non_planarity > 0.01);
+}
+
+#[test]
+fn an_inverted_solid_has_a_negative_signed_volume() {
+    let report = polymass::check(&corner_tetrahedron(1.0, 2.0, 3.0).reversed().surface()).unwrap();
+    assert_eq!(report.error.unwrap().kind(), ErrorKind::Inverted);
+    assert_close(report.signed_volume.unwrap(), -1.0, "signed volume");
+}
+
+#[test]
+fn checks_run_even_when_the_options_skip_them() {
+    let shape = one_face_flipped();
+    let mut context = Context::with_options(&Options::new().skip_topology_checks(true)).unwrap();
+    let report = context.check(&shape.surface()).unwrap();
+    assert_eq!(
+        report.error.unwrap().kind(),
+        ErrorKind::InconsistentOrientation
+    );
+    assert_eq!(report.misoriented_edges.count, 3);
+}
+
+fn one_face_flipped() -> Shape {
+    let mut shape = corner_tetrahedron(1.0, 1.0, 1.0);
+    shape.indices[9..12].reverse();
+    shape
+}

@@ -1,0 +1,96 @@
+//! Send/Sync where the C threading rules allow it, and concurrent use: one
+//! mesh read by many threads at once, contexts moved between threads, free
+//! functions from any thread; every result identical to a serial run.
+
+mod common;
+
+use common::*;
+use polymass::{Body, Context, Diagnostics, Error, MassProperties, Mesh, Surface};
+
+fn assert_send_sync<T: Send + Sync>() {}
+fn assert_send<T: Send>() {}
+
+#[test]
+fn thread_safety_markers() {
+    assert_send_sync::<Mesh>();
+    assert_send_sync::<Surface<'static>>();
+    assert_send_sync::<MassProperties>();
+    assert_send_sync::<Diagnostics>();
+    assert_send_sync::<Error>();
+    assert_send::<Context>(); // and not Sync: a compile_fail doc test of Context
+}
+
+const THREADS: usize = 4;
+const ROUNDS: usize = 200;
+
+fn bodies() -> Vec<Body> {
+    (1..=ROUNDS)
+        .map(|i| Body::density(i as f64).about([i as f64, -1.0, 0.5]))
+        .collect()
+}
+
+#[test]
+fn one_mesh_read_by_many_threads_at_once() {
+    let shape = cuboid([0.0; 3], [1.0, 2.0, 3.0])
+        .with(&corner_tetrahedron(1.0, 2.0, 3.0).translated([4.0, 0.0, 0.0]));
+    let mesh = Mesh::new(&shape.surface()).unwrap();
+    let bodies = bodies();
+    let mut serial_context = Context::new().unwrap();
+    let serial: Vec<MassProperties> = bodies
+        .iter()
+        .map(|body| serial_context.mesh_mass_properties(&mesh, body).unwrap())
+        .collect();
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..THREADS)
+            .map(|_| {
+                let (mesh, bodies) = (&mesh, &bodies);
+                scope.spawn(move || {
+                    let mut context = Context::new().unwrap();
+                    bodies
+                        .iter()
+                        .map(|body| context.mesh_mass_properties(mesh, body).unwrap())
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        for worker in workers {
+            assert_eq!(worker.join().unwrap(), serial);
+        }
+    });
+}
+
+#[test]
+fn meshes_and_contexts_move_between_threads() {
+    let shape = triangular_prism(3.0, 2.0, 5.0);
+    let mesh = Mesh::new(&shape.surface()).unwrap();
+    let context = Context::new().unwrap();
+    let (mesh, mut context) = std::thread::spawn(move || (mesh, context)).join().unwrap();
+    let p = context
+        .mesh_mass_properties(&mesh, &Body::default())
+        .unwrap();
+    assert_matches(&p, &triangular_prism_exact(3.0, 2.0, 5.0), "moved mesh");
+    // Dropped on another thread than the one that made them.
+    std::thread::spawn(move || drop((mesh, context)))
+        .join()
+        .unwrap();
+}
+
+#[test]
+fn free_functions_from_many_threads_with_shared_slices() {
+    let shape = corner_tetrahedron(1.0, 2.0, 3.0);
+    let surface = shape.surface();
+    let exact = corner_tetrahedron_exact(1.0, 2.0, 3.0);
+    std::thread::scope(|scope| {
+        for _ in 0..THREADS {
+            scope.spawn(|| {
+                for _ in 0..ROUNDS {
+                    let p = polymass::mass_properties(&surface, &Body::default()).unwrap();
+                    assert_matches(&p, &exact, "tetrahedron");
+                    let failure = polymass::polygon(&[[0.0, 0.0], [1.0, 0.0]]).unwrap_err();
+                    // Each thread's message is its own call's.
+                    assert!(failure.message().contains('2'), "{failure}");
+                }
+            });
+        }
+    });
+}
