@@ -43,9 +43,9 @@ Units units_for(const std::string& length_unit) {
     if (length_unit.empty()) {
         return {"(file units)", "", "", "", "", ""};
     }
-    // Lengths in metres: mass and density in the unit the density was given in,
-    // which for kg/m^3 makes kg and kg*m^2.
-    return {"m", "m^2", "m^3", "(mass unit)/m^3", "", "(mass unit)*m^2"};
+    // Lengths in metres: SI throughout, so --density is read as kg/m^3 and
+    // --mass as kg (what --help promises).
+    return {"m", "m^2", "m^3", "kg/m^3", "kg", "kg*m^2"};
 }
 
 void write_solid(std::ostream& out, const PartReport& part, const OutputSettings& settings) {
