@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Tests the Python binding (bindings/python) the way a user installs it:
+#   1. builds the library with the release preset (incremental: a no-op when up to
+#      date), unless POLYMASS_LIBRARY already names a libpolymass.so.1 to test;
+#   2. creates build/python-venv once and installs the test tools into it (pip is a
+#      no-op for what is already satisfied);
+#   3. pip-installs bindings/python into it, not editable, to prove it installs;
+#   4. ruff format --check and ruff check over bindings/python and examples/python;
+#   5. pytest (bindings/python/tests), then runs the examples.
+#
+#   scripts/test-python.sh            PYTHON=python3.12 scripts/test-python.sh
+#
+# Non-interactive; assumes scripts/install-deps.sh ran (python3-venv). Exits
+# non-zero at the first failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+venv=$root/build/python-venv
+python=${PYTHON:-python3}
+
+step() { printf '\n==================== python: %s ====================\n' "$1"; }
+
+step library
+if [ -z "${POLYMASS_LIBRARY:-}" ]; then
+    [ -f build/release/CMakeCache.txt ] || cmake --preset release </dev/null
+    cmake --build --preset release </dev/null
+    export POLYMASS_LIBRARY=$root/build/release/src/libpolymass.so.1
+fi
+[ -f "$POLYMASS_LIBRARY" ] || { echo "test-python: no library at $POLYMASS_LIBRARY" >&2; exit 1; }
+echo "POLYMASS_LIBRARY=$POLYMASS_LIBRARY"
+
+step venv
+[ -x "$venv/bin/python" ] || "$python" -m venv "$venv"
+pip=("$venv/bin/python" -m pip --disable-pip-version-check --no-input --quiet)
+"${pip[@]}" install "cffi>=1.17" "numpy>=1.22" "pytest>=7" "hypothesis>=6.80" "trimesh>=4" \
+    "scipy>=1.9" ruff </dev/null
+"$venv/bin/python" --version
+
+step install
+# --force-reinstall --no-deps: rebuild from the current header even when the
+# version did not change; the dependencies are already there.
+"${pip[@]}" install --force-reinstall --no-deps ./bindings/python </dev/null
+"$venv/bin/python" -c 'import polymass; print("polymass", polymass.__version__, "C library", polymass.library_version())'
+
+step ruff
+ruff=("$venv/bin/ruff")
+"${ruff[@]}" format --check --config bindings/python/pyproject.toml bindings/python examples/python
+"${ruff[@]}" check --config bindings/python/pyproject.toml bindings/python examples/python
+
+step pytest
+# From bindings/python: its pyproject.toml holds the pytest settings. The package
+# under test is the installed one (src/ layout: nothing shadows it).
+(cd bindings/python && "$venv/bin/python" -m pytest -q -p no:cacheprovider </dev/null)
+
+step examples
+"$venv/bin/python" examples/python/mass_properties_of_file.py </dev/null
+"$venv/bin/python" examples/python/batch_threads.py </dev/null | tail -n 3
+
+echo
+echo "test-python: all passed"
