@@ -2,9 +2,10 @@
 # Tests the Python binding (bindings/python) the way a user installs it:
 #   1. builds the library with the release preset (incremental: a no-op when up to
 #      date), unless POLYMASS_LIBRARY already names a libpolymass.so.1 to test;
-#   2. creates build/python-venv once and installs the test tools into it (pip is a
-#      no-op for what is already satisfied);
-#   3. pip-installs bindings/python into it, not editable, to prove it installs;
+#   2. creates build/python-venv once;
+#   3. pip-installs bindings/python into it, not editable, to prove it installs, with
+#      its [test] extra and ruff (pip rebuilds a local directory every time, and
+#      leaves the dependencies alone when they are satisfied);
 #   4. ruff format --check and ruff check over bindings/python and examples/python;
 #   5. pytest (bindings/python/tests), then runs the examples.
 #
@@ -29,17 +30,10 @@ fi
 [ -f "$POLYMASS_LIBRARY" ] || { echo "test-python: no library at $POLYMASS_LIBRARY" >&2; exit 1; }
 echo "POLYMASS_LIBRARY=$POLYMASS_LIBRARY"
 
-step venv
-[ -x "$venv/bin/python" ] || "$python" -m venv "$venv"
-pip=("$venv/bin/python" -m pip --disable-pip-version-check --no-input --quiet)
-"${pip[@]}" install "cffi>=1.17" "numpy>=1.22" "pytest>=7" "hypothesis>=6.80" "trimesh>=4" \
-    "scipy>=1.9" ruff </dev/null
-"$venv/bin/python" --version
-
 step install
-# --force-reinstall --no-deps: rebuild from the current header even when the
-# version did not change; the dependencies are already there.
-"${pip[@]}" install --force-reinstall --no-deps ./bindings/python </dev/null
+[ -x "$venv/bin/python" ] || "$python" -m venv "$venv"
+"$venv/bin/python" -m pip --disable-pip-version-check --no-input --quiet \
+    install "./bindings/python[test]" ruff </dev/null
 "$venv/bin/python" -c 'import polymass; print("polymass", polymass.__version__, "C library", polymass.library_version())'
 
 step ruff

@@ -43,7 +43,7 @@ __version__: str = _header.POLYMASS_VERSION_STRING
 
 def library_version() -> str:
     """The version of the C library loaded at run time ("MAJOR.MINOR.PATCH")."""
-    return _ffi.string(_lib.polymass_version_string()).decode()
+    return str(_ffi.string(_lib.polymass_version_string()).decode())
 
 
 __all__ = [

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any, Union
+from typing import Any, Union, cast
 
 import numpy as np
 import numpy.typing as npt
@@ -155,9 +155,10 @@ def _faces(faces: FacesLike, face_sizes: npt.ArrayLike | None):
         if corners == 3:
             return indices, None
         return indices, np.full(count, corners, dtype=np.uint32)
-    # A ragged sequence of faces.
-    # An empty face would read as float64: give it an integer type to join the others.
-    polygons = [np.asarray(face) if len(face) else np.zeros(0, np.uint32) for face in faces]
+    # A ragged sequence of faces. An empty face would read as float64: give it an
+    # integer type to join the others.
+    ragged = cast(Sequence[Sequence[int]], faces)
+    polygons = [np.asarray(face) if len(face) else np.zeros(0, np.uint32) for face in ragged]
     if any(polygon.ndim != 1 for polygon in polygons):
         raise ValueError("each face must be a sequence of vertex indices")
     sizes = np.array([polygon.size for polygon in polygons], dtype=np.uint32)

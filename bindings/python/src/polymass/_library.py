@@ -82,7 +82,7 @@ def context():
     """This thread's context: a context is used by one thread at a time."""
     current = getattr(_thread_state, "context", None)
     if current is None:
-        from .errors import raise_for_status
+        from .errors import raise_for_status  # errors imports this module: import on use
 
         out = ffi.new("polymass_context**")
         raise_for_status(lib.polymass_context_create(out, ffi.NULL), None)

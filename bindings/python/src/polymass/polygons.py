@@ -23,6 +23,7 @@ def _frozen(values, count: int) -> np.ndarray:
     return array
 
 
+# eq=False: arrays have no single truth value, so a field-wise == would raise.
 @dataclass(frozen=True, eq=False)
 class PolygonProperties:
     """The properties of a simple planar polygon. Arrays are read-only float64.

@@ -51,6 +51,7 @@ def _frozen(values, shape: tuple[int, ...]) -> np.ndarray:
     return array
 
 
+# eq=False: arrays have no single truth value, so a field-wise == would raise.
 @dataclass(frozen=True, eq=False)
 class MassProperties:
     """The mass properties of a solid as a body. Arrays are read-only float64.
