@@ -79,6 +79,11 @@ pub use surface::{Index, Surface, Vertex};
 
 use polymass_sys as sys;
 
+/// The README's example, compiled and run as a doc test.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
 /// The mass properties of a surface as `body`, with the default options
 /// (every check on). To set options use a [`Context`]; to compute several
 /// bodies from one surface, a [`Mesh`].
