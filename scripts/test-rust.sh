@@ -17,9 +17,10 @@
 # library statically (feature `static`) and runs an example without it.
 #
 # Steps: fmt (cargo fmt --check), clippy (-D warnings), test (the workspace's
-# unit, integration and doc tests), examples (both, on the bundled bracket
-# STL), static (an example linked with libpolymass.a). Exits non-zero if any
-# step fails; the later steps still run. Non-interactive.
+# unit, integration and doc tests), doc (rustdoc, -D warnings), examples
+# (both, on the bundled bracket STL), static (an example linked with
+# libpolymass.a). Exits non-zero if any step fails; the later steps still
+# run. Non-interactive.
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -90,6 +91,11 @@ step_test() {
     cargo test --locked --workspace 2>&1 | tee "$TEST_LOG"
 }
 
+step_doc() {
+    # Broken intra-doc links and undocumented public items fail.
+    RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps --workspace
+}
+
 step_examples() {
     cargo run --locked -q -p polymass-examples --bin mass_properties || return 1
     # The bundled bracket is in millimetres: aluminium is 2.7e-6 kg/mm^3.
@@ -115,7 +121,7 @@ find_library || {
 export LD_LIBRARY_PATH=$POLYMASS_LIB_DIR${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 cd "$WORKSPACE" || exit 1
 
-STEPS=(fmt clippy test examples static)
+STEPS=(fmt clippy test doc examples static)
 declare -A RESULT
 failed=0
 for step in "${STEPS[@]}"; do

@@ -17,6 +17,17 @@ mod sealed {
 
 /// A vertex position the library reads in place: `[f64; 3]` or `[f32; 3]`
 /// (x, y, z). Sealed: the library knows these two types only.
+///
+/// ```
+/// fn volume<V: polymass::Vertex>(positions: &[V]) -> f64 {
+///     let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+///     let surface = polymass::Surface::triangles(positions, &triangles);
+///     polymass::mass_properties(&surface, &Default::default()).unwrap().volume
+/// }
+/// let corners = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let corners32 = corners.map(|p: [f64; 3]| p.map(|x| x as f32));
+/// assert_eq!(volume(&corners), volume(&corners32));
+/// ```
 pub trait Vertex: sealed::Sealed + Copy {
     /// The `POLYMASS_POSITION_*` code of this type.
     #[doc(hidden)]
@@ -33,6 +44,15 @@ impl Vertex for [f32; 3] {
 
 /// A vertex index the library reads in place: `u32` or `u16`. Sealed: the
 /// library knows these two types only.
+///
+/// ```
+/// fn face_count<I: polymass::Index>(triangles: &[[I; 3]]) -> usize {
+///     let positions = [[0.0f64; 3]; 4];
+///     polymass::Surface::triangles(&positions, triangles).face_count()
+/// }
+/// assert_eq!(face_count(&[[0u16, 1, 2], [0, 2, 3]]), 2);
+/// assert_eq!(face_count(&[[0u32, 1, 2]]), 1);
+/// ```
 pub trait Index: sealed::Sealed + Copy {
     /// The `POLYMASS_INDEX_*` code of this type.
     #[doc(hidden)]
