@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Tests the Python binding (bindings/python) the way a user installs it:
-#   1. builds the library with the release preset (incremental: a no-op when up to
-#      date), unless POLYMASS_LIBRARY already names a libpolymass.so.1 to test;
+#   1. builds the library (target polymass) with the release preset, incrementally,
+#      unless POLYMASS_LIBRARY already names a libpolymass.so.1 to test;
 #   2. creates build/python-venv once;
 #   3. pip-installs bindings/python into it, not editable, to prove it installs, with
 #      its [test] extra and ruff (pip rebuilds a local directory every time, and
@@ -24,7 +24,7 @@ step() { printf '\n==================== python: %s ====================\n' "$1";
 step library
 if [ -z "${POLYMASS_LIBRARY:-}" ]; then
     [ -f build/release/CMakeCache.txt ] || cmake --preset release </dev/null
-    cmake --build --preset release </dev/null
+    cmake --build --preset release --target polymass </dev/null  # the library alone
     export POLYMASS_LIBRARY=$root/build/release/src/libpolymass.so.1
 fi
 [ -f "$POLYMASS_LIBRARY" ] || { echo "test-python: no library at $POLYMASS_LIBRARY" >&2; exit 1; }
