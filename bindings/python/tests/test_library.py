@@ -12,8 +12,26 @@ from pathlib import Path
 import pytest
 
 import polymass
-from polymass import _header
+from polymass import _header, _library
 from polymass._library import ffi, lib
+
+
+class _FakeLibrary:
+    """Stands in for a different build of libpolymass: a version and struct sizes."""
+
+    def __init__(self, version: int, size_change: int = 0) -> None:
+        self.version = version
+        self._text = ffi.new("char[]", f"{version // 10000}.{version // 100 % 100}.0".encode())
+        for name in dir(lib):
+            if name.startswith("polymass_sizeof_"):
+                size = getattr(lib, name)() + size_change
+                setattr(self, name, lambda size=size: size)
+
+    def polymass_version(self) -> int:
+        return self.version
+
+    def polymass_version_string(self):
+        return self._text
 
 
 def _import_with(environment: dict) -> subprocess.CompletedProcess:
@@ -37,6 +55,26 @@ def test_every_struct_has_the_library_s_size():
     for function in sizes:
         struct = "polymass_" + function.removeprefix("polymass_sizeof_")
         assert getattr(lib, function)() == ffi.sizeof(struct)
+
+
+@pytest.mark.parametrize("offset", [10000, -10000, -100])
+def test_another_major_or_an_older_library_is_refused(offset):
+    fake = _FakeLibrary(_header.POLYMASS_VERSION_NUMBER + offset)
+    with pytest.raises(ImportError, match="the loaded C library is version"):
+        _library._check_version(fake)
+
+
+def test_a_newer_minor_library_is_accepted_with_longer_structs():
+    fake = _FakeLibrary(_header.POLYMASS_VERSION_NUMBER + 100, size_change=8)
+    _library._check_version(fake)
+    _library._check_struct_sizes(fake)
+
+
+@pytest.mark.parametrize(("minor", "size_change"), [(0, 8), (0, -8), (100, -8)])
+def test_a_struct_layout_that_disagrees_is_refused(minor, size_change):
+    fake = _FakeLibrary(_header.POLYMASS_VERSION_NUMBER + minor, size_change)
+    with pytest.raises(ImportError, match="bytes in the loaded library"):
+        _library._check_struct_sizes(fake)
 
 
 def test_a_missing_library_is_an_import_error_naming_the_variable_and_soname():
