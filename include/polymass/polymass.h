@@ -144,7 +144,9 @@ typedef struct polymass_mesh polymass_mesh;
 
 /* Memory for a context and everything made through it. allocate returns memory
    aligned to at least `alignment` (a power of two) or NULL on failure;
-   deallocate accepts what allocate returned. A NULL allocator means malloc. */
+   deallocate accepts what allocate returned. A NULL allocator means malloc.
+   The functions and user_data must stay valid until the context and every
+   mesh made through it are destroyed (a mesh frees itself through them). */
 typedef struct polymass_allocator {
     void* (*allocate)(void* user_data, size_t size, size_t alignment);
     void (*deallocate)(void* user_data, void* pointer);
@@ -379,9 +381,14 @@ POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* 
 
 /* Runs every check without stopping at the first finding and fills the report.
    The topology checks run even when the context's options skip them; the other
-   options (welding, tolerance, what is accepted) apply. Returns the status
-   polymass_mesh_create would return with the topology checks on (also in
-   out_report->status), with the same message. Context: one thread at a time. */
+   options (welding, tolerance, what is accepted) apply. Faces of fewer than 3
+   vertices, indices out of range and non-finite coordinates leave the faces
+   unreadable: the report then holds only those findings and the counts. The
+   report is written whenever out_report is non-NULL with the right
+   struct_size; the return value is then out_report->status: the status
+   polymass_mesh_create would return with the topology checks on, with the same
+   message. Otherwise nothing is written and the return value says why.
+   Context: one thread at a time. */
 POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
                                          polymass_context* context, const polymass_mesh_desc* desc);
 

@@ -55,7 +55,7 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
     if (input.small_faces > 0)
         return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
                              "face %llu has %u vertices; a face needs at least 3 "
-                             "(%llu faces are too small)",
+                             "(%llu such faces)",
                              u64(input.first_small_face), desc.face_sizes[input.first_small_face],
                              u64(input.small_faces));
     if (total != desc.index_count)
