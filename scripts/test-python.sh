@@ -6,7 +6,8 @@
 #   3. pip-installs bindings/python into it, not editable, to prove it installs, with
 #      its [test] extra and ruff (pip rebuilds a local directory every time, and
 #      leaves the dependencies alone when they are satisfied);
-#   4. ruff format --check and ruff check over bindings/python and examples/python;
+#   4. ruff format --check and ruff check over every Python file of the repository
+#      (ruff.toml; .gitignore'd build trees are skipped);
 #   5. pytest (bindings/python/tests), then runs the examples.
 #
 #   scripts/test-python.sh            PYTHON=python3.12 scripts/test-python.sh
@@ -37,9 +38,8 @@ step install
 "$venv/bin/python" -c 'import polymass; print("polymass", polymass.__version__, "C library", polymass.library_version())'
 
 step ruff
-ruff=("$venv/bin/ruff")
-"${ruff[@]}" format --check --config bindings/python/pyproject.toml bindings/python examples/python
-"${ruff[@]}" check --config bindings/python/pyproject.toml bindings/python examples/python
+"$venv/bin/ruff" format --check .
+"$venv/bin/ruff" check .
 
 step pytest
 # From bindings/python: its pyproject.toml holds the pytest settings. The package

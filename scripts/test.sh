@@ -11,6 +11,10 @@
 #   asan    configure, build and ctest the `asan` preset (ASan + UBSan)
 #   fuzz    configure, build and ctest the `fuzz` preset (Clang, libFuzzer):
 #           a bounded, fixed-seed run of tests/fuzz/fuzz_mesh.c
+#   python  scripts/test-python.sh: the Python binding installed into a venv,
+#           ruff over every Python file, pytest, the Python examples
+#   rust    scripts/test-rust.sh: rustfmt, clippy, cargo test (with doc
+#           tests), rustdoc, the Rust examples
 #
 # Exits non-zero if any step fails; the later steps still run, so one run
 # shows every failure. Idempotent: build trees under build/ are reused.
@@ -23,7 +27,7 @@ mkdir -p "$LOG_DIR"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-2}
 
-STEPS=(deps format dev asan fuzz)
+STEPS=(deps format dev asan fuzz python rust)
 
 # Counts of test cases (ctest) across the steps, for the closing line.
 TESTS_PASSED=0
@@ -104,6 +108,42 @@ step_fuzz() {
     preset_workflow fuzz
 }
 
+# Adds the "N passed" / "F failed" of pytest's closing line from a log.
+count_pytest() { # <log>
+    local line
+    line=$(grep -E '^=*.*[0-9]+ (passed|failed).* in [0-9.]+s' "$1" | tail -n 1)
+    if [ -z "$line" ]; then
+        return
+    fi
+    TESTS_PASSED=$((TESTS_PASSED + $(grep -oE '[0-9]+ passed' <<<"$line" | grep -oE '[0-9]+' || echo 0)))
+    TESTS_FAILED=$((TESTS_FAILED + $(grep -oE '[0-9]+ failed' <<<"$line" | grep -oE '[0-9]+' || echo 0)))
+}
+
+step_python() {
+    local log=$LOG_DIR/python.log rc=0
+    bash scripts/test-python.sh </dev/null 2>&1 | tee "$log" || rc=1
+    count_pytest "$log"
+    return $rc
+}
+
+# Adds test-rust.sh's "rust tests: N passed, F failed" from a log.
+count_rust() { # <log>
+    local line
+    line=$(grep -E '^rust tests: [0-9]+ passed, [0-9]+ failed' "$1" | tail -n 1)
+    if [ -z "$line" ]; then
+        return
+    fi
+    TESTS_PASSED=$((TESTS_PASSED + $(sed -E 's/^rust tests: ([0-9]+) passed.*/\1/' <<<"$line")))
+    TESTS_FAILED=$((TESTS_FAILED + $(sed -E 's/.* ([0-9]+) failed.*/\1/' <<<"$line")))
+}
+
+step_rust() {
+    local log=$LOG_DIR/rust.log rc=0
+    bash scripts/test-rust.sh </dev/null 2>&1 | tee "$log" || rc=1
+    count_rust "$log"
+    return $rc
+}
+
 # --------------------------------------------------------------------------
 
 selected=("$@")
@@ -145,8 +185,8 @@ for step in "${selected[@]}"; do
     printf '  %-8s %-5s %4ss\n' "$step" "${RESULT[$step]:-SKIP}" "${SECONDS_TAKEN[$step]:-0}"
 done
 echo "  logs: $LOG_DIR"
-# The closing line counts every ctest test of every preset, plus the format
-# check as one.
+# The closing line counts every ctest test of every preset, every pytest and
+# cargo test case, plus the format check as one.
 if [ $failed_steps -ne 0 ]; then
     echo "test.sh: $failed_steps step(s) failed"
     echo "tests: $TESTS_PASSED passed, $TESTS_FAILED failed"

@@ -81,7 +81,10 @@ class Case(unittest.TestCase):
             self.assert_close(
                 out["center_of_mass"][k], expected["center_of_mass"][k], size, what + " com"
             )
-        dens = lambda m: [[density * x for x in row] for row in m]
+
+        def dens(m):
+            return [[density * x for x in row] for row in m]
+
         self.assert_matrix(out["inertia"], dens(expected["inertia"]), what + " inertia")
         self.assert_matrix(
             out["inertia_origin"], dens(expected["inertia_origin"]), what + " inertia_origin"
@@ -173,7 +176,9 @@ class EveryFormat(Case):
         inertia = [[mass / expected["volume"] * x for x in row] for row in expected["inertia"]]
         self.assertNotEqual(inertia[0][1], 0.0)  # the sign convention must show
         com = expected["center_of_mass"]
-        floats = lambda text: [float(x) for x in text.split()]
+
+        def floats(text):
+            return [float(x) for x in text.split()]
 
         urdf = ElementTree.fromstring(run("--urdf", "--mass", mass, WORK / "bracket.obj").stdout)
         self.assertEqual(urdf.tag, "inertial")

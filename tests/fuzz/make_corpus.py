@@ -11,6 +11,7 @@ so run this again only after changing the format or the meshes:
 
 (regressions/ also holds inputs the fuzzer found: those are not written here.)
 """
+
 import argparse
 import math
 import pathlib
@@ -32,20 +33,51 @@ MASS_NULL, MASS_DENSITY, MASS_TOTAL = 0, 1, 2
 STRIDE_PACKED, STRIDE_VERTEX, STRIDE_PADDED, STRIDE_TOO_SMALL = 0, 1, 2, 3
 
 
-def encode(vertices, faces, *, float32=False, index16=False, face_sizes=True,
-           stride=STRIDE_PACKED, count_delta=None, packed_pairs=False, odd=False,
-           flags=0, tolerance=0, mass_mode=MASS_NULL, mass_value=1.0,
-           point=(0.0, 0.0, 0.0), copies=1):
+def encode(
+    vertices,
+    faces,
+    *,
+    float32=False,
+    index16=False,
+    face_sizes=True,
+    stride=STRIDE_PACKED,
+    count_delta=None,
+    packed_pairs=False,
+    odd=False,
+    flags=0,
+    tolerance=0,
+    mass_mode=MASS_NULL,
+    mass_value=1.0,
+    point=(0.0, 0.0, 0.0),
+    copies=1,
+):
     """One input of fuzz_mesh.c. faces: lists of vertex indices; without
     face_sizes every face must be a triangle."""
     assert len(vertices) <= 255 and len(faces) <= 255 and 1 <= copies <= 256
     if not face_sizes:
         assert all(len(face) == 3 for face in faces)
-    layout = (int(float32) | int(index16) << 1 | int(face_sizes) << 2 | stride << 3
-              | int(count_delta is not None) << 5 | int(packed_pairs) << 6 | int(odd) << 7)
+    layout = (
+        int(float32)
+        | int(index16) << 1
+        | int(face_sizes) << 2
+        | stride << 3
+        | int(count_delta is not None) << 5
+        | int(packed_pairs) << 6
+        | int(odd) << 7
+    )
     out = bytearray()
-    out += bytes([layout, flags, tolerance, mass_mode, len(vertices), len(faces),
-                  copies - 1, (count_delta or 0) & 0xFF])
+    out += bytes(
+        [
+            layout,
+            flags,
+            tolerance,
+            mass_mode,
+            len(vertices),
+            len(faces),
+            copies - 1,
+            (count_delta or 0) & 0xFF,
+        ]
+    )
     out += struct.pack("<d", mass_value)
     out += struct.pack("<3d", *point)
     if face_sizes:
@@ -92,13 +124,35 @@ def seeds():
     yield "cube_quads", encode(CUBE_VERTICES, CUBE_QUADS)
     # The same cube as 12 triangles, float32 positions in an interleaved
     # buffer, 16-bit indices, a density and a reference point.
-    yield "cube_triangles", encode(CUBE_VERTICES, CUBE_TRIANGLES, float32=True, index16=True,
-                                   face_sizes=False, stride=STRIDE_PADDED, mass_mode=MASS_DENSITY,
-                                   mass_value=2700.0, point=(1.0, 2.0, 3.0))
+    yield (
+        "cube_triangles",
+        encode(
+            CUBE_VERTICES,
+            CUBE_TRIANGLES,
+            float32=True,
+            index16=True,
+            face_sizes=False,
+            stride=STRIDE_PADDED,
+            mass_mode=MASS_DENSITY,
+            mass_value=2700.0,
+            point=(1.0, 2.0, 3.0),
+        ),
+    )
     # A tetrahedron given a total mass, arrays at odd addresses.
-    yield "tetrahedron", encode(TETRA_VERTICES, TETRA_FACES, index16=True, face_sizes=False,
-                                stride=STRIDE_VERTEX, odd=True, mass_mode=MASS_TOTAL,
-                                mass_value=2.0, point=(0.5, -1.0, 4.0))
+    yield (
+        "tetrahedron",
+        encode(
+            TETRA_VERTICES,
+            TETRA_FACES,
+            index16=True,
+            face_sizes=False,
+            stride=STRIDE_VERTEX,
+            odd=True,
+            mass_mode=MASS_TOTAL,
+            mass_value=2.0,
+            point=(0.5, -1.0, 4.0),
+        ),
+    )
     # A box without its top: OPEN.
     yield "open_box", encode(CUBE_VERTICES, CUBE_QUADS[:1] + CUBE_QUADS[2:])
     # A tetrahedron with a NaN coordinate: NON_FINITE (and for the polygon).
@@ -106,20 +160,46 @@ def seeds():
     nan_vertices[3] = (0.0, math.nan, 1.0)
     yield "tetrahedron_nan", encode(nan_vertices, TETRA_FACES, mass_mode=MASS_DENSITY)
     # An inside-out cube, accepted turned.
-    yield "cube_inverted", encode(CUBE_VERTICES, [list(reversed(f)) for f in CUBE_QUADS],
-                                  flags=ACCEPT_INVERTED, packed_pairs=True)
+    yield (
+        "cube_inverted",
+        encode(
+            CUBE_VERTICES,
+            [list(reversed(f)) for f in CUBE_QUADS],
+            flags=ACCEPT_INVERTED,
+            packed_pairs=True,
+        ),
+    )
     # An L-shaped prism: non-convex hexagon faces, float32, a tolerance.
     vertices, faces = prism(L_PROFILE, 0.5)
-    yield "l_prism", encode(vertices, faces, float32=True, tolerance=2, mass_mode=MASS_TOTAL,
-                            mass_value=10.0)
+    yield (
+        "l_prism",
+        encode(vertices, faces, float32=True, tolerance=2, mass_mode=MASS_TOTAL, mass_value=10.0),
+    )
     # 150 copies of the triangulated cube, all at one place: 1800 triangles
     # (the radix sort of the edge check: 2048 keys or more), welded into one non-manifold
     # surface whose edges are balanced, and accepted as such.
-    yield "cube_copies_welded", encode(CUBE_VERTICES, CUBE_TRIANGLES, face_sizes=False,
-                                       copies=150, flags=WELD_VERTICES | ACCEPT_NON_MANIFOLD)
+    yield (
+        "cube_copies_welded",
+        encode(
+            CUBE_VERTICES,
+            CUBE_TRIANGLES,
+            face_sizes=False,
+            copies=150,
+            flags=WELD_VERTICES | ACCEPT_NON_MANIFOLD,
+        ),
+    )
     # The same copies, each a shell of its own, topology checks skipped.
-    yield "cube_copies_unchecked", encode(CUBE_VERTICES, CUBE_TRIANGLES, face_sizes=False,
-                                          copies=150, flags=SKIP_TOPOLOGY_CHECKS, index16=True)
+    yield (
+        "cube_copies_unchecked",
+        encode(
+            CUBE_VERTICES,
+            CUBE_TRIANGLES,
+            face_sizes=False,
+            copies=150,
+            flags=SKIP_TOPOLOGY_CHECKS,
+            index16=True,
+        ),
+    )
     # Faces of 0, 1 and 2 vertices and an index_count that does not add up.
     yield "small_faces", encode(TETRA_VERTICES, [[], [0], [1, 2]] + TETRA_FACES, count_delta=-2)
 
@@ -132,33 +212,54 @@ def regressions():
     """Hand-made inputs for what the fuzzer found, each as plain as it gets."""
     # A valid cube of edge 1e-90 as 12 triangles: volume 1e-270, area 6e-180,
     # both representable; the triangle areas' squares (1e-360) are not.
-    yield "made_cube_triangles_1e-90_area_underflow", encode(
-        scaled(CUBE_VERTICES, 1e-90), CUBE_TRIANGLES, face_sizes=False)
+    yield (
+        "made_cube_triangles_1e-90_area_underflow",
+        encode(scaled(CUBE_VERTICES, 1e-90), CUBE_TRIANGLES, face_sizes=False),
+    )
     # A valid cube of edge 1e155 as quads: its bounding box diagonal (naive
     # norm) overflows, every face is taken as degenerate, and the surface is
     # accepted with volume 0.
-    yield "made_cube_quads_1e155_zero_volume_accepted", encode(
-        scaled(CUBE_VERTICES, 1e155), CUBE_QUADS)
+    yield (
+        "made_cube_quads_1e155_zero_volume_accepted",
+        encode(scaled(CUBE_VERTICES, 1e155), CUBE_QUADS),
+    )
     # One sliver triangle (edges 1.4 and 1e-200, area 7.1e-201), topology
     # checks skipped: it is reported degenerate and its area as 0, yet it
     # still adds its volume (8.3e-202).
-    yield "made_unchecked_sliver_triangle_area_zero", encode(
-        [(0.0, 0.0, 0.0), (1.0, 1.0, 0.0), (1e-300, 0.0, 1e-200)], [[0, 2, 1]], face_sizes=False,
-        flags=SKIP_TOPOLOGY_CHECKS)
+    yield (
+        "made_unchecked_sliver_triangle_area_zero",
+        encode(
+            [(0.0, 0.0, 0.0), (1.0, 1.0, 0.0), (1e-300, 0.0, 1e-200)],
+            [[0, 2, 1]],
+            face_sizes=False,
+            flags=SKIP_TOPOLOGY_CHECKS,
+        ),
+    )
     # A cube of edge 1e62: its second moments (1e310) overflow.
     yield "made_cube_1e62_moments_overflow", encode(scaled(CUBE_VERTICES, 1e62), CUBE_QUADS)
     # A cube of edge 2 of density 1e308: its mass overflows.
-    yield "made_cube_density_1e308_mass_overflow", encode(
-        scaled(CUBE_VERTICES, 2.0), CUBE_QUADS, mass_mode=MASS_DENSITY, mass_value=1e308)
+    yield (
+        "made_cube_density_1e308_mass_overflow",
+        encode(scaled(CUBE_VERTICES, 2.0), CUBE_QUADS, mass_mode=MASS_DENSITY, mass_value=1e308),
+    )
     # The unit cube about a point at x = 1e200: inertia_point overflows.
-    yield "made_cube_point_1e200_overflow", encode(
-        CUBE_VERTICES, CUBE_QUADS, mass_mode=MASS_DENSITY, mass_value=1.0, point=(1e200, 0.0, 0.0))
+    yield (
+        "made_cube_point_1e200_overflow",
+        encode(
+            CUBE_VERTICES,
+            CUBE_QUADS,
+            mass_mode=MASS_DENSITY,
+            mass_value=1.0,
+            point=(1e200, 0.0, 0.0),
+        ),
+    )
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--check", action="store_true",
-                        help="compare with the files instead of writing them")
+    parser.add_argument(
+        "--check", action="store_true", help="compare with the files instead of writing them"
+    )
     parser.add_argument("--out", type=pathlib.Path, default=HERE / "corpus")
     parser.add_argument("--regressions", type=pathlib.Path, default=HERE / "regressions")
     args = parser.parse_args()

@@ -47,6 +47,7 @@ DEFAULT_OUTPUT = HERE / "exact_reference.h"
 # Exact helpers
 # ---------------------------------------------------------------------------
 
+
 def dyadic(x, bits):
     """x rounded to the grid 2^-bits, as an exact Fraction."""
     return F(round(x * (1 << bits)), 1 << bits)
@@ -57,9 +58,7 @@ def sub(a, b):
 
 
 def cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0])
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
 def dot(a, b):
@@ -125,6 +124,7 @@ class Mesh:
 # ---------------------------------------------------------------------------
 # Integration: signed tetrahedra from a reference point
 # ---------------------------------------------------------------------------
+
 
 class Integrals:
     def __init__(self):
@@ -216,13 +216,13 @@ class Reference:
         self.com = [a.first[i] / a.volume for i in range(3)]
         s = a.second
         trace = s[0][0] + s[1][1] + s[2][2]
-        self.inertia_origin = [[(trace if i == j else 0) - s[i][j] for j in range(3)]
-                               for i in range(3)]
+        self.inertia_origin = [
+            [(trace if i == j else 0) - s[i][j] for j in range(3)] for i in range(3)
+        ]
         c = self.com
         sc = [[s[i][j] - a.volume * c[i] * c[j] for j in range(3)] for i in range(3)]
         trace_c = sc[0][0] + sc[1][1] + sc[2][2]
-        self.inertia = [[(trace_c if i == j else 0) - sc[i][j] for j in range(3)]
-                        for i in range(3)]
+        self.inertia = [[(trace_c if i == j else 0) - sc[i][j] for j in range(3)] for i in range(3)]
         self.area = surface_area(mesh) if mesh.area_known else None
 
 
@@ -230,9 +230,12 @@ class Reference:
 # Solids
 # ---------------------------------------------------------------------------
 
+
 def box_mesh(name, lo, hi, triangulate=False, comment=None):
-    m = Mesh(name, comment or "box [%s] x [%s] x [%s]" % tuple(
-        "%s, %s" % (lo[i], hi[i]) for i in range(3)))
+    m = Mesh(
+        name,
+        comment or "box [%s] x [%s] x [%s]" % tuple("%s, %s" % (lo[i], hi[i]) for i in range(3)),
+    )
     add_box(m, lo, hi, triangulate)
     return m
 
@@ -241,12 +244,14 @@ def add_box(m, lo, hi, triangulate=False):
     base = len(m.vertices)
     for k in range(8):
         m.vertex(hi[0] if k & 1 else lo[0], hi[1] if k & 2 else lo[1], hi[2] if k & 4 else lo[2])
-    quads = [(0, 2, 3, 1),  # z = lo, normal -z
-             (4, 5, 7, 6),  # z = hi, normal +z
-             (0, 1, 5, 4),  # y = lo, normal -y
-             (2, 6, 7, 3),  # y = hi, normal +y
-             (0, 4, 6, 2),  # x = lo, normal -x
-             (1, 3, 7, 5)]  # x = hi, normal +x
+    quads = [
+        (0, 2, 3, 1),  # z = lo, normal -z
+        (4, 5, 7, 6),  # z = hi, normal +z
+        (0, 1, 5, 4),  # y = lo, normal -y
+        (2, 6, 7, 3),  # y = hi, normal +y
+        (0, 4, 6, 2),  # x = lo, normal -x
+        (1, 3, 7, 5),
+    ]  # x = hi, normal +x
     for n, q in enumerate(quads):
         q = tuple(base + i for i in q)
         if triangulate:
@@ -261,8 +266,7 @@ def add_box(m, lo, hi, triangulate=False):
             m.face(*q)
 
 
-def prism_mesh(name, comment, polygon, z0, z1, cap="polygon", cap_triangles=None,
-               side="quads"):
+def prism_mesh(name, comment, polygon, z0, z1, cap="polygon", cap_triangles=None, side="quads"):
     """Extrusion of a counter-clockwise polygon from z0 to z1.
 
     cap: "polygon" (one face per cap), "triangles" (cap_triangles, a correct
@@ -303,9 +307,13 @@ def prism_mesh(name, comment, polygon, z0, z1, cap="polygon", cap_triangles=None
 
 
 def regular_polygon(n, radius, center, bits, phase=0.0):
-    return [(center[0] + dyadic(radius * math.cos(phase + 2 * math.pi * k / n), bits),
-             center[1] + dyadic(radius * math.sin(phase + 2 * math.pi * k / n), bits))
-            for k in range(n)]
+    return [
+        (
+            center[0] + dyadic(radius * math.cos(phase + 2 * math.pi * k / n), bits),
+            center[1] + dyadic(radius * math.sin(phase + 2 * math.pi * k / n), bits),
+        )
+        for k in range(n)
+    ]
 
 
 def star_polygon(points, r_outer, r_inner, center, bits):
@@ -313,13 +321,15 @@ def star_polygon(points, r_outer, r_inner, center, bits):
     for k in range(2 * points):
         r = r_outer if k % 2 == 0 else r_inner
         t = math.pi / 2 + math.pi * k / points
-        out.append((center[0] + dyadic(r * math.cos(t), bits),
-                    center[1] + dyadic(r * math.sin(t), bits)))
+        out.append(
+            (center[0] + dyadic(r * math.cos(t), bits), center[1] + dyadic(r * math.sin(t), bits))
+        )
     return out
 
 
 def ear_clip(polygon):
     """A correct triangulation of a simple counter-clockwise polygon."""
+
     def area2(a, b, c):
         return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 
@@ -361,27 +371,44 @@ def tetrahedron_mesh(name, comment, p):
 
 
 def house_mesh():
-    m = Mesh("house", "box [0, 2] x [0, 1] x [0, 1] with a gable roof, ridge at z = 1.5 along x: "
-             "pentagon end walls, sloped quads")
-    v = [m.vertex(*p) for p in [
-        (0, 0, 0), (2, 0, 0), (2, 1, 0), (0, 1, 0),      # 0..3 floor
-        (0, 0, 1), (2, 0, 1), (2, 1, 1), (0, 1, 1),      # 4..7 eaves
-        (0, F(1, 2), F(3, 2)), (2, F(1, 2), F(3, 2))]]   # 8, 9 ridge
-    m.face(v[0], v[3], v[2], v[1])          # floor, -z
-    m.face(v[0], v[1], v[5], v[4])          # y = 0 wall
-    m.face(v[2], v[3], v[7], v[6])          # y = 1 wall
-    m.face(v[0], v[4], v[8], v[7], v[3])    # x = 0 gable (pentagon), -x
-    m.face(v[1], v[2], v[6], v[9], v[5])    # x = 2 gable, +x
-    m.face(v[4], v[5], v[9], v[8])          # roof, y < 1/2 side
-    m.face(v[6], v[7], v[8], v[9])          # roof, y > 1/2 side
+    m = Mesh(
+        "house",
+        "box [0, 2] x [0, 1] x [0, 1] with a gable roof, ridge at z = 1.5 along x: "
+        "pentagon end walls, sloped quads",
+    )
+    v = [
+        m.vertex(*p)
+        for p in [
+            (0, 0, 0),
+            (2, 0, 0),
+            (2, 1, 0),
+            (0, 1, 0),  # 0..3 floor
+            (0, 0, 1),
+            (2, 0, 1),
+            (2, 1, 1),
+            (0, 1, 1),  # 4..7 eaves
+            (0, F(1, 2), F(3, 2)),
+            (2, F(1, 2), F(3, 2)),
+        ]
+    ]  # 8, 9 ridge
+    m.face(v[0], v[3], v[2], v[1])  # floor, -z
+    m.face(v[0], v[1], v[5], v[4])  # y = 0 wall
+    m.face(v[2], v[3], v[7], v[6])  # y = 1 wall
+    m.face(v[0], v[4], v[8], v[7], v[3])  # x = 0 gable (pentagon), -x
+    m.face(v[1], v[2], v[6], v[9], v[5])  # x = 2 gable, +x
+    m.face(v[4], v[5], v[9], v[8])  # roof, y < 1/2 side
+    m.face(v[6], v[7], v[8], v[9])  # roof, y > 1/2 side
     return m
 
 
 def square_ring_mesh():
     """A genus-1 frame: outer square minus an off-centre rectangular hole,
     extruded, as one closed surface of 16 quads (trapezoids on the caps)."""
-    m = Mesh("square_ring", "genus-1 frame of 16 quads: [-1.5, 1.5]^2 minus hole "
-             "[-0.5, 1] x [-0.75, 0.5], z in [0, 0.5]")
+    m = Mesh(
+        "square_ring",
+        "genus-1 frame of 16 quads: [-1.5, 1.5]^2 minus hole "
+        "[-0.5, 1] x [-0.75, 0.5], z in [0, 0.5]",
+    )
     outer = [(F(-3, 2), F(-3, 2)), (F(3, 2), F(-3, 2)), (F(3, 2), F(3, 2)), (F(-3, 2), F(3, 2))]
     inner = [(F(-1, 2), F(-3, 4)), (F(1), F(-3, 4)), (F(1), F(1, 2)), (F(-1, 2), F(1, 2))]
     z0, z1 = F(0), F(1, 2)
@@ -391,16 +418,19 @@ def square_ring_mesh():
     it = [m.vertex(x, y, z1) for x, y in inner]
     for k in range(4):
         j = (k + 1) % 4
-        m.face(ot[k], ot[j], it[j], it[k])   # top trapezoid, +z
-        m.face(ob[k], ib[k], ib[j], ob[j])   # bottom trapezoid, -z
-        m.face(ob[k], ob[j], ot[j], ot[k])   # outer wall, outward
-        m.face(ib[k], it[k], it[j], ib[j])   # inner wall, towards the hole
+        m.face(ot[k], ot[j], it[j], it[k])  # top trapezoid, +z
+        m.face(ob[k], ib[k], ib[j], ob[j])  # bottom trapezoid, -z
+        m.face(ob[k], ob[j], ot[j], ot[k])  # outer wall, outward
+        m.face(ib[k], it[k], it[j], ib[j])  # inner wall, towards the hole
     return m
 
 
 def ring_of_boxes_mesh():
-    m = Mesh("ring_of_boxes", "square ring of 4 boxes (4 shells, touching face to face): "
-             "[-1.5, 1.5]^2 minus [-0.75, 0.75]^2, z in [0, 0.5]")
+    m = Mesh(
+        "ring_of_boxes",
+        "square ring of 4 boxes (4 shells, touching face to face): "
+        "[-1.5, 1.5]^2 minus [-0.75, 0.75]^2, z in [0, 0.5]",
+    )
     a, b = F(3, 2), F(3, 4)
     h = F(1, 2)
     add_box(m, (-a, -a, 0), (a, -b, h))
@@ -411,29 +441,42 @@ def ring_of_boxes_mesh():
 
 
 def cube_with_cavity_mesh():
-    m = Mesh("cube_cavity", "cube [-1, 1]^3 + (0.25, 0.5, -0.125) with an off-centre box cavity "
-             "[-0.5, 0.25] x [-0.25, 0.5] x [0, 0.75] (inner shell reversed, triangulated)")
+    m = Mesh(
+        "cube_cavity",
+        "cube [-1, 1]^3 + (0.25, 0.5, -0.125) with an off-centre box cavity "
+        "[-0.5, 0.25] x [-0.25, 0.5] x [0, 0.75] (inner shell reversed, triangulated)",
+    )
     o = (F(1, 4), F(1, 2), F(-1, 8))
     add_box(m, tuple(-1 + o[i] for i in range(3)), tuple(1 + o[i] for i in range(3)))
     inner = Mesh("inner", "")
-    add_box(inner, (F(-1, 2) + o[0], F(-1, 4) + o[1], 0 + o[2]),
-            (F(1, 4) + o[0], F(1, 2) + o[1], F(3, 4) + o[2]), triangulate=True)
+    add_box(
+        inner,
+        (F(-1, 2) + o[0], F(-1, 4) + o[1], 0 + o[2]),
+        (F(1, 4) + o[0], F(1, 2) + o[1], F(3, 4) + o[2]),
+        triangulate=True,
+    )
     inner.reversed_faces()
     m.append(inner)
     return m
 
 
 def torus_mesh(n_around, n_section, big_r, small_r, bits):
-    m = Mesh("torus_tris", "triangulated polygonal torus: %d x %d segments, R = %s, r = %s, "
-             "coordinates rounded to 2^-%d" % (n_around, n_section, big_r, small_r, bits))
+    m = Mesh(
+        "torus_tris",
+        "triangulated polygonal torus: %d x %d segments, R = %s, r = %s, "
+        "coordinates rounded to 2^-%d" % (n_around, n_section, big_r, small_r, bits),
+    )
     idx = {}
     for i in range(n_around):
         t = 2 * math.pi * i / n_around
         for j in range(n_section):
             p = 2 * math.pi * j / n_section
             rr = big_r + small_r * math.cos(p)
-            idx[i, j] = m.vertex(dyadic(rr * math.cos(t), bits), dyadic(rr * math.sin(t), bits),
-                                 dyadic(small_r * math.sin(p), bits))
+            idx[i, j] = m.vertex(
+                dyadic(rr * math.cos(t), bits),
+                dyadic(rr * math.sin(t), bits),
+                dyadic(small_r * math.sin(p), bits),
+            )
     for i in range(n_around):
         for j in range(n_section):
             a = idx[i, j]
@@ -464,53 +507,138 @@ def build_solids():
     q = F(1, 4)
     lo = (q, F(-1, 2), F(3, 4))
     hi = (q + F(3, 2), F(-1, 2) + F(3, 2), F(3, 4) + F(3, 2))
-    solids.append(box_mesh("cube_quads", lo, hi, comment="cube of side 1.5 at (0.25, -0.5, 0.75), quads"))
-    solids.append(box_mesh("cube_tris", lo, hi, triangulate=True,
-                           comment="the same cube, 12 triangles"))
-    solids.append(box_mesh("box", (-1, F(1, 2), 2), (2, 2, F(21, 8)),
-                           comment="box 3 x 1.5 x 0.625 at (-1, 0.5, 2), quads"))
+    solids.append(
+        box_mesh("cube_quads", lo, hi, comment="cube of side 1.5 at (0.25, -0.5, 0.75), quads")
+    )
+    solids.append(
+        box_mesh("cube_tris", lo, hi, triangulate=True, comment="the same cube, 12 triangles")
+    )
+    solids.append(
+        box_mesh(
+            "box",
+            (-1, F(1, 2), 2),
+            (2, 2, F(21, 8)),
+            comment="box 3 x 1.5 x 0.625 at (-1, 0.5, 2), quads",
+        )
+    )
     o = (F(1, 2), F(1, 4), F(-1, 8))
-    solids.append(tetrahedron_mesh(
-        "tetra_corner", "corner tetrahedron, legs 2, 1.5, 0.75 along x, y, z from (0.5, 0.25, -0.125)",
-        [o, (o[0] + 2, o[1], o[2]), (o[0], o[1] + F(3, 2), o[2]), (o[0], o[1], o[2] + F(3, 4))]))
+    solids.append(
+        tetrahedron_mesh(
+            "tetra_corner",
+            "corner tetrahedron, legs 2, 1.5, 0.75 along x, y, z from (0.5, 0.25, -0.125)",
+            [o, (o[0] + 2, o[1], o[2]), (o[0], o[1] + F(3, 2), o[2]), (o[0], o[1], o[2] + F(3, 4))],
+        )
+    )
     s, o = F(3, 4), (F(1, 2), F(-1, 4), F(1, 8))
-    solids.append(tetrahedron_mesh(
-        "tetra_regular", "regular tetrahedron 0.75 * (+-1, +-1, +-1) (even sign count) + "
-        "(0.5, -0.25, 0.125), edge 1.5 sqrt(2)",
-        [tuple(o[i] + s * c[i] for i in range(3))
-         for c in ((1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1))]))
-    solids.append(tetrahedron_mesh(
-        "tetra_irregular", "irregular tetrahedron with dyadic vertices",
-        [(F(-3, 8), F(1, 16), F(5, 32)), (F(9, 4), F(-1, 2), F(3, 8)),
-         (F(1, 2), F(13, 8), F(-1, 4)), (F(3, 16), F(5, 16), F(15, 8))]))
+    solids.append(
+        tetrahedron_mesh(
+            "tetra_regular",
+            "regular tetrahedron 0.75 * (+-1, +-1, +-1) (even sign count) + "
+            "(0.5, -0.25, 0.125), edge 1.5 sqrt(2)",
+            [
+                tuple(o[i] + s * c[i] for i in range(3))
+                for c in ((1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1))
+            ],
+        )
+    )
+    solids.append(
+        tetrahedron_mesh(
+            "tetra_irregular",
+            "irregular tetrahedron with dyadic vertices",
+            [
+                (F(-3, 8), F(1, 16), F(5, 32)),
+                (F(9, 4), F(-1, 2), F(3, 8)),
+                (F(1, 2), F(13, 8), F(-1, 4)),
+                (F(3, 16), F(5, 16), F(15, 8)),
+            ],
+        )
+    )
     tri = [(F(0), F(0)), (F(3, 2), F(1, 4)), (F(3, 8), F(5, 4))]
-    solids.append(prism_mesh("prism_tri", "triangular prism, z in [-0.5, 1.25]",
-                             tri, F(-1, 2), F(5, 4)))
+    solids.append(
+        prism_mesh("prism_tri", "triangular prism, z in [-0.5, 1.25]", tri, F(-1, 2), F(5, 4))
+    )
     hexagon = regular_polygon(6, 1.0, (F(1, 4), F(-1, 8)), 10)
-    solids.append(prism_mesh("prism_hex", "hexagonal prism (radius 1 rounded to 2^-10), "
-                             "z in [0, 0.75], hexagon caps", hexagon, F(0), F(3, 4)))
-    solids.append(prism_mesh("prism_hex_mixed", "the hexagonal prism with a hexagon top cap, a "
-                             "triangulated bottom cap and every other side quad split",
-                             hexagon, F(0), F(3, 4), cap="mixed",
-                             cap_triangles=ear_clip(hexagon), side="mixed"))
+    solids.append(
+        prism_mesh(
+            "prism_hex",
+            "hexagonal prism (radius 1 rounded to 2^-10), z in [0, 0.75], hexagon caps",
+            hexagon,
+            F(0),
+            F(3, 4),
+        )
+    )
+    solids.append(
+        prism_mesh(
+            "prism_hex_mixed",
+            "the hexagonal prism with a hexagon top cap, a "
+            "triangulated bottom cap and every other side quad split",
+            hexagon,
+            F(0),
+            F(3, 4),
+            cap="mixed",
+            cap_triangles=ear_clip(hexagon),
+            side="mixed",
+        )
+    )
     dodecagon = regular_polygon(12, 1.25, (F(1, 2), F(1, 4)), 12, phase=0.1)
-    solids.append(prism_mesh("prism_12gon", "12-gon prism (radius 1.25 rounded to 2^-12), "
-                             "z in [-0.25, 0.5]", dodecagon, F(-1, 4), F(1, 2)))
-    ell = [(F(0), F(0)), (F(2), F(0)), (F(2), F(1, 2)), (F(1, 2), F(1, 2)),
-           (F(1, 2), F(3, 2)), (F(0), F(3, 2))]
+    solids.append(
+        prism_mesh(
+            "prism_12gon",
+            "12-gon prism (radius 1.25 rounded to 2^-12), z in [-0.25, 0.5]",
+            dodecagon,
+            F(-1, 4),
+            F(1, 2),
+        )
+    )
+    ell = [
+        (F(0), F(0)),
+        (F(2), F(0)),
+        (F(2), F(1, 2)),
+        (F(1, 2), F(1, 2)),
+        (F(1, 2), F(3, 2)),
+        (F(0), F(3, 2)),
+    ]
     ell = [(x + F(-3, 4), y + F(1, 8)) for x, y in ell]
-    solids.append(prism_mesh("prism_L", "L-shaped extrusion (non-convex hexagon caps), "
-                             "z in [0.25, 1]", ell, F(1, 4), F(1)))
+    solids.append(
+        prism_mesh(
+            "prism_L",
+            "L-shaped extrusion (non-convex hexagon caps), z in [0.25, 1]",
+            ell,
+            F(1, 4),
+            F(1),
+        )
+    )
     star = star_polygon(5, 1.0, 0.375, (F(1, 8), F(-1, 4)), 10)
-    solids.append(prism_mesh("prism_star", "5-pointed star extrusion: caps are single "
-                             "non-convex 10-gons, z in [-0.5, 0.25]", star, F(-1, 2), F(1, 4)))
-    solids.append(prism_mesh("prism_star_tris", "the star extrusion with correctly "
-                             "triangulated caps (ear clipping)", star, F(-1, 2), F(1, 4),
-                             cap="triangles", cap_triangles=ear_clip(star)))
-    fan = prism_mesh("prism_star_fan", "the star extrusion with caps fanned from vertex 0 "
-                     "(overlapping, some inverted, triangles: a valid 2-chain, so volume "
-                     "and inertia are the same; surface area is not)", star, F(-1, 2), F(1, 4),
-                     cap="fan")
+    solids.append(
+        prism_mesh(
+            "prism_star",
+            "5-pointed star extrusion: caps are single non-convex 10-gons, z in [-0.5, 0.25]",
+            star,
+            F(-1, 2),
+            F(1, 4),
+        )
+    )
+    solids.append(
+        prism_mesh(
+            "prism_star_tris",
+            "the star extrusion with correctly triangulated caps (ear clipping)",
+            star,
+            F(-1, 2),
+            F(1, 4),
+            cap="triangles",
+            cap_triangles=ear_clip(star),
+        )
+    )
+    fan = prism_mesh(
+        "prism_star_fan",
+        "the star extrusion with caps fanned from vertex 0 "
+        "(overlapping, some inverted, triangles: a valid 2-chain, so volume "
+        "and inertia are the same; surface area is not)",
+        star,
+        F(-1, 2),
+        F(1, 4),
+        cap="fan",
+    )
     fan.area_known = False
     solids.append(fan)
     solids.append(house_mesh())
@@ -526,6 +654,7 @@ def build_solids():
 # Self-checks against closed forms
 # ---------------------------------------------------------------------------
 
+
 def self_check(refs):
     by_name = {r.mesh.name: r for r in refs}
     # box: V = abc, Ixx = m (b^2 + c^2) / 12, products zero
@@ -534,8 +663,11 @@ def self_check(refs):
     v = a * b * c
     assert r.volume == v
     assert r.com == [F(1, 2), F(5, 4), F(37, 16)]
-    assert r.inertia == [[v * (b * b + c * c) / 12, 0, 0], [0, v * (a * a + c * c) / 12, 0],
-                         [0, 0, v * (a * a + b * b) / 12]]
+    assert r.inertia == [
+        [v * (b * b + c * c) / 12, 0, 0],
+        [0, v * (a * a + c * c) / 12, 0],
+        [0, 0, v * (a * a + b * b) / 12],
+    ]
     assert r.area == decimal_of(2 * (a * b + b * c + c * a))
     # a quad cube and a triangle cube are the same solid
     q, t = by_name["cube_quads"], by_name["cube_tris"]
@@ -550,7 +682,9 @@ def self_check(refs):
     assert r.volume == F(2) * F(3, 2) * F(3, 4) / 6
     # the polygon, triangulated and fanned stars are the same solid
     p, t, f = by_name["prism_star"], by_name["prism_star_tris"], by_name["prism_star_fan"]
-    assert (p.volume, p.com, p.inertia) == (t.volume, t.com, t.inertia) == (f.volume, f.com, f.inertia)
+    assert (
+        (p.volume, p.com, p.inertia) == (t.volume, t.com, t.inertia) == (f.volume, f.com, f.inertia)
+    )
     assert p.area == t.area
     h, hm = by_name["prism_hex"], by_name["prism_hex_mixed"]
     assert (h.volume, h.com, h.inertia, h.area) == (hm.volume, hm.com, hm.inertia, hm.area)
@@ -567,10 +701,11 @@ def self_check(refs):
 # Output
 # ---------------------------------------------------------------------------
 
+
 def format_list(items, per_line, indent="    "):
     lines = []
     for k in range(0, len(items), per_line):
-        lines.append(indent + ", ".join(items[k:k + per_line]) + ",")
+        lines.append(indent + ", ".join(items[k : k + per_line]) + ",")
     return "\n".join(lines)
 
 
@@ -635,9 +770,11 @@ def render(refs):
         area = "NAN"
         if r.area is not None:
             area = c_double(F(r.area))
-        w("    {\"%s\", \"%s\"," % (m.name, m.comment.replace('"', "'")))
-        w("     pm_ref_%s_positions, %d, pm_ref_%s_indices, %d, %s, %d," % (
-            m.name, len(m.vertices), m.name, sum(len(f) for f in m.faces), fs, len(m.faces)))
+        w('    {"%s", "%s",' % (m.name, m.comment.replace('"', "'")))
+        w(
+            "     pm_ref_%s_positions, %d, pm_ref_%s_indices, %d, %s, %d,"
+            % (m.name, len(m.vertices), m.name, sum(len(f) for f in m.faces), fs, len(m.faces))
+        )
         w("     /* volume = %s */" % r.volume)
         w("     %s," % c_double(r.volume))
         w("     {%s}," % ", ".join(c_double(x) for x in r.com))
@@ -653,8 +790,11 @@ def render(refs):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--output", type=Path, default=DEFAULT_OUTPUT)
-    parser.add_argument("--check", action="store_true",
-                        help="fail if the output file differs from what would be written")
+    parser.add_argument(
+        "--check",
+        action="store_true",
+        help="fail if the output file differs from what would be written",
+    )
     args = parser.parse_args()
     refs = [Reference(m) for m in build_solids()]
     self_check(refs)
