@@ -98,9 +98,9 @@ step_doc() {
 
 step_examples() {
     cargo run --locked -q -p polymass-examples --bin mass_properties || return 1
-    # The bundled bracket is in millimetres: aluminium is 2.7e-6 kg/mm^3.
+    # The bundled robot link is in millimetres: aluminium is 2.7e-6 kg/mm^3.
     cargo run --locked -q -p polymass-examples --bin stl_mass_properties -- \
-        "$ROOT/examples/rust/data/l_bracket.stl" 2.7e-6
+        "$ROOT/examples/data/robot_link.stl" 2.7e-6
 }
 
 step_static() {

@@ -3,9 +3,9 @@
     python examples/python/mass_properties_of_file.py [MESH] [--density KG_PER_M3] [--unit mm|m]
 
 The mesh is read with trimesh (any format it reads: STL, OBJ, PLY, OFF, glTF, 3MF);
-polymass computes. Without arguments: the bundled aluminium L-bracket, l_bracket.stl
-(millimetres). An STL is a triangle soup, every triangle with its own vertices, so
-its vertices are welded for the closed-surface checks.
+polymass computes. Without arguments: the aluminium robot link bundled with the
+project, examples/data/robot_link.stl (millimetres). An STL is a triangle soup, every
+triangle with its own vertices, so its vertices are welded for the closed-surface checks.
 """
 
 from __future__ import annotations
@@ -24,7 +24,9 @@ UNITS = {"m": 1.0, "mm": 1e-3}
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("mesh", nargs="?", default=Path(__file__).with_name("l_bracket.stl"))
+    parser.add_argument(
+        "mesh", nargs="?", default=Path(__file__).parents[1] / "data" / "robot_link.stl"
+    )
     parser.add_argument("--density", type=float, default=2700.0, help="kg/m^3 (aluminium)")
     parser.add_argument("--unit", choices=UNITS, default="mm", help="length unit of the file")
     arguments = parser.parse_args()

@@ -110,16 +110,15 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
                     if (dx == 0 && (dy < 0 || (dy == 0 && dz <= 0))) continue;
                     const Cell& here = first->cell;
                     const Entry key{{here[0] + dx, here[1] + dy, here[2] + dz}, 0};
-                    const auto [near_first, near_last] =
-                        std::equal_range(last, entries.end(), key, cell_less);
+                    const auto near = std::equal_range(last, entries.end(), key, cell_less);
                     auto touching = [&] {
                         for (auto a = first; a != last; ++a)
-                            for (auto b = near_first; b != near_last; ++b)
+                            for (auto b = near.first; b != near.second; ++b)
                                 if (close(*a, *b)) return true;
                         return false;
                     };
-                    if (near_first != near_last && touching())
-                        sets.join(first->vertex, near_first->vertex);
+                    if (near.first != near.second && touching())
+                        sets.join(first->vertex, near.first->vertex);
                 }
         first = last;
     }

@@ -71,26 +71,38 @@ fn refuses_short_ascii_and_truncated_files() {
 }
 
 #[test]
-fn the_carried_bracket_has_the_bracket_s_exact_properties() {
-    let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/data/l_bracket.stl")).unwrap();
+fn the_bundled_robot_link_has_its_exact_properties() {
+    let bytes = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../data/robot_link.stl"
+    ))
+    .unwrap();
     let soup = binary_stl::parse(&bytes).unwrap();
-    assert_eq!(soup.triangles.len(), 20);
+    assert_eq!(soup.triangles.len(), 28);
     let surface = Surface::triangles(&soup.positions, &soup.triangles);
     let mut context = Context::with_options(&Options::new().weld_vertices(true)).unwrap();
     let p = context.mass_properties(&surface, &Body::default()).unwrap();
-    // Foot 40 x 10 x 20 mm at (20, 5, 10), leg 10 x 20 x 20 mm at (5, 20, 10).
-    let (foot, leg) = (8000.0, 4000.0);
-    let volume = foot + leg;
-    let centre = [
-        (foot * 20.0 + leg * 5.0) / volume,
-        (foot * 5.0 + leg * 20.0) / volume,
-        10.0,
+    // Exact values from examples/data/generate.py (rational arithmetic), in mm.
+    let volume = 143360.0;
+    let centre = [80.0, 0.0, 20.0];
+    let inertia = [
+        [39649280.0, 0.0, -229376000.0 / 3.0],
+        [0.0, 335216640.0, 0.0],
+        [-229376000.0 / 3.0, 0.0, 948305920.0 / 3.0],
     ];
     assert!((p.volume - volume).abs() <= 1e-12 * volume);
     for (actual, expected) in p.center_of_mass.iter().zip(centre) {
         assert!(
-            (actual - expected).abs() <= 1e-12 * 40.0,
+            (actual - expected).abs() <= 1e-12 * 160.0,
             "{actual} vs {expected}"
         );
+    }
+    for (row, expected_row) in p.inertia.iter().zip(inertia) {
+        for (actual, expected) in row.iter().zip(expected_row) {
+            assert!(
+                (actual - expected).abs() <= 1e-12 * 335216640.0,
+                "{actual} vs {expected}"
+            );
+        }
     }
 }
