@@ -100,10 +100,13 @@ int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc
                              u64(desc->vertex_count), u64(stride));
 
     const uint64_t index_bytes = desc->index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
-    if (desc->index_count == 0)
+    // Faces listed without indices are faces too small (read_face_sizes says
+    // which); no faces at all is not a mesh.
+    const bool faces_listed = desc->face_sizes && desc->face_count > 0;
+    if (desc->index_count == 0 && !faces_listed)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "the mesh has no faces (index_count is 0)");
-    if (!desc->indices)
+    if (!desc->indices && desc->index_count > 0)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "indices is NULL but index_count is %llu", u64(desc->index_count));
     if (!span_fits(desc->indices, desc->index_count, index_bytes, index_bytes))

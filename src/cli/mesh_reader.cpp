@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "format_readers.hpp"
+#include "isolated_reader.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -52,7 +53,7 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         model = read_off(read_bytes(path));
     } else if (name == "gltf" || name == "glb" || name == "3mf") {
         read_bytes(path);  // the same "cannot open" and "empty" errors as the other formats
-        model = read_with_assimp(path, name);
+        model = read_isolated([&] { return read_with_assimp(path, name); });
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
                                     "with one, or give --format (") +
@@ -61,6 +62,9 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         throw ReadError("unknown format '" + name + "' (known: " + supported_formats() + ")");
     }
     model.format = name;
+    model.parts.erase(std::remove_if(model.parts.begin(), model.parts.end(),
+                                     [](const Part& part) { return part.face_sizes.empty(); }),
+                      model.parts.end());
     if (model.parts.empty()) throw ReadError("the file holds no faces");
     return model;
 }

@@ -2,7 +2,8 @@
 // project's own readers (text_formats, stl_reader, ply_reader): they keep
 // polygon faces and every index as written, so a bad index or a NaN reaches the
 // library's checks instead of being dropped or clamped, and a truncated file is
-// an error, not a read past its end. glTF/GLB and 3MF go through assimp.
+// an error, not a read past its end. glTF/GLB and 3MF go through assimp, in a
+// child process (isolated_reader).
 #pragma once
 
 #include <stdexcept>

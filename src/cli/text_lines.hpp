@@ -3,6 +3,7 @@
 // number is an error naming the line, never a silent 0.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -25,7 +26,8 @@ public:
     int64_t expect_integer(const char* what);
     uint64_t line_number() const { return line_number_; }
     // Where the next line starts (for a binary body after a text header).
-    std::string_view::size_type offset() const { return next_line_; }
+    // At most the text's size: a last line without a newline ends there.
+    std::string_view::size_type offset() const { return std::min(next_line_, text_.size()); }
 
     // Throws ReadError "line N: message".
     [[noreturn]] void fail(const std::string& message) const;

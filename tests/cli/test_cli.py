@@ -354,6 +354,32 @@ class BadInput(Case):
             EXIT_INVALID_MESH,
         )
 
+    def test_binary_ply_ending_with_its_header(self):
+        # end_header is the file's last line, without its newline: no body.
+        header = fixtures.ply_header("binary_little_endian", 4, 1).rstrip(b"\n")
+        self.expect_error(
+            self.write("header_only.ply", header), "unreadable", EXIT_UNREADABLE, "truncated"
+        )
+
+    def test_faces_without_vertices(self):
+        obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf\n"
+        self.expect_error(
+            self.write("empty_face.obj", obj), "face_too_small", EXIT_INVALID_MESH, "face 0"
+        )
+
+    def test_a_crash_in_assimp_is_an_unreadable_file(self):
+        # A 3MF whose zip checksum no longer matches its (still valid) XML: the
+        # assimp Debian ships aborts on it; the tool reads it in a child process.
+        path = WORK / "bad_checksum.3mf"
+        fixtures.write_3mf(path, self.vertices, self.faces)
+        data = bytearray(path.read_bytes())
+        digit = data.index(b'<vertex x="') + len(b'<vertex x="')
+        data[digit] = ord("7") if data[digit] != ord("7") else ord("6")
+        path.write_bytes(bytes(data))
+        result, out = run_json(path)
+        self.assertIn(result.returncode, (EXIT_UNREADABLE, EXIT_INVALID_MESH), result.stderr)
+        self.assertIn("error", out)
+
     def test_nan_coordinates(self):
         vertices = list(self.vertices)
         vertices[2] = (float("nan"), 0.0, 0.0)

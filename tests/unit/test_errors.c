@@ -669,6 +669,17 @@ static void test_face_too_small(void** state) {
     sizes[6] = 4;
     EXPECT_FAILURE(ctx, &d, POLYMASS_ERROR_FACE_TOO_SMALL);
     PM_ASSERT_MENTIONS(ctx, "face", 5);
+    /* faces of 0 vertices only, so no indices at all: still faces too small */
+    sizes[0] = sizes[1] = 0;
+    d.face_count = 2;
+    d.index_count = 0;
+    d.indices = NULL;
+    EXPECT_FAILURE(ctx, &d, POLYMASS_ERROR_FACE_TOO_SMALL);
+    PM_ASSERT_MENTIONS(ctx, "face", 0);
+    d = pm_mesh_desc(&m);
+    d.face_sizes = sizes;
+    d.face_count = 7;
+    sizes[0] = sizes[1] = 4;
     /* never skipped */
     pm_context_set_flags(ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
     pm_props_init(&p);

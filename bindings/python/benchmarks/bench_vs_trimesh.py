@@ -13,28 +13,19 @@ from __future__ import annotations
 import argparse
 import platform
 import statistics
+import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 
 import numpy as np
 import trimesh
 
 import polymass
 
-
-def torus(major: float, minor: float, rings: int, sides: int):
-    """A closed torus of 2 * rings * sides triangles, faces outward."""
-    u = np.linspace(0, 2 * np.pi, rings, endpoint=False)[:, None]
-    v = np.linspace(0, 2 * np.pi, sides, endpoint=False)[None, :]
-    x = (major + minor * np.cos(v)) * np.cos(u)
-    y = (major + minor * np.cos(v)) * np.sin(u)
-    z = minor * np.sin(v) * np.ones_like(u)
-    vertices = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
-    i, j = np.meshgrid(np.arange(rings), np.arange(sides), indexing="ij")
-    a, d = i * sides + j, i * sides + (j + 1) % sides
-    b, c = ((i + 1) % rings) * sides + j, ((i + 1) % rings) * sides + (j + 1) % sides
-    faces = np.concatenate([np.stack([a, b, c], -1), np.stack([a, c, d], -1)]).reshape(-1, 3)
-    return vertices, faces
+# The tests' torus: the same closed mesh the tests check, at benchmark size.
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from shapes import torus
 
 
 def unit_cube():
@@ -59,8 +50,8 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=5)
     repeat = parser.parse_args().repeat
 
-    vertices, faces = torus(3.0, 1.0, 1000, 500)
-    faces32 = faces.astype(np.uint32)
+    vertices, faces32 = torus(3.0, 1.0, 1000, 500)
+    faces = faces32.astype(np.int64)
     count = len(faces)
     print(
         f"polymass {polymass.__version__} (C library {polymass.library_version()}), "
