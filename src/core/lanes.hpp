@@ -20,6 +20,15 @@ __attribute__((always_inline)) inline void load_lanes(Lanes& lanes, const double
     std::memcpy(&lanes, values, sizeof lanes);
 }
 
+// A comparison of Lanes gives one of these: all bits set in the lanes where it holds.
+using LaneMask = decltype(Lanes{} < Lanes{});
+
+__attribute__((always_inline)) inline bool any_lane(const LaneMask& mask) {
+    auto any = mask[0];
+    for (int lane = 1; lane < lane_count; ++lane) any |= mask[lane];
+    return any != 0;
+}
+
 __attribute__((always_inline)) inline double sum_lanes(const Lanes& lanes) {
     double sum = 0.0;
     for (int lane = 0; lane < lane_count; ++lane) sum += lanes[lane];

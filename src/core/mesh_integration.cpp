@@ -10,33 +10,44 @@
 namespace polymass::core {
 namespace {
 
-// Triangles wait here, as coordinates relative to the reference point laid out
-// axis by vertex by slot, until lane_count of them can go through the closed
-// forms at once. A batch is also a block of the summation: its sums are
-// reduced before they join the total, so rounding grows with the number of
-// batches rather than of triangles.
+// Triangles wait here, as the caller's coordinates laid out axis by vertex by
+// slot, until lane_count of them can go through the closed forms at once; the
+// move into the integration frame happens there too, a lane group at a time.
+// A batch is also a block of the summation: its sums are reduced before they
+// join the total, so rounding grows with the number of batches rather than of
+// triangles.
 struct TriangleBatch {
     static constexpr std::size_t capacity = 64;  // a multiple of lane_count
     alignas(64) double coordinates[3][3][capacity];
     std::size_t faces[capacity];
     std::size_t size = 0;
+    // Integration coordinates are (coordinate − reference) · inverse_unit.
+    double reference[3];
+    double inverse_unit;
 
-    void add(std::size_t face, const Eigen::Vector3d (&vertices)[3]) {
+    TriangleBatch(const Eigen::Vector3d& reference_point, double unit)
+        : reference{reference_point.x(), reference_point.y(), reference_point.z()},
+          inverse_unit(1.0 / unit) {}  // a power of two: exact
+
+    void add(std::size_t face, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+             const Eigen::Vector3d& p2) {
         const std::size_t slot = size++;
-        auto put = [&](int vertex) {
-            coordinates[0][vertex][slot] = vertices[vertex].x();
-            coordinates[1][vertex][slot] = vertices[vertex].y();
-            coordinates[2][vertex][slot] = vertices[vertex].z();
+        auto put = [&](int vertex, const Eigen::Vector3d& p) {
+            coordinates[0][vertex][slot] = p.x();
+            coordinates[1][vertex][slot] = p.y();
+            coordinates[2][vertex][slot] = p.z();
         };
-        put(0), put(1), put(2);  // not a loop: GCC -O2 would keep its counter
+        put(0, p0), put(1, p1), put(2, p2);
         faces[slot] = face;
     }
 
-    // Empty slots of the last lane group become zero triangles, which add nothing.
+    // Empty slots of the last lane group become triangles with all three
+    // vertices at the reference point: zero triangles, which add nothing.
     void pad() {
         const std::size_t end = (size + lane_count - 1) / lane_count * lane_count;
-        for (auto& axis : coordinates)
-            for (auto& vertex : axis) std::fill(vertex + size, vertex + end, 0.0);
+        for (int axis = 0; axis < 3; ++axis)
+            for (auto& vertex : coordinates[axis])
+                std::fill(vertex + size, vertex + end, reference[axis]);
     }
 };
 
@@ -54,39 +65,47 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
     Lanes twice_areas{};
     for (std::size_t first = 0; first < batch.size; first += lane_count) {
         Lanes p[3][3];
-        for (int axis = 0; axis < 3; ++axis)
-            for (int vertex = 0; vertex < 3; ++vertex)
-                load_lanes(p[axis][vertex], &batch.coordinates[axis][vertex][first]);
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int vertex = 0; vertex < 3; ++vertex) {
+                Lanes coordinate;
+                load_lanes(coordinate, &batch.coordinates[axis][vertex][first]);
+                p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
+            }
+        }
         const TriangleEdges<Lanes> edges(p);
         add_unscaled_triangle_sums(sums, p, edges.delta);  // padding lanes add zero
 
-        // |δ| as m·|δ/m| with m its largest component, so that a sliver's δ
-        // does not underflow when squared.
-        Lanes largest{}, e1_squared{}, e2_squared{};
+        Lanes squared_norm{}, e1_squared{}, e2_squared{};
         for (int axis = 0; axis < 3; ++axis) {
-            const Lanes magnitude = edges.delta[axis] < 0 ? -edges.delta[axis] : edges.delta[axis];
-            largest = magnitude > largest ? magnitude : largest;
+            squared_norm += edges.delta[axis] * edges.delta[axis];
             e1_squared += edges.e1[axis] * edges.e1[axis];
             e2_squared += edges.e2[axis] * edges.e2[axis];
         }
-        const Lanes divisor = largest > 0 ? largest : Lanes{} + 1.0;
-        Lanes normalized_squared{};
-        for (int axis = 0; axis < 3; ++axis) {
-            const Lanes normalized = edges.delta[axis] / divisor;
-            normalized_squared += normalized * normalized;
-        }
         Lanes twice_area;
         for (int lane = 0; lane < lane_count; ++lane)
-            twice_area[lane] = largest[lane] * std::sqrt(normalized_squared[lane]);
+            twice_area[lane] = std::sqrt(squared_norm[lane]);
+        // Below 2^-1022 squares lose digits; above 2^-960 what they lose is
+        // under 2^-115 of the sum. A sliver's δ (coordinates are of order one
+        // here) is measured without squaring instead, rarely.
+        constexpr double squares_keep_digits = 0x1p-960;
+        const LaneMask sliver = (squared_norm > 0) & (squared_norm < squares_keep_digits);
+        if (any_lane(sliver)) {
+            for (int lane = 0; lane < lane_count; ++lane)
+                if (sliver[lane])
+                    twice_area[lane] = std::hypot(edges.delta[0][lane], edges.delta[1][lane],
+                                                  edges.delta[2][lane]);
+        }
         twice_areas += twice_area;
 
         // A degenerate triangle is reported; its terms, at rounding level, stay:
         // they are what keeps a closed surface's sum balanced.
         const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
-        const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
-        for (std::size_t lane = 0; lane < used; ++lane)
-            if (is_degenerate_face(twice_area[lane], extent_squared[lane]))
-                result.degenerate_faces.record(batch.faces[first + lane]);
+        const LaneMask degenerate = twice_area <= degenerate_area_ratio * extent_squared;
+        if (any_lane(degenerate)) {
+            const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
+            for (std::size_t lane = 0; lane < used; ++lane)
+                if (degenerate[lane]) result.degenerate_faces.record(batch.faces[first + lane]);
+        }
     }
     result.surface_area += sum_lanes(twice_areas) / 2.0;
     UnscaledTriangleSums<double> reduced;
@@ -102,16 +121,21 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
 class Integrator {
 public:
     explicit Integrator(const IntegrationSettings& settings)
-        : settings_(settings), unit_(unit_length_near(settings.size)) {}
+        : settings_(settings),
+          unit_(unit_length_near(settings.size)),
+          batch_(settings.reference, unit_) {}
 
     // Coordinates relative to the reference point are divided by this.
     double unit() const { return unit_; }
 
-    void add_triangle(std::size_t face, const Eigen::Vector3d (&vertices)[3]) {
-        batch_.add(face, vertices);
+    // Vertices in the caller's coordinates.
+    void add_triangle(std::size_t face, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                      const Eigen::Vector3d& p2) {
+        batch_.add(face, p0, p1, p2);
         if (batch_.size == TriangleBatch::capacity) flush_triangles();
     }
 
+    // vertex_at(i): the i-th vertex relative to the reference point, in units.
     template <class VertexAt>
     void add_polygon(std::size_t face, std::size_t count, VertexAt&& vertex_at) {
         const FacePlane plane = face_plane(count, vertex_at);
@@ -167,14 +191,20 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
     Integrator integrator(settings);
     const Eigen::Vector3d reference = settings.reference;
     const double inverse_unit = 1.0 / integrator.unit();  // a power of two: exact
-    auto vertex = [&](std::size_t position) {
-        return Eigen::Vector3d((mesh.positions[mesh.indices[position]] - reference) * inverse_unit);
+    // Copies: the batch's stores cannot then alias them, and they stay in registers.
+    const auto positions = mesh.positions;
+    const auto indices = mesh.indices;
+    auto vertex = [positions, indices](std::size_t position) {
+        return positions[indices[position]];
     };
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
-        if (size == 3)
-            integrator.add_triangle(face, {vertex(first), vertex(first + 1), vertex(first + 2)});
-        else
-            integrator.add_polygon(face, size, [&](std::size_t i) { return vertex(first + i); });
+        if (size == 3) {
+            integrator.add_triangle(face, vertex(first), vertex(first + 1), vertex(first + 2));
+            return;
+        }
+        integrator.add_polygon(face, size, [&](std::size_t i) {
+            return Eigen::Vector3d((vertex(first + i) - reference) * inverse_unit);
+        });
     });
     return integrator.finish();
 }

@@ -20,9 +20,17 @@ struct PositionArray {
     std::size_t stride = 0;  // bytes from one vertex to the next
 
     Eigen::Vector3d operator[](std::size_t vertex) const {
-        Scalar xyz[3];
-        std::memcpy(xyz, base + vertex * stride, sizeof xyz);
-        return {double(xyz[0]), double(xyz[1]), double(xyz[2])};
+        const unsigned char* xyz = base + vertex * stride;
+        // One memcpy per coordinate: into an array, GCC copies through the stack.
+        return {coordinate(xyz), coordinate(xyz + sizeof(Scalar)),
+                coordinate(xyz + 2 * sizeof(Scalar))};
+    }
+
+private:
+    static double coordinate(const unsigned char* bytes) {
+        Scalar value;
+        std::memcpy(&value, bytes, sizeof value);
+        return double(value);
     }
 };
 

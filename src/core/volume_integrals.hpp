@@ -82,10 +82,12 @@ namespace polymass::core {
 // A face whose area is at rounding level for its extent has no orientation to
 // speak of: it is reported as degenerate, and its terms are at rounding level.
 // twice_area is |E1 × E2| (or the Newell vector's length); extent_squared
-// bounds |E1|·|E2| from above.
+// bounds |E1|·|E2| from above. (The triangle batch applies the same ratio a
+// lane group at a time.)
+constexpr double degenerate_area_ratio = 32.0 * 2.220446049250313e-16;
+
 inline bool is_degenerate_face(double twice_area, double extent_squared) {
-    constexpr double rounding = 32.0 * 2.220446049250313e-16;
-    return twice_area <= rounding * extent_squared;
+    return twice_area <= degenerate_area_ratio * extent_squared;
 }
 
 }  // namespace polymass::core
