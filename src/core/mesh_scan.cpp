@@ -11,7 +11,10 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     // No index can reach past this, however long the caller says the array is.
     const std::size_t addressable = std::min<std::size_t>(
         mesh.vertex_count, std::size_t(std::numeric_limits<Index>::max()) + 1);
-    scan.used.assign((addressable + 63) / 64, 0);
+    // A byte per vertex, packed into scan.used afterwards: setting bits in
+    // place would chain each face's read-modify-write of a word to the last
+    // one's (neighbouring faces share vertices), a byte store waits for nothing.
+    std::pmr::vector<unsigned char> seen(addressable, 0, memory);
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
         bool in_range = true;
         for (std::size_t i = first; i < first + size; ++i) {
@@ -22,20 +25,36 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
                 in_range = false;
                 continue;
             }
-            scan.used[vertex / 64] |= std::uint64_t{1} << (vertex % 64);
+            seen[vertex] = 1;
         }
         if (!in_range) scan.out_of_range_faces.record(face);
     });
-    for (std::size_t vertex = 0; vertex < addressable; ++vertex) {
-        if (!scan.is_used(vertex)) continue;
-        ++scan.used_vertex_count;
-        const Eigen::Vector3d p = mesh.positions[vertex];
-        if (!p.allFinite()) {
-            scan.non_finite.record(vertex);
-            continue;
+
+    scan.used.assign((addressable + 63) / 64, 0);
+    // Locals rather than scan's members, which the stores into scan.used might alias.
+    Eigen::Vector3d low = scan.bounds.min(), high = scan.bounds.max();
+    std::size_t used_vertex_count = 0;
+    for (std::size_t block = 0; block < scan.used.size(); ++block) {
+        const std::size_t end = std::min(addressable, 64 * block + 64);
+        std::uint64_t used = 0;
+        for (std::size_t vertex = 64 * block; vertex < end; ++vertex) {
+            if (!seen[vertex]) continue;
+            used |= std::uint64_t{1} << (vertex % 64);
+            ++used_vertex_count;
+            const Eigen::Vector3d p = mesh.positions[vertex];
+            // x − x is 0 for a finite x and NaN otherwise: one test for three coordinates.
+            const double finite_if_zero = (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
+            if (finite_if_zero != 0.0) {
+                scan.non_finite.record(vertex);
+                continue;
+            }
+            low = low.cwiseMin(p);
+            high = high.cwiseMax(p);
         }
-        scan.bounds.extend(p);
+        scan.used[block] = used;
     }
+    scan.used_vertex_count = used_vertex_count;
+    scan.bounds = Eigen::AlignedBox3d(low, high);
     return scan;
 }
 
