@@ -43,10 +43,14 @@ class Header:
     empty_macros: set[str] = field(default_factory=set)
 
     def cdef(self) -> str:
-        """The declarations with the empty macros (the export macro) removed."""
+        """The declarations with the empty macros (the export macro) removed and
+        integer constants (array sizes) replaced by their values."""
         text = "\n".join(self.declarations)
         for name in self.empty_macros:
             text = re.sub(rf"\b{name}\b", "", text)
+        for name, value in self.constants.items():
+            if isinstance(value, int) and not isinstance(value, bool):
+                text = re.sub(rf"\b{name}\b", str(value), text)
         return text
 
 

@@ -257,12 +257,19 @@ typedef struct polymass_mass_properties {
     double principal_axes[9];
 } polymass_mass_properties;
 
-/* No location: the value of a polymass_diagnostics "first_*" field when the
-   count beside it is 0. */
+/* How many locations of each finding polymass_diagnostics lists: the lowest
+   face or vertex indices, the edges with the lowest vertex pairs. */
+#define POLYMASS_DIAGNOSTIC_LOCATIONS 8
+
+/* No location: the value of the "first_*" entries past the count beside them
+   (all of them when it is 0). */
 #define POLYMASS_NONE UINT64_MAX
 
-/* What polymass_mesh_check finds. Vertex numbers are the caller's indices
-   (after welding: the lowest index at that position). */
+/* What polymass_mesh_check finds: for each kind of finding its count and its
+   first (lowest) min(count, POLYMASS_DIAGNOSTIC_LOCATIONS) locations, in
+   ascending order. Vertex numbers are the caller's indices (after welding: the
+   lowest index at that position); an edge is a vertex pair in the direction
+   the faces traverse it (most often). */
 typedef struct polymass_diagnostics {
     uint32_t struct_size; /* set by the caller: sizeof(polymass_diagnostics) */
     int32_t status;       /* what polymass_mesh_create would return */
@@ -270,21 +277,21 @@ typedef struct polymass_diagnostics {
     uint64_t used_vertex_count; /* distinct vertices the faces use */
     uint64_t edge_count;        /* distinct undirected edges */
     uint64_t non_finite_vertices;
-    uint64_t first_non_finite_vertex;
+    uint64_t first_non_finite_vertices[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t out_of_range_indices;
-    uint64_t first_out_of_range_face;
-    uint64_t small_faces; /* fewer than 3 vertices */
-    uint64_t first_small_face;
+    uint64_t first_out_of_range_faces[POLYMASS_DIAGNOSTIC_LOCATIONS]; /* faces holding them */
+    uint64_t small_faces;                                             /* fewer than 3 vertices */
+    uint64_t first_small_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t degenerate_faces; /* zero area: legal, harmless */
-    uint64_t first_degenerate_face;
+    uint64_t first_degenerate_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t open_edges; /* used by one face */
-    uint64_t first_open_edge[2];
+    uint64_t first_open_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
     uint64_t non_manifold_edges; /* used by more than two faces */
-    uint64_t first_non_manifold_edge[2];
+    uint64_t first_non_manifold_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
     uint64_t misoriented_edges; /* traversed twice the same way */
-    uint64_t first_misoriented_edge[2];
+    uint64_t first_misoriented_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
     uint64_t non_planar_faces;
-    uint64_t first_non_planar_face;
+    uint64_t first_non_planar_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
     double max_non_planarity; /* largest relative off-plane distance seen */
     double signed_volume;     /* NaN when the faces could not be integrated */
 } polymass_diagnostics;

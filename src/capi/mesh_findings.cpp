@@ -1,5 +1,6 @@
 #include "mesh_findings.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -10,8 +11,8 @@ using u64 = unsigned long long;  // for printf
 
 int32_t fail_on_edge(polymass_context* context, int32_t status, const core::EdgeFinding& edges,
                      const char* what) {
-    return context->fail(status, "edge (%u, %u) is %s (%llu such edges)", edges.first[0],
-                         edges.first[1], what, u64(edges.count));
+    return context->fail(status, "edge (%u, %u) is %s (%llu such edges)", edges.first()[0],
+                         edges.first()[1], what, u64(edges.count));
 }
 
 }  // namespace
@@ -39,14 +40,14 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
         return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
                              "face %llu refers to vertex %u, but there are only %llu vertices "
                              "(%llu indices out of range, in %llu faces)",
-                             u64(scan.out_of_range_faces.first), scan.first_out_of_range_index,
+                             u64(scan.out_of_range_faces.first()), scan.first_out_of_range_index,
                              u64(input.vertex_count), u64(scan.out_of_range_indices),
                              u64(scan.out_of_range_faces.count));
     if (scan.non_finite.count > 0)
         return context->fail(POLYMASS_ERROR_NON_FINITE,
                              "vertex %llu, used by a face, has a NaN or infinite coordinate "
                              "(%llu such vertices)",
-                             u64(scan.non_finite.first), u64(scan.non_finite.count));
+                             u64(scan.non_finite.first()), u64(scan.non_finite.count));
     if (!std::isfinite(scan.diagonal()))
         return context->fail(POLYMASS_ERROR_OVERFLOW,
                              "the mesh spans more than a double can hold (its bounding box "
@@ -65,7 +66,7 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                     POLYMASS_ERROR_NON_MANIFOLD,
                     "edge (%u, %u) is used by %llu faces; an edge of a solid's surface "
                     "has two (%llu such edges)",
-                    topology->non_manifold.first[0], topology->non_manifold.first[1],
+                    topology->non_manifold.first()[0], topology->non_manifold.first()[1],
                     u64(topology->non_manifold.first_traversals),
                     u64(topology->non_manifold.count));
             warnings |= POLYMASS_WARNING_NON_MANIFOLD;
@@ -84,8 +85,8 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
         return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
                              "face %llu is not planar: a vertex is off its plane by %.3g of "
                              "the face's diameter, more than the tolerance %.3g (%llu such faces)",
-                             u64(integration.non_planar_faces.first), integration.max_non_planarity,
-                             context->options.planarity_tolerance,
+                             u64(integration.non_planar_faces.first()),
+                             integration.max_non_planarity, context->options.planarity_tolerance,
                              u64(integration.non_planar_faces.count));
     if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
 
@@ -116,47 +117,66 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
     return POLYMASS_OK;
 }
 
+namespace {
+
+static_assert(core::kKeptLocations == POLYMASS_DIAGNOSTIC_LOCATIONS,
+              "the core keeps as many locations as the report lists");
+
+void copy_finding(const core::Finding& found, uint64_t& count,
+                  uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS]) {
+    count = found.count;
+    for (std::size_t i = 0; i < found.kept(); ++i) first[i] = found.lowest[i];
+}
+
+void copy_finding(const core::EdgeFinding& found, uint64_t& count,
+                  uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
+    count = found.count;
+    for (std::size_t i = 0; i < found.kept(); ++i) {
+        first[i][0] = found.lowest[i][0];
+        first[i][1] = found.lowest[i][1];
+    }
+}
+
+}  // namespace
+
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
                  const core::MeshAnalysis* analysis) {
-    constexpr uint64_t none = POLYMASS_NONE;
     report = polymass_diagnostics{};
     report.struct_size = sizeof report;
+    // Every location POLYMASS_NONE until a finding fills it: the struct is
+    // nothing but counts, locations and the two doubles set below.
+    for (uint64_t* location :
+         {&report.first_non_finite_vertices[0], &report.first_out_of_range_faces[0],
+          &report.first_small_faces[0], &report.first_degenerate_faces[0],
+          &report.first_non_planar_faces[0]})
+        std::fill_n(location, POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
+    for (uint64_t* edge : {&report.first_open_edges[0][0], &report.first_non_manifold_edges[0][0],
+                           &report.first_misoriented_edges[0][0]})
+        std::fill_n(edge, 2 * POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
     report.face_count = input.face_count;
-    report.first_non_finite_vertex = report.first_out_of_range_face = none;
-    report.first_small_face = report.first_degenerate_face = report.first_non_planar_face = none;
-    for (uint64_t* edge :
-         {report.first_open_edge, report.first_non_manifold_edge, report.first_misoriented_edge})
-        edge[0] = edge[1] = none;
     report.signed_volume = std::numeric_limits<double>::quiet_NaN();
-    report.small_faces = input.small_faces;
-    if (input.small_faces > 0) report.first_small_face = input.first_small_face;
+    copy_finding(input.small_faces, report.small_faces, report.first_small_faces);
     if (!analysis) return;
 
     const core::MeshScan& scan = analysis->scan;
     report.used_vertex_count = analysis->used_vertex_count;
-    report.non_finite_vertices = scan.non_finite.count;
-    if (scan.non_finite.count) report.first_non_finite_vertex = scan.non_finite.first;
-    report.out_of_range_indices = scan.out_of_range_indices;
-    if (scan.out_of_range_indices) report.first_out_of_range_face = scan.out_of_range_faces.first;
+    copy_finding(scan.non_finite, report.non_finite_vertices, report.first_non_finite_vertices);
+    copy_finding(scan.out_of_range_faces, report.out_of_range_indices,
+                 report.first_out_of_range_faces);
+    report.out_of_range_indices = scan.out_of_range_indices;  // indices, not faces
     if (const auto& topology = analysis->topology) {
         report.edge_count = topology->edge_count;
-        const auto copy_edges = [](const core::EdgeFinding& found, uint64_t& count,
-                                   uint64_t(&first)[2]) {
-            count = found.count;
-            if (found.count) first[0] = found.first[0], first[1] = found.first[1];
-        };
-        copy_edges(topology->open, report.open_edges, report.first_open_edge);
-        copy_edges(topology->non_manifold, report.non_manifold_edges,
-                   report.first_non_manifold_edge);
-        copy_edges(topology->misoriented, report.misoriented_edges, report.first_misoriented_edge);
+        copy_finding(topology->open, report.open_edges, report.first_open_edges);
+        copy_finding(topology->non_manifold, report.non_manifold_edges,
+                     report.first_non_manifold_edges);
+        copy_finding(topology->misoriented, report.misoriented_edges,
+                     report.first_misoriented_edges);
     }
     if (const auto& integration = analysis->integration) {
-        report.degenerate_faces = integration->degenerate_faces.count;
-        if (integration->degenerate_faces.count)
-            report.first_degenerate_face = integration->degenerate_faces.first;
-        report.non_planar_faces = integration->non_planar_faces.count;
-        if (integration->non_planar_faces.count)
-            report.first_non_planar_face = integration->non_planar_faces.first;
+        copy_finding(integration->degenerate_faces, report.degenerate_faces,
+                     report.first_degenerate_faces);
+        copy_finding(integration->non_planar_faces, report.non_planar_faces,
+                     report.first_non_planar_faces);
         report.max_non_planarity = integration->max_non_planarity;
         report.signed_volume = integration->integrals.volume;
     }

@@ -44,7 +44,7 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
     uint64_t total = 0;
     for (uint64_t face = 0; face < desc.face_count; ++face) {
         const uint32_t size = desc.face_sizes[face];
-        if (size < 3 && input.small_faces++ == 0) input.first_small_face = std::size_t(face);
+        if (size < 3) input.small_faces.record(std::size_t(face));
         // Saturating: an absurd total must still compare unequal to index_count.
         total = size > std::numeric_limits<uint64_t>::max() - total
                     ? std::numeric_limits<uint64_t>::max()
@@ -52,12 +52,13 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
     }
     input.face_sizes = desc.face_sizes;
     input.face_count = std::size_t(desc.face_count);
-    if (input.small_faces > 0)
+    if (input.small_faces.count > 0)
         return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
                              "face %llu has %u vertices; a face needs at least 3 "
                              "(%llu such faces)",
-                             u64(input.first_small_face), desc.face_sizes[input.first_small_face],
-                             u64(input.small_faces));
+                             u64(input.small_faces.first()),
+                             desc.face_sizes[input.small_faces.first()],
+                             u64(input.small_faces.count));
     if (total != desc.index_count)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "face_sizes add up to %llu indices but index_count is %llu",

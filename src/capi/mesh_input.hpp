@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "context.hpp"
+#include "core/findings.hpp"
 #include "core/mesh_view.hpp"
 
 namespace polymass::capi {
@@ -23,8 +24,7 @@ struct MeshInput {
     const uint32_t* face_sizes = nullptr;
     std::size_t face_count = 0;
     // Faces of fewer than 3 vertices (found while adding up face_sizes).
-    std::size_t small_faces = 0;
-    std::size_t first_small_face = 0;
+    core::Finding small_faces;
 };
 
 // Fills `input` and returns POLYMASS_OK, POLYMASS_ERROR_INVALID_ARGUMENT or

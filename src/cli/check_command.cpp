@@ -1,10 +1,14 @@
 // polymass check: every finding of polymass_mesh_check with its count and
-// first location (vertex numbers are 0-based positions in the file's vertex
-// list, shown with their coordinates), plus the shell count.
+// first few locations (vertex numbers are 0-based positions in the file's
+// vertex list, shown with their coordinates), and the shells: each one's
+// signed volume says whether it is a solid, a cavity, or inside out.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 #include "categories.hpp"
 #include "commands.hpp"
@@ -17,56 +21,51 @@
 namespace polymass_cli {
 namespace {
 
+enum class Where { kEdge, kFace, kVertex };
+
 struct Finding {
     const char* key;    // JSON key
     const char* label;  // table label
     uint64_t count;
-    uint64_t first[2];  // a face (first[1] unused) or an edge's two vertices
-    bool is_edge;
+    Where where;
+    std::vector<std::array<uint64_t, 2>> locations;  // the first few; [1] only for edges
 };
+
+Finding face_finding(const char* key, const char* label, uint64_t count,
+                     const uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS], Where where) {
+    Finding finding{key, label, count, where, {}};
+    for (const uint64_t location : first) {
+        if (location != POLYMASS_NONE) finding.locations.push_back({location, POLYMASS_NONE});
+    }
+    return finding;
+}
+
+Finding edge_finding(const char* key, const char* label, uint64_t count,
+                     const uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
+    Finding finding{key, label, count, Where::kEdge, {}};
+    for (const auto& edge : first) {
+        if (edge[0] != POLYMASS_NONE) finding.locations.push_back({edge[0], edge[1]});
+    }
+    return finding;
+}
 
 std::vector<Finding> findings_of(const polymass_diagnostics& d) {
     return {
-        {"open_edges",
-         "open edges",
-         d.open_edges,
-         {d.first_open_edge[0], d.first_open_edge[1]},
-         true},
-        {"non_manifold_edges",
-         "non-manifold edges",
-         d.non_manifold_edges,
-         {d.first_non_manifold_edge[0], d.first_non_manifold_edge[1]},
-         true},
-        {"misoriented_edges",
-         "misoriented edges",
-         d.misoriented_edges,
-         {d.first_misoriented_edge[0], d.first_misoriented_edge[1]},
-         true},
-        {"non_planar_faces",
-         "non-planar faces",
-         d.non_planar_faces,
-         {d.first_non_planar_face, POLYMASS_NONE},
-         false},
-        {"degenerate_faces",
-         "degenerate faces",
-         d.degenerate_faces,
-         {d.first_degenerate_face, POLYMASS_NONE},
-         false},
-        {"small_faces",
-         "faces < 3 vertices",
-         d.small_faces,
-         {d.first_small_face, POLYMASS_NONE},
-         false},
-        {"out_of_range_indices",
-         "bad vertex indices",
-         d.out_of_range_indices,
-         {d.first_out_of_range_face, POLYMASS_NONE},
-         false},
-        {"non_finite_vertices",
-         "non-finite vertices",
-         d.non_finite_vertices,
-         {d.first_non_finite_vertex, POLYMASS_NONE},
-         false},
+        edge_finding("open_edges", "open edges", d.open_edges, d.first_open_edges),
+        edge_finding("non_manifold_edges", "non-manifold edges", d.non_manifold_edges,
+                     d.first_non_manifold_edges),
+        edge_finding("misoriented_edges", "misoriented edges", d.misoriented_edges,
+                     d.first_misoriented_edges),
+        face_finding("non_planar_faces", "non-planar faces", d.non_planar_faces,
+                     d.first_non_planar_faces, Where::kFace),
+        face_finding("degenerate_faces", "degenerate faces", d.degenerate_faces,
+                     d.first_degenerate_faces, Where::kFace),
+        face_finding("small_faces", "faces < 3 vertices", d.small_faces, d.first_small_faces,
+                     Where::kFace),
+        face_finding("out_of_range_indices", "bad vertex indices", d.out_of_range_indices,
+                     d.first_out_of_range_faces, Where::kFace),
+        face_finding("non_finite_vertices", "non-finite vertices", d.non_finite_vertices,
+                     d.first_non_finite_vertices, Where::kVertex),
     };
 }
 
@@ -77,20 +76,102 @@ std::string vertex_text(const Model& model, uint64_t v) {
            readable_number(p[1]) + ", " + readable_number(p[2]) + ")";
 }
 
-std::string location_text(const Model& model, const Finding& finding) {
-    if (finding.count == 0 || finding.first[0] == POLYMASS_NONE) return "";
-    if (finding.is_edge) {
-        return "first: " + vertex_text(model, finding.first[0]) + " - " +
-               vertex_text(model, finding.first[1]);
+std::string location_text(const Model& model, const Finding& finding,
+                          const std::array<uint64_t, 2>& location) {
+    switch (finding.where) {
+        case Where::kEdge:
+            return "edge " + vertex_text(model, location[0]) + " - " +
+                   vertex_text(model, location[1]);
+        case Where::kVertex:
+            return vertex_text(model, location[0]);
+        case Where::kFace:
+            break;
     }
-    if (std::string(finding.key) == "non_finite_vertices") {
-        return "first: vertex " + std::to_string(finding.first[0]);
+    return "face " + std::to_string(location[0]);
+}
+
+// What a shell is, by the sign of its volume and where it lies: a shell with
+// negative volume inside the bounding box of a positive one is taken for its
+// cavity (a box test: a shell beside a solid but inside its box passes too).
+struct Shell {
+    uint64_t faces = 0;
+    double signed_volume = 0;
+    const char* kind = "";
+};
+
+std::vector<Shell> classify_shells(const Library& library, const Model& model,
+                                   const std::vector<Part>& parts) {
+    struct Box {
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        bool inside(const Box& outer) const {
+            for (int k = 0; k < 3; ++k) {
+                if (lo[k] < outer.lo[k] || hi[k] > outer.hi[k]) return false;
+            }
+            return true;
+        }
+    };
+    std::vector<Shell> shells;
+    std::vector<Box> boxes;
+    for (const Part& part : parts) {
+        Box box;
+        for (const uint32_t index : part.indices) {
+            if (index >= model.vertex_count()) continue;
+            for (int k = 0; k < 3; ++k) {
+                box.lo[k] = std::min(box.lo[k], model.positions[3 * index + k]);
+                box.hi[k] = std::max(box.hi[k], model.positions[3 * index + k]);
+            }
+        }
+        boxes.push_back(box);
+        shells.push_back({part.face_sizes.size(),
+                          check_solid(library, model, part).diagnostics.signed_volume, ""});
     }
-    return "first: face " + std::to_string(finding.first[0]);
+    for (size_t i = 0; i < shells.size(); ++i) {
+        Shell& shell = shells[i];
+        if (!(shell.signed_volume != 0)) {  // zero or NaN (a shell that cannot be integrated)
+            shell.kind = "no volume";
+        } else if (shell.signed_volume > 0) {
+            shell.kind = "solid";
+        } else {
+            shell.kind = "inverted";
+            for (size_t j = 0; j < shells.size(); ++j) {
+                if (shells[j].signed_volume > 0 && boxes[i].inside(boxes[j])) shell.kind = "cavity";
+            }
+        }
+    }
+    return shells;
+}
+
+// The library judges the surface as a whole: a disjoint shell turned inside
+// out only lowers the total volume. Say so, as the library would of a whole
+// inverted surface.
+void flag_inverted_shell(CheckResult& check, const std::vector<Shell>& shells) {
+    if (check.diagnostics.status != POLYMASS_OK) return;
+    for (size_t i = 0; i < shells.size(); ++i) {
+        if (std::string(shells[i].kind) == "inverted") {
+            check.diagnostics.status = POLYMASS_ERROR_INVERTED;
+            check.message = "shell " + std::to_string(i + 1) + " (" +
+                            std::to_string(shells[i].faces) +
+                            " faces) is inside out: its volume is negative and it lies outside "
+                            "every solid shell";
+            return;
+        }
+    }
+}
+
+std::string shells_summary(const std::vector<Shell>& shells) {
+    std::string text = std::to_string(shells.size());
+    std::string kinds;
+    for (const char* kind : {"solid", "cavity", "inverted", "no volume"}) {
+        const auto count = std::count_if(shells.begin(), shells.end(), [&](const Shell& shell) {
+            return std::string(shell.kind) == kind;
+        });
+        if (count > 0) kinds += (kinds.empty() ? "" : ", ") + std::to_string(count) + " " + kind;
+    }
+    return kinds.empty() ? text : text + " (" + kinds + ")";
 }
 
 void write_text(std::ostream& out, const std::string& path, const Model& model,
-                const CheckResult& check, uint64_t shells) {
+                const CheckResult& check, const std::vector<Shell>& shells) {
     const polymass_diagnostics& d = check.diagnostics;
     out << path << " (" << model.format << "): ";
     if (d.status == POLYMASS_OK) {
@@ -99,12 +180,25 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
         out << "NOT A VALID SOLID: " << category_of(d.status) << ": " << check.message << '\n';
     }
     out << "  faces " << d.face_count << ", vertices used " << d.used_vertex_count << ", edges "
-        << d.edge_count << ", shells " << shells << '\n';
+        << d.edge_count << ", shells " << shells_summary(shells) << '\n';
     for (const Finding& finding : findings_of(d)) {
         char line[64];
         std::snprintf(line, sizeof line, "  %-22s%8llu  ", finding.label,
                       static_cast<unsigned long long>(finding.count));
-        out << line << location_text(model, finding) << '\n';
+        out << line;
+        for (size_t i = 0; i < finding.locations.size(); ++i) {
+            out << (i == 0 ? "" : "                                  ")
+                << location_text(model, finding, finding.locations[i]) << '\n';
+        }
+        if (finding.locations.empty()) out << '\n';
+        if (finding.count > finding.locations.size()) {
+            out << "                                  ... and "
+                << finding.count - finding.locations.size() << " more\n";
+        }
+    }
+    for (size_t i = 0; i < shells.size() && shells.size() > 1; ++i) {
+        out << "  shell " << i + 1 << ": " << shells[i].faces << " faces, signed volume "
+            << readable_number(shells[i].signed_volume) << " (" << shells[i].kind << ")\n";
     }
     out << "  max non-planarity     " << readable_number(d.max_non_planarity) << '\n';
     out << "  signed volume         " << readable_number(d.signed_volume)
@@ -112,7 +206,7 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
 }
 
 void write_json_report(JsonWriter& json, const std::string& path, const Model& model,
-                       const CheckResult& check, uint64_t shells) {
+                       const CheckResult& check, const std::vector<Shell>& shells) {
     const polymass_diagnostics& d = check.diagnostics;
     json.begin_object();
     json.key("file").value(path);
@@ -123,23 +217,34 @@ void write_json_report(JsonWriter& json, const std::string& path, const Model& m
     json.key("faces").value(d.face_count);
     json.key("used_vertices").value(d.used_vertex_count);
     json.key("edges").value(d.edge_count);
-    json.key("shells").value(shells);
+    json.key("shells").value(static_cast<uint64_t>(shells.size()));
+    json.key("shell_list").begin_array();
+    for (const Shell& shell : shells) {
+        json.begin_object();
+        json.key("faces").value(shell.faces);
+        if (!std::isnan(shell.signed_volume)) json.key("signed_volume").value(shell.signed_volume);
+        json.key("kind").value(std::string(shell.kind));
+        json.end_object();
+    }
+    json.end_array();
     for (const Finding& finding : findings_of(d)) {
         json.key(finding.key).begin_object();
         json.key("count").value(finding.count);
-        if (finding.count > 0 && finding.first[0] != POLYMASS_NONE) {
-            json.key(finding.is_edge                                     ? "first_edge"
-                     : std::string(finding.key) == "non_finite_vertices" ? "first_vertex"
-                                                                         : "first_face");
-            if (finding.is_edge) {
+        json.key(finding.where == Where::kEdge     ? "first_edges"
+                 : finding.where == Where::kVertex ? "first_vertices"
+                                                   : "first_faces");
+        json.begin_array();
+        for (const auto& location : finding.locations) {
+            if (finding.where == Where::kEdge) {
                 json.begin_array();
-                json.value(finding.first[0]);
-                json.value(finding.first[1]);
+                json.value(location[0]);
+                json.value(location[1]);
                 json.end_array();
             } else {
-                json.value(finding.first[0]);
+                json.value(location[0]);
             }
         }
+        json.end_array();
         json.end_object();
     }
     json.key("max_non_planarity").value(d.max_non_planarity);
@@ -177,8 +282,9 @@ ExitCode run_check(const Arguments& arguments) {
         }
         scale_model(model, length_factor(arguments));
         const Part all = combined_part(model);
-        const CheckResult check = check_solid(library, model, all);
-        const uint64_t shells = count_shells(model, all);
+        CheckResult check = check_solid(library, model, all);
+        const std::vector<Shell> shells = classify_shells(library, model, split_shells(model, all));
+        flag_inverted_shell(check, shells);
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json) {
             write_json_report(json, path, model, check, shells);

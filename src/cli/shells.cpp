@@ -1,6 +1,7 @@
 #include "shells.hpp"
 
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "vertex_welder.hpp"
@@ -26,7 +27,7 @@ private:
 
 }  // namespace
 
-uint64_t count_shells(const Model& model, const Part& part) {
+std::vector<Part> split_shells(const Model& model, const Part& part) {
     // One index per distinct position, so an unwelded soup counts as its solid.
     std::vector<double> distinct;
     VertexWelder welder(distinct);
@@ -36,7 +37,7 @@ uint64_t count_shells(const Model& model, const Part& part) {
                                     model.positions[3 * v + 2]);
     }
     DisjointSets sets(distinct.size() / 3);
-    std::vector<bool> used(distinct.size() / 3, false);
+    std::vector<uint32_t> face_vertex;  // a welded vertex of each face, or kIndexOutOfRange
     uint64_t corner = 0;
     for (const uint32_t size : part.face_sizes) {
         uint32_t first = kIndexOutOfRange;
@@ -44,17 +45,31 @@ uint64_t count_shells(const Model& model, const Part& part) {
             const uint32_t index = part.indices[corner];
             if (index >= model.vertex_count()) continue;  // reported as a bad index
             const uint32_t vertex = welded[index];
-            used[vertex] = true;
             if (first == kIndexOutOfRange) {
                 first = vertex;
             } else {
                 sets.join(vertex, first);
             }
         }
+        face_vertex.push_back(first);
     }
-    uint64_t shells = 0;
-    for (uint32_t v = 0; v < used.size(); ++v) {
-        if (used[v] && sets.root(v) == v) ++shells;
+    std::vector<Part> shells;
+    std::vector<uint32_t> shell_of_root(distinct.size() / 3, kIndexOutOfRange);
+    corner = 0;
+    for (size_t face = 0; face < part.face_sizes.size(); ++face) {
+        const uint32_t size = part.face_sizes[face];
+        if (face_vertex[face] != kIndexOutOfRange) {
+            uint32_t& shell = shell_of_root[sets.root(face_vertex[face])];
+            if (shell == kIndexOutOfRange) {
+                shell = static_cast<uint32_t>(shells.size());
+                shells.push_back(Part{"shell " + std::to_string(shells.size() + 1), {}, {}});
+            }
+            Part& target = shells[shell];
+            target.indices.insert(target.indices.end(), part.indices.begin() + corner,
+                                  part.indices.begin() + corner + size);
+            target.face_sizes.push_back(size);
+        }
+        corner += size;
     }
     return shells;
 }

@@ -1,22 +1,41 @@
 // What a pass over a mesh noticed: how many faces (or vertices) show a
-// problem, and the lowest index among them, for the message and the report.
+// problem, and the lowest few indices among them, for the message and the
+// report.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 
 namespace polymass::core {
 
+// How many locations of each finding are kept: enough to see a pattern (a
+// hole's rim, a row of flipped faces), few enough to keep a finding small.
+inline constexpr std::size_t kKeptLocations = 8;
+
 struct Finding {
     std::size_t count = 0;
-    std::size_t first = 0;  // the lowest index, when count > 0
+    std::array<std::size_t, kKeptLocations> lowest{};  // ascending; the first kept() are set
 
+    std::size_t kept() const { return std::min(count, kKeptLocations); }
+    std::size_t first() const { return lowest[0]; }  // when count > 0
+
+    // Indices are recorded once each, in any order.
     void record(std::size_t index) {
-        if (count++ == 0 || index < first) first = index;
+        std::size_t slot = kept();
+        ++count;
+        if (slot == kKeptLocations) {
+            if (index >= lowest[kKeptLocations - 1]) return;
+            --slot;
+        }
+        for (; slot > 0 && lowest[slot - 1] > index; --slot) lowest[slot] = lowest[slot - 1];
+        lowest[slot] = index;
     }
 
     void merge(const Finding& other) {
-        if (other.count > 0 && (count == 0 || other.first < first)) first = other.first;
-        count += other.count;
+        const std::size_t total = count + other.count;
+        for (std::size_t i = 0; i < other.kept(); ++i) record(other.lowest[i]);
+        count = total;
     }
 };
 

@@ -8,25 +8,33 @@
 // still right).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory_resource>
+
+#include "findings.hpp"
 
 #include "mesh_view.hpp"
 
 namespace polymass::core {
 
+// Edges are recorded in ascending order of their vertex pair, so the kept
+// ones are the lowest.
 struct EdgeFinding {
     std::size_t count = 0;
-    std::uint32_t first[2] = {0, 0};   // vertex indices, in the (most frequent) direction
+    // Vertex indices, each edge in its (most frequent) direction.
+    std::array<std::array<std::uint32_t, 2>, kKeptLocations> lowest{};
     std::size_t first_traversals = 0;  // how many times faces traverse the first one
 
+    std::size_t kept() const { return std::min(count, kKeptLocations); }
+    const std::array<std::uint32_t, 2>& first() const { return lowest[0]; }  // when count > 0
+
     void record(std::uint32_t from, std::uint32_t to, std::size_t traversals) {
-        if (count++ == 0) {
-            first[0] = from;
-            first[1] = to;
-            first_traversals = traversals;
-        }
+        if (count == 0) first_traversals = traversals;
+        if (count < kKeptLocations) lowest[count] = {from, to};
+        ++count;
     }
 };
 

@@ -19,6 +19,14 @@ OFFSET = (3.5, -2.0, 1.25)
 DEPTH = 0.5
 
 
+def cube():
+    """The unit cube [0, 1]^3: vertex k has x = bit 0, y = bit 1, z = bit 2 of k,
+    six quads counter-clockwise seen from outside."""
+    vertices = [(k & 1, (k >> 1) & 1, (k >> 2) & 1) for k in range(8)]
+    faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+    return vertices, faces
+
+
 def bracket():
     n = len(PROFILE)
     ox, oy, oz = OFFSET

@@ -452,7 +452,27 @@ class Check(Case):
         report = json.loads(result.stdout)
         self.assertEqual(report["valid"], "yes")
         self.assertEqual(report["shells"], 2)
+        # A 40 mm cube around a 30 x 30 x 20 mm cavity.
+        shells = sorted((s["kind"], s["signed_volume"]) for s in report["shell_list"])
+        self.assertEqual(shells, [("cavity", -18000.0), ("solid", 64000.0)])
         self.assertEqual(report["open_edges"]["count"], 0)
+        self.assertEqual(report["open_edges"]["first_edges"], [])
+
+    def test_a_disjoint_inverted_shell(self):
+        # A unit cube and, apart, a half-size one inside out: the surface is
+        # closed and its total volume positive (7/8), yet it is not a solid.
+        cube_vertices, cube_faces = fixtures.cube()
+        vertices = cube_vertices + [(x / 2 + 3, y / 2, z / 2) for x, y, z in cube_vertices]
+        n = len(cube_vertices)
+        faces = cube_faces + [[n + i for i in reversed(f)] for f in cube_faces]
+        fixtures.write_obj(WORK / "inverted_shell.obj", vertices, faces)
+        result = run("check", "--json", WORK / "inverted_shell.obj")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stdout)
+        report = json.loads(result.stdout)
+        self.assertEqual(report["category"], "inverted")
+        self.assertIn("shell 2", report["message"])
+        kinds = [s["kind"] for s in report["shell_list"]]
+        self.assertEqual(kinds, ["solid", "inverted"])
 
     def test_open_mesh_is_located(self):
         vertices, faces = fixtures.bracket()
@@ -462,8 +482,11 @@ class Check(Case):
         report = json.loads(result.stdout)
         self.assertEqual(report["category"], "open")
         self.assertEqual(report["open_edges"]["count"], len(faces[-1]))
-        edge = report["open_edges"]["first_edge"]
-        self.assertTrue(set(edge) <= set(faces[-1]), edge)
+        # Every edge of the missing face, each in the direction its remaining
+        # neighbour traverses it: against the missing face's own.
+        hole = faces[-1]
+        rim = {(hole[(i + 1) % len(hole)], hole[i]) for i in range(len(hole))}
+        self.assertEqual({tuple(e) for e in report["open_edges"]["first_edges"]}, rim)
         text = run("check", WORK / "open.obj")
         self.assertEqual(text.returncode, EXIT_INVALID_MESH)
         self.assertIn("NOT A VALID SOLID", text.stdout)

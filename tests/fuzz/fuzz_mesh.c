@@ -169,25 +169,64 @@ static int all_finite(const double* values, size_t count) {
     return 1;
 }
 
+/* The locations of a face or vertex finding: `kept` of them (all the count
+   allows when exact, else at least one when count > 0), ascending, below
+   limit, then POLYMASS_NONE. */
+static int faces_listed(uint64_t count, const uint64_t first[POLYMASS_DIAGNOSTIC_LOCATIONS],
+                        uint64_t limit, int exact) {
+    const uint64_t most =
+        count < POLYMASS_DIAGNOSTIC_LOCATIONS ? count : POLYMASS_DIAGNOSTIC_LOCATIONS;
+    uint64_t kept = 0;
+    size_t i;
+    while (kept < POLYMASS_DIAGNOSTIC_LOCATIONS && first[kept] != POLYMASS_NONE) ++kept;
+    for (i = kept; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i)
+        if (first[i] != POLYMASS_NONE) return 0;
+    if (exact ? kept != most : (kept > most || (count > 0) != (kept > 0))) return 0;
+    for (i = 0; i < kept; ++i)
+        if (first[i] >= limit || (i > 0 && first[i] <= first[i - 1])) return 0;
+    return 1;
+}
+
+/* The same for edges: min(count, POLYMASS_DIAGNOSTIC_LOCATIONS) vertex pairs
+   in range, of two distinct vertices, then POLYMASS_NONE pairs. */
+static int edges_listed(uint64_t count, const uint64_t first[POLYMASS_DIAGNOSTIC_LOCATIONS][2],
+                        uint64_t vertex_count) {
+    const uint64_t most =
+        count < POLYMASS_DIAGNOSTIC_LOCATIONS ? count : POLYMASS_DIAGNOSTIC_LOCATIONS;
+    size_t i;
+    for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+        if (i < most) {
+            if (first[i][0] >= vertex_count || first[i][1] >= vertex_count ||
+                first[i][0] == first[i][1])
+                return 0;
+        } else if (first[i][0] != POLYMASS_NONE || first[i][1] != POLYMASS_NONE) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static void check_report(const polymass_diagnostics* d, int32_t status, uint64_t vertex_count,
                          const polymass_context* context) {
-    const uint64_t none = POLYMASS_NONE;
     CHECK(d->struct_size == sizeof *d, status, context);
     CHECK(d->status == status, status, context);
-    /* A first_* location is POLYMASS_NONE exactly when its count is 0. */
-    CHECK((d->non_finite_vertices == 0) == (d->first_non_finite_vertex == none), status, context);
-    CHECK((d->out_of_range_indices == 0) == (d->first_out_of_range_face == none), status, context);
-    CHECK((d->small_faces == 0) == (d->first_small_face == none), status, context);
-    CHECK((d->degenerate_faces == 0) == (d->first_degenerate_face == none), status, context);
-    CHECK((d->non_planar_faces == 0) == (d->first_non_planar_face == none), status, context);
-    CHECK((d->open_edges == 0) == (d->first_open_edge[0] == none), status, context);
-    CHECK((d->non_manifold_edges == 0) == (d->first_non_manifold_edge[0] == none), status, context);
-    CHECK((d->misoriented_edges == 0) == (d->first_misoriented_edge[0] == none), status, context);
-    if (d->non_finite_vertices) CHECK(d->first_non_finite_vertex < vertex_count, status, context);
-    if (d->out_of_range_indices) CHECK(d->first_out_of_range_face < d->face_count, status, context);
-    if (d->small_faces) CHECK(d->first_small_face < d->face_count, status, context);
-    if (d->degenerate_faces) CHECK(d->first_degenerate_face < d->face_count, status, context);
-    if (d->non_planar_faces) CHECK(d->first_non_planar_face < d->face_count, status, context);
+    /* Each finding lists min(count, POLYMASS_DIAGNOSTIC_LOCATIONS) locations,
+       ascending and in range, then POLYMASS_NONE (bad indices are counted per
+       index but listed per face: at least one face when there is any). */
+    CHECK(faces_listed(d->non_finite_vertices, d->first_non_finite_vertices, vertex_count, 1),
+          status, context);
+    CHECK(faces_listed(d->out_of_range_indices, d->first_out_of_range_faces, d->face_count, 0),
+          status, context);
+    CHECK(faces_listed(d->small_faces, d->first_small_faces, d->face_count, 1), status, context);
+    CHECK(faces_listed(d->degenerate_faces, d->first_degenerate_faces, d->face_count, 1), status,
+          context);
+    CHECK(faces_listed(d->non_planar_faces, d->first_non_planar_faces, d->face_count, 1), status,
+          context);
+    CHECK(edges_listed(d->open_edges, d->first_open_edges, vertex_count), status, context);
+    CHECK(edges_listed(d->non_manifold_edges, d->first_non_manifold_edges, vertex_count), status,
+          context);
+    CHECK(edges_listed(d->misoriented_edges, d->first_misoriented_edges, vertex_count), status,
+          context);
     if (status == POLYMASS_OK) {
         CHECK(d->non_finite_vertices == 0 && d->out_of_range_indices == 0 && d->small_faces == 0,
               status, context);

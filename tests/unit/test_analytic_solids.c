@@ -57,8 +57,8 @@ static void check_reference_solid_via_mesh_object(polymass_context* ctx,
     assert_int_equal(d.misoriented_edges, 0);
     assert_int_equal(d.non_planar_faces, 0);
     assert_int_equal(d.degenerate_faces, 0);
-    assert_true(d.first_open_edge[0] == POLYMASS_NONE);
-    assert_true(d.first_non_planar_face == POLYMASS_NONE);
+    assert_true(d.first_open_edges[0][0] == POLYMASS_NONE);
+    assert_true(d.first_non_planar_faces[0] == POLYMASS_NONE);
     PM_ASSERT_REL(ref->name, ref->volume, d.signed_volume, PM_TOL);
 }
 

@@ -167,11 +167,11 @@ static uint64_t defect_count(const polymass_diagnostics* d, edge_defect kind) {
 static const uint64_t* first_defect(const polymass_diagnostics* d, edge_defect kind) {
     switch (kind) {
         case OPEN_EDGE:
-            return d->first_open_edge;
+            return d->first_open_edges[0];
         case NON_MANIFOLD_EDGE:
-            return d->first_non_manifold_edge;
+            return d->first_non_manifold_edges[0];
         default:
-            return d->first_misoriented_edge;
+            return d->first_misoriented_edges[0];
     }
 }
 
@@ -567,7 +567,7 @@ static void test_non_finite(void** state) {
             m.positions[3 * 5 + axis] = bad[k];
             EXPECT_INPUT_REJECTED(ctx, &m, POLYMASS_ERROR_NON_FINITE, "vertex", 5, &diag);
             assert_int_equal(diag.non_finite_vertices, 1);
-            assert_int_equal(diag.first_non_finite_vertex, 5);
+            assert_int_equal(diag.first_non_finite_vertices[0], 5);
             /* Never skipped. */
             pm_context_set_flags(
                 ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
@@ -583,7 +583,7 @@ static void test_non_finite(void** state) {
     m.positions[3 * 2 + 1] = INFINITY;
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_check(&diag, ctx, &m));
     assert_int_equal(diag.non_finite_vertices, 2);
-    assert_int_equal(diag.first_non_finite_vertex, 2);
+    assert_int_equal(diag.first_non_finite_vertices[0], 2);
     pm_mesh_free(&m);
 
     /* An unused NaN vertex is fine. */
@@ -593,7 +593,7 @@ static void test_non_finite(void** state) {
     PM_ASSERT_REL("volume with an unused NaN vertex", 1.0, p.volume, PM_TOL);
     PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
     assert_int_equal(diag.non_finite_vertices, 0);
-    assert_true(diag.first_non_finite_vertex == POLYMASS_NONE);
+    assert_true(diag.first_non_finite_vertices[0] == POLYMASS_NONE);
     pm_mesh_free(&m);
 
     /* float32 NaN */
@@ -615,7 +615,7 @@ static void test_index_out_of_range(void** state) {
     m.indices[pm_mesh_face_offset(&m, 3) + 2] = 8; /* vertex_count is 8 */
     EXPECT_INPUT_REJECTED(ctx, &m, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, "face", 3, &diag);
     assert_int_equal(diag.out_of_range_indices, 1);
-    assert_int_equal(diag.first_out_of_range_face, 3);
+    assert_int_equal(diag.first_out_of_range_faces[0], 3);
     /* never skipped */
     pm_context_set_flags(ctx, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, pm_compute(&p, ctx, &m, NULL));
@@ -628,7 +628,7 @@ static void test_index_out_of_range(void** state) {
     m.indices[pm_mesh_face_offset(&m, 5)] = 1000;
     EXPECT_INPUT_REJECTED(ctx, &m, POLYMASS_ERROR_INDEX_OUT_OF_RANGE, "face", 3, &diag);
     assert_int_equal(diag.out_of_range_indices, 2);
-    assert_int_equal(diag.first_out_of_range_face, 3);
+    assert_int_equal(diag.first_out_of_range_faces[0], 3);
     pm_mesh_free(&m);
 
     /* uint16 indices */
@@ -662,7 +662,7 @@ static void test_face_too_small(void** state) {
     pm_diagnostics_init(&diag);
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_FACE_TOO_SMALL, polymass_mesh_check(&diag, ctx, &d));
     assert_int_equal(diag.small_faces, 2);
-    assert_int_equal(diag.first_small_face, 4);
+    assert_int_equal(diag.first_small_faces[0], 4);
     /* a face of 0 vertices */
     sizes[4] = 4;
     sizes[5] = 0;
@@ -692,6 +692,73 @@ static void test_face_too_small(void** state) {
 /* ------------------------------------------------------------------------ */
 /* Topology                                                                 */
 /* ------------------------------------------------------------------------ */
+
+/* Each finding lists its first POLYMASS_DIAGNOSTIC_LOCATIONS locations:
+   the lowest face or vertex indices, the edges with the lowest vertex pairs,
+   ascending; POLYMASS_NONE after them. */
+static void test_report_lists_the_first_locations(void** state) {
+    enum { N = 4, SIDE = N + 1 }; /* a flat N x N grid of squares, two triangles each */
+    static const uint32_t nan_vertices[] = {24, 3, 22, 5, 20, 18, 12, 21, 7, 9}; /* any order */
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    pm_mesh grid;
+    uint32_t i, j, k;
+    (void)state;
+    pm_mesh_init(&grid);
+    for (i = 0; i < SIDE; ++i) {
+        for (j = 0; j < SIDE; ++j) {
+            pm_mesh_add_vertex(&grid, j, i, 0);
+        }
+    }
+    for (i = 0; i < N; ++i) {
+        for (j = 0; j < N; ++j) {
+            const uint32_t a = i * SIDE + j;
+            pm_mesh_add_tri(&grid, a, a + 1, a + SIDE + 1);
+            pm_mesh_add_tri(&grid, a, a + SIDE + 1, a + SIDE);
+        }
+    }
+    /* The rim: 4 N open edges; the lowest pairs are on the row y = 0 and the
+       column x = 0: (0,1) (0,5) (1,2) (2,3) (3,4) (4,9) (5,10) (9,14). */
+    pm_diagnostics_init(&diag);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, pm_check(&diag, ctx, &grid));
+    assert_int_equal(diag.open_edges, 4 * N);
+    {
+        static const uint64_t lowest[8][2] = {{0, 1}, {0, 5}, {1, 2},  {2, 3},
+                                              {3, 4}, {4, 9}, {5, 10}, {9, 14}};
+        for (k = 0; k < POLYMASS_DIAGNOSTIC_LOCATIONS; ++k) {
+            const uint64_t* e = diag.first_open_edges[k];
+            assert_true((e[0] == lowest[k][0] && e[1] == lowest[k][1]) ||
+                        (e[0] == lowest[k][1] && e[1] == lowest[k][0]));
+        }
+    }
+    /* Ten NaN vertices: the eight lowest, sorted. */
+    for (k = 0; k < sizeof nan_vertices / sizeof nan_vertices[0]; ++k) {
+        grid.positions[3 * nan_vertices[k] + 2] = NAN;
+    }
+    pm_diagnostics_init(&diag);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_check(&diag, ctx, &grid));
+    assert_int_equal(diag.non_finite_vertices, 10);
+    {
+        static const uint64_t lowest[8] = {3, 5, 7, 9, 12, 18, 20, 21};
+        for (k = 0; k < POLYMASS_DIAGNOSTIC_LOCATIONS; ++k) {
+            assert_int_equal(diag.first_non_finite_vertices[k], lowest[k]);
+        }
+    }
+    /* Fewer findings than places: POLYMASS_NONE after them. */
+    for (k = 0; k < 8; ++k) {
+        grid.positions[3 * nan_vertices[k] + 2] = 0.0;
+    }
+    pm_diagnostics_init(&diag);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, pm_check(&diag, ctx, &grid));
+    assert_int_equal(diag.non_finite_vertices, 2);
+    assert_int_equal(diag.first_non_finite_vertices[0], 7);
+    assert_int_equal(diag.first_non_finite_vertices[1], 9);
+    for (k = 2; k < POLYMASS_DIAGNOSTIC_LOCATIONS; ++k) {
+        assert_true(diag.first_non_finite_vertices[k] == POLYMASS_NONE);
+    }
+    pm_mesh_free(&grid);
+    polymass_context_destroy(ctx);
+}
 
 static void test_open(void** state) {
     polymass_context* ctx = pm_context_new(0);
@@ -735,7 +802,7 @@ static void test_non_manifold(void** state) {
     EXPECT_EDGE_DEFECT(ctx, &m, POLYMASS_ERROR_NON_MANIFOLD, NON_MANIFOLD_EDGE, 1, &diag);
     /* the shared edge joins vertices 3 (1, 1, 0) and 7 (1, 1, 1) */
     PM_ASSERT_EDGE_MENTIONED(ctx, 3, 7);
-    assert_true(is_edge(diag.first_non_manifold_edge, 3, 7));
+    assert_true(is_edge(diag.first_non_manifold_edges[0], 3, 7));
     assert_int_equal(diag.open_edges, 0);
     assert_int_equal(diag.used_vertex_count, 14);
 
@@ -816,7 +883,7 @@ static void test_non_planar_face(void** state) {
     PM_ASSERT_MENTIONS(ctx, "face", 1);
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_PLANAR_FACE, pm_check(&diag, ctx, &m));
     assert_int_equal(diag.non_planar_faces, 1);
-    assert_int_equal(diag.first_non_planar_face, 1);
+    assert_int_equal(diag.first_non_planar_faces[0], 1);
     assert_true(diag.max_non_planarity > 1e-5 && diag.max_non_planarity < 1e-2);
     assert_int_equal(diag.open_edges + diag.misoriented_edges + diag.non_manifold_edges, 0);
 
@@ -1035,7 +1102,7 @@ static void test_degenerate_faces(void** state) {
     PM_ASSERT_PROPERTIES("cube with T-junctions closed by slivers", &e, &p, PM_TOL);
     PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
     assert_int_equal(diag.degenerate_faces, 2);
-    assert_int_equal(diag.first_degenerate_face, 7);
+    assert_int_equal(diag.first_degenerate_faces[0], 7);
     assert_int_equal(diag.open_edges, 0);
     assert_int_equal(diag.used_vertex_count, 10);
     pm_mesh_free(&m);
@@ -1088,7 +1155,7 @@ static void test_welding(void** state) {
     {
         size_t i, k;
         for (k = 0; k < 2; ++k) {
-            const uint64_t v = diag.first_misoriented_edge[k];
+            const uint64_t v = diag.first_misoriented_edges[0][k];
             assert_true(v < m.vertex_count);
             for (i = 0; i < v; ++i) { /* no lower index at the same position */
                 assert_true(memcmp(m.positions + 3 * i, m.positions + 3 * v, 3 * sizeof(double)) !=
@@ -1136,24 +1203,24 @@ static void test_check_reports_everything(void** state) {
     assert_int_equal(diag.used_vertex_count, 8);
     assert_int_equal(diag.edge_count, 12);
     assert_int_equal(diag.non_finite_vertices, 0);
-    assert_true(diag.first_non_finite_vertex == POLYMASS_NONE);
+    assert_true(diag.first_non_finite_vertices[0] == POLYMASS_NONE);
     assert_int_equal(diag.out_of_range_indices, 0);
-    assert_true(diag.first_out_of_range_face == POLYMASS_NONE);
+    assert_true(diag.first_out_of_range_faces[0] == POLYMASS_NONE);
     assert_int_equal(diag.small_faces, 0);
-    assert_true(diag.first_small_face == POLYMASS_NONE);
+    assert_true(diag.first_small_faces[0] == POLYMASS_NONE);
     assert_int_equal(diag.degenerate_faces, 0);
-    assert_true(diag.first_degenerate_face == POLYMASS_NONE);
+    assert_true(diag.first_degenerate_faces[0] == POLYMASS_NONE);
     assert_int_equal(diag.open_edges, 0);
-    assert_true(diag.first_open_edge[0] == POLYMASS_NONE &&
-                diag.first_open_edge[1] == POLYMASS_NONE);
+    assert_true(diag.first_open_edges[0][0] == POLYMASS_NONE &&
+                diag.first_open_edges[0][1] == POLYMASS_NONE);
     assert_int_equal(diag.non_manifold_edges, 0);
-    assert_true(diag.first_non_manifold_edge[0] == POLYMASS_NONE &&
-                diag.first_non_manifold_edge[1] == POLYMASS_NONE);
+    assert_true(diag.first_non_manifold_edges[0][0] == POLYMASS_NONE &&
+                diag.first_non_manifold_edges[0][1] == POLYMASS_NONE);
     assert_int_equal(diag.misoriented_edges, 0);
-    assert_true(diag.first_misoriented_edge[0] == POLYMASS_NONE &&
-                diag.first_misoriented_edge[1] == POLYMASS_NONE);
+    assert_true(diag.first_misoriented_edges[0][0] == POLYMASS_NONE &&
+                diag.first_misoriented_edges[0][1] == POLYMASS_NONE);
     assert_int_equal(diag.non_planar_faces, 0);
-    assert_true(diag.first_non_planar_face == POLYMASS_NONE);
+    assert_true(diag.first_non_planar_faces[0] == POLYMASS_NONE);
     assert_true(diag.max_non_planarity >= 0 && diag.max_non_planarity < 1e-15);
     PM_ASSERT_REL("signed_volume", 1.0, diag.signed_volume, PM_TOL);
     pm_mesh_free(&m);
@@ -1166,7 +1233,7 @@ static void test_check_reports_everything(void** state) {
     pm_check(&diag, ctx, &m);
     assert_int_not_equal(diag.status, POLYMASS_OK);
     assert_int_equal(diag.non_planar_faces, 1);
-    assert_int_equal(diag.first_non_planar_face, 1);
+    assert_int_equal(diag.first_non_planar_faces[0], 1);
     assert_true(diag.open_edges >= 4);
     assert_true(diag.misoriented_edges >= 1);
     pm_mesh_free(&m);
@@ -1179,9 +1246,9 @@ static void test_check_reports_everything(void** state) {
     assert_true(diag.status == POLYMASS_ERROR_NON_FINITE ||
                 diag.status == POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
     assert_int_equal(diag.out_of_range_indices, 1);
-    assert_int_equal(diag.first_out_of_range_face, 1);
+    assert_int_equal(diag.first_out_of_range_faces[0], 1);
     assert_int_equal(diag.non_finite_vertices, 1);
-    assert_int_equal(diag.first_non_finite_vertex, 3);
+    assert_int_equal(diag.first_non_finite_vertices[0], 3);
     assert_true(isnan(diag.signed_volume));
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
@@ -1200,6 +1267,7 @@ int main(void) {
         cmocka_unit_test(test_non_finite),
         cmocka_unit_test(test_index_out_of_range),
         cmocka_unit_test(test_face_too_small),
+        cmocka_unit_test(test_report_lists_the_first_locations),
         cmocka_unit_test(test_open),
         cmocka_unit_test(test_non_manifold),
         cmocka_unit_test(test_inconsistent_orientation),

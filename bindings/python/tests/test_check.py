@@ -18,7 +18,7 @@ def test_a_closed_solid_is_ok_and_counted(tetrahedron):
     report = polymass.check(*tetrahedron)
     assert report.ok and report.error is None and report.message == ""
     assert (report.face_count, report.used_vertex_count, report.edge_count) == (4, 4, 6)
-    assert report.open_edges == 0 and report.first_open_edge is None
+    assert report.open_edges == 0 and report.first_open_edges == ()
     assert report.signed_volume == pytest.approx(1 / 6, rel=1e-15)
     report.raise_if_error()
 
@@ -28,7 +28,10 @@ def test_an_open_surface_is_located(tetrahedron):
     report = polymass.check(vertices, faces[1:])
     assert report.error is polymass.OpenSurfaceError
     assert report.open_edges == 3
-    assert set(report.first_open_edge) <= set(faces[0])
+    # All three edges of the missing face, each as its neighbour traverses it:
+    # against the missing face's direction.
+    a, b, c = (int(v) for v in faces[0])
+    assert set(report.first_open_edges) == {(b, a), (c, b), (a, c)}
 
 
 def test_a_flipped_face_is_located(cube):
@@ -37,7 +40,8 @@ def test_a_flipped_face_is_located(cube):
     report = polymass.check(vertices, faces)
     assert report.error is polymass.InconsistentOrientationError
     assert report.misoriented_edges == 4
-    assert set(report.first_misoriented_edge) <= set(faces[3])
+    assert len(report.first_misoriented_edges) == 4
+    assert all(set(edge) <= set(faces[3]) for edge in report.first_misoriented_edges)
 
 
 def test_non_planar_faces_are_counted_with_their_worst_deviation(cube):
@@ -47,7 +51,7 @@ def test_non_planar_faces_are_counted_with_their_worst_deviation(cube):
     report = polymass.check(bent, faces)
     assert report.error is polymass.NonPlanarFaceError
     assert report.non_planar_faces == 3
-    assert report.first_non_planar_face in (1, 3, 5)
+    assert report.first_non_planar_faces == (1, 3, 5)
     assert 1e-3 < report.max_non_planarity < 1e-2
     # A looser tolerance accepts it.
     assert polymass.check(bent, faces, planarity_tolerance=0.01).ok
@@ -58,7 +62,15 @@ def test_degenerate_faces_are_harmless_and_reported(tetrahedron):
     # A zero-area sliver (0, 1, 1)-style: a repeated vertex, used in both directions.
     extra = np.array([[0, 1, 0], [0, 0, 1]])
     report = polymass.check(vertices, np.vstack([faces, extra]))
-    assert report.degenerate_faces == 2 and report.first_degenerate_face == 4
+    assert report.degenerate_faces == 2 and report.first_degenerate_faces == (4, 5)
+
+
+def test_many_findings_list_the_lowest_eight(cube):
+    vertices, faces = cube
+    report = polymass.check(vertices, faces + [[0, 1]] * 10)  # faces 6 to 15 have 2 vertices
+    assert report.error is polymass.FaceTooSmallError
+    assert report.small_faces == 10
+    assert report.first_small_faces == tuple(range(6, 14))
 
 
 @pytest.mark.parametrize("shape", ["star", "hull"])

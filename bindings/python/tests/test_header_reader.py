@@ -63,6 +63,19 @@ def test_constants_are_evaluated_and_the_export_branch_is_the_plain_one(tmp_path
     assert header.cdef().split() == ["uint32_t", "polymass_f(void);"]
 
 
+def test_integer_constants_in_declarations_become_their_values(tmp_path):
+    # cffi cannot look up a macro in an array size: the reader writes the number.
+    header = _read(
+        tmp_path,
+        """
+        #define POLYMASS_PLACES 8
+        #define POLYMASS_PLACES_TOO 9
+        typedef struct s { uint64_t first[POLYMASS_PLACES][2]; int x[POLYMASS_PLACES_TOO]; } s;
+        """,
+    )
+    assert "first[8][2]" in header.cdef() and "x[9]" in header.cdef()
+
+
 @pytest.mark.parametrize(
     ("text", "message"),
     [

@@ -26,8 +26,9 @@ Edge = tuple[int, int]
 @dataclass(frozen=True)
 class Diagnostics:
     """What `check` found. Vertex numbers are the caller's indices (after welding:
-    the lowest index at that position); a ``first_*`` location is None when the
-    count beside it is 0."""
+    the lowest index at that position). Each ``first_*`` tuple holds the first
+    (lowest) locations of the finding counted beside it, ascending: up to
+    ``POLYMASS_DIAGNOSTIC_LOCATIONS`` (8) of them, none when the count is 0."""
 
     status: int
     """What `mass_properties` would report: 0 (POLYMASS_OK) or an error status."""
@@ -37,22 +38,22 @@ class Diagnostics:
     used_vertex_count: int
     edge_count: int
     non_finite_vertices: int
-    first_non_finite_vertex: int | None
+    first_non_finite_vertices: tuple[int, ...]
     out_of_range_indices: int
-    first_out_of_range_face: int | None
+    first_out_of_range_faces: tuple[int, ...]
     small_faces: int
-    first_small_face: int | None
+    first_small_faces: tuple[int, ...]
     degenerate_faces: int
     """Zero-area faces: legal and harmless."""
-    first_degenerate_face: int | None
+    first_degenerate_faces: tuple[int, ...]
     open_edges: int
-    first_open_edge: Edge | None
+    first_open_edges: tuple[Edge, ...]
     non_manifold_edges: int
-    first_non_manifold_edge: Edge | None
+    first_non_manifold_edges: tuple[Edge, ...]
     misoriented_edges: int
-    first_misoriented_edge: Edge | None
+    first_misoriented_edges: tuple[Edge, ...]
     non_planar_faces: int
-    first_non_planar_face: int | None
+    first_non_planar_faces: tuple[int, ...]
     max_non_planarity: float
     """The largest off-plane distance of a polygon face's vertex, relative to its diameter."""
     signed_volume: float
@@ -74,11 +75,19 @@ class Diagnostics:
             raise error_class(self.status)(self.message, self.status)
 
 
-def _location(value) -> int | Edge | None:
-    if isinstance(value, int):
-        return None if value == _header.POLYMASS_NONE else value
-    first, second = value[0], value[1]
-    return None if first == _header.POLYMASS_NONE else (first, second)
+def _locations(values) -> tuple[int, ...] | tuple[Edge, ...]:
+    """The set entries of a ``first_*`` array: those before the first POLYMASS_NONE."""
+    found = []
+    for value in values:
+        if isinstance(value, int):
+            if value == _header.POLYMASS_NONE:
+                break
+            found.append(value)
+        else:
+            if value[0] == _header.POLYMASS_NONE:
+                break
+            found.append((value[0], value[1]))
+    return tuple(found)
 
 
 def check(
@@ -116,7 +125,7 @@ def check(
         if item.name == "message":
             values[item.name] = message
         elif item.name.startswith("first_"):
-            values[item.name] = _location(getattr(report, item.name))
+            values[item.name] = _locations(getattr(report, item.name))
         else:
             values[item.name] = getattr(report, item.name)
     return Diagnostics(**values)

@@ -4,42 +4,52 @@ use polymass_sys as sys;
 
 use crate::error::Error;
 
-/// How often a problem occurs and where first.
+/// How often a problem occurs and where: the first few locations.
 ///
 /// ```
 /// let clean = polymass::Occurrences::<u64>::default();
-/// assert_eq!((clean.count, clean.first), (0, None));
+/// assert_eq!(clean.count, 0);
+/// assert!(clean.first.is_empty());
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Occurrences<L> {
     /// How many there are.
     pub count: u64,
-    /// The first one (a face, vertex or edge as the caller's indices);
-    /// `None` when there is none.
-    pub first: Option<L>,
+    /// The first (lowest) of them, ascending: faces, vertices or edges as the
+    /// caller's indices, at most [`LOCATIONS`](crate::LOCATIONS); empty when
+    /// there is none.
+    pub first: Vec<L>,
 }
 
 impl Occurrences<u64> {
-    fn new(count: u64, first: u64) -> Self {
+    fn new(count: u64, first: &[u64]) -> Self {
+        let first = first
+            .iter()
+            .copied()
+            .take_while(|&v| v != sys::POLYMASS_NONE);
         Occurrences {
             count,
-            first: (first != sys::POLYMASS_NONE).then_some(first),
+            first: first.collect(),
         }
     }
 }
 
 impl Occurrences<[u64; 2]> {
-    fn new(count: u64, first: [u64; 2]) -> Self {
+    fn new(count: u64, first: &[[u64; 2]]) -> Self {
+        let first = first
+            .iter()
+            .copied()
+            .take_while(|e| e[0] != sys::POLYMASS_NONE);
         Occurrences {
             count,
-            first: (first[0] != sys::POLYMASS_NONE).then_some(first),
+            first: first.collect(),
         }
     }
 }
 
 /// The report of [`check`](crate::check): every check run to the end, with
-/// counts and first locations. Vertex numbers are the caller's indices (after
-/// welding: the lowest index at that position); edges are vertex pairs.
+/// counts and first few locations. Vertex numbers are the caller's indices
+/// (after welding: the lowest index at that position); edges are vertex pairs.
 ///
 /// ```
 /// use polymass::{ErrorKind, Surface};
@@ -49,8 +59,8 @@ impl Occurrences<[u64; 2]> {
 /// let report = polymass::check(&Surface::triangles(&positions, &open))?;
 /// assert_eq!(report.error.as_ref().map(|e| e.kind()), Some(ErrorKind::Open));
 /// assert_eq!(report.open_edges.count, 3);
-/// assert!(report.open_edges.first.is_some());
-/// assert_eq!(report.misoriented_edges.first, None);
+/// assert_eq!(report.open_edges.first.len(), 3); // the rim of the missing face
+/// assert!(report.misoriented_edges.first.is_empty());
 /// # Ok::<(), polymass::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
@@ -97,29 +107,29 @@ impl Diagnostics {
             edge_count: raw.edge_count,
             non_finite_vertices: Occurrences::<u64>::new(
                 raw.non_finite_vertices,
-                raw.first_non_finite_vertex,
+                &raw.first_non_finite_vertices,
             ),
             out_of_range_indices: Occurrences::<u64>::new(
                 raw.out_of_range_indices,
-                raw.first_out_of_range_face,
+                &raw.first_out_of_range_faces,
             ),
-            small_faces: Occurrences::<u64>::new(raw.small_faces, raw.first_small_face),
+            small_faces: Occurrences::<u64>::new(raw.small_faces, &raw.first_small_faces),
             degenerate_faces: Occurrences::<u64>::new(
                 raw.degenerate_faces,
-                raw.first_degenerate_face,
+                &raw.first_degenerate_faces,
             ),
-            open_edges: Occurrences::<[u64; 2]>::new(raw.open_edges, raw.first_open_edge),
+            open_edges: Occurrences::<[u64; 2]>::new(raw.open_edges, &raw.first_open_edges),
             non_manifold_edges: Occurrences::<[u64; 2]>::new(
                 raw.non_manifold_edges,
-                raw.first_non_manifold_edge,
+                &raw.first_non_manifold_edges,
             ),
             misoriented_edges: Occurrences::<[u64; 2]>::new(
                 raw.misoriented_edges,
-                raw.first_misoriented_edge,
+                &raw.first_misoriented_edges,
             ),
             non_planar_faces: Occurrences::<u64>::new(
                 raw.non_planar_faces,
-                raw.first_non_planar_face,
+                &raw.first_non_planar_faces,
             ),
             max_non_planarity: raw.max_non_planarity,
             signed_volume: (!raw.signed_volume.is_nan()).then_some(raw.signed_volume),

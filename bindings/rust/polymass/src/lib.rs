@@ -77,6 +77,14 @@ pub use polygon::{Orientation, PolygonProperties, SecondMoments};
 pub use properties::{MassProperties, Warnings};
 pub use surface::{Index, Surface, Vertex};
 
+/// How many locations [`Occurrences::first`] lists at most: the C library's
+/// `POLYMASS_DIAGNOSTIC_LOCATIONS`.
+///
+/// ```
+/// assert_eq!(polymass::LOCATIONS, 8);
+/// ```
+pub const LOCATIONS: usize = polymass_sys::POLYMASS_DIAGNOSTIC_LOCATIONS as usize;
+
 use polymass_sys as sys;
 
 /// The README's example, compiled and run as a doc test.

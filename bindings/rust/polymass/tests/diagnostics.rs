@@ -4,7 +4,7 @@
 mod common;
 
 use common::*;
-use polymass::{Context, ErrorKind, Occurrences, Options};
+use polymass::{Context, ErrorKind, Occurrences, Options, Surface};
 
 #[test]
 fn a_valid_solid_has_a_clean_report() {
@@ -50,12 +50,10 @@ fn an_open_surface_reports_its_edges_and_the_error_mesh_creation_gives() {
     let create_error = polymass::Mesh::new(&shape.surface()).unwrap_err();
     assert_eq!(error, create_error);
     assert_eq!(report.open_edges.count, 3);
-    let [a, b] = report.open_edges.first.unwrap();
-    assert!(
-        a != 0 && b != 0 && a != b,
-        "an edge of the missing face: ({a}, {b})"
-    );
-    assert_eq!(report.misoriented_edges.first, None);
+    // The rim of the missing face (1, 2, 3), each edge as its remaining
+    // neighbour traverses it, lowest vertex pairs first.
+    assert_eq!(report.open_edges.first, vec![[2, 1], [1, 3], [3, 2]]);
+    assert!(report.misoriented_edges.first.is_empty());
 }
 
 #[test]
@@ -71,10 +69,31 @@ fn every_problem_is_counted_not_only_the_first() {
         report.non_planar_faces,
         Occurrences {
             count: 1,
-            first: Some(1)
+            first: vec![1]
         }
     );
     assert!(report.max_non_planarity > 0.01);
+}
+
+#[test]
+fn many_problems_list_the_lowest_few() {
+    let shape = cuboid([0.0; 3], [1.0; 3]);
+    // Ten faces of two vertices after the six quads: faces 6 to 15.
+    let indices: Vec<u32> = shape
+        .indices
+        .iter()
+        .copied()
+        .chain([0, 1].repeat(10))
+        .collect();
+    let mut sizes = shape.face_sizes.clone();
+    sizes.resize(16, 2);
+    let report = polymass::check(&Surface::polygons(&shape.positions, &indices, &sizes)).unwrap();
+    assert_eq!(report.error.unwrap().kind(), ErrorKind::FaceTooSmall);
+    assert_eq!(report.small_faces.count, 10);
+    assert_eq!(
+        report.small_faces.first,
+        (6..6 + polymass::LOCATIONS as u64).collect::<Vec<_>>()
+    );
 }
 
 #[test]
