@@ -128,6 +128,17 @@ Arguments parse_arguments(int argc, const char* const* argv) {
                                  std::string(text) + "'");
             }
             arguments.weld_tolerance = tolerance;
+        } else if (option == "--planarity-tolerance") {
+            const std::string_view text = value();
+            double tolerance = -1.0;
+            if (!parse_double(text, tolerance) || !(tolerance > 0.0 && tolerance < 1.0)) {
+                throw UsageError("--planarity-tolerance wants a number in (0, 1), not '" +
+                                 std::string(text) + "'");
+            }
+            arguments.planarity_tolerance = tolerance;
+        } else if (option == "--triangulate") {
+            no_value();
+            arguments.triangulate = true;
         } else if (option == "--accept-inverted") {
             no_value();
             arguments.accept_inverted = true;
@@ -196,6 +207,11 @@ std::string help_text() {
            "  --no-check         skip the topology checks (trusted input; faster)\n"
            "  --weld-tolerance T vertices closer than T times the mesh size are one vertex\n"
            "                     (default 1e-9; 0: exact positions only)\n"
+           "  --planarity-tolerance T\n"
+           "                     how far (relative to its size) a polygon face's vertex may\n"
+           "                     be off the face's plane (default 1e-6)\n"
+           "  --triangulate      split polygon faces into fans of triangles from their first\n"
+           "                     corner: a non-planar face then counts as that surface\n"
            "  --timings          print the time spent reading and computing to stderr\n"
            "\n"
            "Conventions: faces counter-clockwise seen from outside; inertia tensor\n"

@@ -28,6 +28,8 @@ struct Arguments {
     bool no_check = false;
     bool timings = false;
     double weld_tolerance = 1e-9;
+    double planarity_tolerance = 0.0;  // 0: the library's default
+    bool triangulate = false;
 };
 
 // A command line the tool cannot run; the message says what is wrong.

@@ -280,7 +280,7 @@ ExitCode run_check(const Arguments& arguments) {
             }
             continue;
         }
-        scale_model(model, length_factor(arguments));
+        prepare_model(model, arguments);
         const Part all = combined_part(model);
         CheckResult check = check_solid(library, model, all);
         const std::vector<Shell> shells = classify_shells(library, model, split_shells(model, all));

@@ -5,6 +5,7 @@
 
 #include "arguments.hpp"
 #include "exit_codes.hpp"
+#include "model.hpp"
 
 namespace polymass_cli {
 
@@ -14,8 +15,11 @@ ExitCode run_properties(const Arguments& arguments);
 // polymass check FILE...: the diagnostics of each file.
 ExitCode run_check(const Arguments& arguments);
 
-// The library options and the length factor the command line asks for.
+// The library options the command line asks for.
 polymass_options options_for(const Arguments& arguments);
-double length_factor(const Arguments& arguments);
+
+// What the command line asks done to a model once read: --units and --scale,
+// --triangulate.
+void prepare_model(Model& model, const Arguments& arguments);
 
 }  // namespace polymass_cli

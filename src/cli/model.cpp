@@ -18,4 +18,25 @@ void scale_model(Model& model, double factor) {
     for (double& coordinate : model.positions) coordinate *= factor;
 }
 
+void triangulate_model(Model& model) {
+    for (Part& part : model.parts) {
+        Part fanned{part.name, {}, {}};
+        size_t corner = 0;
+        for (const uint32_t size : part.face_sizes) {
+            const uint32_t* face = part.indices.data() + corner;
+            corner += size;
+            if (size <= 3) {  // triangles, and faces too small for the library to name
+                fanned.indices.insert(fanned.indices.end(), face, face + size);
+                fanned.face_sizes.push_back(size);
+                continue;
+            }
+            for (uint32_t k = 1; k + 1 < size; ++k) {
+                fanned.indices.insert(fanned.indices.end(), {face[0], face[k], face[k + 1]});
+                fanned.face_sizes.push_back(3);
+            }
+        }
+        part = std::move(fanned);
+    }
+}
+
 }  // namespace polymass_cli

@@ -36,4 +36,9 @@ Part combined_part(const Model& model);
 // Multiplies every coordinate by factor (unit conversion and --scale).
 void scale_model(Model& model, double factor);
 
+// Splits every face of more than 3 corners into a fan of triangles from its
+// first corner. A planar face keeps its solid; a non-planar one becomes one
+// of the surfaces it could stand for (the fan's).
+void triangulate_model(Model& model);
+
 }  // namespace polymass_cli

@@ -1,7 +1,8 @@
 // Wavefront OBJ: `v x y z [w]` vertices and `f` polygon faces whose corners
 // are `v`, `v/vt`, `v//vn` or `v/vt/vn`, 1-based, negative meaning relative to
-// the vertices read so far. Each `o` starts a part; groups (`g`), materials,
-// texture coordinates, normals and lines are not part of the solid.
+// the vertices read so far; a `\` ending a line continues it on the next.
+// Each `o` starts a part; groups (`g`), materials, texture coordinates,
+// normals and lines are not part of the solid.
 #include <cstdint>
 #include <string>
 
@@ -47,6 +48,13 @@ Model read_obj(const std::string& bytes) {
             uint32_t corners = 0;
             std::string_view corner;
             while (lines.next_token(corner)) {
+                // A backslash ending a line continues the face on the next one.
+                if (corner == "\\") {
+                    std::string_view after;
+                    if (lines.next_token(after)) lines.fail("a '\\' in the middle of a face");
+                    if (!lines.next_line(true)) break;
+                    continue;
+                }
                 part.indices.push_back(corner_vertex(corner, model.vertex_count(), lines));
                 ++corners;
             }

@@ -36,15 +36,19 @@ uint64_t header_count(TextLines& lines, const char* what, uint64_t file_size) {
 Model read_off(const std::string& bytes) {
     TextLines lines(bytes);
     const std::string_view keyword = first_token_of_next_line(lines, "the OFF header");
-    const std::string_view::size_type off_at = keyword.rfind("OFF");
-    if (off_at == std::string_view::npos || off_at + 3 != keyword.size() ||
-        keyword.find_first_not_of("CNST") < off_at) {
+    const std::string_view::size_type off_at = keyword.find("OFF");
+    if (off_at == std::string_view::npos || keyword.find_first_not_of("CNST") < off_at) {
         lines.fail("not an OFF file: the first word is not OFF (or COFF, NOFF, ...)");
     }
-    // The counts may follow the keyword on the same line.
-    std::string_view token;
+    // The counts may follow the keyword on the same line, the first even
+    // without a space ("OFF8 6 0").
+    std::string_view token = keyword.substr(off_at + 3);
     int64_t vertex_count_value = 0;
-    if (lines.next_token(token)) {
+    if (!token.empty()) {
+        if (!parse_integer(token, vertex_count_value)) {
+            lines.fail("not an OFF file: the first word is not OFF (or COFF, NOFF, ...)");
+        }
+    } else if (lines.next_token(token)) {
         if (!parse_integer(token, vertex_count_value)) lines.fail("expected the vertex count");
     } else {
         token = first_token_of_next_line(lines, "the vertex and face counts");

@@ -50,7 +50,7 @@ FileReport process_file(const Library& library, const std::string& path, const A
         report.read_error = error.what();
         return report;
     }
-    scale_model(model, length_factor(arguments));
+    prepare_model(model, arguments);
     report.readable = true;
     report.format = model.format;
     report.read_seconds = seconds_since(read_start);
@@ -82,10 +82,11 @@ FileReport process_file(const Library& library, const std::string& path, const A
 
 }  // namespace
 
-double length_factor(const Arguments& arguments) {
+void prepare_model(Model& model, const Arguments& arguments) {
     double metres = 1.0;
     if (!arguments.units.empty()) metres_per_unit(arguments.units, metres);
-    return metres * arguments.scale;
+    scale_model(model, metres * arguments.scale);
+    if (arguments.triangulate) triangulate_model(model);
 }
 
 polymass_options options_for(const Arguments& arguments) {
@@ -97,6 +98,7 @@ polymass_options options_for(const Arguments& arguments) {
     if (arguments.accept_inverted) options.flags |= POLYMASS_OPTION_ACCEPT_INVERTED;
     if (arguments.no_check) options.flags |= POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
     options.weld_tolerance = arguments.weld_tolerance;
+    options.planarity_tolerance = arguments.planarity_tolerance;
     return options;
 }
 

@@ -120,6 +120,42 @@ class EveryFormat(Case):
                 self.assertEqual(out["faces"], len(self.faces))
                 self.assertEqual(out["vertices"], len(self.vertices))
 
+    def test_obj_line_continuation_and_off_count_after_its_keyword(self):
+        # Both are legal and written by real exporters: a face continued after a
+        # backslash (with CRLF line ends), and "OFF8 6 0" with no space.
+        obj = WORK / "continued.obj"
+        lines = [f"v {x!r} {y!r} {z!r}" for x, y, z in self.vertices]
+        for face in self.faces:
+            corners = [str(i + 1) for i in face]
+            lines.append("f " + " ".join(corners[:2]) + " \\")
+            lines.append(" ".join(corners[2:]))
+        obj.write_bytes(("\r\n".join(lines) + "\r\n").encode())
+        _, out = run_json(obj)
+        self.assert_properties(out, self.expected, what="continued.obj")
+        off = (WORK / "bracket.off").read_text().split("\n", 1)
+        glued = WORK / "glued.off"
+        glued.write_text("  \tOFF" + off[1].lstrip())
+        _, out = run_json(glued)
+        self.assert_properties(out, self.expected, what="glued.off")
+
+    def test_triangulate_and_planarity_tolerance(self):
+        # The bracket with one corner of a quad lifted: not planar, refused;
+        # accepted with a looser tolerance; --triangulate gives the fan's solid,
+        # whose volume the exact reference gives for the same triangles.
+        vertices = list(self.vertices)
+        x, y, z = vertices[self.faces[-1][0]]
+        vertices[self.faces[-1][0]] = (x, y, z + 0.25)
+        fixtures.write_obj(WORK / "bent.obj", vertices, self.faces)
+        result, out = run_json(WORK / "bent.obj")
+        self.assertEqual(out["error"]["category"], "non_planar_face")
+        result, out = run_json("--planarity-tolerance", "0.1", WORK / "bent.obj")
+        self.assertEqual(result.returncode, EXIT_OK, out)
+        _, out = run_json("--triangulate", WORK / "bent.obj")
+        fanned = fixtures.triangles(self.faces)
+        expected = generate.exact_properties(vertices, fanned)
+        self.assert_properties(out, expected, what="bent.obj --triangulate")
+        self.assertEqual(out["faces"], len(fanned))
+
     def test_stl_soup_is_welded(self):
         _, out = run_json(WORK / "bracket_binary.stl")
         self.assertEqual(out["vertices"], len(self.vertices))
