@@ -5,27 +5,29 @@
 // weld_tolerance).
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace polymass_cli {
 
 class VertexWelder {
 public:
-    explicit VertexWelder(std::vector<double>& positions) : positions_(positions) {}
+    explicit VertexWelder(std::vector<double>& positions);
 
-    // The index of the vertex at (x, y, z), appended to positions if new.
+    // The index of the vertex at (x, y, z) (the lowest, if positions already
+    // held equal ones), appended to positions if new.
     uint32_t index_of(double x, double y, double z);
 
 private:
-    struct PositionHash {
-        size_t operator()(const std::array<uint64_t, 3>& bits) const;
-    };
+    // Re-inserts every vertex into slot_count (a power of two) slots or more.
+    void rebuild(size_t slot_count);
+
     std::vector<double>& positions_;
-    std::unordered_map<std::array<uint64_t, 3>, uint32_t, PositionHash> indices_;
+    // Open addressing with linear probing: each slot holds a vertex index + 1
+    // (0 is empty). A million-triangle STL asks 3 million times; a node-based
+    // map spent most of the reading time allocating.
+    std::vector<uint32_t> slots_;
 };
 
 }  // namespace polymass_cli
