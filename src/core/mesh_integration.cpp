@@ -65,7 +65,9 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
     Lanes twice_areas{};
     for (std::size_t first = 0; first < batch.size; first += lane_count) {
         Lanes p[3][3];
+#pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
+#pragma GCC unroll 3
             for (int vertex = 0; vertex < 3; ++vertex) {
                 Lanes coordinate;
                 load_lanes(coordinate, &batch.coordinates[axis][vertex][first]);
@@ -76,6 +78,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         add_unscaled_triangle_sums(sums, p, edges.delta);  // padding lanes add zero
 
         Lanes squared_norm{}, e1_squared{}, e2_squared{};
+#pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
             squared_norm += edges.delta[axis] * edges.delta[axis];
             e1_squared += edges.e1[axis] * edges.e1[axis];

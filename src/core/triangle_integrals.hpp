@@ -51,6 +51,7 @@ struct TriangleCoordinateTerms {
         f1 = s1 + w[2];
         f2 = s2 + w[2] * f1;
         f3 = w[0] * w0w0 + w[1] * s2 + w[2] * f2;  // s3 + w2 f2
+#pragma GCC unroll 3
         for (int i = 0; i < 3; ++i) g[i] = f2 + w[i] * (f1 + w[i]);
     }
 };
@@ -64,6 +65,7 @@ struct TriangleEdges {
     T e1[3], e2[3], delta[3];
 
     __attribute__((always_inline)) explicit TriangleEdges(const T (&p)[3][3]) {
+#pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
             e1[axis] = p[axis][1] - p[axis][0];
             e2[axis] = p[axis][2] - p[axis][0];
@@ -84,6 +86,7 @@ __attribute__((always_inline)) inline void add_unscaled_triangle_sums(UnscaledTr
                                                          detail::TriangleCoordinateTerms<T>(p[1]),
                                                          detail::TriangleCoordinateTerms<T>(p[2])};
     sums.x += delta[0] * terms[0].f1;
+#pragma GCC unroll 3
     for (int axis = 0; axis < 3; ++axis) {
         // The mixed term of axis a is ∫a²b with b the next axis (x²y, y²z, z²x).
         const int next = (axis + 1) % 3;
