@@ -66,9 +66,9 @@ private:
 // A grid of cells `distance` wide: vertices in one cell are within `distance`
 // of each other in every coordinate (up to rounding), so they are one; vertices
 // in adjacent cells are one when any pair across them is that close. Sorting
-// the vertices by cell lets each cell meet only its 26 neighbours, so the cost
-// is O(n log n) unless many distinct vertices crowd two adjacent cells without
-// touching (then it is their product).
+// the vertices by cell groups each cell's and lets a merge-like walk meet each
+// cell's 26 neighbours. The cost is O(n log n) unless many distinct vertices
+// crowd two adjacent cells without touching (then it is their product).
 template <class Scalar, class Index>
 void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, double distance,
                  const std::pmr::vector<std::uint32_t>& used,
@@ -91,36 +91,53 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
             {Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())}, vertex});
     }
     std::sort(entries.begin(), entries.end());
-    auto cell_less = [](const Entry& a, const Entry& b) { return a.cell < b.cell; };
-    auto close = [&](const Entry& a, const Entry& b) {
+
+    // Each occupied cell's first entry; the next cell's first ends it.
+    std::pmr::vector<std::uint32_t> cell_starts(memory);
+    for (std::size_t i = 0; i < entries.size(); ++i)
+        if (i == 0 || entries[i].cell != entries[i - 1].cell)
+            cell_starts.push_back(std::uint32_t(i));
+    const std::size_t cell_count = cell_starts.size();
+    cell_starts.push_back(std::uint32_t(entries.size()));
+    const auto close = [&](const Entry& a, const Entry& b) {
         const Eigen::Vector3d pa = mesh.positions[a.vertex];
         const Eigen::Vector3d pb = mesh.positions[b.vertex];
         return ((pa - pb).cwiseAbs().array() <= distance).all();
     };
+    // The 13 neighbours after a cell in sort order (the other 13 meet it from
+    // their side). Cells are visited in sort order, and so, shifted by one
+    // offset, are their neighbours: one cursor per offset only moves forward.
+    std::array<Cell, 13> offsets;
+    std::size_t offset_count = 0;
+    for (std::int64_t dx = 0; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy)
+            for (std::int64_t dz = -1; dz <= 1; ++dz)
+                if (dx > 0 || dy > 0 || (dy == 0 && dz > 0)) offsets[offset_count++] = {dx, dy, dz};
+    std::array<std::size_t, 13> cursors{};
+    const auto cell_at = [&](std::size_t c) -> const Cell& { return entries[cell_starts[c]].cell; };
+
     SmallestIndexSets sets(representative);
-    for (auto first = entries.begin(); first != entries.end();) {
-        const auto last = std::upper_bound(first, entries.end(), *first, cell_less);
-        for (auto entry = first + 1; entry != last; ++entry)
+    for (std::size_t c = 0; c < cell_count; ++c) {
+        const Entry* first = &entries[cell_starts[c]];
+        const Entry* last = &entries[0] + cell_starts[c + 1];
+        for (const Entry* entry = first + 1; entry != last; ++entry)
             sets.join(first->vertex, entry->vertex);
-        // The 13 neighbours after this cell in sort order; the other 13 meet
-        // it from their side.
-        for (std::int64_t dx = 0; dx <= 1; ++dx)
-            for (std::int64_t dy = -1; dy <= 1; ++dy)
-                for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    if (dx == 0 && (dy < 0 || (dy == 0 && dz <= 0))) continue;
-                    const Cell& here = first->cell;
-                    const Entry key{{here[0] + dx, here[1] + dy, here[2] + dz}, 0};
-                    const auto near = std::equal_range(last, entries.end(), key, cell_less);
-                    auto touching = [&] {
-                        for (auto a = first; a != last; ++a)
-                            for (auto b = near.first; b != near.second; ++b)
-                                if (close(*a, *b)) return true;
-                        return false;
-                    };
-                    if (near.first != near.second && touching())
-                        sets.join(first->vertex, near.first->vertex);
-                }
-        first = last;
+        for (std::size_t o = 0; o < offsets.size(); ++o) {
+            const Cell near{first->cell[0] + offsets[o][0], first->cell[1] + offsets[o][1],
+                            first->cell[2] + offsets[o][2]};
+            std::size_t& n = cursors[o];
+            while (n < cell_count && cell_at(n) < near) ++n;
+            if (n == cell_count || cell_at(n) != near) continue;
+            const Entry* near_first = &entries[cell_starts[n]];
+            const Entry* near_last = &entries[0] + cell_starts[n + 1];
+            auto touching = [&] {
+                for (const Entry* a = first; a != last; ++a)
+                    for (const Entry* b = near_first; b != near_last; ++b)
+                        if (close(*a, *b)) return true;
+                return false;
+            };
+            if (touching()) sets.join(first->vertex, near_first->vertex);
+        }
     }
     for (const std::uint32_t vertex : used) representative[vertex] = sets.find(vertex);
 }
