@@ -15,20 +15,28 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     // place would chain each face's read-modify-write of a word to the last
     // one's (neighbouring faces share vertices), a byte store waits for nothing.
     std::pmr::vector<unsigned char> seen(addressable, 0, memory);
-    for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
-        bool in_range = true;
-        for (std::size_t i = first; i < first + size; ++i) {
-            const std::size_t vertex = mesh.indices[i];
-            if (vertex >= mesh.vertex_count) {
+    // The index array in one run, faces aside: they matter only to report an
+    // index out of range, which is rare enough to look for again.
+    bool all_in_range = true;
+    for (std::size_t i = 0; i < mesh.index_count; ++i) {
+        const std::size_t vertex = mesh.indices[i];
+        if (vertex < mesh.vertex_count)
+            seen[vertex] = 1;
+        else
+            all_in_range = false;
+    }
+    if (!all_in_range) {
+        for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
+            bool in_range = true;
+            for (std::size_t i = first; i < first + size; ++i) {
+                if (mesh.indices[i] < mesh.vertex_count) continue;
                 if (scan.out_of_range_indices++ == 0)
                     scan.first_out_of_range_index = mesh.indices[i];
                 in_range = false;
-                continue;
             }
-            seen[vertex] = 1;
-        }
-        if (!in_range) scan.out_of_range_faces.record(face);
-    });
+            if (!in_range) scan.out_of_range_faces.record(face);
+        });
+    }
 
     scan.used.assign((addressable + 63) / 64, 0);
     // Locals rather than scan's members, which the stores into scan.used might alias.

@@ -50,7 +50,7 @@ struct MeshView {
     PositionArray<Scalar> positions;
     std::size_t vertex_count = 0;
     IndexArray<Index> indices;
-    std::size_t index_count = 0;
+    std::size_t index_count = 0;  // the faces' sizes add up to it (checked by the C API)
     const std::uint32_t* face_sizes = nullptr;  // nullptr: every face is a triangle
     std::size_t face_count = 0;
 
