@@ -29,9 +29,9 @@ struct TriangleBatch {
         : reference{reference_point.x(), reference_point.y(), reference_point.z()},
           inverse_unit(1.0 / unit) {}  // a power of two: exact
 
-    void add(std::size_t face, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-             const Eigen::Vector3d& p2) {
-        const std::size_t slot = size++;
+    // Fills a slot; the caller counts it in size.
+    void put(std::size_t slot, std::size_t face, const Eigen::Vector3d& p0,
+             const Eigen::Vector3d& p1, const Eigen::Vector3d& p2) {
         auto put = [&](int vertex, const Eigen::Vector3d& p) {
             coordinates[0][vertex][slot] = p.x();
             coordinates[1][vertex][slot] = p.y();
@@ -134,8 +134,23 @@ public:
     // Vertices in the caller's coordinates.
     void add_triangle(std::size_t face, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                       const Eigen::Vector3d& p2) {
-        batch_.add(face, p0, p1, p2);
+        batch_.put(batch_.size++, face, p0, p1, p2);
         if (batch_.size == TriangleBatch::capacity) flush_triangles();
+    }
+
+    // Faces [begin, end), all triangles, with corner(face, i) their vertices in
+    // the caller's coordinates. Counting slots in a local, not in the batch,
+    // keeps the count in a register across the batch's stores.
+    template <class Corner>
+    void add_triangles(std::size_t begin, std::size_t end, Corner&& corner) {
+        for (std::size_t face = begin; face < end;) {
+            const std::size_t first_slot = batch_.size;
+            const std::size_t slots = std::min(TriangleBatch::capacity - first_slot, end - face);
+            for (std::size_t slot = first_slot; slot < first_slot + slots; ++slot, ++face)
+                batch_.put(slot, face, corner(face, 0), corner(face, 1), corner(face, 2));
+            batch_.size = first_slot + slots;
+            if (batch_.size == TriangleBatch::capacity) flush_triangles();
+        }
     }
 
     // vertex_at(i): the i-th vertex relative to the reference point, in units.
@@ -200,6 +215,12 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
     auto vertex = [positions, indices](std::size_t position) {
         return positions[indices[position]];
     };
+    if (mesh.all_triangles()) {
+        integrator.add_triangles(0, mesh.face_count, [&](std::size_t face, int corner) {
+            return vertex(3 * face + corner);
+        });
+        return integrator.finish();
+    }
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
         if (size == 3) {
             integrator.add_triangle(face, vertex(first), vertex(first + 1), vertex(first + 2));
