@@ -87,11 +87,12 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         Lanes twice_area;
         for (int lane = 0; lane < lane_count; ++lane)
             twice_area[lane] = std::sqrt(squared_norm[lane]);
-        // Below 2^-1022 squares lose digits; above 2^-960 what they lose is
-        // under 2^-115 of the sum. A sliver's δ (coordinates are of order one
-        // here) is measured without squaring instead, rarely.
+        // Below 2^-1022 squares lose digits (down to none: a well-shaped
+        // triangle 1e-150 of the mesh's size squares to zero); above 2^-960
+        // what they lose is under 2^-115 of the sum. So a small δ (coordinates
+        // are of order one here) is measured without squaring instead, rarely.
         constexpr double squares_keep_digits = 0x1p-960;
-        const LaneMask sliver = (squared_norm > 0) & (squared_norm < squares_keep_digits);
+        const LaneMask sliver = squared_norm < squares_keep_digits;
         if (any_lane(sliver)) {
             for (int lane = 0; lane < lane_count; ++lane)
                 if (sliver[lane])
