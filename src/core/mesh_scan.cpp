@@ -17,11 +17,16 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     std::pmr::vector<unsigned char> seen(addressable, 0, memory);
     // The index array in one run, faces aside: they matter only to report an
     // index out of range, which is rare enough to look for again.
+    // (Copies in locals: a byte store may alias anything, so what it could
+    // overwrite would be read again after each.)
+    const auto indices = mesh.indices;
+    const std::size_t index_count = mesh.index_count, vertex_count = mesh.vertex_count;
+    unsigned char* const seen_vertex = seen.data();
     bool all_in_range = true;
-    for (std::size_t i = 0; i < mesh.index_count; ++i) {
-        const std::size_t vertex = mesh.indices[i];
-        if (vertex < mesh.vertex_count)
-            seen[vertex] = 1;
+    for (std::size_t i = 0; i < index_count; ++i) {
+        const std::size_t vertex = indices[i];
+        if (vertex < vertex_count)
+            seen_vertex[vertex] = 1;
         else
             all_in_range = false;
     }
