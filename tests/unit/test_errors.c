@@ -1089,6 +1089,44 @@ static void make_t_junction_cube(pm_mesh* m) {
     pm_mesh_add_tri(m, 5, 4, 9);      /* 8: sliver on the top edge */
 }
 
+/* Faces whose area squared underflows are tiny, not degenerate: a shell of
+   size 1e-150 beside one of size 2 has faces of area ~1e-300, whose square is
+   0 in double. (A SIMD area test once reported them as degenerate.) */
+static void test_tiny_faces_are_not_degenerate(void** state) {
+    const double s = 1e-150;
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    pm_mesh m;
+    (void)state;
+    pm_mesh_init(&m);
+    /* a regular tetrahedron of volume 8/3 */
+    pm_mesh_add_vertex(&m, 1, 1, 1);
+    pm_mesh_add_vertex(&m, 1, -1, -1);
+    pm_mesh_add_vertex(&m, -1, 1, -1);
+    pm_mesh_add_vertex(&m, -1, -1, 1);
+    pm_mesh_add_tri(&m, 0, 1, 2);
+    pm_mesh_add_tri(&m, 0, 2, 3);
+    pm_mesh_add_tri(&m, 0, 3, 1);
+    pm_mesh_add_tri(&m, 2, 1, 3);
+    /* and a corner tetrahedron of edge 1e-150 at the origin */
+    pm_mesh_add_vertex(&m, 0, 0, 0);
+    pm_mesh_add_vertex(&m, s, 0, 0);
+    pm_mesh_add_vertex(&m, 0, s, 0);
+    pm_mesh_add_vertex(&m, 0, 0, s);
+    pm_mesh_add_tri(&m, 4, 6, 5);
+    pm_mesh_add_tri(&m, 4, 5, 7);
+    pm_mesh_add_tri(&m, 4, 7, 6);
+    pm_mesh_add_tri(&m, 5, 6, 7);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    assert_int_equal(p.warnings, 0);
+    PM_ASSERT_REL("volume", 8.0 / 3.0, p.volume, PM_TOL);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+    assert_int_equal(diag.degenerate_faces, 0);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
 static void test_degenerate_faces(void** state) {
     const pm_expected e = pm_expected_box(unit_lo, unit_hi);
     polymass_context* ctx = pm_context_new(0);
@@ -1276,6 +1314,7 @@ int main(void) {
         cmocka_unit_test(test_zero_volume),
         cmocka_unit_test(test_skip_topology_checks),
         cmocka_unit_test(test_degenerate_faces),
+        cmocka_unit_test(test_tiny_faces_are_not_degenerate),
         cmocka_unit_test(test_welding),
         cmocka_unit_test(test_check_reports_everything),
     };
