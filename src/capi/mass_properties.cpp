@@ -85,13 +85,6 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
                 result.inertia_point);
     copy_vector(principal.moments, result.principal_moments);
     copy_matrix(principal.axes, result.principal_axes);
-    // A tiny mesh's volume (size^3) underflows first: say so rather than print
-    // the NaN centre it leads to.
-    if (!(std::abs(result.volume) >= DBL_MIN))
-        return context->fail(POLYMASS_ERROR_OVERFLOW,
-                             "the volume %g is too small for a double (below %g): scale the "
-                             "coordinates up",
-                             result.volume, DBL_MIN);
     if (!(result_in_range(result)))
         return context->fail(
             POLYMASS_ERROR_OVERFLOW,

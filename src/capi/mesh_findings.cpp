@@ -1,6 +1,7 @@
 #include "mesh_findings.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -104,6 +105,14 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              "the volume integrals overflow double precision: the mesh is too "
                              "large (size %.3g); scale its coordinates down",
                              scan.diagonal());
+    // A solid too small for a double: its volume (size^3) underflowed. The
+    // inertia (size^5 x density) can underflow too, but that depends on the
+    // density: polymass_mesh_mass_properties says so.
+    if (!(std::abs(integrals.volume) >= DBL_MIN))
+        return context->fail(POLYMASS_ERROR_OVERFLOW,
+                             "the volume %g is too small for a double (below %g): the mesh is "
+                             "too small (size %.3g); scale its coordinates up",
+                             integrals.volume, DBL_MIN, scan.diagonal());
     const double volume = integrals.volume;
     if (volume < 0) {
         if (!(flags & POLYMASS_OPTION_ACCEPT_INVERTED))
@@ -122,10 +131,14 @@ namespace {
 static_assert(core::kKeptLocations == POLYMASS_DIAGNOSTIC_LOCATIONS,
               "the core keeps as many locations as the report lists");
 
+void copy_locations(const core::Finding& found, uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS]) {
+    for (std::size_t i = 0; i < found.kept(); ++i) first[i] = found.lowest[i];
+}
+
 void copy_finding(const core::Finding& found, uint64_t& count,
                   uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS]) {
     count = found.count;
-    for (std::size_t i = 0; i < found.kept(); ++i) first[i] = found.lowest[i];
+    copy_locations(found, first);
 }
 
 void copy_finding(const core::EdgeFinding& found, uint64_t& count,
@@ -161,9 +174,9 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
     const core::MeshScan& scan = analysis->scan;
     report.used_vertex_count = analysis->used_vertex_count;
     copy_finding(scan.non_finite, report.non_finite_vertices, report.first_non_finite_vertices);
-    copy_finding(scan.out_of_range_faces, report.out_of_range_indices,
-                 report.first_out_of_range_faces);
-    report.out_of_range_indices = scan.out_of_range_indices;  // indices, not faces
+    // Counted per index, located per face.
+    report.out_of_range_indices = scan.out_of_range_indices;
+    copy_locations(scan.out_of_range_faces, report.first_out_of_range_faces);
     if (const auto& topology = analysis->topology) {
         report.edge_count = topology->edge_count;
         copy_finding(topology->open, report.open_edges, report.first_open_edges);

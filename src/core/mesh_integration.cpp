@@ -17,7 +17,9 @@ namespace {
 // join the total, so rounding grows with the number of batches rather than of
 // triangles.
 struct TriangleBatch {
-    static constexpr std::size_t capacity = 64;  // a multiple of lane_count
+    static constexpr std::size_t capacity = 64;
+    // pad() fills up to the next multiple of lane_count: it must stay inside.
+    static_assert(capacity % lane_count == 0, "a batch holds whole groups of lanes");
     alignas(64) double coordinates[3][3][capacity];
     std::size_t faces[capacity];
     std::size_t size = 0;

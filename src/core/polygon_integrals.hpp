@@ -104,7 +104,9 @@ FacePlane face_plane(std::size_t count, VertexAt&& vertex_at) {
     plane.centroid = p0 + sum / double(count);
     for (std::size_t i = 0; i < count; ++i)
         plane.extent = std::max(plane.extent, (vertex_at(i) - plane.centroid).norm());
-    const double twice_area_norm = twice_area.norm();
+    // stableNorm: the squares of a tiny face's area vector underflow (a face
+    // 1e-150 across would have no area), as the triangle path also avoids.
+    const double twice_area_norm = twice_area.stableNorm();
     plane.area = twice_area_norm / 2.0;
     plane.degenerate = is_degenerate_face(twice_area_norm, 4.0 * plane.extent * plane.extent);
     if (!plane.degenerate) plane.normal = twice_area / twice_area_norm;

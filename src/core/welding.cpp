@@ -93,12 +93,11 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
     std::sort(entries.begin(), entries.end());
 
     // Each occupied cell's first entry; the next cell's first ends it.
-    std::pmr::vector<std::uint32_t> cell_starts(memory);
+    std::pmr::vector<std::size_t> cell_starts(memory);
     for (std::size_t i = 0; i < entries.size(); ++i)
-        if (i == 0 || entries[i].cell != entries[i - 1].cell)
-            cell_starts.push_back(std::uint32_t(i));
+        if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_starts.push_back(i);
     const std::size_t cell_count = cell_starts.size();
-    cell_starts.push_back(std::uint32_t(entries.size()));
+    cell_starts.push_back(entries.size());
     const auto close = [&](const Entry& a, const Entry& b) {
         const Eigen::Vector3d pa = mesh.positions[a.vertex];
         const Eigen::Vector3d pb = mesh.positions[b.vertex];
@@ -136,7 +135,9 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
                         if (close(*a, *b)) return true;
                 return false;
             };
-            if (touching()) sets.join(first->vertex, near_first->vertex);
+            // Already one (through a chain): no pair need be compared.
+            if (sets.find(first->vertex) != sets.find(near_first->vertex) && touching())
+                sets.join(first->vertex, near_first->vertex);
         }
     }
     for (const std::uint32_t vertex : used) representative[vertex] = sets.find(vertex);

@@ -1091,7 +1091,10 @@ static void make_t_junction_cube(pm_mesh* m) {
 
 /* Faces whose area squared underflows are tiny, not degenerate: a shell of
    size 1e-150 beside one of size 2 has faces of area ~1e-300, whose square is
-   0 in double. (A SIMD area test once reported them as degenerate.) */
+   0 in double. (A SIMD area test once reported such triangles as degenerate,
+   and the polygon path such quads.) The tiny shell sits at the integration's
+   reference point, the centre of the bounding box: anywhere else its
+   coordinates would round to one point when moved into that frame. */
 static void test_tiny_faces_are_not_degenerate(void** state) {
     const double s = 1e-150;
     polymass_context* ctx = pm_context_new(0);
@@ -1123,6 +1126,39 @@ static void test_tiny_faces_are_not_degenerate(void** state) {
     PM_ASSERT_REL("volume", 8.0 / 3.0, p.volume, PM_TOL);
     PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
     assert_int_equal(diag.degenerate_faces, 0);
+    pm_mesh_free(&m);
+
+    /* the same with quads: a cube [-1, 1]^3 and one [0, 1e-150]^3 */
+    {
+        static const double big_lo[3] = {-1, -1, -1}, big_hi[3] = {1, 1, 1};
+        static const double tiny_lo[3] = {0, 0, 0};
+        const double tiny_hi[3] = {s, s, s};
+        pm_mesh_box(&m, big_lo, big_hi, 0);
+        pm_mesh_add_box(&m, tiny_lo, tiny_hi, 0);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        assert_int_equal(p.warnings, 0);
+        PM_ASSERT_REL("volume", 8.0, p.volume, PM_TOL);
+        PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &m));
+        assert_int_equal(diag.degenerate_faces, 0);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
+/* A solid whose volume underflows is refused when the mesh is made (and by
+   the check), not only when a body is computed from it. */
+static void test_volume_underflow_is_found_by_the_check(void** state) {
+    static const double lo[3] = {0, 0, 0};
+    const double hi[3] = {1e-110, 2e-110, 3e-110};
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics diag;
+    pm_mesh m;
+    (void)state;
+    pm_mesh_box(&m, lo, hi, 1);
+    pm_diagnostics_init(&diag);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OVERFLOW, pm_check(&diag, ctx, &m));
+    assert_non_null(strstr(polymass_context_message(ctx), "volume"));
+    EXPECT_MESH_FAILURE(ctx, &m, POLYMASS_ERROR_OVERFLOW);
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }
@@ -1315,6 +1351,7 @@ int main(void) {
         cmocka_unit_test(test_skip_topology_checks),
         cmocka_unit_test(test_degenerate_faces),
         cmocka_unit_test(test_tiny_faces_are_not_degenerate),
+        cmocka_unit_test(test_volume_underflow_is_found_by_the_check),
         cmocka_unit_test(test_welding),
         cmocka_unit_test(test_check_reports_everything),
     };
