@@ -93,6 +93,19 @@ def test_a_weld_tolerance_joins_vertices_carrying_rounding_noise(tetrahedron):
     assert polymass.check(noisy, soup_faces, weld=1e-9).ok
 
 
+def test_weld_is_a_boolean_or_a_float(tetrahedron):
+    vertices, faces = tetrahedron
+    soup_vertices, soup_faces = _soup(vertices, faces)
+    assert polymass.check(soup_vertices, soup_faces, weld=np.True_).ok
+    assert polymass.check(soup_vertices, soup_faces, weld=0.0).ok  # a tolerance of 0: exact
+    assert polymass.check(soup_vertices, soup_faces, weld=np.False_).error is (
+        polymass.OpenSurfaceError
+    )
+    for ambiguous in (0, 1, np.int64(0)):
+        with pytest.raises(TypeError, match="weld must be"):
+            polymass.check(soup_vertices, soup_faces, weld=ambiguous)
+
+
 @pytest.mark.parametrize("tolerance", [-1.0, 0.1, float("nan")])
 def test_a_weld_tolerance_out_of_range_is_refused(tetrahedron, tolerance):
     with pytest.raises(polymass.InvalidArgumentError, match="weld_tolerance"):

@@ -49,6 +49,25 @@ def test_a_view_of_every_other_row_is_read_in_place(tetrahedron):
     _same(polymass.mass_properties(spaced[::2], faces), _reference(tetrahedron))
 
 
+def test_rows_overlapping_in_memory_are_copied():
+    # A sliding window over (0, 0, 0, 1, 0, 0): rows (0,0,0), (0,0,1), (0,1,0),
+    # (1,0,0) share memory (a row stride of one coordinate). The library wants
+    # rows that do not overlap; the binding copies them.
+    window = np.lib.stride_tricks.sliding_window_view(np.array([0.0, 0, 0, 1, 0, 0]), 3)
+    assert window.strides == (8, 8)
+    faces = np.array([[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]])
+    description = mesh_description(window, faces, None)
+    assert description.vertices.strides == (24, 8)
+    assert polymass.mass_properties(window, faces).volume == pytest.approx(1 / 6, rel=1e-15)
+
+
+def test_face_sizes_of_triangles_must_account_for_every_index(tetrahedron):
+    vertices, faces = tetrahedron
+    flat = np.asarray(faces).ravel()
+    with pytest.raises(polymass.InvalidArgumentError, match="add up to 9 indices"):
+        polymass.mass_properties(vertices, flat, face_sizes=[3, 3, 3])
+
+
 @pytest.mark.parametrize(
     "layout",
     [

@@ -6,6 +6,10 @@ library, so ``vertices[:, :3]`` of a wider array is not copied). Indices are
 read in place when they are C-contiguous uint32, uint16, or int32 (checked
 non-negative, then read as uint32). Anything else is converted to such an array
 first, which copies it.
+
+Read in place means read while the call runs, with the GIL released: another
+thread must not write to those arrays meanwhile (an index changed between the
+library's range check and its use could make it read out of bounds).
 """
 
 from __future__ import annotations
@@ -52,8 +56,11 @@ def as_positions(values: npt.ArrayLike, columns: int, *, name: str, keep_float32
         )
     if not array.dtype.isnative:
         array = array.astype(array.dtype.newbyteorder("="))
-    # The library takes a positive row stride and consecutive coordinates in a row.
-    if array.strides[1] != array.itemsize or (len(array) > 1 and array.strides[0] <= 0):
+    # The library takes consecutive coordinates in a row and rows that do not
+    # overlap (a stride of at least a row: sliding-window views are copied).
+    if array.strides[1] != array.itemsize or (
+        len(array) > 1 and array.strides[0] < columns * array.itemsize
+    ):
         array = np.ascontiguousarray(array)
     return array
 
@@ -142,7 +149,10 @@ def _faces(faces: FacesLike, face_sizes: npt.ArrayLike | None):
             raise ValueError(f"with face_sizes, faces must be the flat indices; got {flat.shape}")
         starts = np.cumsum(sizes) - sizes
         indices = _as_indices(flat, lambda p: int(np.searchsorted(starts, p, side="right")) - 1)
-        return indices, (None if sizes.size and np.all(sizes == 3) else sizes)
+        # All triangles: no sizes needed, if they account for every index (else
+        # the library is given them, to say how they do not add up).
+        all_triangles = sizes.size and np.all(sizes == 3) and 3 * sizes.size == flat.size
+        return indices, (None if all_triangles else sizes)
     if isinstance(faces, np.ndarray) or _is_rectangular(faces):
         table = np.asarray(faces)
         if table.ndim != 2:
