@@ -399,6 +399,20 @@ POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* 
 POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
                                          polymass_context* context, const polymass_mesh_desc* desc);
 
+/* The shells of a surface: its connected pieces, faces sharing a vertex being
+   in one shell (after welding, when the context's options weld, so a triangle
+   soup splits as its solid does). Writes each face's shell, numbered from 0 in
+   the order of the shells' first faces, to out_shell_of_face (room for the
+   mesh's face count: face_count, or index_count / 3 for triangles), and the
+   number of shells to *out_shell_count. Indices out of range and non-finite
+   coordinates are errors, as for polymass_mesh_create; the topology is not
+   checked. A caller can then check or compute each shell on its own (a cavity
+   is a shell whose signed volume is negative). Context: one thread at a
+   time. */
+POLYMASS_API int32_t polymass_mesh_shells(uint32_t* out_shell_of_face, uint64_t* out_shell_count,
+                                          polymass_context* context,
+                                          const polymass_mesh_desc* desc);
+
 /* ========================================================================== */
 /* Planar polygons                                                            */
 /* ========================================================================== */

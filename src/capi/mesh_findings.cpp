@@ -33,10 +33,7 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bo
     });
 }
 
-int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
-              uint32_t& warnings) {
-    const uint32_t flags = context->options.flags;
-    const core::MeshScan& scan = analysis.scan;
+int32_t judge_scan(polymass_context* context, const MeshInput& input, const core::MeshScan& scan) {
     if (scan.out_of_range_indices > 0)
         return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
                              "face %llu refers to vertex %u, but there are only %llu vertices "
@@ -54,7 +51,14 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              "the mesh spans more than a double can hold (its bounding box "
                              "reaches from %g to %g)",
                              scan.bounds.min().minCoeff(), scan.bounds.max().maxCoeff());
+    return POLYMASS_OK;
+}
 
+int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
+              uint32_t& warnings) {
+    const uint32_t flags = context->options.flags;
+    const core::MeshScan& scan = analysis.scan;
+    if (const int32_t status = judge_scan(context, input, scan)) return status;
     if (const auto& topology = analysis.topology) {
         if (topology->open.count > 0)
             return fail_on_edge(context, POLYMASS_ERROR_OPEN, topology->open,

@@ -15,6 +15,10 @@ namespace polymass::capi {
 // check (topology even when the options skip it) without stopping early.
 core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report);
 
+// The status of what the scan found (indices out of range, non-finite or
+// overflowing coordinates), with its message in the context.
+int32_t judge_scan(polymass_context* context, const MeshInput& input, const core::MeshScan& scan);
+
 // The status of the first problem, in the order the checks run, with its
 // message in the context; what the options accept instead is added to warnings.
 int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,

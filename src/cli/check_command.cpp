@@ -90,74 +90,6 @@ std::string location_text(const Model& model, const Finding& finding,
     return "face " + std::to_string(location[0]);
 }
 
-// What a shell is, by the sign of its volume and where it lies: a shell with
-// negative volume inside the bounding box of a positive one is taken for its
-// cavity (a box test: a shell beside a solid but inside its box passes too).
-struct Shell {
-    uint64_t faces = 0;
-    double signed_volume = 0;
-    const char* kind = "";
-};
-
-std::vector<Shell> classify_shells(const Library& library, const Model& model,
-                                   const std::vector<Part>& parts) {
-    struct Box {
-        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        bool inside(const Box& outer) const {
-            for (int k = 0; k < 3; ++k) {
-                if (lo[k] < outer.lo[k] || hi[k] > outer.hi[k]) return false;
-            }
-            return true;
-        }
-    };
-    std::vector<Shell> shells;
-    std::vector<Box> boxes;
-    for (const Part& part : parts) {
-        Box box;
-        for (const uint32_t index : part.indices) {
-            if (index >= model.vertex_count()) continue;
-            for (int k = 0; k < 3; ++k) {
-                box.lo[k] = std::min(box.lo[k], model.positions[3 * index + k]);
-                box.hi[k] = std::max(box.hi[k], model.positions[3 * index + k]);
-            }
-        }
-        boxes.push_back(box);
-        shells.push_back({part.face_sizes.size(),
-                          check_solid(library, model, part).diagnostics.signed_volume, ""});
-    }
-    for (size_t i = 0; i < shells.size(); ++i) {
-        Shell& shell = shells[i];
-        if (!(shell.signed_volume != 0)) {  // zero or NaN (a shell that cannot be integrated)
-            shell.kind = "no volume";
-        } else if (shell.signed_volume > 0) {
-            shell.kind = "solid";
-        } else {
-            shell.kind = "inverted";
-            for (size_t j = 0; j < shells.size(); ++j) {
-                if (shells[j].signed_volume > 0 && boxes[i].inside(boxes[j])) shell.kind = "cavity";
-            }
-        }
-    }
-    return shells;
-}
-
-// The library judges the surface as a whole: a disjoint shell turned inside
-// out only lowers the total volume. Say so, as the library would of a whole
-// inverted surface.
-void flag_inverted_shell(CheckResult& check, const std::vector<Shell>& shells) {
-    if (check.diagnostics.status != POLYMASS_OK) return;
-    for (size_t i = 0; i < shells.size(); ++i) {
-        if (std::string(shells[i].kind) == "inverted") {
-            check.diagnostics.status = POLYMASS_ERROR_INVERTED;
-            check.message = "shell " + std::to_string(i + 1) + " (" +
-                            std::to_string(shells[i].faces) +
-                            " faces) is inside out: its volume is negative and it lies outside "
-                            "every solid shell";
-            return;
-        }
-    }
-}
-
 std::string shells_summary(const std::vector<Shell>& shells) {
     std::string text = std::to_string(shells.size());
     std::string kinds;
@@ -283,8 +215,13 @@ ExitCode run_check(const Arguments& arguments) {
         prepare_model(model, arguments);
         const Part all = combined_part(model);
         CheckResult check = check_solid(library, model, all);
-        const std::vector<Shell> shells = classify_shells(library, model, split_shells(model, all));
-        flag_inverted_shell(check, shells);
+        const std::vector<Shell> shells =
+            classify_shells(library, model, all, check.diagnostics.signed_volume);
+        const std::string inverted = inverted_shell_message(shells);
+        if (check.diagnostics.status == POLYMASS_OK && !inverted.empty()) {
+            check.diagnostics.status = POLYMASS_ERROR_INVERTED;
+            check.message = inverted;
+        }
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json) {
             write_json_report(json, path, model, check, shells);

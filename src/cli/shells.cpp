@@ -1,77 +1,99 @@
 #include "shells.hpp"
 
-#include <numeric>
-#include <string>
-#include <vector>
-
-#include "vertex_welder.hpp"
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
 
 namespace polymass_cli {
 namespace {
 
-// Union-find over vertices with path halving.
-class DisjointSets {
-public:
-    explicit DisjointSets(size_t count) : parent_(count) {
-        std::iota(parent_.begin(), parent_.end(), 0u);
-    }
-    uint32_t root(uint32_t x) {
-        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-        return x;
-    }
-    void join(uint32_t a, uint32_t b) { parent_[root(a)] = root(b); }
+struct Box {
+    double lo[3] = {INFINITY, INFINITY, INFINITY};
+    double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
 
-private:
-    std::vector<uint32_t> parent_;
+    bool inside(const Box& outer) const {
+        for (int k = 0; k < 3; ++k) {
+            if (lo[k] < outer.lo[k] || hi[k] > outer.hi[k]) return false;
+        }
+        return true;
+    }
 };
+
+// A shell on its own: the vertices it uses and its faces renumbered, so that
+// checking each of many shells does not scan the whole file each time.
+Model shell_model(const Model& model, const Part& part, Box& box) {
+    Model shell;
+    shell.parts.push_back(Part{part.name, {}, part.face_sizes});
+    std::unordered_map<uint32_t, uint32_t> renumbered;
+    for (const uint32_t index : part.indices) {
+        const auto [at, added] =
+            renumbered.emplace(index, static_cast<uint32_t>(shell.vertex_count()));
+        if (added) {
+            const double* p = &model.positions[3 * size_t(index)];
+            shell.positions.insert(shell.positions.end(), p, p + 3);
+            for (int k = 0; k < 3; ++k) {
+                box.lo[k] = std::min(box.lo[k], p[k]);
+                box.hi[k] = std::max(box.hi[k], p[k]);
+            }
+        }
+        shell.parts.back().indices.push_back(at->second);
+    }
+    return shell;
+}
 
 }  // namespace
 
-std::vector<Part> split_shells(const Model& model, const Part& part) {
-    // One index per distinct position, so an unwelded soup counts as its solid.
-    std::vector<double> distinct;
-    VertexWelder welder(distinct);
-    std::vector<uint32_t> welded(model.vertex_count());
-    for (uint64_t v = 0; v < model.vertex_count(); ++v) {
-        welded[v] = welder.index_of(model.positions[3 * v], model.positions[3 * v + 1],
-                                    model.positions[3 * v + 2]);
-    }
-    DisjointSets sets(distinct.size() / 3);
-    std::vector<uint32_t> face_vertex;  // a welded vertex of each face, or kIndexOutOfRange
-    uint64_t corner = 0;
-    for (const uint32_t size : part.face_sizes) {
-        uint32_t first = kIndexOutOfRange;
-        for (uint32_t i = 0; i < size; ++i, ++corner) {
-            const uint32_t index = part.indices[corner];
-            if (index >= model.vertex_count()) continue;  // reported as a bad index
-            const uint32_t vertex = welded[index];
-            if (first == kIndexOutOfRange) {
-                first = vertex;
-            } else {
-                sets.join(vertex, first);
-            }
-        }
-        face_vertex.push_back(first);
-    }
-    std::vector<Part> shells;
-    std::vector<uint32_t> shell_of_root(distinct.size() / 3, kIndexOutOfRange);
-    corner = 0;
+std::vector<Shell> classify_shells(const Library& library, const Model& model, const Part& part,
+                                   double whole_signed_volume) {
+    uint64_t count = 0;
+    const std::vector<uint32_t> shell_of_face = shell_of_each_face(library, model, part, count);
+    if (shell_of_face.empty()) return {};
+    std::vector<Part> parts(count);
+    size_t corner = 0;
     for (size_t face = 0; face < part.face_sizes.size(); ++face) {
+        Part& shell = parts[shell_of_face[face]];
         const uint32_t size = part.face_sizes[face];
-        if (face_vertex[face] != kIndexOutOfRange) {
-            uint32_t& shell = shell_of_root[sets.root(face_vertex[face])];
-            if (shell == kIndexOutOfRange) {
-                shell = static_cast<uint32_t>(shells.size());
-                shells.push_back(Part{"shell " + std::to_string(shells.size() + 1), {}, {}});
-            }
-            Part& target = shells[shell];
-            target.indices.insert(target.indices.end(), part.indices.begin() + corner,
-                                  part.indices.begin() + corner + size);
-            target.face_sizes.push_back(size);
-        }
+        shell.indices.insert(shell.indices.end(), part.indices.begin() + corner,
+                             part.indices.begin() + corner + size);
+        shell.face_sizes.push_back(size);
         corner += size;
     }
+    // Outward is what the whole surface says it is (an inverted file taken as
+    // such turns every shell).
+    const double outward = whole_signed_volume < 0 ? -1.0 : 1.0;
+    std::vector<Shell> shells;
+    std::vector<Box> boxes(parts.size());
+    for (size_t i = 0; i < parts.size(); ++i) {
+        const Model alone = shell_model(model, parts[i], boxes[i]);
+        const double volume =
+            check_solid(library, alone, alone.parts.front()).diagnostics.signed_volume;
+        shells.push_back({parts[i].face_sizes.size(), outward * volume, ""});
+    }
+    for (size_t i = 0; i < shells.size(); ++i) {
+        Shell& shell = shells[i];
+        if (!(shell.signed_volume != 0)) {  // zero or NaN (not closed on its own)
+            shell.kind = "no volume";
+        } else if (shell.signed_volume > 0) {
+            shell.kind = "solid";
+        } else {
+            shell.kind = "inverted";
+            for (size_t j = 0; j < shells.size() && shell.kind[0] == 'i'; ++j) {
+                if (shells[j].signed_volume > 0 && boxes[i].inside(boxes[j])) shell.kind = "cavity";
+            }
+        }
+    }
     return shells;
+}
+
+std::string inverted_shell_message(const std::vector<Shell>& shells) {
+    for (size_t i = 0; i < shells.size(); ++i) {
+        if (std::string(shells[i].kind) == "inverted") {
+            return "shell " + std::to_string(i + 1) + " (" + std::to_string(shells[i].faces) +
+                   " faces) is inside out: its volume is negative and it lies outside every "
+                   "solid shell";
+        }
+    }
+    return "";
 }
 
 }  // namespace polymass_cli

@@ -60,4 +60,14 @@ CheckResult check_solid(const Library& library, const Model& model, const Part& 
     return result;
 }
 
+std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
+                                         const Part& part, uint64_t& shell_count) {
+    const polymass_mesh_desc desc = describe(model, part);
+    std::vector<uint32_t> shells(part.face_sizes.size());
+    shell_count = 0;
+    if (polymass_mesh_shells(shells.data(), &shell_count, library.context(), &desc) != POLYMASS_OK)
+        shells.clear();
+    return shells;
+}
+
 }  // namespace polymass_cli

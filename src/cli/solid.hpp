@@ -6,6 +6,7 @@
 #include <polymass/polymass.h>
 
 #include <string>
+#include <vector>
 
 #include "model.hpp"
 
@@ -41,5 +42,11 @@ struct CheckResult {
 };
 
 CheckResult check_solid(const Library& library, const Model& model, const Part& part);
+
+// The shell (connected piece of surface, after the library's welding) of each
+// face, numbered from 0; empty when the library cannot tell (indices out of
+// range, non-finite coordinates: the check says which).
+std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
+                                         const Part& part, uint64_t& shell_count);
 
 }  // namespace polymass_cli

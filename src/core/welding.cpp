@@ -5,6 +5,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "smallest_index_sets.hpp"
+
 namespace polymass::core {
 namespace {
 
@@ -40,28 +42,6 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, std::pmr::vector<std::uint3
         if (key(used[i]) == key(used[i - 1])) representative[used[i]] = representative[used[i - 1]];
     }
 }
-
-// Union-find whose root is always the smallest index of its set.
-class SmallestIndexSets {
-public:
-    explicit SmallestIndexSets(std::pmr::vector<std::uint32_t>& parent) : parent_(parent) {}
-
-    std::uint32_t find(std::uint32_t vertex) {
-        while (parent_[vertex] != vertex) {
-            parent_[vertex] = parent_[parent_[vertex]];  // path halving
-            vertex = parent_[vertex];
-        }
-        return vertex;
-    }
-    void join(std::uint32_t a, std::uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-    }
-
-private:
-    std::pmr::vector<std::uint32_t>& parent_;
-};
 
 // A grid of cells `distance` wide: vertices in one cell are within `distance`
 // of each other in every coordinate (up to rounding), so they are one; vertices

@@ -618,6 +618,26 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     check_status_and_message(status_check, context);
     check_report(&report, status_check, total_v, context);
 
+    /* --- polymass_mesh_shells: every face in a shell, numbered in order --- */
+    current_call = "polymass_mesh_shells";
+    if (report.face_count <= MAX_TOTAL_INDICES) {
+        static uint32_t shell_of_face[MAX_TOTAL_INDICES];
+        uint64_t shell_count = UINT64_MAX, next = 0, f;
+        const int32_t status = polymass_mesh_shells(shell_of_face, &shell_count, context, &desc);
+        check_status_and_message(status, context);
+        CHECK(is_mesh_status(status), status, context);
+        if (status == POLYMASS_OK) {
+            CHECK(shell_count <= report.face_count && (shell_count > 0) == (report.face_count > 0),
+                  status, context);
+            for (f = 0; f < report.face_count; ++f) {
+                /* a new shell's number is the next one */
+                CHECK(shell_of_face[f] <= next && shell_of_face[f] < shell_count, status, context);
+                if (shell_of_face[f] == next) ++next;
+            }
+            CHECK(next == shell_count, status, context);
+        }
+    }
+
     /* --- polymass_mesh_create + polymass_mesh_mass_properties ------------ */
     current_call = "polymass_mesh_create";
     mesh = (polymass_mesh*)&mesh; /* garbage: must become NULL on failure */

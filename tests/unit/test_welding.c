@@ -1,7 +1,8 @@
 /* Welding with a tolerance (polymass_options.weld_tolerance): CAD exports
  * repeat a vertex once per face with rounding noise in its coordinates; a
  * weld tolerance larger than the noise closes the surface, one smaller than
- * the gap between distinct features keeps them apart. */
+ * the gap between distinct features keeps them apart. And the shells
+ * (polymass_mesh_shells), which split as welding joins. */
 #include "test_support.h"
 
 #include <math.h>
@@ -176,12 +177,92 @@ static void test_invalid_tolerances(void** state) {
     polymass_context_destroy(ctx);
 }
 
+static uint64_t shells_of(polymass_context* ctx, const pm_mesh* m, uint32_t* of_face) {
+    const polymass_mesh_desc d = pm_mesh_desc(m);
+    uint64_t count = 0;
+    PM_ASSERT_OK(ctx, polymass_mesh_shells(of_face, &count, ctx, &d));
+    return count;
+}
+
+/* Two boxes apart and a cube around a cavity: two shells each, numbered in
+   the order of their first faces; a soup splits into its triangles unless
+   welded, exactly or (with noise) within a tolerance. */
+static void test_shells(void** state) {
+    static const double lo_a[3] = {0, 0, 0}, hi_a[3] = {1, 1, 1};
+    static const double lo_b[3] = {3, 0, 0}, hi_b[3] = {4, 2, 1};
+    uint32_t of_face[64];
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    size_t f;
+    (void)state;
+    pm_mesh_box(&m, lo_b, hi_b, 0);
+    pm_mesh_add_box(&m, lo_a, hi_a, 0);
+    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    for (f = 0; f < 12; ++f) {
+        assert_int_equal(of_face[f], f < 6 ? 0 : 1);
+    }
+    pm_mesh_free(&m);
+
+    pm_mesh_from_reference(&m, reference("cube_cavity"));
+    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    pm_mesh_free(&m);
+
+    pm_mesh_box(&m, lo_a, hi_a, 1);
+    pm_mesh_to_soup(&m);
+    assert_int_equal(shells_of(ctx, &m, of_face), 12);
+    set_weld(ctx, 0.0);
+    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    add_noise(&m, 1e-13, 5);
+    assert_int_equal(shells_of(ctx, &m, of_face), 12);
+    set_weld(ctx, 1e-9);
+    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    for (f = 0; f < 12; ++f) {
+        assert_int_equal(of_face[f], 0);
+    }
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+static void test_shells_errors(void** state) {
+    static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    uint32_t of_face[12];
+    uint64_t count = 0;
+    polymass_context* ctx = pm_context_new(0);
+    polymass_mesh_desc d;
+    pm_mesh m;
+    (void)state;
+    pm_mesh_box(&m, lo, hi, 1);
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shells(NULL, &count, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shells(of_face, NULL, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shells(of_face, &count, ctx, NULL));
+    m.indices[7] = 99;
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                     polymass_mesh_shells(of_face, &count, ctx, &d));
+    PM_ASSERT_MENTIONS(ctx, "face", 2);
+    m.indices[7] = 1;
+    m.positions[4] = NAN;
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE,
+                     polymass_mesh_shells(of_face, &count, ctx, &d));
+    pm_mesh_free(&m);
+    assert_int_equal(polymass_mesh_shells(of_face, &count, NULL, NULL),
+                     POLYMASS_ERROR_INVALID_ARGUMENT);
+    polymass_context_destroy(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_noisy_soup_closes),
         cmocka_unit_test(test_tolerance_is_a_distance),
         cmocka_unit_test(test_many_copies_of_one_vertex),
         cmocka_unit_test(test_invalid_tolerances),
+        cmocka_unit_test(test_shells),
+        cmocka_unit_test(test_shells_errors),
     };
     return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
 }

@@ -1,0 +1,30 @@
+// The shells of a mesh: its connected pieces of surface. Faces sharing a
+// vertex are in one shell - after welding, when the options weld, so a
+// triangle soup or a CAD export with noisy coordinates splits as its solid
+// does.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+#include "mesh_scan.hpp"
+#include "mesh_view.hpp"
+
+namespace polymass::core {
+
+struct Shells {
+    std::size_t count = 0;
+    std::pmr::vector<std::uint32_t> of_face;  // 0 .. count - 1, in the order of first faces
+
+    explicit Shells(std::pmr::memory_resource* memory) : of_face(memory) {}
+};
+
+// vertex_ids maps a vertex to its identity (welding; see weld_vertices), null
+// meaning the index itself. Indices must be in range; faces fewer than 2^32.
+template <class Scalar, class Index>
+Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
+                   std::pmr::memory_resource* memory);
+
+}  // namespace polymass::core
