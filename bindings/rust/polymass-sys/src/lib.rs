@@ -31,8 +31,8 @@
 
 include!(concat!(env!("OUT_DIR"), "/bindings.rs"));
 
-/// No location: the value of a `polymass_diagnostics` `first_*` field when
-/// the count beside it is 0. The header defines it as `UINT64_MAX`, which
+/// No location: the value of the `polymass_diagnostics` `first_*` entries past
+/// the count beside them (all of them when it is 0). The header defines it as `UINT64_MAX`, which
 /// bindgen cannot translate (it drops integer macros above `i64::MAX`), so it
 /// is written here; the build script fails if the header's definition changes.
 pub const POLYMASS_NONE: u64 = u64::MAX;

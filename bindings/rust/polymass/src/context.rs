@@ -264,6 +264,16 @@ impl Context {
                 ),
             ));
         }
+        // Failures of the call itself (a bad argument, out of memory) leave no
+        // report worth reading, whatever was written: they are the Err.
+        if matches!(
+            status,
+            sys::POLYMASS_ERROR_INVALID_ARGUMENT
+                | sys::POLYMASS_ERROR_OUT_OF_MEMORY
+                | sys::POLYMASS_ERROR_INTERNAL
+        ) {
+            self.result(status)?;
+        }
         Ok(Diagnostics::from_raw(report, self.result(status).err()))
     }
 

@@ -104,6 +104,20 @@ fn an_inverted_solid_has_a_negative_signed_volume() {
 }
 
 #[test]
+fn a_call_that_cannot_be_made_is_an_err_not_a_report() {
+    let shape = cuboid([0.0; 3], [1.0; 3]);
+    let short_sizes = &shape.face_sizes[..5]; // 20 of the 24 indices
+    let error = polymass::check(&Surface::polygons(
+        &shape.positions,
+        &shape.indices,
+        short_sizes,
+    ))
+    .unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::InvalidArgument, "{error}");
+    assert!(error.to_string().contains("add up to"), "{error}");
+}
+
+#[test]
 fn checks_run_even_when_the_options_skip_them() {
     let shape = one_face_flipped();
     let mut context = Context::with_options(&Options::new().skip_topology_checks(true)).unwrap();
