@@ -48,6 +48,11 @@ std::vector<Shell> classify_shells(const Library& library, const Model& model, c
     uint64_t count = 0;
     const std::vector<uint32_t> shell_of_face = shell_of_each_face(library, model, part, count);
     if (shell_of_face.empty()) return {};
+    const double outward = whole_signed_volume < 0 ? -1.0 : 1.0;
+    if (count == 1) {  // the whole surface: nothing to compare it with
+        const double volume = outward * whole_signed_volume;
+        return {{part.face_sizes.size(), volume, volume > 0 ? "solid" : "no volume"}};
+    }
     std::vector<Part> parts(count);
     size_t corner = 0;
     for (size_t face = 0; face < part.face_sizes.size(); ++face) {
@@ -60,7 +65,6 @@ std::vector<Shell> classify_shells(const Library& library, const Model& model, c
     }
     // Outward is what the whole surface says it is (an inverted file taken as
     // such turns every shell).
-    const double outward = whole_signed_volume < 0 ? -1.0 : 1.0;
     std::vector<Shell> shells;
     std::vector<Box> boxes(parts.size());
     for (size_t i = 0; i < parts.size(); ++i) {
