@@ -33,6 +33,8 @@ private:
     bool after_key_ = false;
 };
 
+// text as a JSON string literal, quotes included. Bytes that are not valid
+// UTF-8 become U+FFFD, so the output is valid JSON whatever the input.
 std::string json_escape(const std::string& text);
 
 }  // namespace polymass_cli

@@ -1,5 +1,5 @@
 // Reading a mesh file into a Model. OBJ, STL, PLY and OFF are read by the
-// project's own readers (text_formats, stl_reader, ply_reader): they keep
+// project's own readers (obj_reader, stl_reader, ply_reader, off_reader): they keep
 // polygon faces and every index as written, so a bad index or a NaN reaches the
 // library's checks instead of being dropped or clamped, and a truncated file is
 // an error, not a read past its end. glTF/GLB and 3MF go through assimp, in a
@@ -24,7 +24,9 @@ public:
 const char* supported_formats();
 
 // Reads path. format is a name from supported_formats(), or empty to choose
-// by the file's extension. Throws ReadError.
+// by the file's extension. The parts it returns have faces (those without are
+// dropped), each part's face sizes add up to its indices, and there is at
+// least one part. Throws ReadError.
 Model read_mesh_file(const std::string& path, const std::string& format);
 
 }  // namespace polymass_cli

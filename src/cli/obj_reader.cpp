@@ -67,7 +67,6 @@ Model read_obj(const std::string& bytes) {
             model.parts.back().name = std::string(name);
         }
     }
-    if (model.parts.back().face_sizes.empty()) model.parts.pop_back();
     return model;
 }
 

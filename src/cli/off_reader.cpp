@@ -86,7 +86,6 @@ Model read_off(const std::string& bytes) {
         }
         part.face_sizes.push_back(static_cast<uint32_t>(size));
     }
-    if (part.face_sizes.empty()) model.parts.clear();
     return model;
 }
 

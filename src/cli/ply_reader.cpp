@@ -232,18 +232,34 @@ Model read_ply(const std::string& bytes) {
     for (const Element& element : header.elements) {
         const bool is_vertex = element.name == "vertex";
         const bool is_face = element.name == "face";
+        // The coordinate (0, 1, 2 for x, y, z) each vertex property holds, or -1.
+        std::vector<int> axis_of(element.properties.size(), -1);
+        if (is_vertex && element.count > 0) {
+            bool has_xyz[3] = {false, false, false};
+            for (size_t p = 0; p < element.properties.size(); ++p) {
+                const Property& property = element.properties[p];
+                for (int axis = 0; axis < 3; ++axis) {
+                    if (!property.is_list && property.name == std::string(1, "xyz"[axis])) {
+                        axis_of[p] = axis;
+                        has_xyz[axis] = true;
+                    }
+                }
+            }
+            if (!(has_xyz[0] && has_xyz[1] && has_xyz[2])) {
+                throw ReadError("the PLY vertices have no x, y and z properties");
+            }
+        }
+        // An element without properties takes no token or byte, whatever its
+        // count: skipped at once, not counted through (a header can declare
+        // such elements by the million).
+        if (element.properties.empty()) continue;
         for (uint64_t item = 0; item < element.count; ++item) {
             double xyz[3] = {0.0, 0.0, 0.0};
-            bool has_xyz[3] = {false, false, false};
-            for (const Property& property : element.properties) {
+            for (size_t p = 0; p < element.properties.size(); ++p) {
+                const Property& property = element.properties[p];
                 if (!property.is_list) {
                     const double value = body.read(property.type, element, item);
-                    for (int axis = 0; axis < 3; ++axis) {
-                        if (is_vertex && property.name == std::string(1, "xyz"[axis])) {
-                            xyz[axis] = value;
-                            has_xyz[axis] = true;
-                        }
-                    }
+                    if (axis_of[p] >= 0) xyz[axis_of[p]] = value;
                     continue;
                 }
                 const double length = body.read(property.count_type, element, item);
@@ -260,15 +276,9 @@ Model read_ply(const std::string& bytes) {
                 }
                 if (is_corners) part.face_sizes.push_back(static_cast<uint32_t>(length));
             }
-            if (is_vertex) {
-                if (!(has_xyz[0] && has_xyz[1] && has_xyz[2])) {
-                    throw ReadError("the PLY vertices have no x, y and z properties");
-                }
-                model.positions.insert(model.positions.end(), xyz, xyz + 3);
-            }
+            if (is_vertex) model.positions.insert(model.positions.end(), xyz, xyz + 3);
         }
     }
-    if (part.face_sizes.empty()) model.parts.clear();
     return model;
 }
 

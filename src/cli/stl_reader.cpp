@@ -52,7 +52,6 @@ Model read_binary(const std::string& bytes, uint64_t triangle_count) {
                                                    little_endian_f32(corner + 8)));
         }
     }
-    if (triangle_count == 0) model.parts.clear();
     return model;
 }
 
@@ -61,19 +60,36 @@ Model read_ascii(const std::string& bytes) {
     VertexWelder welder(model.positions);
     TextLines lines(bytes);
     Part* part = nullptr;
+    // Where in a facet the reader is. Only `vertex` and `endloop` may appear
+    // in a loop and one `outer loop` in a facet, so every corner read belongs
+    // to the face its `endloop` records.
+    bool in_facet = false;
     bool in_loop = false;
+    bool facet_has_loop = false;
     uint32_t corners = 0;
+    auto shown = [](std::string_view keyword) { return std::string(keyword.substr(0, 40)); };
     while (lines.next_line(false)) {
         std::string_view keyword;
         if (!lines.next_token(keyword)) continue;
+        if (in_loop && keyword != "vertex" && keyword != "endloop") {
+            lines.fail("'" + shown(keyword) + "' inside a facet's loop (expected 'vertex' or " +
+                       "'endloop')");
+        }
         if (keyword == "solid") {
+            if (in_facet) lines.fail("'solid' inside a facet");
             part = &model.parts.emplace_back();
             std::string_view name;
             if (lines.next_token(name)) part->name = std::string(name);
         } else if (part == nullptr) {
-            lines.fail("expected 'solid' before '" + std::string(keyword.substr(0, 40)) + "'");
+            lines.fail("expected 'solid' before '" + shown(keyword) + "'");
+        } else if (keyword == "facet") {
+            if (in_facet) lines.fail("'facet' inside a facet (no 'endfacet' before it)");
+            in_facet = true;
+            facet_has_loop = false;
         } else if (keyword == "outer") {
+            if (facet_has_loop) lines.fail("a second 'outer loop' in a facet");
             in_loop = true;
+            facet_has_loop = in_facet;
             corners = 0;
         } else if (keyword == "vertex") {
             if (!in_loop) lines.fail("'vertex' outside an 'outer loop'");
@@ -86,19 +102,16 @@ Model read_ascii(const std::string& bytes) {
             if (!in_loop) lines.fail("'endloop' without 'outer loop'");
             part->face_sizes.push_back(corners);  // fewer than 3: the library names it
             in_loop = false;
+        } else if (keyword == "endfacet") {
+            in_facet = false;
         } else if (keyword == "endsolid") {
-            if (in_loop) lines.fail("'endsolid' inside a facet's loop");
+            if (in_facet) lines.fail("'endsolid' inside a facet");
             part = nullptr;
-        } else if (keyword != "facet" && keyword != "endfacet") {
-            lines.fail("unexpected '" + std::string(keyword.substr(0, 40)) + "' in an ASCII STL");
+        } else {
+            lines.fail("unexpected '" + shown(keyword) + "' in an ASCII STL");
         }
     }
-    if (in_loop) lines.fail("the file ends inside a facet");
-    std::vector<Part> with_faces;
-    for (Part& solid : model.parts) {
-        if (!solid.face_sizes.empty()) with_faces.push_back(std::move(solid));
-    }
-    model.parts = std::move(with_faces);
+    if (in_loop || in_facet) lines.fail("the file ends inside a facet");
     return model;
 }
 

@@ -1,7 +1,8 @@
 #include "text_lines.hpp"
 
 #include <charconv>
-#include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "mesh_reader.hpp"
 
@@ -26,11 +27,16 @@ bool parse_double(std::string_view token, double& value) {
     if (!token.empty() && token.front() == '+') token.remove_prefix(1);
     const char* end = token.data() + token.size();
     const std::from_chars_result result = std::from_chars(token.data(), end, value);
-    // A value too large for a double is out of range: +-inf, as strtod gives,
-    // so the library reports a non-finite coordinate.
     if (result.ec == std::errc::result_out_of_range && result.ptr == end) {
-        value = token.front() == '-' ? -HUGE_VAL : HUGE_VAL;
-        return true;
+        // from_chars says out of range for a magnitude too small for a double
+        // as well as too large. strtod decides both as the C standard does:
+        // the correctly rounded subnormal or zero, or +-HUGE_VAL (infinity),
+        // which the library reports as a non-finite coordinate. The tool
+        // never sets a locale, so strtod reads the same syntax as from_chars.
+        const std::string terminated(token);
+        char* parsed_end = nullptr;
+        value = std::strtod(terminated.c_str(), &parsed_end);
+        return parsed_end == terminated.c_str() + terminated.size();
     }
     return result.ec == std::errc() && result.ptr == end && !token.empty();
 }

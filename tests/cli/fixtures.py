@@ -104,23 +104,52 @@ def write_off(path, vertices, faces):
     path.write_text("\n".join(lines) + "\n")
 
 
-def gltf_document(vertices, faces, uri):
+# The glTF scene: a parent node whose matrix (column-major, as glTF stores
+# it) turns a quarter about z and scales by 2, (x, y, z) -> (-2y, 2x, 2z), and
+# under it a child node translated by CHILD_SHIFT that holds the mesh. Both are
+# exact in binary, as is the inverse the mesh's vertices are stored through.
+PARENT_MATRIX = [0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1]
+CHILD_SHIFT = (1.0, 0.5, -0.25)
+
+
+def parent_transform(point):
+    x, y, z = point
+    return (-2 * y, 2 * x, 2 * z)
+
+
+def parent_inverse(point):
+    x, y, z = point
+    return (y / 2, -x / 2, z / 2)
+
+
+def gltf_document(vertices, faces, uri, copy_shifts=()):
     """A glTF 2 document whose buffer holds float32 positions then uint32
-    indices; the node carries a translation, which the reader must apply."""
+    indices. Its scene puts the solid where vertices say through the parent's
+    and the child's transforms, which the reader must compose. Each of
+    copy_shifts adds a sibling of the child translated by it that uses the same
+    mesh: a copy of the solid moved by parent_transform(shift - CHILD_SHIFT)."""
     tris = triangles(faces)
-    # The vertices are stored relative to the node's translation.
-    shift = (1.0, 0.5, -0.25)
-    local = [tuple(c - s for c, s in zip(v, shift)) for v in vertices]
+    local = [tuple(c - s for c, s in zip(parent_inverse(v), CHILD_SHIFT)) for v in vertices]
     positions = b"".join(struct.pack("<3f", *v) for v in local)
     indices = b"".join(struct.pack("<3I", *f) for f in tris)
     buffer = positions + indices
     lo = [min(v[k] for v in local) for k in range(3)]
     hi = [max(v[k] for v in local) for k in range(3)]
+    children = [{"mesh": 0, "name": "bracket", "translation": list(CHILD_SHIFT)}]
+    children += [
+        {"mesh": 0, "name": f"copy {k + 1}", "translation": list(shift)}
+        for k, shift in enumerate(copy_shifts)
+    ]
+    parent = {
+        "name": "frame",
+        "matrix": PARENT_MATRIX,
+        "children": list(range(1, 1 + len(children))),
+    }
     document = {
         "asset": {"version": "2.0"},
         "scene": 0,
         "scenes": [{"nodes": [0]}],
-        "nodes": [{"mesh": 0, "name": "bracket", "translation": list(shift)}],
+        "nodes": [parent] + children,
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
         "buffers": [{"byteLength": len(buffer)}],
         "bufferViews": [
@@ -151,8 +180,8 @@ def gltf_document(vertices, faces, uri):
     return document, buffer
 
 
-def write_gltf(path, vertices, faces):
-    document, _ = gltf_document(vertices, faces, uri=True)
+def write_gltf(path, vertices, faces, copy_shifts=()):
+    document, _ = gltf_document(vertices, faces, uri=True, copy_shifts=copy_shifts)
     path.write_text(json.dumps(document))
 
 

@@ -311,6 +311,65 @@ class EveryFormat(Case):
             out["center_of_mass"][0], self.expected["center_of_mass"][0] + 5, 10, "combined com"
         )
 
+    def test_gltf_mesh_used_by_two_nodes_gives_two_parts(self):
+        # The fixture's child node and a sibling under the same turned and
+        # scaled parent use one mesh: the bracket, and a copy where the
+        # sibling's other translation, turned and scaled, moves it.
+        shift = (3.0, 0.0, 1.0)
+        path = WORK / "two_nodes.gltf"
+        fixtures.write_gltf(path, self.vertices, self.faces, copy_shifts=[shift])
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual([p["name"] for p in out["parts"]], ["bracket", "copy 1"])
+        move = fixtures.parent_transform([a - b for a, b in zip(shift, fixtures.CHILD_SHIFT)])
+        moved = [tuple(c + m for c, m in zip(v, move)) for v in self.vertices]
+        tris = fixtures.triangles(self.faces)
+        self.assert_properties(out["parts"][0], self.expected, what="first node")
+        self.assert_properties(
+            out["parts"][1], generate.exact_properties(moved, tris), what="second node"
+        )
+        n = len(self.vertices)
+        both = generate.exact_properties(
+            self.vertices + moved, tris + [[i + n for i in f] for f in tris]
+        )
+        self.assert_properties(out, both, what="both nodes")
+
+    def test_ascii_stl_solids_are_parts(self):
+        # Two `solid` blocks, the second the bracket moved along y: two named parts.
+        moved = [(x, y + 4, z) for x, y, z in self.vertices]
+        first, second = WORK / "solid_a.stl", WORK / "solid_b.stl"
+        fixtures.write_ascii_stl(first, self.vertices, self.faces)
+        fixtures.write_ascii_stl(second, moved, self.faces)
+        text = first.read_text() + second.read_text().replace("bracket", "moved")
+        path = WORK / "two_solids.stl"
+        path.write_text(text)
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual([p["name"] for p in out["parts"]], ["bracket", "moved"])
+        tris = fixtures.triangles(self.faces)
+        self.assert_properties(out["parts"][0], self.expected, what="solid 1")
+        self.assert_properties(
+            out["parts"][1], generate.exact_properties(moved, tris), what="solid 2"
+        )
+
+    def test_ply_elements_without_properties_are_skipped_at_once(self):
+        # 30000 declared elements of 500000 items with no properties take no
+        # byte of the body: read in no time, counting through them took minutes.
+        for encoding, writer in (
+            ("ascii", fixtures.write_ascii_ply),
+            ("binary_big_endian", fixtures.write_binary_ply),
+        ):
+            with self.subTest(encoding=encoding):
+                path = WORK / f"empty_elements_{encoding}.ply"
+                writer(path, self.vertices, self.faces)
+                header, body = path.read_bytes().split(b"end_header\n", 1)
+                empty = b"element nothing 500000\n" * 30000
+                header = header.replace(b"element vertex", empty + b"element vertex")
+                path.write_bytes(header + b"end_header\n" + body)
+                result, out = run_json(path)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                self.assert_properties(out, self.expected, what=path.name)
+
 
 class BadInput(Case):
     """Malformed files and invalid solids: a clear error and exit status."""
@@ -412,9 +471,73 @@ class BadInput(Case):
         digit = data.index(b'<vertex x="') + len(b'<vertex x="')
         data[digit] = ord("7") if data[digit] != ord("7") else ord("6")
         path.write_bytes(bytes(data))
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "crashed")
+
+    def test_stl_keywords_out_of_place_in_a_facet(self):
+        # Corners read before a second `outer loop` or a new `solid` belonged
+        # to no face: the part's faces no longer added up to its corners.
+        loop = ["facet normal 0 0 1", "outer loop", "vertex 0 0 0", "vertex 1 0 0"]
+        rest = ["vertex 0 1 0", "endloop", "endfacet", "endsolid a"]
+        for intruder, line, message in (
+            (["outer loop"], 6, "'outer' inside a facet's loop"),
+            (["solid b"], 6, "'solid' inside a facet's loop"),
+            (["endsolid a"], 6, "'endsolid' inside a facet's loop"),
+            (["vertex 0 0 1", "endloop", "outer loop"], 8, "a second 'outer loop' in a facet"),
+            (["vertex 0 0 1", "endloop", "solid b"], 8, "'solid' inside a facet"),
+            (["vertex 0 0 1", "endloop", "endsolid a"], 8, "'endsolid' inside a facet"),
+        ):
+            with self.subTest(intruder=intruder):
+                text = "\n".join(["solid a"] + loop + intruder + rest) + "\n"
+                self.expect_error(
+                    self.write("intruder.stl", text),
+                    "unreadable",
+                    EXIT_UNREADABLE,
+                    f"line {line}: {message}",
+                )
+
+    def test_underflow_is_zero_and_overflow_is_not_finite(self):
+        # A magnitude below the smallest double rounds to zero (or a subnormal);
+        # one above the largest is infinite, which the library refuses.
+        vertices, faces = fixtures.cube()
+        lines = ["v " + " ".join("1" if c else "-1e-400" for c in v) for v in vertices]
+        lines += ["f " + " ".join(str(i + 1) for i in f) for f in faces]
+        path = self.write("underflow.obj", "\n".join(lines).replace("-1e-400 ", "1e-400 ", 3))
         result, out = run_json(path)
-        self.assertIn(result.returncode, (EXIT_UNREADABLE, EXIT_INVALID_MESH), result.stderr)
-        self.assertIn("error", out)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assert_properties(out, generate.exact_properties(vertices, faces), what="underflow")
+        result, out = run_json("--about", "3e-324,1e-400,-1e-400", path)
+        self.assertEqual(out["about_point"], [5e-324, 0.0, 0.0])
+        self.expect_error(
+            self.write("overflow.obj", "\n".join(lines).replace("-1e-400", "1e400", 1)),
+            "non_finite",
+            EXIT_INVALID_MESH,
+        )
+
+    def test_json_output_is_utf8_whatever_the_names(self):
+        # Part names are the file's bytes: Latin-1, or broken UTF-8 (overlong,
+        # surrogate, cut short). Valid UTF-8 is kept; each bad byte is U+FFFD.
+        names = {
+            b"W\xfcrfel": "W\ufffdrfel",
+            "Würfel_\U0001d11e".encode(): "Würfel_\U0001d11e",
+            b"\xc0\xaf_\xed\xa0\x80_\xe2\x82": "\ufffd\ufffd_\ufffd\ufffd\ufffd_\ufffd\ufffd",
+        }
+        vertices, faces = fixtures.cube()
+        text = b""
+        for k, name in enumerate(names):  # cube k at x = 2k, apart from the others
+            text += (
+                b"o "
+                + name
+                + b"\n"
+                + b"".join(b"v %d %d %d\n" % (x + 2 * k, y, z) for x, y, z in vertices)
+            )
+            text += b"".join(
+                b"f " + b" ".join(b"%d" % (i - len(vertices)) for i in f) + b"\n" for f in faces
+            )
+        path = self.write("names.obj", text)
+        result = subprocess.run([EXE, "--json", str(path)], capture_output=True, check=False)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        out = json.loads(result.stdout.decode("utf-8"))
+        self.assertEqual([p["name"] for p in out["parts"]], list(names.values()))
 
     def test_nan_coordinates(self):
         vertices = list(self.vertices)
