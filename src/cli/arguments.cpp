@@ -100,12 +100,13 @@ Arguments parse_arguments(int argc, const char* const* argv) {
         } else if (option == "--scale") {
             arguments.scale = positive_number(option, value());
         } else if (option == "--units") {
-            arguments.units = std::string(value());
+            const std::string unit(value());
             double metres = 0.0;
-            if (!metres_per_unit(arguments.units, metres)) {
+            if (!metres_per_unit(unit, metres)) {
                 throw UsageError("--units wants one of " + std::string(known_units()) + ", not '" +
-                                 arguments.units + "'");
+                                 unit + "'");
             }
+            arguments.metres_per_unit = metres;
         } else if (option == "--about") {
             const std::string_view about = value();
             if (about == "com") {

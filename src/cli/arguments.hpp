@@ -20,8 +20,9 @@ struct Arguments {
     std::string format;  // --format: empty means by extension
     std::optional<double> density;
     std::optional<double> mass;
-    double scale = 1.0;  // --scale times the --units factor
-    std::string units;   // --units as given; empty: lengths are the file's
+    double scale = 1.0;  // --scale alone
+    // --units resolved: metres per file unit; empty: lengths are the file's.
+    std::optional<double> metres_per_unit;
     About about = About::kCenterOfMass;
     std::array<double, 3> point{0.0, 0.0, 0.0};  // --about X,Y,Z
     bool accept_inverted = false;

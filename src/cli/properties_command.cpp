@@ -6,7 +6,6 @@
 #include "commands.hpp"
 #include "mesh_reader.hpp"
 #include "report.hpp"
-#include "units.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -83,9 +82,7 @@ FileReport process_file(const Library& library, const std::string& path, const A
 }  // namespace
 
 void prepare_model(Model& model, const Arguments& arguments) {
-    double metres = 1.0;
-    if (!arguments.units.empty()) metres_per_unit(arguments.units, metres);
-    scale_model(model, metres * arguments.scale);
+    scale_model(model, arguments.metres_per_unit.value_or(1.0) * arguments.scale);
     if (arguments.triangulate) triangulate_model(model);
 }
 
@@ -136,7 +133,7 @@ ExitCode run_properties(const Arguments& arguments) {
     OutputSettings settings;
     settings.about = arguments.about;
     settings.point = arguments.point;
-    if (!arguments.units.empty()) settings.length_unit = "m";
+    if (arguments.metres_per_unit) settings.length_unit = "m";
     switch (arguments.output) {
         case OutputFormat::kTable:
             write_table(std::cout, files, settings);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -47,6 +48,19 @@ void write_json(std::ostream& out, const std::vector<FileReport>& files,
 // URDF, SDFormat or MJCF <inertial> elements, one per readable, valid file.
 void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
                         OutputFormat format);
+
+// The files together, for the summary the table and --json give of several.
+struct Summary {
+    uint64_t files = 0;
+    uint64_t valid = 0;         // readable, and a valid solid
+    double total_volume = 0.0;  // of the valid ones
+    double total_mass = 0.0;    // of the valid ones
+};
+Summary summarize(const std::vector<FileReport>& files);
+
+// Principal axis i (0, 1, 2): column i of the library's principal_axes
+// rotation, the axis of principal_moments[i].
+std::array<double, 3> principal_axis(const polymass_mass_properties& properties, int i);
 
 // The names of the POLYMASS_WARNING_* bits set in warnings.
 std::vector<std::string> warning_names(uint32_t warnings);

@@ -10,6 +10,23 @@ ExitCode FileReport::exit_code() const {
     return exit_code_of(solid.result.status);
 }
 
+Summary summarize(const std::vector<FileReport>& files) {
+    Summary summary;
+    summary.files = files.size();
+    for (const FileReport& file : files) {
+        if (file.exit_code() != kExitOk) continue;
+        ++summary.valid;
+        summary.total_volume += file.solid.result.properties.volume;
+        summary.total_mass += file.solid.result.properties.mass;
+    }
+    return summary;
+}
+
+std::array<double, 3> principal_axis(const polymass_mass_properties& properties, int i) {
+    const double* rotation = properties.principal_axes;  // row-major 3x3
+    return {rotation[i], rotation[3 + i], rotation[6 + i]};
+}
+
 std::vector<std::string> warning_names(uint32_t warnings) {
     static const struct {
         uint32_t bit;

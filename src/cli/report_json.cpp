@@ -38,11 +38,7 @@ void write_solid_members(JsonWriter& json, const PartReport& part, const OutputS
     json.key("principal_moments").numbers(p.principal_moments, 3);
     // Axis i (the columns of the library's rotation) goes with moment i.
     json.key("principal_axes").begin_array();
-    for (int axis = 0; axis < 3; ++axis) {
-        const double column[3] = {p.principal_axes[axis], p.principal_axes[3 + axis],
-                                  p.principal_axes[6 + axis]};
-        json.numbers(column, 3);
-    }
+    for (int axis = 0; axis < 3; ++axis) json.numbers(principal_axis(p, axis).data(), 3);
     json.end_array();
     json.key("surface_area").value(p.surface_area);
     json.key("warnings").begin_array();
@@ -92,21 +88,13 @@ void write_json(std::ostream& out, const std::vector<FileReport>& files,
     json.key("files").begin_array();
     for (const FileReport& file : files) write_file(json, file, settings);
     json.end_array();
-    uint64_t valid = 0;
-    double total_volume = 0.0;
-    double total_mass = 0.0;
-    for (const FileReport& file : files) {
-        if (file.exit_code() != kExitOk) continue;
-        ++valid;
-        total_volume += file.solid.result.properties.volume;
-        total_mass += file.solid.result.properties.mass;
-    }
+    const Summary summary = summarize(files);
     json.key("summary").begin_object();
-    json.key("files").value(static_cast<uint64_t>(files.size()));
-    json.key("valid").value(valid);
-    json.key("failed").value(static_cast<uint64_t>(files.size()) - valid);
-    json.key("total_volume").value(total_volume);
-    json.key("total_mass").value(total_mass);
+    json.key("files").value(summary.files);
+    json.key("valid").value(summary.valid);
+    json.key("failed").value(summary.files - summary.valid);
+    json.key("total_volume").value(summary.total_volume);
+    json.key("total_mass").value(summary.total_mass);
     json.end_object();
     json.end_object();
 }

@@ -72,9 +72,8 @@ void write_solid(std::ostream& out, const PartReport& part, const OutputSettings
     }
     write_row(out, "principal moments", vector_text(p.principal_moments), units.inertia);
     for (int axis = 0; axis < 3; ++axis) {
-        const double column[3] = {p.principal_axes[axis], p.principal_axes[3 + axis],
-                                  p.principal_axes[6 + axis]};
-        write_row(out, axis == 0 ? "principal axes" : "", vector_text(column));
+        write_row(out, axis == 0 ? "principal axes" : "",
+                  vector_text(principal_axis(p, axis).data()));
     }
     std::string warnings;
     for (const std::string& name : warning_names(p.warnings)) {
@@ -108,16 +107,10 @@ void write_table(std::ostream& out, const std::vector<FileReport>& files,
         }
     }
     if (files.size() > 1) {
-        uint64_t valid = 0;
-        double total_mass = 0.0;
-        for (const FileReport& file : files) {
-            if (file.exit_code() != kExitOk) continue;
-            ++valid;
-            total_mass += file.solid.result.properties.mass;
-        }
-        out << "\nsummary: " << files.size() << " files, " << valid << " valid, "
-            << files.size() - valid << " failed; total mass of the valid ones "
-            << readable_number(total_mass) << '\n';
+        const Summary summary = summarize(files);
+        out << "\nsummary: " << summary.files << " files, " << summary.valid << " valid, "
+            << summary.files - summary.valid << " failed; total mass of the valid ones "
+            << readable_number(summary.total_mass) << '\n';
     }
 }
 
