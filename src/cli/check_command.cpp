@@ -143,7 +143,7 @@ void write_json_report(JsonWriter& json, const std::string& path, const Model& m
     json.begin_object();
     json.key("file").value(path);
     json.key("format").value(model.format);
-    json.key("valid").value(std::string(d.status == POLYMASS_OK ? "yes" : "no"));
+    json.key("valid").boolean(d.status == POLYMASS_OK);
     json.key("category").value(std::string(category_of(d.status)));
     json.key("message").value(check.message);
     json.key("faces").value(d.face_count);

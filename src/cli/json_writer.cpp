@@ -144,6 +144,11 @@ void JsonWriter::value(uint64_t number) {
     out_ << number;
 }
 
+void JsonWriter::boolean(bool truth) {
+    before_value();
+    out_ << (truth ? "true" : "false");
+}
+
 void JsonWriter::value(const std::string& text) {
     before_value();
     out_ << json_escape(text);

@@ -22,6 +22,8 @@ public:
     void value(double number);
     void value(uint64_t number);
     void value(const std::string& text);
+    // true or false (not an overload of value: a string literal would pick it).
+    void boolean(bool truth);
     void numbers(const double* values, size_t count);  // [a, b, c] on one line
     void matrix(const double values[9]);               // [[...], [...], [...]]
 

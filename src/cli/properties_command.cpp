@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "mesh_reader.hpp"
 #include "report.hpp"
+#include "shells.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -34,6 +35,20 @@ PartReport solid_report(const Library& library, const Model& model, const Part& 
     report.faces = part.face_sizes.size();
     report.computed = true;
     report.result = compute_solid(library, model, part, mass);
+    // A disjoint shell inside out passes the library's checks (the surface as
+    // a whole is closed and oriented) and only lowers the total: refuse it as
+    // polymass check does, rather than print a body that is not the part.
+    SolidResult& result = report.result;
+    if (result.status == POLYMASS_OK) {
+        const bool turned = result.properties.warnings & POLYMASS_WARNING_INVERTED;
+        const double signed_volume = turned ? -result.properties.volume : result.properties.volume;
+        const std::string inverted =
+            inverted_shell_message(classify_shells(library, model, part, signed_volume));
+        if (!inverted.empty()) {
+            result.status = POLYMASS_ERROR_INVERTED;
+            result.message = inverted;
+        }
+    }
     return report;
 }
 

@@ -609,7 +609,7 @@ class Check(Case):
         result = run("check", "--json", SOURCE / "examples" / "data" / "hollow_box.obj")
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
         report = json.loads(result.stdout)
-        self.assertEqual(report["valid"], "yes")
+        self.assertIs(report["valid"], True)
         self.assertEqual(report["shells"], 2)
         # A 40 mm cube around a 30 x 30 x 20 mm cavity.
         shells = sorted((s["kind"], s["signed_volume"]) for s in report["shell_list"])
@@ -630,8 +630,30 @@ class Check(Case):
         report = json.loads(result.stdout)
         self.assertEqual(report["category"], "inverted")
         self.assertIn("shell 2", report["message"])
+        self.assertIs(report["valid"], False)
         kinds = [s["kind"] for s in report["shell_list"]]
         self.assertEqual(kinds, ["solid", "inverted"])
+        # Computing the part refuses it the same way (not a 7/8 body with a
+        # negative moment), and so does the inertial for a model file.
+        result, out = run_json(WORK / "inverted_shell.obj")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stdout)
+        self.assertEqual(out["error"]["category"], "inverted")
+        self.assertEqual(run("--urdf", WORK / "inverted_shell.obj").returncode, EXIT_INVALID_MESH)
+
+    def test_a_whole_inverted_file_accepted_has_no_inverted_shell(self):
+        cube_vertices, cube_faces = fixtures.cube()
+        vertices = cube_vertices + [(x + 3, y, z) for x, y, z in cube_vertices]
+        n = len(cube_vertices)
+        faces = [list(reversed(f)) for f in cube_faces]
+        faces += [[n + i for i in reversed(f)] for f in cube_faces]
+        fixtures.write_obj(WORK / "all_inverted.obj", vertices, faces)
+        result, out = run_json("--accept-inverted", WORK / "all_inverted.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stdout)
+        self.assertEqual(out["warnings"], ["inverted"])
+        result = run("check", "--json", "--accept-inverted", WORK / "all_inverted.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stdout)
+        kinds = [s["kind"] for s in json.loads(result.stdout)["shell_list"]]
+        self.assertEqual(kinds, ["solid", "solid"])
 
     def test_open_mesh_is_located(self):
         vertices, faces = fixtures.bracket()
