@@ -117,3 +117,16 @@ def test_skip_checks_trusts_the_input_and_says_so(tetrahedron):
     result = polymass.mass_properties(vertices, faces, skip_checks=True)
     assert result.warnings & polymass.Warnings.UNCHECKED
     assert result.volume == pytest.approx(1 / 6, rel=1e-15)
+
+
+def test_shells_split_as_welding_joins(cube):
+    vertices, faces = cube
+    apart = np.vstack([vertices, vertices + [3.0, 0.0, 0.0]])
+    two = faces + [[i + 8 for i in face] for face in faces]
+    assert polymass.shells(apart, two).tolist() == [0] * 6 + [1] * 6
+    triangles = np.array([[f[0], f[k], f[k + 1]] for f in faces for k in (1, 2)])
+    soup_vertices, soup_faces = _soup(vertices, triangles)
+    assert polymass.shells(soup_vertices, soup_faces).max() == 11  # every triangle alone
+    assert polymass.shells(soup_vertices, soup_faces, weld=True).tolist() == [0] * 12
+    with pytest.raises(polymass.IndexOutOfRangeError, match="face 1"):
+        polymass.shells(vertices, [faces[0], [0, 1, 99]])

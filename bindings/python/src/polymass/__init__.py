@@ -15,7 +15,7 @@ at the path in the environment variable POLYMASS_LIBRARY.
 from . import _header
 from ._library import ffi as _ffi
 from ._library import lib as _lib
-from .diagnostics import Diagnostics, check
+from .diagnostics import Diagnostics, check, shells
 from .errors import (
     Error,
     FaceTooSmallError,
@@ -73,4 +73,5 @@ __all__ = [
     "library_version",
     "mass_properties",
     "polygon_properties",
+    "shells",
 ]

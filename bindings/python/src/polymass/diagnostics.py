@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
+import numpy as np
 import numpy.typing as npt
 
 from . import _header
@@ -129,3 +130,32 @@ def check(
         else:
             values[item.name] = getattr(report, item.name)
     return Diagnostics(**values)
+
+
+def shells(
+    vertices: npt.ArrayLike,
+    faces: FacesLike,
+    *,
+    face_sizes: npt.ArrayLike | None = None,
+    weld: Weld = False,
+) -> np.ndarray:
+    """The shell (connected piece of surface) of each face: an array of face
+    numbers 0 .. n_shells - 1, numbered in the order of the shells' first faces.
+
+    Faces sharing a vertex are in one shell; with ``weld`` (True, or a relative
+    tolerance) vertices at the same position are one first, so a triangle soup
+    splits as its solid does. Indices out of range and non-finite coordinates
+    raise, as in `mass_properties`; the topology is not checked. Each shell can
+    then be checked or computed on its own (a cavity has a negative volume).
+    """
+    mesh = mesh_description(vertices, faces, face_sizes)
+    ctx = context()
+    apply_options(ctx, weld=weld)
+    face_count = mesh.face_sizes.size if mesh.face_sizes is not None else mesh.indices.size // 3
+    of_face = np.empty(face_count, dtype=np.uint32)
+    count = ffi.new("uint64_t *")
+    status = lib.polymass_mesh_shells(
+        ffi.cast("uint32_t *", of_face.ctypes.data), count, ctx, mesh.desc
+    )
+    raise_for_status(status, ctx)
+    return of_face

@@ -277,6 +277,41 @@ impl Context {
         Ok(Diagnostics::from_raw(report, self.result(status).err()))
     }
 
+    /// The shell (connected piece of surface) of each face, numbered from 0 in
+    /// the order of the shells' first faces. Faces sharing a vertex are in one
+    /// shell, after welding when the options weld (so a triangle soup splits
+    /// as its solid does). Indices out of range and non-finite coordinates are
+    /// errors; the topology is not checked.
+    ///
+    /// ```
+    /// use polymass::{Context, Options, Surface};
+    ///
+    /// // Two triangles apart, and a soup of two triangles sharing an edge.
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
+    ///                  [5.0, 0.0, 0.0], [6.0, 0.0, 0.0], [5.0, 1.0, 0.0]];
+    /// let apart = [[0u32, 1, 2], [3, 4, 5]];
+    /// let mut context = Context::new()?;
+    /// assert_eq!(context.shells(&Surface::triangles(&positions, &apart))?, vec![0, 1]);
+    /// let soup = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
+    ///             [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+    /// let triangles = [[0u32, 1, 2], [3, 4, 5]];
+    /// context.set_options(&Options::new().weld_vertices(true))?;
+    /// assert_eq!(context.shells(&Surface::triangles(&soup, &triangles))?, vec![0, 0]);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn shells(&mut self, surface: &Surface<'_>) -> Result<Vec<u32>> {
+        let desc = surface.desc();
+        let mut of_face = vec![0u32; surface.face_count()];
+        let mut count = 0u64;
+        // SAFETY: live context, this thread only; desc points into slices
+        // borrowed by `surface`; of_face has room for every face of it.
+        let status = unsafe {
+            sys::polymass_mesh_shells(of_face.as_mut_ptr(), &mut count, self.raw.as_ptr(), &desc)
+        };
+        self.result(status)?;
+        Ok(of_face)
+    }
+
     /// Area, centroid and second moments of area of a simple polygon in the
     /// xy plane, convex or not, either orientation. The polygon closes itself:
     /// do not repeat the first point. Self-intersections are not detected.

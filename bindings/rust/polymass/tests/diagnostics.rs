@@ -134,3 +134,14 @@ fn one_face_flipped() -> Shape {
     shape.indices[9..12].reverse();
     shape
 }
+
+#[test]
+fn shells_need_indices_in_range() {
+    let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let error = Context::new()
+        .unwrap()
+        .shells(&Surface::triangles(&positions, &[[0u32, 1, 2], [0, 1, 7]]))
+        .unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::IndexOutOfRange, "{error}");
+    assert!(error.to_string().contains("face 1"), "{error}");
+}
