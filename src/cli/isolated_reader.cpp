@@ -1,5 +1,6 @@
 #include "isolated_reader.hpp"
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -123,6 +124,12 @@ std::string read_all(int fd) {
 }
 
 [[noreturn]] void run_child(int fd, const std::function<Model()>& read) {
+    // A small crafted file can make assimp work without end (a glTF whose
+    // nodes share children expands into a full tree): two minutes of CPU, far
+    // beyond any real file, then SIGXCPU - a crash the parent reports.
+    constexpr rlim_t kCpuSeconds = 120;
+    const struct rlimit cpu = {kCpuSeconds, kCpuSeconds};
+    setrlimit(RLIMIT_CPU, &cpu);
     std::string answer;
     try {
         answer = serialize(read());

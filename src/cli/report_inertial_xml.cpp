@@ -15,6 +15,7 @@
 #include "categories.hpp"
 #include "number_format.hpp"
 #include "report.hpp"
+#include "utf8.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -73,7 +74,7 @@ void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
                         OutputFormat format) {
     for (const FileReport& file : files) {
         // With one file the output is the element alone, ready to parse or paste.
-        if (files.size() > 1) out << "<!-- " << comment_safe(file.path) << " -->\n";
+        if (files.size() > 1) out << "<!-- " << comment_safe(valid_utf8(file.path)) << " -->\n";
         if (file.exit_code() != kExitOk) continue;  // the error went to stderr
         const polymass_mass_properties& p = file.solid.result.properties;
         if (format == OutputFormat::kUrdf) {

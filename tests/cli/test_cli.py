@@ -513,6 +513,20 @@ class BadInput(Case):
             EXIT_INVALID_MESH,
         )
 
+    def test_xml_outputs_are_utf8_whatever_the_paths(self):
+        # Several files: each element follows a comment naming its file.
+        latin1 = bytes(WORK) + b"/br\xfcket.obj"
+        plain = WORK / "plain.obj"
+        for path in (Path(os.fsdecode(latin1)), plain):
+            fixtures.write_obj(path, self.vertices, self.faces)
+        for output in ("--urdf", "--sdf", "--mjcf"):
+            result = subprocess.run(
+                [EXE, output, latin1, bytes(plain)], capture_output=True, timeout=120
+            )
+            self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+            text = result.stdout.decode("utf-8")  # strict: raises on invalid UTF-8
+            ElementTree.fromstring("<files>" + text + "</files>")
+
     def test_json_output_is_utf8_whatever_the_names(self):
         # Part names are the file's bytes: Latin-1, or broken UTF-8 (overlong,
         # surrogate, cut short). Valid UTF-8 is kept; each bad byte is U+FFFD.
