@@ -61,12 +61,19 @@ CheckResult check_solid(const Library& library, const Model& model, const Part& 
 }
 
 std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
-                                         const Part& part, uint64_t& shell_count) {
+                                         const Part& part, bool weld, uint64_t& shell_count) {
     const polymass_mesh_desc desc = describe(model, part);
+    polymass_options options{};
+    options.struct_size = sizeof options;
+    polymass_context_get_options(&options, library.context());
+    polymass_options unwelded = options;
+    if (!weld) unwelded.flags &= ~POLYMASS_OPTION_WELD_VERTICES;
+    polymass_context_set_options(library.context(), &unwelded);
     std::vector<uint32_t> shells(part.face_sizes.size());
     shell_count = 0;
     if (polymass_mesh_shells(shells.data(), &shell_count, library.context(), &desc) != POLYMASS_OK)
         shells.clear();
+    polymass_context_set_options(library.context(), &options);
     return shells;
 }
 

@@ -43,10 +43,11 @@ struct CheckResult {
 
 CheckResult check_solid(const Library& library, const Model& model, const Part& part);
 
-// The shell (connected piece of surface, after the library's welding) of each
-// face, numbered from 0; empty when the library cannot tell (indices out of
-// range, non-finite coordinates: the check says which).
+// The shell (connected piece of surface) of each face, numbered from 0, with
+// the library's welding or (weld false) of the vertices as given; empty when
+// the library cannot tell (indices out of range, non-finite coordinates: the
+// check says which).
 std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
-                                         const Part& part, uint64_t& shell_count);
+                                         const Part& part, bool weld, uint64_t& shell_count);
 
 }  // namespace polymass_cli
