@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string_view>
 
-#include "mesh_reader.hpp"
-#include "text_lines.hpp"
-#include "units.hpp"
+#include "model/units.hpp"
+#include "readers/mesh_reader.hpp"
+#include "readers/text_lines.hpp"
 
 namespace polymass_cli {
 namespace {
