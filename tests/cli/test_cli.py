@@ -529,11 +529,13 @@ class BadInput(Case):
 
     def test_json_output_is_utf8_whatever_the_names(self):
         # Part names are the file's bytes: Latin-1, or broken UTF-8 (overlong,
-        # surrogate, cut short). Valid UTF-8 is kept; each bad byte is U+FFFD.
+        # surrogate, cut short). Valid UTF-8 is kept; each maximal ill-formed
+        # subsequence is one U+FFFD (Unicode 15, 3.9): the bytes that cannot
+        # start a character one each, a sequence cut short as a whole.
         names = {
             b"W\xfcrfel": "W\ufffdrfel",
             "Würfel_\U0001d11e".encode(): "Würfel_\U0001d11e",
-            b"\xc0\xaf_\xed\xa0\x80_\xe2\x82": "\ufffd\ufffd_\ufffd\ufffd\ufffd_\ufffd\ufffd",
+            b"\xc0\xaf_\xed\xa0\x80_\xe2\x82": "\ufffd\ufffd_\ufffd\ufffd\ufffd_\ufffd",
         }
         vertices, faces = fixtures.cube()
         text = b""

@@ -15,7 +15,7 @@
 #include "library/shells.hpp"
 #include "library/solid.hpp"
 #include "readers/mesh_reader.hpp"
-#include "reports/json_writer.hpp"
+#include "reports/json_output.hpp"
 #include "reports/number_format.hpp"
 
 namespace polymass_cli {
@@ -137,51 +137,46 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
         << (d.signed_volume < 0 ? "  (inverted: the faces are inside out)" : "") << '\n';
 }
 
-void write_json_report(JsonWriter& json, const std::string& path, const Model& model,
-                       const CheckResult& check, const std::vector<Shell>& shells) {
+Json json_report(const std::string& path, const Model& model, const CheckResult& check,
+                 const std::vector<Shell>& shells) {
     const polymass_diagnostics& d = check.diagnostics;
-    json.begin_object();
-    json.key("file").value(path);
-    json.key("format").value(model.format);
-    json.key("valid").boolean(d.status == POLYMASS_OK);
-    json.key("category").value(std::string(category_of(d.status)));
-    json.key("message").value(check.message);
-    json.key("faces").value(d.face_count);
-    json.key("used_vertices").value(d.used_vertex_count);
-    json.key("edges").value(d.edge_count);
-    json.key("shells").value(static_cast<uint64_t>(shells.size()));
-    json.key("shell_list").begin_array();
+    Json report;
+    report["file"] = path;
+    report["format"] = model.format;
+    report["valid"] = d.status == POLYMASS_OK;
+    report["category"] = category_of(d.status);
+    report["message"] = check.message;
+    report["faces"] = d.face_count;
+    report["used_vertices"] = d.used_vertex_count;
+    report["edges"] = d.edge_count;
+    report["shells"] = static_cast<uint64_t>(shells.size());
+    Json shell_list = Json::array();
     for (const Shell& shell : shells) {
-        json.begin_object();
-        json.key("faces").value(shell.faces);
-        if (!std::isnan(shell.signed_volume)) json.key("signed_volume").value(shell.signed_volume);
-        json.key("kind").value(std::string(shell.kind));
-        json.end_object();
+        Json entry;
+        entry["faces"] = shell.faces;
+        if (!std::isnan(shell.signed_volume))
+            entry["signed_volume"] = json_number(shell.signed_volume);
+        entry["kind"] = shell.kind;
+        shell_list.push_back(entry);
     }
-    json.end_array();
+    report["shell_list"] = shell_list;
     for (const Finding& finding : findings_of(d)) {
-        json.key(finding.key).begin_object();
-        json.key("count").value(finding.count);
-        json.key(finding.where == Where::kEdge     ? "first_edges"
-                 : finding.where == Where::kVertex ? "first_vertices"
-                                                   : "first_faces");
-        json.begin_array();
+        Json locations = Json::array();
         for (const auto& location : finding.locations) {
             if (finding.where == Where::kEdge) {
-                json.begin_array();
-                json.value(location[0]);
-                json.value(location[1]);
-                json.end_array();
+                locations.push_back({location[0], location[1]});
             } else {
-                json.value(location[0]);
+                locations.push_back(location[0]);
             }
         }
-        json.end_array();
-        json.end_object();
+        const char* list = finding.where == Where::kEdge     ? "first_edges"
+                           : finding.where == Where::kVertex ? "first_vertices"
+                                                             : "first_faces";
+        report[finding.key] = {{"count", finding.count}, {list, locations}};
     }
-    json.key("max_non_planarity").value(d.max_non_planarity);
-    if (d.signed_volume == d.signed_volume) json.key("signed_volume").value(d.signed_volume);
-    json.end_object();
+    report["max_non_planarity"] = json_number(d.max_non_planarity);
+    if (!std::isnan(d.signed_volume)) report["signed_volume"] = json_number(d.signed_volume);
+    return report;
 }
 
 }  // namespace
@@ -190,8 +185,7 @@ ExitCode run_check(const Arguments& arguments) {
     const Library library(options_for(arguments));
     const bool as_json = arguments.output == OutputFormat::kJson;
     std::ostringstream body;
-    JsonWriter json(body);
-    if (as_json && arguments.files.size() > 1) json.begin_array();
+    Json reports = Json::array();
     ExitCode worst = kExitOk;
     for (const std::string& path : arguments.files) {
         Model model;
@@ -202,13 +196,10 @@ ExitCode run_check(const Arguments& arguments) {
             std::cerr << "polymass: " << path << ": " << kUnreadableCategory << ": " << error.what()
                       << '\n';
             if (as_json) {
-                json.begin_object();
-                json.key("file").value(path);
-                json.key("error").begin_object();
-                json.key("category").value(std::string(kUnreadableCategory));
-                json.key("message").value(std::string(error.what()));
-                json.end_object();
-                json.end_object();
+                Json failure;
+                failure["file"] = path;
+                failure["error"] = {{"category", kUnreadableCategory}, {"message", error.what()}};
+                reports.push_back(failure);
             }
             continue;
         }
@@ -224,13 +215,17 @@ ExitCode run_check(const Arguments& arguments) {
         }
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json) {
-            write_json_report(json, path, model, check, shells);
+            reports.push_back(json_report(path, model, check, shells));
         } else {
             write_text(body, path, model, check, shells);
         }
     }
-    if (as_json && arguments.files.size() > 1) json.end_array();
-    std::cout << body.str();
+    if (as_json) {
+        // One file: its object; several: an array of them.
+        print_json(std::cout, arguments.files.size() == 1 ? reports.front() : reports);
+    } else {
+        std::cout << body.str();
+    }
     return worst;
 }
 

@@ -143,12 +143,25 @@ ExitCode run_properties(const Arguments& arguments) {
                       << ": " << (file.readable ? file.solid.result.message : file.read_error)
                       << '\n';
         }
+        // Warnings go to stderr whatever the output, where a script sees them.
+        if (file.exit_code() == kExitOk && file.solid.result.properties.warnings) {
+            std::cerr << "polymass: " << path
+                      << ": warning: " << warning_text(file.solid.result.properties.warnings)
+                      << '\n';
+        }
+    }
+    // The table labels its lengths "(file units)"; the machine outputs carry
+    // bare numbers, so say it once.
+    if (!arguments.metres_per_unit && arguments.output != OutputFormat::kTable) {
+        std::cerr << "polymass: note: " << kFileUnitsNote
+                  << " (give the file's unit with --units)\n";
     }
 
     OutputSettings settings;
     settings.about = arguments.about;
     settings.point = arguments.point;
     if (arguments.metres_per_unit) settings.length_unit = "m";
+    settings.link_origin = arguments.link_origin;
     switch (arguments.output) {
         case OutputFormat::kTable:
             write_table(std::cout, files, settings);
@@ -157,7 +170,7 @@ ExitCode run_properties(const Arguments& arguments) {
             write_json(std::cout, files, settings);
             break;
         default:
-            write_inertial_xml(std::cout, files, arguments.output);
+            write_inertial_xml(std::cout, files, arguments.output, settings);
     }
     return worst;
 }

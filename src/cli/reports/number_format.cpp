@@ -7,7 +7,8 @@ namespace polymass_cli {
 
 std::string exact_number(double value) {
     char text[32];
-    const std::to_chars_result result = std::to_chars(text, text + sizeof text, value);
+    // -0 + 0 is +0: a zero is printed without a sign.
+    const std::to_chars_result result = std::to_chars(text, text + sizeof text, value + 0.0);
     return std::string(text, result.ptr);
 }
 

@@ -6,7 +6,7 @@
 
 namespace polymass_cli {
 
-// The shortest decimal that reads back as exactly this double.
+// The shortest decimal that reads back as exactly this double (0 for -0).
 std::string exact_number(double value);
 
 // Ten significant digits.

@@ -39,15 +39,17 @@ struct OutputSettings {
     About about = About::kCenterOfMass;
     std::array<double, 3> point{0.0, 0.0, 0.0};
     std::string length_unit;  // "m" after --units, else empty (the file's unit)
+    std::array<double, 3> link_origin{0.0, 0.0, 0.0};  // --origin (XML outputs)
 };
 
 void write_table(std::ostream& out, const std::vector<FileReport>& files,
                  const OutputSettings& settings);
 void write_json(std::ostream& out, const std::vector<FileReport>& files,
                 const OutputSettings& settings);
-// URDF, SDFormat or MJCF <inertial> elements, one per readable, valid file.
+// URDF, SDFormat or MJCF <inertial> elements, one per readable, valid file,
+// with comments saying what the numbers cannot (file, warnings, units).
 void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
-                        OutputFormat format);
+                        OutputFormat format, const OutputSettings& settings);
 
 // The files together, for the summary the table and --json give of several.
 struct Summary {
@@ -64,5 +66,18 @@ std::array<double, 3> principal_axis(const polymass_mass_properties& properties,
 
 // The names of the POLYMASS_WARNING_* bits set in warnings.
 std::vector<std::string> warning_names(uint32_t warnings);
+
+// The same warnings as a sentence for people: "inverted (the faces were
+// reversed: the mesh was inside out), ...", empty when there are none.
+std::string warning_text(uint32_t warnings);
+
+// What the outputs say when --units is absent (stderr adds how to give it).
+inline constexpr const char* kFileUnitsNote =
+    "lengths are in the file's units, not converted to metres: the mass is the density times "
+    "the volume in those units, the inertia the mass times length squared";
+
+// A symmetric tensor (row-major 3x3) made from its upper triangle, so that
+// every output prints one number for [i][j] and [j][i], and -0 made 0.
+std::array<double, 9> symmetric_tensor(const double* values);
 
 }  // namespace polymass_cli

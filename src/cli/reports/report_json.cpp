@@ -3,100 +3,92 @@
 #include <polymass/polymass.h>
 
 #include "library/categories.hpp"
-#include "reports/json_writer.hpp"
+#include "reports/json_output.hpp"
 #include "reports/report.hpp"
 
 namespace polymass_cli {
 namespace {
 
-void write_error(JsonWriter& json, const char* category, const std::string& message) {
-    json.key("error").begin_object();
-    json.key("category").value(std::string(category));
-    json.key("message").value(message);
-    json.end_object();
+Json error_object(const char* category, const std::string& message) {
+    return Json{{"category", category}, {"message", message}};
 }
 
-// The members of a solid's object (the caller opens and closes it).
-void write_solid_members(JsonWriter& json, const PartReport& part, const OutputSettings& settings) {
-    json.key("vertices").value(part.vertices);
-    json.key("faces").value(part.faces);
+// The members of a solid's object.
+void add_solid_members(Json& solid, const PartReport& part, const OutputSettings& settings) {
+    solid["vertices"] = part.vertices;
+    solid["faces"] = part.faces;
     if (part.result.status != POLYMASS_OK) {
-        write_error(json, category_of(part.result.status), part.result.message);
+        solid["error"] = error_object(category_of(part.result.status), part.result.message);
         return;
     }
     const polymass_mass_properties& p = part.result.properties;
-    json.key("volume").value(p.volume);
-    json.key("mass").value(p.mass);
-    json.key("density").value(p.density);
-    json.key("center_of_mass").numbers(p.center_of_mass, 3);
-    json.key("inertia").matrix(p.inertia);
-    json.key("inertia_origin").matrix(p.inertia_origin);
+    solid["volume"] = json_number(p.volume);
+    solid["mass"] = json_number(p.mass);
+    solid["density"] = json_number(p.density);
+    solid["center_of_mass"] = json_numbers(p.center_of_mass, 3);
+    solid["inertia"] = json_tensor(p.inertia);
+    solid["inertia_origin"] = json_tensor(p.inertia_origin);
     if (settings.about == About::kPoint) {
-        json.key("about_point").numbers(settings.point.data(), 3);
-        json.key("inertia_point").matrix(p.inertia_point);
+        solid["about_point"] = json_numbers(settings.point.data(), 3);
+        solid["inertia_point"] = json_tensor(p.inertia_point);
     }
-    json.key("principal_moments").numbers(p.principal_moments, 3);
+    solid["principal_moments"] = json_numbers(p.principal_moments, 3);
     // Axis i (the columns of the library's rotation) goes with moment i.
-    json.key("principal_axes").begin_array();
-    for (int axis = 0; axis < 3; ++axis) json.numbers(principal_axis(p, axis).data(), 3);
-    json.end_array();
-    json.key("surface_area").value(p.surface_area);
-    json.key("warnings").begin_array();
-    for (const std::string& name : warning_names(p.warnings)) json.value(name);
-    json.end_array();
+    Json axes = Json::array();
+    for (int axis = 0; axis < 3; ++axis)
+        axes.push_back(json_numbers(principal_axis(p, axis).data(), 3));
+    solid["principal_axes"] = axes;
+    solid["surface_area"] = json_number(p.surface_area);
+    solid["warnings"] = warning_names(p.warnings);
 }
 
-void write_file(JsonWriter& json, const FileReport& file, const OutputSettings& settings) {
-    json.begin_object();
-    json.key("file").value(file.path);
+Json file_object(const FileReport& file, const OutputSettings& settings) {
+    Json object;
+    object["file"] = file.path;
     if (!file.readable) {
-        write_error(json, kUnreadableCategory, file.read_error);
-        json.end_object();
-        return;
+        object["error"] = error_object(kUnreadableCategory, file.read_error);
+        return object;
     }
-    json.key("format").value(file.format);
-    if (!settings.length_unit.empty()) json.key("length_unit").value(settings.length_unit);
-    write_solid_members(json, file.solid, settings);
+    object["format"] = file.format;
+    if (!settings.length_unit.empty()) object["length_unit"] = settings.length_unit;
+    add_solid_members(object, file.solid, settings);
     if (!file.parts.empty()) {
-        json.key("parts").begin_array();
+        Json parts = Json::array();
         for (const PartReport& part : file.parts) {
-            json.begin_object();
-            json.key("name").value(part.name);
+            Json entry;
+            entry["name"] = part.name;
             if (part.computed) {
-                write_solid_members(json, part, settings);
+                add_solid_members(entry, part, settings);
             } else {
-                json.key("vertices").value(part.vertices);
-                json.key("faces").value(part.faces);
+                entry["vertices"] = part.vertices;
+                entry["faces"] = part.faces;
             }
-            json.end_object();
+            parts.push_back(entry);
         }
-        json.end_array();
+        object["parts"] = parts;
     }
-    json.end_object();
+    return object;
 }
 
 }  // namespace
 
 void write_json(std::ostream& out, const std::vector<FileReport>& files,
                 const OutputSettings& settings) {
-    JsonWriter json(out);
     if (files.size() == 1) {
-        write_file(json, files.front(), settings);
+        print_json(out, file_object(files.front(), settings));
         return;
     }
-    json.begin_object();
-    json.key("files").begin_array();
-    for (const FileReport& file : files) write_file(json, file, settings);
-    json.end_array();
+    Json all = Json::array();
+    for (const FileReport& file : files) all.push_back(file_object(file, settings));
     const Summary summary = summarize(files);
-    json.key("summary").begin_object();
-    json.key("files").value(summary.files);
-    json.key("valid").value(summary.valid);
-    json.key("failed").value(summary.files - summary.valid);
-    json.key("total_volume").value(summary.total_volume);
-    json.key("total_mass").value(summary.total_mass);
-    json.end_object();
-    json.end_object();
+    Json document;
+    document["files"] = all;
+    document["summary"] = {{"files", summary.files},
+                           {"valid", summary.valid},
+                           {"failed", summary.files - summary.valid},
+                           {"total_volume", json_number(summary.total_volume)},
+                           {"total_mass", json_number(summary.total_mass)}};
+    print_json(out, document);
 }
 
 }  // namespace polymass_cli

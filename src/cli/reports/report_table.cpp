@@ -24,8 +24,9 @@ void write_row(std::ostream& out, const std::string& label, const std::string& v
     out << padded << value << (unit.empty() ? "" : "  " + unit) << '\n';
 }
 
-void write_matrix(std::ostream& out, const std::string& label, const double* m,
+void write_matrix(std::ostream& out, const std::string& label, const double* tensor,
                   const std::string& unit) {
+    const std::array<double, 9> m = symmetric_tensor(tensor);
     for (int row = 0; row < 3; ++row) {
         char line[160];
         std::snprintf(line, sizeof line, "[%17s %17s %17s]", readable_number(m[3 * row]).c_str(),
