@@ -67,6 +67,10 @@ FileReport process_file(const Library& library, const std::string& path, const A
     prepare_model(model, arguments);
     report.readable = true;
     report.format = model.format;
+    report.notes = model.notes;
+    for (const std::string& note : model.notes) {
+        std::cerr << "polymass: " << path << ": note: " << note << '\n';
+    }
     report.read_seconds = seconds_since(read_start);
 
     const auto compute_start = std::chrono::steady_clock::now();

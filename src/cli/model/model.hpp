@@ -26,6 +26,9 @@ struct Model {
     std::string format;             // "obj", "stl", "ply", "off", "gltf", "glb", "3mf"
     std::vector<double> positions;  // x, y, z of each vertex
     std::vector<Part> parts;        // at least one
+    // What the reader must tell the user about the numbers (a unit the file
+    // declares, a precision it cannot keep), printed with the results.
+    std::vector<std::string> notes;
 
     uint64_t vertex_count() const { return positions.size() / 3; }
 };

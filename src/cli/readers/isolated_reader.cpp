@@ -85,6 +85,8 @@ std::string serialize(const Model& model) {
         out.array(part.indices);
         out.array(part.face_sizes);
     }
+    out.value<uint64_t>(model.notes.size());
+    for (const std::string& note : model.notes) out.text(note);
     return out.data();
 }
 
@@ -100,6 +102,8 @@ Model deserialize(const std::string& data) {
         part.indices = in.array<uint32_t>();
         part.face_sizes = in.array<uint32_t>();
     }
+    model.notes.resize(in.value<uint64_t>());
+    for (std::string& note : model.notes) note = in.text();
     return model;
 }
 
@@ -124,9 +128,10 @@ std::string read_all(int fd) {
 }
 
 [[noreturn]] void run_child(int fd, const std::function<Model()>& read) {
-    // A small crafted file can make assimp work without end (a glTF whose
-    // nodes share children expands into a full tree): two minutes of CPU, far
-    // beyond any real file, then SIGXCPU - a crash the parent reports.
+    // A small crafted file can make a reader work without end (3MF objects
+    // whose components reuse each other expand into a full tree): two minutes
+    // of CPU, far beyond any real file, then SIGXCPU - a crash the parent
+    // reports.
     constexpr rlim_t kCpuSeconds = 120;
     const struct rlimit cpu = {kCpuSeconds, kCpuSeconds};
     setrlimit(RLIMIT_CPU, &cpu);

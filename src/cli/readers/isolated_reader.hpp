@@ -1,11 +1,11 @@
 // Running a reader in a child process, so that a crash inside it is a
 // ReadError, not the end of the tool.
 //
-// assimp, as Debian builds it, aborts on some malformed files (an ai_assert in
-// its zip reader on a 3MF with a bad checksum) and its PLY reader has crashed
-// on garbage. Its readers run in a forked child that sends the Model back
-// through a pipe; the parent turns a child killed by a signal into a ReadError
-// saying so.
+// The readers built on other libraries (tinygltf, lib3mf; assimp, which the
+// tool used before, aborted on a 3MF with a bad zip checksum) parse untrusted
+// JSON, buffers and zip packages with code the project cannot fix. They run in
+// a forked child that sends the Model back through a pipe; the parent turns a
+// child killed by a signal into a ReadError saying so.
 #pragma once
 
 #include <functional>

@@ -83,9 +83,12 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         model = read_ply(read_bytes(path));
     } else if (name == "off") {
         model = read_off(read_bytes(path));
-    } else if (name == "gltf" || name == "glb" || name == "3mf") {
+    } else if (name == "gltf" || name == "glb") {
         check_not_empty(path);
-        model = read_isolated([&] { return read_with_assimp(path, name); });
+        model = read_isolated([&] { return read_gltf(path); });
+    } else if (name == "3mf") {
+        check_not_empty(path);
+        model = read_isolated([&] { return read_3mf(path); });
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
                                     "with one, or give --format (") +

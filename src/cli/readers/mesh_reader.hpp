@@ -2,8 +2,9 @@
 // project's own readers (obj_reader, stl_reader, ply_reader, off_reader): they keep
 // polygon faces and every index as written, so a bad index or a NaN reaches the
 // library's checks instead of being dropped or clamped, and a truncated file is
-// an error, not a read past its end. glTF/GLB and 3MF go through assimp, in a
-// child process (isolated_reader).
+// an error, not a read past its end. glTF/GLB go through tinygltf and 3MF
+// through lib3mf, each in a child process (isolated_reader), since they parse
+// untrusted JSON, binary buffers and zip packages with code not ours.
 #pragma once
 
 #include <stdexcept>

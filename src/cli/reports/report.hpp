@@ -25,9 +25,10 @@ struct FileReport {
     std::string path;
     std::string format;
     bool readable = false;
-    std::string read_error;         // when not readable
-    PartReport solid;               // all the file's faces together
-    std::vector<PartReport> parts;  // each part, when the file has more than one
+    std::string read_error;          // when not readable
+    std::vector<std::string> notes;  // the reader's (Model::notes)
+    PartReport solid;                // all the file's faces together
+    std::vector<PartReport> parts;   // each part, when the file has more than one
     double read_seconds = 0.0;
     double compute_seconds = 0.0;
 

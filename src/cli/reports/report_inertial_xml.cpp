@@ -105,6 +105,7 @@ void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
         const polymass_mass_properties& p = file.solid.result.properties;
         if (several) add_comment(document, file.path);
         if (p.warnings) add_comment(document, "warning: " + warning_text(p.warnings));
+        for (const std::string& note : file.notes) add_comment(document, "note: " + note);
         if (settings.length_unit.empty()) add_comment(document, kFileUnitsNote);
         std::array<double, 3> origin{};
         for (int k = 0; k < 3; ++k) origin[k] = p.center_of_mass[k] - settings.link_origin[k];

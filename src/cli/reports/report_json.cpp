@@ -51,6 +51,7 @@ Json file_object(const FileReport& file, const OutputSettings& settings) {
     }
     object["format"] = file.format;
     if (!settings.length_unit.empty()) object["length_unit"] = settings.length_unit;
+    if (!file.notes.empty()) object["notes"] = file.notes;
     add_solid_members(object, file.solid, settings);
     if (!file.parts.empty()) {
         Json parts = Json::array();

@@ -96,6 +96,7 @@ void write_table(std::ostream& out, const std::vector<FileReport>& files,
         out << file.path << " (" << file.format;
         if (!file.parts.empty()) out << ", " << file.parts.size() << " parts, combined";
         out << ")\n";
+        for (const std::string& note : file.notes) out << "  note: " << note << '\n';
         write_solid(out, file.solid, settings);
         for (const PartReport& part : file.parts) {
             out << "\n part '" << part.name << "'\n";
