@@ -657,34 +657,34 @@ class BadInput(Case):
     def gltf_parts(self):
         """The fixture's glTF document and buffer: positions, then indices."""
         document, buffer = fixtures.gltf_document(self.vertices, self.faces, uri=False)
-        return document, bytearray(buffer), document["bufferViews"][0]["byteLength"]
+        return document, bytearray(buffer)
 
     def test_gltf_accessor_past_its_buffer_view(self):
-        document, buffer, _ = self.gltf_parts()
+        document, buffer = self.gltf_parts()
         document["accessors"][0]["count"] += 1  # one vertex more than the view holds
         path = WORK / "accessor_past_view.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_error(path, "unreadable", EXIT_UNREADABLE, "accessor 0 (")
-        document, buffer, _ = self.gltf_parts()
+        document, buffer = self.gltf_parts()
         document["bufferViews"][1]["byteLength"] += 4  # the indices' view past the buffer
         path = WORK / "view_past_buffer.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_error(path, "unreadable", EXIT_UNREADABLE)
 
     def test_gltf_index_out_of_range_and_nan(self):
-        document, buffer, positions = self.gltf_parts()
+        document, buffer = self.gltf_parts()
         buffer[-4:] = struct.pack("<I", len(self.vertices) + 5)
         path = WORK / "index.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_error(path, "index_out_of_range", EXIT_INVALID_MESH)
-        document, buffer, positions = self.gltf_parts()
+        document, buffer = self.gltf_parts()
         buffer[8:12] = struct.pack("<f", float("nan"))  # z of the first vertex
         path = WORK / "nan.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_error(path, "non_finite", EXIT_INVALID_MESH)
 
     def test_gltf_node_reached_twice_is_refused(self):
-        document, buffer, _ = self.gltf_parts()
+        document, buffer = self.gltf_parts()
         document["scenes"][0]["nodes"] = [0, 1]  # node 1 is also node 0's child
         path = WORK / "shared_node.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
