@@ -16,7 +16,8 @@ packages=(
     dpkg-dev file                          # CPack DEB: dpkg-shlibdeps, shlibs
     python3 python3-venv                   # Python binding: a venv with cffi, pytest from PyPI
     libclang-dev                           # Rust binding: bindgen's libclang
-    libassimp-dev                          # the polymass CLI's mesh file readers
+    libcli11-dev nlohmann-json3-dev libpugixml-dev   # the polymass CLI: arguments, JSON, XML
+    libtinygltf-dev lib3mf-dev             # the polymass CLI: glTF/GLB and 3MF readers
     "$@"
 )
 
