@@ -52,6 +52,7 @@ std::array<double, 3> parse_point(std::string_view option, std::string_view what
 // The options of both polymass and polymass check, bound to raw. Help is
 // grouped as the README's tool section is.
 void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
+    const std::string kOutput = "Output (default: a table for people)";
     app.add_option("FILE", raw.files, "mesh files")->option_text(" ");
     app.add_option("--density", raw.density, "mass = D * volume (default 1: mass equals volume)")
         ->group("Mass")
@@ -72,18 +73,15 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                    "X,Y,Z: also about that point (in output units)")
         ->group("Inertia")
         ->option_text("com|origin|X,Y,Z");
-    app.add_flag("--json", raw.json, "JSON, every digit (schema in the README)")
-        ->group("Output (default: a table for people)");
+    app.add_flag("--json", raw.json, "JSON, every digit (schema in the README)")->group(kOutput);
     app.add_flag("--urdf", raw.urdf, "URDF <inertial> (origin at the centre of mass)")
-        ->group("Output (default: a table for people)");
-    app.add_flag("--sdf", raw.sdf, "SDFormat <inertial> with <pose>")
-        ->group("Output (default: a table for people)");
-    app.add_flag("--mjcf", raw.mjcf, "MuJoCo <inertial pos mass fullinertia>")
-        ->group("Output (default: a table for people)");
+        ->group(kOutput);
+    app.add_flag("--sdf", raw.sdf, "SDFormat <inertial> with <pose>")->group(kOutput);
+    app.add_flag("--mjcf", raw.mjcf, "MuJoCo <inertial pos mass fullinertia>")->group(kOutput);
     app.add_option("--origin", raw.origin,
                    "--urdf/--sdf/--mjcf: the link frame's origin in the file's frame\n"
                    "(output units); the inertial's origin is the centre of mass minus it")
-        ->group("Output (default: a table for people)")
+        ->group(kOutput)
         ->option_text("X,Y,Z");
     app.add_option("--format", arguments.format,
                    std::string("the file format, instead of the extension: ") + supported_formats())
