@@ -108,15 +108,14 @@ step_fuzz() {
     preset_workflow fuzz
 }
 
-# Adds the "N passed" / "F failed" of pytest's closing line from a log.
+# Adds the "N passed" / "F failed" of every pytest closing line of a log (the
+# binding's suite, then the Dask example's).
 count_pytest() { # <log>
     local line
-    line=$(grep -E '^=*.*[0-9]+ (passed|failed).* in [0-9.]+s' "$1" | tail -n 1)
-    if [ -z "$line" ]; then
-        return
-    fi
-    TESTS_PASSED=$((TESTS_PASSED + $(grep -oE '[0-9]+ passed' <<<"$line" | grep -oE '[0-9]+' || echo 0)))
-    TESTS_FAILED=$((TESTS_FAILED + $(grep -oE '[0-9]+ failed' <<<"$line" | grep -oE '[0-9]+' || echo 0)))
+    while IFS= read -r line; do
+        TESTS_PASSED=$((TESTS_PASSED + $(grep -oE '[0-9]+ passed' <<<"$line" | grep -oE '[0-9]+' || echo 0)))
+        TESTS_FAILED=$((TESTS_FAILED + $(grep -oE '[0-9]+ failed' <<<"$line" | grep -oE '[0-9]+' || echo 0)))
+    done < <(grep -E '^=*.*[0-9]+ (passed|failed).* in [0-9.]+s' "$1")
 }
 
 step_python() {
