@@ -107,7 +107,13 @@ extern "C" {
 #define POLYMASS_ERROR_INCONSISTENT_ORIENTATION 22
 /* A polygon face's vertices are off its plane by more than the tolerance. */
 #define POLYMASS_ERROR_NON_PLANAR_FACE 23
-/* The enclosed volume is negative: every face is reversed. */
+/* Faces cross each other, or a shell lies inside a solid of the same sense:
+   the surface bounds some region twice and its volume would be counted twice
+   (two overlapping parts exported as one file, a surface folded through
+   itself). Found with POLYMASS_OPTION_CHECK_INTERSECTIONS. */
+#define POLYMASS_ERROR_INTERSECTING 24
+/* The enclosed volume is negative: every face is reversed - or one shell is
+   inside out (negative volume) while lying inside no solid shell. */
 #define POLYMASS_ERROR_INVERTED 30
 /* The surface encloses no volume (to rounding), e.g. a flat double-sided sheet. */
 #define POLYMASS_ERROR_ZERO_VOLUME 31
@@ -168,6 +174,16 @@ typedef struct polymass_allocator {
 /* Accept edges shared by more than two faces when they are traversed as often
    in one direction as in the other (two solids touching along an edge). */
 #define POLYMASS_OPTION_ACCEPT_NON_MANIFOLD (1u << 3)
+/* Also check that no faces cross each other and that no shell lies inside a
+   solid of the same sense (POLYMASS_ERROR_INTERSECTING), counting how shells
+   nest exactly; faces that touch without crossing (parts resting on each
+   other) give POLYMASS_WARNING_TOUCHING_FACES. Exact predicates decide every
+   case. Off by default: it costs about as much again as the topology checks
+   (see the README for figures), and an engine's load path need not pay it;
+   polymass_mesh_check and the polymass tool turn it on. Without it a shell
+   turned inside out is still refused when it lies outside every solid
+   shell's bounding box. Needs the topology checks for the shells' nesting. */
+#define POLYMASS_OPTION_CHECK_INTERSECTIONS (1u << 4)
 
 /* Default of polymass_options.planarity_tolerance. */
 #define POLYMASS_DEFAULT_PLANARITY_TOLERANCE 1e-6
@@ -238,6 +254,7 @@ typedef struct polymass_mass_desc {
 #define POLYMASS_WARNING_DEGENERATE_FACES (1u << 1) /* zero-area faces, harmless */
 #define POLYMASS_WARNING_UNCHECKED (1u << 2)        /* topology checks skipped */
 #define POLYMASS_WARNING_NON_MANIFOLD (1u << 3)     /* accepted non-manifold edges */
+#define POLYMASS_WARNING_TOUCHING_FACES (1u << 4)   /* faces touch without crossing */
 
 typedef struct polymass_mass_properties {
     uint32_t struct_size; /* set by the caller: sizeof(polymass_mass_properties) */
@@ -294,7 +311,38 @@ typedef struct polymass_diagnostics {
     uint64_t first_non_planar_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
     double max_non_planarity; /* largest relative off-plane distance seen */
     double signed_volume;     /* NaN when the faces could not be integrated */
+    /* Since 1.1. Shells are counted on a closed, oriented surface; the face
+       pairs with POLYMASS_OPTION_CHECK_INTERSECTIONS, each pair (lower face,
+       higher face), lowest pairs first. */
+    uint64_t shell_count;
+    uint64_t inverted_shells; /* inside out, inside no solid shell */
+    uint64_t first_inverted_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t overlapping_shells; /* inside a solid of the same sense */
+    uint64_t first_overlapping_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t intersecting_face_pairs; /* faces that cross */
+    uint64_t first_intersecting_face_pairs[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
+    uint64_t touching_face_pairs; /* faces that touch without crossing nor sharing a vertex */
+    uint64_t first_touching_face_pairs[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
 } polymass_diagnostics;
+
+/* polymass_shell.kind */
+#define POLYMASS_SHELL_SOLID 1       /* encloses positive volume, in no other solid */
+#define POLYMASS_SHELL_CAVITY 2      /* negative volume, inside a solid */
+#define POLYMASS_SHELL_INVERTED 3    /* negative volume, inside no solid: inside out */
+#define POLYMASS_SHELL_OVERLAPPING 4 /* inside a solid of the same sense: counted twice */
+#define POLYMASS_SHELL_NO_VOLUME 5   /* encloses no volume (to rounding) */
+
+/* One shell of a closed surface, as polymass_mesh_shell_list describes it.
+   Since 1.1. */
+typedef struct polymass_shell {
+    uint32_t struct_size; /* set by the caller: sizeof(polymass_shell) */
+    int32_t kind;         /* POLYMASS_SHELL_* */
+    uint64_t face_count;
+    uint64_t first_face;
+    /* Signed so that the whole surface's volume is positive (a surface
+       accepted inside out as a whole counts turned). */
+    double signed_volume;
+} polymass_shell;
 
 /* polymass_polygon_properties.orientation */
 #define POLYMASS_COUNTER_CLOCKWISE 1
@@ -326,6 +374,7 @@ POLYMASS_API uint32_t polymass_sizeof_mass_desc(void);
 POLYMASS_API uint32_t polymass_sizeof_mass_properties(void);
 POLYMASS_API uint32_t polymass_sizeof_diagnostics(void);
 POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void);
+POLYMASS_API uint32_t polymass_sizeof_shell(void); /* since 1.1 */
 
 /* ========================================================================== */
 /* Context                                                                    */
@@ -412,6 +461,23 @@ POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
 POLYMASS_API int32_t polymass_mesh_shells(uint32_t* out_shell_of_face, uint64_t* out_shell_count,
                                           polymass_context* context,
                                           const polymass_mesh_desc* desc);
+
+/* The shells of a closed surface and what each one is: a solid, a cavity in
+   a solid, inside out, overlapping another, or without volume - the
+   classification polymass_mesh_create judges by (with
+   POLYMASS_OPTION_CHECK_INTERSECTIONS: by how the shells nest, counted
+   exactly; without: by bounding boxes, which can show a shell to be inside
+   out but take any negative shell within a solid's box for a cavity). Shell
+   i is the one polymass_mesh_shells numbers i. Writes the first
+   min(capacity, count) shells to out_shells, an array whose elements all
+   have struct_size set, and the count to *out_shell_count (out_shells may be
+   NULL when capacity is 0, to ask for the count). The surface must pass the
+   checks before the shells (closed, manifold, oriented, planar, with a
+   volume): otherwise that status and message, and nothing written.
+   Since 1.1. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_shell_list(polymass_shell* out_shells, uint64_t capacity,
+                                              uint64_t* out_shell_count, polymass_context* context,
+                                              const polymass_mesh_desc* desc);
 
 /* ========================================================================== */
 /* Planar polygons                                                            */

@@ -69,7 +69,8 @@ POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
         if (const int32_t status = check_struct(context, options, "options")) return status;
         constexpr uint32_t known_flags =
             POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
-            POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
+            POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD |
+            POLYMASS_OPTION_CHECK_INTERSECTIONS;
         if (options->flags & ~known_flags)
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                                  "options->flags has unknown bits 0x%x",

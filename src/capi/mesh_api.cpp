@@ -18,7 +18,7 @@ int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc, po
     if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
     const core::MeshAnalysis analysis = analyse(context, input, false);
     uint32_t warnings = 0;
-    if (const int32_t status = judge(context, input, analysis, warnings)) return status;
+    if (const int32_t status = report_verdict(context, input, analysis, warnings)) return status;
     const core::IntegrationResult& integration = *analysis.integration;
     mesh.integrals = (warnings & POLYMASS_WARNING_INVERTED) ? integration.integrals.negated()
                                                             : integration.integrals;
@@ -89,7 +89,7 @@ POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
         if (found == POLYMASS_OK) {
             const polymass::core::MeshAnalysis analysis = analyse(context, input, true);
             uint32_t warnings = 0;
-            found = judge(context, input, analysis, warnings);
+            found = report_verdict(context, input, analysis, warnings);
             fill_report(*out_report, input, &analysis);
         }
         return found;

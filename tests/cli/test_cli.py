@@ -643,7 +643,7 @@ class Check(Case):
         self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stdout)
         report = json.loads(result.stdout)
         self.assertEqual(report["category"], "inverted")
-        self.assertIn("shell 2", report["message"])
+        self.assertIn("shell 1 (6 faces, the first face 6", report["message"])
         self.assertIs(report["valid"], False)
         kinds = [s["kind"] for s in report["shell_list"]]
         self.assertEqual(kinds, ["solid", "inverted"])

@@ -48,6 +48,7 @@ static void test_status_values_are_the_documented_ones(void** state) {
     assert_int_equal(POLYMASS_ERROR_NON_MANIFOLD, 21);
     assert_int_equal(POLYMASS_ERROR_INCONSISTENT_ORIENTATION, 22);
     assert_int_equal(POLYMASS_ERROR_NON_PLANAR_FACE, 23);
+    assert_int_equal(POLYMASS_ERROR_INTERSECTING, 24);
     assert_int_equal(POLYMASS_ERROR_INVERTED, 30);
     assert_int_equal(POLYMASS_ERROR_ZERO_VOLUME, 31);
     assert_int_equal(POLYMASS_ERROR_ZERO_AREA, 32);
