@@ -1,5 +1,6 @@
 #include "surface_overlaps.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 #include "box_tree.hpp"

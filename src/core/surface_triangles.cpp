@@ -1,6 +1,6 @@
 #include "surface_triangles.hpp"
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "exact_predicates.hpp"

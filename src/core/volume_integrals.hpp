@@ -1,8 +1,8 @@
 // The ten volume integrals of a solid and the surface sums they come from.
 //
 // The divergence theorem turns each volume integral into a sum over faces of
-// "flux" integrals n_axis * integral over the face of a polynomial (Mirtich,
-// section 2). Both face paths — the closed-form triangle and the projected
+// "flux" integrals n_axis * integral over the face of a polynomial (docs/integrals.md,
+// section 1). Both face paths — the closed-form triangle and the projected
 // polygon — produce these same ten face sums, and this file alone turns them
 // into volume integrals.
 #pragma once
