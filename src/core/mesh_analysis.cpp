@@ -47,8 +47,9 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     if (analysis.topology &&
         analysis.topology->closed_and_oriented(settings.policy.accept_balanced_non_manifold) &&
         analysis.verdict.valid()) {
-        analysis.shells = survey_shells(mesh, vertex_ids, integration.reference,
-                                        analysis.verdict.outward, memory);
+        analysis.shells =
+            survey_shells(mesh, vertex_ids, integration.reference, analysis.verdict.outward,
+                          analysis.integration->integrals.volume, memory);
         if (stop()) return analysis;
     }
     if (settings.check_intersections && std::isfinite(scan.diagonal())) {

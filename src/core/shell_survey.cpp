@@ -29,10 +29,17 @@ void record_kinds(ShellSurvey& survey) {
 
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                          const Eigen::Vector3d& reference, int outward,
+                          const Eigen::Vector3d& reference, int outward, double whole_volume,
                           std::pmr::memory_resource* memory) {
     ShellSurvey survey(find_shells(mesh, vertex_ids, memory), memory);
     survey.summary.resize(survey.shells.count);
+    // One shell is the whole surface, whose volume the caller knows positive
+    // (outward): nothing to compare it with.
+    if (survey.shells.count == 1) {
+        survey.summary[0].face_count = mesh.face_count;
+        survey.summary[0].signed_volume = outward * whole_volume;
+        return survey;
+    }
     // Each face's cone from the reference point: a fan of tetrahedra, exact
     // for planar faces; its area from the same fan.
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
@@ -86,9 +93,9 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
     record_kinds(survey);
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                                \
-    template ShellSurvey survey_shells<Scalar, Index>(                                     \
-        const MeshView<Scalar, Index>&, const std::uint32_t*, const Eigen::Vector3d&, int, \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                        \
+    template ShellSurvey survey_shells<Scalar, Index>(                                             \
+        const MeshView<Scalar, Index>&, const std::uint32_t*, const Eigen::Vector3d&, int, double, \
         std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

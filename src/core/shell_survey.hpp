@@ -50,10 +50,12 @@ struct ShellSurvey {
 
 // Splits a closed, consistently oriented surface into shells, integrates each
 // one's volume about `reference`, and classifies them by bounding boxes.
-// outward is +1, or -1 for a surface taken inside out as a whole.
+// outward is +1, or -1 for a surface taken inside out as a whole;
+// whole_volume is the surface's signed volume (the one shell's, when it is
+// in one piece: the common case costs no second pass over the faces).
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                          const Eigen::Vector3d& reference, int outward,
+                          const Eigen::Vector3d& reference, int outward, double whole_volume,
                           std::pmr::memory_resource* memory);
 
 // Classifies again by the winding numbers of find_overlaps (those it could

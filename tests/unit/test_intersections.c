@@ -64,7 +64,9 @@ static void octahedron(pm_mesh* m, const double c[3], double r, int inside_out) 
 }
 
 /* A torus of ring radius R and tube radius r, n x n triangulated quads; with
-   R < r the tube passes through itself around the axis. */
+   R < r the tube passes through itself around the axis (R is chosen so that
+   no ring of vertices falls exactly on the axis: there the sheets would only
+   touch, see docs/validity.md). */
 static void torus(pm_mesh* m, double R, double r, int n) {
     const double pi = 3.14159265358979323846;
     const uint32_t base = (uint32_t)m->vertex_count;
@@ -201,7 +203,7 @@ static void test_torus_through_itself(void** state) {
     pm_mesh m;
     (void)state;
     pm_mesh_init(&m);
-    torus(&m, 0.5, 1.0, 24);
+    torus(&m, 0.6, 1.0, 24);
     expect_everywhere("a spindle torus (tube through itself)", &m, overlap);
     pm_mesh_free(&m);
     /* An ordinary torus is valid: no false positive on a curved surface. */
@@ -373,6 +375,12 @@ static void test_report_lists_pairs_and_shells(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* Reference solids whose faces touch by construction: four boxes face to
+   face, and caps fanned into triangles that overlap outside the star. */
+static int touches_by_construction(const char* name) {
+    return strcmp(name, "ring_of_boxes") == 0 || strcmp(name, "prism_star_fan") == 0;
+}
+
 /* No false positive: every exact-reference solid passes the check, far from
    the origin too, with bit-identical results. */
 static void test_reference_solids_do_not_intersect(void** state) {
@@ -393,7 +401,12 @@ static void test_reference_solids_do_not_intersect(void** state) {
                          placements[k].name, polymass_status_string(status),
                          polymass_status_string(unchecked));
             }
-            assert_int_equal(warnings & POLYMASS_WARNING_TOUCHING_FACES, 0);
+            if (!(warnings & POLYMASS_WARNING_TOUCHING_FACES) !=
+                !touches_by_construction(pm_reference_solids[r].name)) {
+                fail_msg("%s, %s: touching faces %s", pm_reference_solids[r].name,
+                         placements[k].name,
+                         warnings & POLYMASS_WARNING_TOUCHING_FACES ? "found" : "missed");
+            }
             pm_mesh_free(&m);
         }
     }
