@@ -8,7 +8,9 @@
 #      leaves the dependencies alone when they are satisfied);
 #   4. ruff format --check and ruff check over every Python file of the repository
 #      (ruff.toml; .gitignore'd build trees are skipped);
-#   5. pytest (bindings/python/tests), then runs the examples.
+#   5. pytest (bindings/python/tests), then runs the examples;
+#   6. the Dask example (examples/dask): dask[distributed] and pyarrow from PyPI,
+#      then its pytest on a distributed.LocalCluster.
 #
 #   scripts/test-python.sh            PYTHON=python3.12 scripts/test-python.sh
 #
@@ -49,6 +51,11 @@ step pytest
 step examples
 "$venv/bin/python" examples/python/mass_properties_of_file.py </dev/null
 "$venv/bin/python" examples/python/batch_threads.py </dev/null | tail -n 3
+
+step dask
+"$venv/bin/python" -m pip --disable-pip-version-check --no-input --quiet \
+    install "dask[distributed]" pyarrow </dev/null
+"$venv/bin/python" -m pytest -q -p no:cacheprovider examples/dask </dev/null
 
 echo
 echo "test-python: all passed"

@@ -25,6 +25,9 @@ struct Arguments {
     std::optional<double> metres_per_unit;
     About about = About::kCenterOfMass;
     std::array<double, 3> point{0.0, 0.0, 0.0};  // --about X,Y,Z
+    // --origin X,Y,Z: the link frame's origin in the file's frame (output
+    // units), subtracted from the centre of mass in --urdf/--sdf/--mjcf.
+    std::array<double, 3> link_origin{0.0, 0.0, 0.0};
     bool accept_inverted = false;
     bool no_check = false;
     bool timings = false;
@@ -41,7 +44,7 @@ public:
 
 Arguments parse_arguments(int argc, const char* const* argv);
 
-// The --help text.
+// The --help text (what parse_arguments prints for --help).
 std::string help_text();
 
 }  // namespace polymass_cli

@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "arguments.hpp"
-#include "commands.hpp"
+#include "commands/commands.hpp"
 #include "exit_codes.hpp"
 
 int main(int argc, char** argv) {

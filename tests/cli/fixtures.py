@@ -180,6 +180,15 @@ def gltf_document(vertices, faces, uri, copy_shifts=()):
     return document, buffer
 
 
+def write_gltf_document(path, document, buffer):
+    """A .gltf of document with buffer (changed by a test) embedded."""
+    document["buffers"][0]["uri"] = (
+        "data:application/octet-stream;base64," + base64.b64encode(buffer).decode()
+    )
+    document["buffers"][0]["byteLength"] = len(buffer)
+    path.write_text(json.dumps(document))
+
+
 def write_gltf(path, vertices, faces, copy_shifts=()):
     document, _ = gltf_document(vertices, faces, uri=True, copy_shifts=copy_shifts)
     path.write_text(json.dumps(document))
@@ -199,18 +208,32 @@ def write_glb(path, vertices, faces):
     path.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
 
 
-def write_3mf(path, vertices, faces):
+def write_3mf(path, vertices, faces, component=None, item=None):
+    """A 3MF of the solid: object 1 is its mesh. With component (a 3MF
+    transform, "m00 m01 m02 m10 ... m32": rows of a 4x3 matrix applied to row
+    vectors), object 2 holds object 1 as a component so placed and is the one
+    built; item is the build item's transform."""
     vertex_xml = "".join('<vertex x="{!r}" y="{!r}" z="{!r}"/>'.format(*v) for v in vertices)
     triangle_xml = "".join(
         f'<triangle v1="{a}" v2="{b}" v3="{c}"/>' for a, b, c in triangles(faces)
     )
+    built = 1
+    components = ""
+    if component is not None:
+        built = 2
+        components = (
+            '<object id="2" type="model" name="assembly"><components>'
+            f'<component objectid="1" transform="{component}"/></components></object>'
+        )
+    item_transform = f' transform="{item}"' if item is not None else ""
     model = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<model unit="millimeter" xml:lang="en-US" '
         'xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">'
         '<resources><object id="1" type="model"><mesh>'
         f"<vertices>{vertex_xml}</vertices><triangles>{triangle_xml}</triangles>"
-        '</mesh></object></resources><build><item objectid="1"/></build></model>'
+        f"</mesh></object>{components}</resources>"
+        f'<build><item objectid="{built}"{item_transform}/></build></model>'
     )
     content_types = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'

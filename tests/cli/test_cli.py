@@ -11,6 +11,8 @@ tool's outputs are parsed back with json and xml.etree, never matched as text.
 import importlib.util
 import json
 import os
+import re
+import struct
 import subprocess
 import unittest
 from pathlib import Path
@@ -112,6 +114,40 @@ class EveryFormat(Case):
                 self.assertEqual(result.returncode, EXIT_OK, result.stderr)
                 self.assert_properties(out, self.expected, what=name)
                 self.assertEqual(out["warnings"], [])
+
+    def test_gltf_mirrored_node_keeps_the_solid(self):
+        # A node scaled by -1 along x mirrors the mesh: glTF says its triangles
+        # then wind clockwise, so the reader reverses them and the solid is
+        # the mirror image, not an inverted one.
+        document, buffer = fixtures.gltf_document(self.vertices, self.faces, uri=False)
+        document["scenes"][0]["nodes"] = [2]
+        document["nodes"].append({"name": "mirror", "scale": [-1, 1, 1], "children": [0]})
+        path = WORK / "mirrored.gltf"
+        fixtures.write_gltf_document(path, document, buffer)
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        mirrored = [(-x, y, z) for x, y, z in self.vertices]
+        tris = [list(reversed(f)) for f in fixtures.triangles(self.faces)]
+        self.assert_properties(out, generate.exact_properties(mirrored, tris), what="mirrored")
+
+    def test_3mf_components_and_build_transforms(self):
+        # Object 2 holds the bracket as a component turned a quarter about z
+        # ((x, y, z) -> (-y, x, z)) and moved; the build item moves it again.
+        # 3MF transforms act on row vectors: rows m0, m1, m2 then translation.
+        turn = "0 1 0 -1 0 0 0 0 1 2 3 4"
+        item = "1 0 0 0 1 0 0 0 1 -0.5 0.25 8"
+        path = WORK / "components.3mf"
+        fixtures.write_3mf(path, self.vertices, self.faces, component=turn, item=item)
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        placed = [(-y + 2 - 0.5, x + 3 + 0.25, z + 4 + 8) for x, y, z in self.vertices]
+        self.assert_properties(
+            out,
+            generate.exact_properties(placed, fixtures.triangles(self.faces)),
+            what="components",
+        )
+        self.assertIn("the file declares its unit: millimeter", out["notes"])
+        self.assertIn("32-bit floats", result.stderr)
 
     def test_polygon_formats_keep_their_faces(self):
         for name in ("bracket.obj", "bracket_ascii.ply", "bracket_binary.ply", "bracket.off"):
@@ -462,16 +498,17 @@ class BadInput(Case):
             self.write("empty_face.obj", obj), "face_too_small", EXIT_INVALID_MESH, "face 0"
         )
 
-    def test_a_crash_in_assimp_is_an_unreadable_file(self):
+    def test_a_3mf_with_a_bad_checksum_is_an_unreadable_file(self):
         # A 3MF whose zip checksum no longer matches its (still valid) XML: the
-        # assimp Debian ships aborts on it; the tool reads it in a child process.
+        # assimp Debian ships aborted on it (the tool read it in a child
+        # process, which it still does); lib3mf refuses it.
         path = WORK / "bad_checksum.3mf"
         fixtures.write_3mf(path, self.vertices, self.faces)
         data = bytearray(path.read_bytes())
         digit = data.index(b'<vertex x="') + len(b'<vertex x="')
         data[digit] = ord("7") if data[digit] != ord("7") else ord("6")
         path.write_bytes(bytes(data))
-        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "crashed")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "not a readable 3MF file")
 
     def test_stl_keywords_out_of_place_in_a_facet(self):
         # Corners read before a second `outer loop` or a new `solid` belonged
@@ -529,11 +566,13 @@ class BadInput(Case):
 
     def test_json_output_is_utf8_whatever_the_names(self):
         # Part names are the file's bytes: Latin-1, or broken UTF-8 (overlong,
-        # surrogate, cut short). Valid UTF-8 is kept; each bad byte is U+FFFD.
+        # surrogate, cut short). Valid UTF-8 is kept; each maximal ill-formed
+        # subsequence is one U+FFFD (Unicode 15, 3.9): the bytes that cannot
+        # start a character one each, a sequence cut short as a whole.
         names = {
             b"W\xfcrfel": "W\ufffdrfel",
             "Würfel_\U0001d11e".encode(): "Würfel_\U0001d11e",
-            b"\xc0\xaf_\xed\xa0\x80_\xe2\x82": "\ufffd\ufffd_\ufffd\ufffd\ufffd_\ufffd\ufffd",
+            b"\xc0\xaf_\xed\xa0\x80_\xe2\x82": "\ufffd\ufffd_\ufffd\ufffd\ufffd_\ufffd",
         }
         vertices, faces = fixtures.cube()
         text = b""
@@ -615,6 +654,56 @@ class BadInput(Case):
         for word in ("Usage", "--density", "--units", "--json", "--urdf", "check", "Exit status"):
             self.assertIn(word, result.stdout)
 
+    def gltf_parts(self):
+        """The fixture's glTF document and buffer: positions, then indices."""
+        document, buffer = fixtures.gltf_document(self.vertices, self.faces, uri=False)
+        return document, bytearray(buffer)
+
+    def test_gltf_accessor_past_its_buffer_view(self):
+        document, buffer = self.gltf_parts()
+        document["accessors"][0]["count"] += 1  # one vertex more than the view holds
+        path = WORK / "accessor_past_view.gltf"
+        fixtures.write_gltf_document(path, document, bytes(buffer))
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "accessor 0 (")
+        document, buffer = self.gltf_parts()
+        document["bufferViews"][1]["byteLength"] += 4  # the indices' view past the buffer
+        path = WORK / "view_past_buffer.gltf"
+        fixtures.write_gltf_document(path, document, bytes(buffer))
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE)
+
+    def test_gltf_index_out_of_range_and_nan(self):
+        document, buffer = self.gltf_parts()
+        buffer[-4:] = struct.pack("<I", len(self.vertices) + 5)
+        path = WORK / "index.gltf"
+        fixtures.write_gltf_document(path, document, bytes(buffer))
+        self.expect_error(path, "index_out_of_range", EXIT_INVALID_MESH)
+        document, buffer = self.gltf_parts()
+        buffer[8:12] = struct.pack("<f", float("nan"))  # z of the first vertex
+        path = WORK / "nan.gltf"
+        fixtures.write_gltf_document(path, document, bytes(buffer))
+        self.expect_error(path, "non_finite", EXIT_INVALID_MESH)
+
+    def test_gltf_node_reached_twice_is_refused(self):
+        document, buffer = self.gltf_parts()
+        document["scenes"][0]["nodes"] = [0, 1]  # node 1 is also node 0's child
+        path = WORK / "shared_node.gltf"
+        fixtures.write_gltf_document(path, document, bytes(buffer))
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "reached twice")
+
+    def test_3mf_index_out_of_range_and_nan(self):
+        path = WORK / "index.3mf"
+        faces = self.faces[:-1] + [[0, 1, len(self.vertices) + 5]]
+        fixtures.write_3mf(path, self.vertices, faces)
+        out = self.expect_error(path, "unreadable", EXIT_UNREADABLE)
+        self.assertIn("index", out["error"]["message"].lower())
+        vertices = list(self.vertices)
+        vertices[0] = (float("nan"), 0.0, 0.0)
+        path = WORK / "nan.3mf"
+        fixtures.write_3mf(path, vertices, self.faces)
+        result, out = run_json(path)
+        self.assertIn(result.returncode, (EXIT_UNREADABLE, EXIT_INVALID_MESH), result.stderr)
+        self.assertIn(out["error"]["category"], ("unreadable", "non_finite"))
+
 
 class Check(Case):
     """polymass check: diagnostics and their exit status."""
@@ -689,6 +778,106 @@ class Check(Case):
     def test_unreadable(self):
         result = run("check", WORK / "does_not_exist.stl")
         self.assertEqual(result.returncode, EXIT_UNREADABLE)
+
+
+class Outputs(Case):
+    """What the outputs say besides the numbers, and how they write them."""
+
+    @classmethod
+    def setUpClass(cls):
+        WORK.mkdir(parents=True, exist_ok=True)
+        cls.vertices, cls.faces = fixtures.bracket()
+        cls.path = WORK / "outputs_bracket.obj"
+        fixtures.write_obj(cls.path, cls.vertices, cls.faces)
+
+    @staticmethod
+    def parse_xml(text):
+        """The elements and comments of an XML output, in order."""
+        builder = ElementTree.TreeBuilder(insert_comments=True)
+        parser = ElementTree.XMLParser(target=builder)
+        parser.feed("<output>" + text + "</output>")
+        return list(parser.close())
+
+    @staticmethod
+    def comments(nodes):
+        return [n.text.strip() for n in nodes if n.tag is ElementTree.Comment]
+
+    def test_warnings_reach_stderr_and_the_xml(self):
+        inverted = WORK / "outputs_inverted.obj"
+        fixtures.write_obj(inverted, self.vertices, [list(reversed(f)) for f in self.faces])
+        for output in ("--json", "--urdf", "--sdf", "--mjcf", None):
+            with self.subTest(output=output):
+                args = [output] if output else []
+                result = run("--accept-inverted", *args, inverted)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                self.assertIn("warning: inverted", result.stderr)
+                if output not in (None, "--json"):
+                    comments = self.comments(self.parse_xml(result.stdout))
+                    self.assertTrue(any("inverted" in c for c in comments), comments)
+
+    def test_file_units_note(self):
+        result = run("--urdf", self.path)
+        self.assertIn("note: lengths are in the file's units", result.stderr)
+        comments = self.comments(self.parse_xml(result.stdout))
+        self.assertTrue(any("file's units" in c for c in comments), comments)
+        result = run("--urdf", "--units", "mm", self.path)
+        self.assertNotIn("file's units", result.stderr + result.stdout)
+
+    def test_no_negative_zero_and_symmetric_tensors(self):
+        # A cube centred on the origin, and the bracket turned and far away:
+        # zeros print as 0, [i][j] and [j][i] are the same double.
+        cube, quads = fixtures.cube()
+        centred = WORK / "outputs_centred_cube.obj"
+        fixtures.write_obj(centred, [tuple(c - 0.5 for c in v) for v in cube], quads)
+        far = WORK / "outputs_far.obj"
+        fixtures.write_obj(
+            far, [(y + 1e6, -x + 3e7, z * 3 - 2e5) for x, y, z in self.vertices], self.faces
+        )
+        negative_zero = re.compile(r"(?<![\d.eE])-0(\.0*)?(?![.\deE])")
+        for path in (centred, far):
+            for output in ("--json", "--urdf", "--sdf", "--mjcf", None):
+                with self.subTest(path=path.name, output=output):
+                    result = run(*([output] if output else []), "--about", "origin", path)
+                    self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                    self.assertIsNone(negative_zero.search(result.stdout), result.stdout)
+            _, out = run_json(path)
+            for key in ("inertia", "inertia_origin"):
+                m = out[key]
+                for i in range(3):
+                    for j in range(3):
+                        self.assertEqual(repr(m[i][j]), repr(m[j][i]), f"{path.name} {key}")
+
+    def test_failed_file_comment_says_why(self):
+        result = run("--sdf", self.path, WORK / "outputs_missing.obj")
+        self.assertEqual(result.returncode, EXIT_UNREADABLE)
+        nodes = self.parse_xml(result.stdout)
+        self.assertEqual([n.tag for n in nodes if n.tag is not ElementTree.Comment], ["inertial"])
+        failed = [c for c in self.comments(nodes) if "outputs_missing.obj" in c]
+        self.assertEqual(len(failed), 1)
+        self.assertIn("no inertial", failed[0])
+        self.assertIn("cannot open", failed[0])
+
+    def test_origin_of_the_link_frame(self):
+        origin = (0.25, -1.5, 1e3)
+        _, out = run_json(self.path)
+        com = out["center_of_mass"]
+        expected = [c - o for c, o in zip(com, origin)]
+        text = ",".join(map(repr, origin))
+        urdf = self.parse_xml(run("--urdf", "--origin", text, self.path).stdout)[-1]
+        self.assertEqual([float(x) for x in urdf.find("origin").get("xyz").split()], expected)
+        sdf = self.parse_xml(run("--sdf", "--origin", text, self.path).stdout)[-1]
+        self.assertEqual([float(x) for x in sdf.find("pose").text.split()], expected + [0, 0, 0])
+        mjcf = self.parse_xml(run("--mjcf", "--origin", text, self.path).stdout)[-1]
+        self.assertEqual([float(x) for x in mjcf.get("pos").split()], expected)
+        for args in (
+            ["--origin", text],
+            ["--json", "--origin", text],
+            ["--urdf", "--origin", "1,2"],
+        ):
+            with self.subTest(args=args):
+                result = run(*args, self.path)
+                self.assertEqual(result.returncode, EXIT_USAGE, result.stderr)
+                self.assertIn("--origin", result.stderr)
 
 
 class BundledMeshes(Case):

@@ -1,0 +1,232 @@
+// polymass check: every finding of polymass_mesh_check with its count and
+// first few locations (vertex numbers are 0-based positions in the file's
+// vertex list, shown with their coordinates), and the shells: each one's
+// signed volume says whether it is a solid, a cavity, or inside out.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+#include "commands/commands.hpp"
+#include "library/categories.hpp"
+#include "library/shells.hpp"
+#include "library/solid.hpp"
+#include "readers/mesh_reader.hpp"
+#include "reports/json_output.hpp"
+#include "reports/number_format.hpp"
+
+namespace polymass_cli {
+namespace {
+
+enum class Where { kEdge, kFace, kVertex };
+
+struct Finding {
+    const char* key;    // JSON key
+    const char* label;  // table label
+    uint64_t count;
+    Where where;
+    std::vector<std::array<uint64_t, 2>> locations;  // the first few; [1] only for edges
+};
+
+Finding face_finding(const char* key, const char* label, uint64_t count,
+                     const uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS], Where where) {
+    Finding finding{key, label, count, where, {}};
+    for (const uint64_t location : first) {
+        if (location != POLYMASS_NONE) finding.locations.push_back({location, POLYMASS_NONE});
+    }
+    return finding;
+}
+
+Finding edge_finding(const char* key, const char* label, uint64_t count,
+                     const uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
+    Finding finding{key, label, count, Where::kEdge, {}};
+    for (const auto& edge : first) {
+        if (edge[0] != POLYMASS_NONE) finding.locations.push_back({edge[0], edge[1]});
+    }
+    return finding;
+}
+
+std::vector<Finding> findings_of(const polymass_diagnostics& d) {
+    return {
+        edge_finding("open_edges", "open edges", d.open_edges, d.first_open_edges),
+        edge_finding("non_manifold_edges", "non-manifold edges", d.non_manifold_edges,
+                     d.first_non_manifold_edges),
+        edge_finding("misoriented_edges", "misoriented edges", d.misoriented_edges,
+                     d.first_misoriented_edges),
+        face_finding("non_planar_faces", "non-planar faces", d.non_planar_faces,
+                     d.first_non_planar_faces, Where::kFace),
+        face_finding("degenerate_faces", "degenerate faces", d.degenerate_faces,
+                     d.first_degenerate_faces, Where::kFace),
+        face_finding("small_faces", "faces < 3 vertices", d.small_faces, d.first_small_faces,
+                     Where::kFace),
+        face_finding("out_of_range_indices", "bad vertex indices", d.out_of_range_indices,
+                     d.first_out_of_range_faces, Where::kFace),
+        face_finding("non_finite_vertices", "non-finite vertices", d.non_finite_vertices,
+                     d.first_non_finite_vertices, Where::kVertex),
+    };
+}
+
+std::string vertex_text(const Model& model, uint64_t v) {
+    if (v >= model.vertex_count()) return "vertex " + std::to_string(v);
+    const double* p = &model.positions[3 * v];
+    return "vertex " + std::to_string(v) + " (" + readable_number(p[0]) + ", " +
+           readable_number(p[1]) + ", " + readable_number(p[2]) + ")";
+}
+
+std::string location_text(const Model& model, const Finding& finding,
+                          const std::array<uint64_t, 2>& location) {
+    switch (finding.where) {
+        case Where::kEdge:
+            return "edge " + vertex_text(model, location[0]) + " - " +
+                   vertex_text(model, location[1]);
+        case Where::kVertex:
+            return vertex_text(model, location[0]);
+        case Where::kFace:
+            break;
+    }
+    return "face " + std::to_string(location[0]);
+}
+
+std::string shells_summary(const std::vector<Shell>& shells) {
+    std::string text = std::to_string(shells.size());
+    std::string kinds;
+    for (const char* kind : {"solid", "cavity", "inverted", "no volume"}) {
+        const auto count = std::count_if(shells.begin(), shells.end(), [&](const Shell& shell) {
+            return std::string(shell.kind) == kind;
+        });
+        if (count > 0) kinds += (kinds.empty() ? "" : ", ") + std::to_string(count) + " " + kind;
+    }
+    return kinds.empty() ? text : text + " (" + kinds + ")";
+}
+
+void write_text(std::ostream& out, const std::string& path, const Model& model,
+                const CheckResult& check, const std::vector<Shell>& shells) {
+    const polymass_diagnostics& d = check.diagnostics;
+    out << path << " (" << model.format << "): ";
+    if (d.status == POLYMASS_OK) {
+        out << "a valid closed solid\n";
+    } else {
+        out << "NOT A VALID SOLID: " << category_of(d.status) << ": " << check.message << '\n';
+    }
+    out << "  faces " << d.face_count << ", vertices used " << d.used_vertex_count << ", edges "
+        << d.edge_count << ", shells " << shells_summary(shells) << '\n';
+    for (const Finding& finding : findings_of(d)) {
+        char line[64];
+        std::snprintf(line, sizeof line, "  %-22s%8llu  ", finding.label,
+                      static_cast<unsigned long long>(finding.count));
+        out << line;
+        for (size_t i = 0; i < finding.locations.size(); ++i) {
+            out << (i == 0 ? "" : "                                  ")
+                << location_text(model, finding, finding.locations[i]) << '\n';
+        }
+        if (finding.locations.empty()) out << '\n';
+        if (finding.count > finding.locations.size()) {
+            out << "                                  ... and "
+                << finding.count - finding.locations.size() << " more\n";
+        }
+    }
+    for (size_t i = 0; i < shells.size() && shells.size() > 1; ++i) {
+        out << "  shell " << i + 1 << ": " << shells[i].faces << " faces, signed volume "
+            << readable_number(shells[i].signed_volume) << " (" << shells[i].kind << ")\n";
+    }
+    out << "  max non-planarity     " << readable_number(d.max_non_planarity) << '\n';
+    out << "  signed volume         " << readable_number(d.signed_volume)
+        << (d.signed_volume < 0 ? "  (inverted: the faces are inside out)" : "") << '\n';
+}
+
+Json json_report(const std::string& path, const Model& model, const CheckResult& check,
+                 const std::vector<Shell>& shells) {
+    const polymass_diagnostics& d = check.diagnostics;
+    Json report;
+    report["file"] = path;
+    report["format"] = model.format;
+    report["valid"] = d.status == POLYMASS_OK;
+    report["category"] = category_of(d.status);
+    report["message"] = check.message;
+    report["faces"] = d.face_count;
+    report["used_vertices"] = d.used_vertex_count;
+    report["edges"] = d.edge_count;
+    report["shells"] = static_cast<uint64_t>(shells.size());
+    Json shell_list = Json::array();
+    for (const Shell& shell : shells) {
+        Json entry;
+        entry["faces"] = shell.faces;
+        if (!std::isnan(shell.signed_volume))
+            entry["signed_volume"] = json_number(shell.signed_volume);
+        entry["kind"] = shell.kind;
+        shell_list.push_back(entry);
+    }
+    report["shell_list"] = shell_list;
+    for (const Finding& finding : findings_of(d)) {
+        Json locations = Json::array();
+        for (const auto& location : finding.locations) {
+            if (finding.where == Where::kEdge) {
+                locations.push_back({location[0], location[1]});
+            } else {
+                locations.push_back(location[0]);
+            }
+        }
+        const char* list = finding.where == Where::kEdge     ? "first_edges"
+                           : finding.where == Where::kVertex ? "first_vertices"
+                                                             : "first_faces";
+        report[finding.key] = {{"count", finding.count}, {list, locations}};
+    }
+    report["max_non_planarity"] = json_number(d.max_non_planarity);
+    if (!std::isnan(d.signed_volume)) report["signed_volume"] = json_number(d.signed_volume);
+    return report;
+}
+
+}  // namespace
+
+ExitCode run_check(const Arguments& arguments) {
+    const Library library(options_for(arguments));
+    const bool as_json = arguments.output == OutputFormat::kJson;
+    std::ostringstream body;
+    Json reports = Json::array();
+    ExitCode worst = kExitOk;
+    for (const std::string& path : arguments.files) {
+        Model model;
+        try {
+            model = read_mesh_file(path, arguments.format);
+        } catch (const ReadError& error) {
+            worst = std::max(worst, kExitUnreadable);
+            std::cerr << "polymass: " << path << ": " << kUnreadableCategory << ": " << error.what()
+                      << '\n';
+            if (as_json) {
+                Json failure;
+                failure["file"] = path;
+                failure["error"] = {{"category", kUnreadableCategory}, {"message", error.what()}};
+                reports.push_back(failure);
+            }
+            continue;
+        }
+        prepare_model(model, arguments);
+        const Part all = combined_part(model);
+        CheckResult check = check_solid(library, model, all);
+        const std::vector<Shell> shells =
+            classify_shells(library, model, all, check.diagnostics.signed_volume);
+        const std::string inverted = inverted_shell_message(shells);
+        if (check.diagnostics.status == POLYMASS_OK && !inverted.empty()) {
+            check.diagnostics.status = POLYMASS_ERROR_INVERTED;
+            check.message = inverted;
+        }
+        worst = std::max(worst, exit_code_of(check.diagnostics.status));
+        if (as_json) {
+            reports.push_back(json_report(path, model, check, shells));
+        } else {
+            write_text(body, path, model, check, shells);
+        }
+    }
+    if (as_json) {
+        // One file: its object; several: an array of them.
+        print_json(std::cout, arguments.files.size() == 1 ? reports.front() : reports);
+    } else {
+        std::cout << body.str();
+    }
+    return worst;
+}
+
+}  // namespace polymass_cli

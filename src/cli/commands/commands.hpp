@@ -1,0 +1,25 @@
+// The two things the tool does, each returning the exit status.
+#pragma once
+
+#include <polymass/polymass.h>
+
+#include "arguments.hpp"
+#include "exit_codes.hpp"
+#include "model/model.hpp"
+
+namespace polymass_cli {
+
+// polymass FILE...: mass properties in the chosen output format.
+ExitCode run_properties(const Arguments& arguments);
+
+// polymass check FILE...: the diagnostics of each file.
+ExitCode run_check(const Arguments& arguments);
+
+// The library options the command line asks for.
+polymass_options options_for(const Arguments& arguments);
+
+// What the command line asks done to a model once read: --units and --scale,
+// --triangulate.
+void prepare_model(Model& model, const Arguments& arguments);
+
+}  // namespace polymass_cli

@@ -1,0 +1,182 @@
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+
+#include "commands/commands.hpp"
+#include "library/categories.hpp"
+#include "library/shells.hpp"
+#include "readers/mesh_reader.hpp"
+#include "reports/report.hpp"
+
+namespace polymass_cli {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+uint64_t used_vertices(const Model& model, const Part& part) {
+    std::vector<bool> used(model.vertex_count(), false);
+    uint64_t count = 0;
+    for (const uint32_t index : part.indices) {
+        if (index < used.size() && !used[index]) {
+            used[index] = true;
+            ++count;
+        }
+    }
+    return count;
+}
+
+PartReport solid_report(const Library& library, const Model& model, const Part& part,
+                        const polymass_mass_desc& mass) {
+    PartReport report;
+    report.name = part.name;
+    report.vertices = used_vertices(model, part);
+    report.faces = part.face_sizes.size();
+    report.computed = true;
+    report.result = compute_solid(library, model, part, mass);
+    // A disjoint shell inside out passes the library's checks (the surface as
+    // a whole is closed and oriented) and only lowers the total: refuse it as
+    // polymass check does, rather than print a body that is not the part.
+    SolidResult& result = report.result;
+    if (result.status == POLYMASS_OK) {
+        const bool turned = result.properties.warnings & POLYMASS_WARNING_INVERTED;
+        const double signed_volume = turned ? -result.properties.volume : result.properties.volume;
+        const std::string inverted =
+            inverted_shell_message(classify_shells(library, model, part, signed_volume));
+        if (!inverted.empty()) {
+            result.status = POLYMASS_ERROR_INVERTED;
+            result.message = inverted;
+        }
+    }
+    return report;
+}
+
+FileReport process_file(const Library& library, const std::string& path, const Arguments& arguments,
+                        polymass_mass_desc mass) {
+    FileReport report;
+    report.path = path;
+    const auto read_start = std::chrono::steady_clock::now();
+    Model model;
+    try {
+        model = read_mesh_file(path, arguments.format);
+    } catch (const ReadError& error) {
+        report.read_error = error.what();
+        return report;
+    }
+    prepare_model(model, arguments);
+    report.readable = true;
+    report.format = model.format;
+    report.notes = model.notes;
+    for (const std::string& note : model.notes) {
+        std::cerr << "polymass: " << path << ": note: " << note << '\n';
+    }
+    report.read_seconds = seconds_since(read_start);
+
+    const auto compute_start = std::chrono::steady_clock::now();
+    report.solid = solid_report(library, model, combined_part(model), mass);
+    if (model.parts.size() > 1) {
+        // Parts get the combined solid's density, so their masses add up to it.
+        const bool density_known = report.solid.result.status == POLYMASS_OK || !arguments.mass;
+        if (report.solid.result.status == POLYMASS_OK) {
+            mass.mass_mode = POLYMASS_MASS_FROM_DENSITY;
+            mass.density = report.solid.result.properties.density;
+        }
+        for (const Part& part : model.parts) {
+            if (density_known) {
+                report.parts.push_back(solid_report(library, model, part, mass));
+            } else {
+                PartReport counts;
+                counts.name = part.name;
+                counts.vertices = used_vertices(model, part);
+                counts.faces = part.face_sizes.size();
+                report.parts.push_back(counts);
+            }
+        }
+    }
+    report.compute_seconds = seconds_since(compute_start);
+    return report;
+}
+
+}  // namespace
+
+void prepare_model(Model& model, const Arguments& arguments) {
+    scale_model(model, arguments.metres_per_unit.value_or(1.0) * arguments.scale);
+    if (arguments.triangulate) triangulate_model(model);
+}
+
+polymass_options options_for(const Arguments& arguments) {
+    polymass_options options{};
+    options.struct_size = sizeof options;
+    // Files are welded: STL stores each triangle's corners, and OBJ/PLY
+    // exporters often repeat positions per face or per material.
+    options.flags = POLYMASS_OPTION_WELD_VERTICES;
+    if (arguments.accept_inverted) options.flags |= POLYMASS_OPTION_ACCEPT_INVERTED;
+    if (arguments.no_check) options.flags |= POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    options.weld_tolerance = arguments.weld_tolerance;
+    options.planarity_tolerance = arguments.planarity_tolerance;
+    return options;
+}
+
+ExitCode run_properties(const Arguments& arguments) {
+    const Library library(options_for(arguments));
+    polymass_mass_desc mass{};
+    mass.struct_size = sizeof mass;
+    mass.mass_mode = arguments.mass ? POLYMASS_MASS_FROM_TOTAL : POLYMASS_MASS_FROM_DENSITY;
+    mass.density = arguments.density.value_or(1.0);
+    mass.mass = arguments.mass.value_or(1.0);
+    if (arguments.about == About::kPoint) {
+        std::copy(arguments.point.begin(), arguments.point.end(), mass.point);
+    }
+
+    std::vector<FileReport> files;
+    ExitCode worst = kExitOk;
+    for (const std::string& path : arguments.files) {
+        files.push_back(process_file(library, path, arguments, mass));
+        const FileReport& file = files.back();
+        worst = std::max(worst, file.exit_code());
+        if (arguments.timings && file.readable) {
+            std::cerr << "polymass: " << path << ": read " << file.read_seconds << " s, compute "
+                      << file.compute_seconds << " s\n";
+        }
+        // The table shows errors itself; the machine formats keep stdout clean.
+        if (arguments.output != OutputFormat::kTable && file.exit_code() != kExitOk) {
+            std::cerr << "polymass: " << path << ": "
+                      << (file.readable ? category_of(file.solid.result.status)
+                                        : kUnreadableCategory)
+                      << ": " << (file.readable ? file.solid.result.message : file.read_error)
+                      << '\n';
+        }
+        // Warnings go to stderr whatever the output, where a script sees them.
+        if (file.exit_code() == kExitOk && file.solid.result.properties.warnings) {
+            std::cerr << "polymass: " << path
+                      << ": warning: " << warning_text(file.solid.result.properties.warnings)
+                      << '\n';
+        }
+    }
+    // The table labels its lengths "(file units)"; the machine outputs carry
+    // bare numbers, so say it once.
+    if (!arguments.metres_per_unit && arguments.output != OutputFormat::kTable) {
+        std::cerr << "polymass: note: " << kFileUnitsNote
+                  << " (give the file's unit with --units)\n";
+    }
+
+    OutputSettings settings;
+    settings.about = arguments.about;
+    settings.point = arguments.point;
+    if (arguments.metres_per_unit) settings.length_unit = "m";
+    settings.link_origin = arguments.link_origin;
+    switch (arguments.output) {
+        case OutputFormat::kTable:
+            write_table(std::cout, files, settings);
+            break;
+        case OutputFormat::kJson:
+            write_json(std::cout, files, settings);
+            break;
+        default:
+            write_inertial_xml(std::cout, files, arguments.output, settings);
+    }
+    return worst;
+}
+
+}  // namespace polymass_cli

@@ -1,0 +1,53 @@
+// The tool's only contact with libpolymass: a context holding the options,
+// and a part of a Model handed over as a polymass_mesh_desc (no copy) to
+// compute its mass properties or to check it.
+#pragma once
+
+#include <polymass/polymass.h>
+
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace polymass_cli {
+
+// A polymass_context with the given options, freed on destruction.
+class Library {
+public:
+    explicit Library(const polymass_options& options);
+    ~Library();
+    Library(const Library&) = delete;
+    Library& operator=(const Library&) = delete;
+
+    polymass_context* context() const { return context_; }
+    std::string message() const { return polymass_context_message(context_); }
+
+private:
+    polymass_context* context_ = nullptr;
+};
+
+struct SolidResult {
+    int32_t status = POLYMASS_OK;
+    std::string message;  // the context's message when status is an error
+    polymass_mass_properties properties{};
+};
+
+SolidResult compute_solid(const Library& library, const Model& model, const Part& part,
+                          const polymass_mass_desc& mass);
+
+struct CheckResult {
+    polymass_diagnostics diagnostics{};
+    std::string message;  // why the mesh is not a valid solid, if it is not
+};
+
+CheckResult check_solid(const Library& library, const Model& model, const Part& part);
+
+// The shell (connected piece of surface) of each face, numbered from 0, with
+// the library's welding or (weld false) of the vertices as given; empty when
+// the library cannot tell (indices out of range, non-finite coordinates: the
+// check says which).
+std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
+                                         const Part& part, bool weld, uint64_t& shell_count);
+
+}  // namespace polymass_cli

@@ -1,0 +1,183 @@
+#include "readers/isolated_reader.hpp"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "readers/mesh_reader.hpp"
+
+namespace polymass_cli {
+namespace {
+
+// The child's answer: a tag, then the Model or the error's message.
+enum class Outcome : uint8_t { kModel = 0, kReadError = 1 };
+
+class Writer {
+public:
+    void bytes(const void* data, size_t size) { out_.append(static_cast<const char*>(data), size); }
+    template <class T>
+    void value(T v) {
+        bytes(&v, sizeof v);
+    }
+    template <class T>
+    void array(const std::vector<T>& values) {
+        value<uint64_t>(values.size());
+        bytes(values.data(), values.size() * sizeof(T));
+    }
+    void text(const std::string& s) {
+        value<uint64_t>(s.size());
+        bytes(s.data(), s.size());
+    }
+    const std::string& data() const { return out_; }
+
+private:
+    std::string out_;
+};
+
+class Reader {
+public:
+    explicit Reader(const std::string& in) : in_(in) {}
+    void bytes(void* data, size_t size) {
+        if (size > in_.size() - at_) throw ReadError("the reader's child process sent too little");
+        if (size == 0) return;  // an empty vector's data() may be null
+        std::memcpy(data, in_.data() + at_, size);
+        at_ += size;
+    }
+    template <class T>
+    T value() {
+        T v;
+        bytes(&v, sizeof v);
+        return v;
+    }
+    template <class T>
+    std::vector<T> array() {
+        const uint64_t count = value<uint64_t>();
+        if (count > (in_.size() - at_) / sizeof(T))
+            throw ReadError("the reader's child process sent too little");
+        std::vector<T> values(count);
+        bytes(values.data(), count * sizeof(T));
+        return values;
+    }
+    std::string text() {
+        const std::vector<char> chars = array<char>();
+        return std::string(chars.begin(), chars.end());
+    }
+
+private:
+    const std::string& in_;
+    size_t at_ = 0;
+};
+
+std::string serialize(const Model& model) {
+    Writer out;
+    out.value(Outcome::kModel);
+    out.text(model.format);
+    out.array(model.positions);
+    out.value<uint64_t>(model.parts.size());
+    for (const Part& part : model.parts) {
+        out.text(part.name);
+        out.array(part.indices);
+        out.array(part.face_sizes);
+    }
+    out.value<uint64_t>(model.notes.size());
+    for (const std::string& note : model.notes) out.text(note);
+    return out.data();
+}
+
+Model deserialize(const std::string& data) {
+    Reader in(data);
+    if (in.value<Outcome>() == Outcome::kReadError) throw ReadError(in.text());
+    Model model;
+    model.format = in.text();
+    model.positions = in.array<double>();
+    model.parts.resize(in.value<uint64_t>());
+    for (Part& part : model.parts) {
+        part.name = in.text();
+        part.indices = in.array<uint32_t>();
+        part.face_sizes = in.array<uint32_t>();
+    }
+    model.notes.resize(in.value<uint64_t>());
+    for (std::string& note : model.notes) note = in.text();
+    return model;
+}
+
+void write_all(int fd, const std::string& data) {
+    for (size_t at = 0; at < data.size();) {
+        const ssize_t written = write(fd, data.data() + at, data.size() - at);
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) return;  // the parent is gone: nothing to tell
+        at += size_t(written);
+    }
+}
+
+std::string read_all(int fd) {
+    std::string data;
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t got = read(fd, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR) continue;
+        if (got <= 0) return data;
+        data.append(buffer, size_t(got));
+    }
+}
+
+[[noreturn]] void run_child(int fd, const std::function<Model()>& read) {
+    // A small crafted file can make a reader work without end (3MF objects
+    // whose components reuse each other expand into a full tree): two minutes
+    // of CPU, far beyond any real file, then SIGXCPU - a crash the parent
+    // reports.
+    constexpr rlim_t kCpuSeconds = 120;
+    const struct rlimit cpu = {kCpuSeconds, kCpuSeconds};
+    setrlimit(RLIMIT_CPU, &cpu);
+    std::string answer;
+    try {
+        answer = serialize(read());
+    } catch (const ReadError& error) {
+        Writer out;
+        out.value(Outcome::kReadError);
+        out.text(error.what());
+        answer = out.data();
+    } catch (...) {
+        _exit(2);  // out of memory or worse: the parent reports the exit status
+    }
+    write_all(fd, answer);
+    _exit(0);
+}
+
+}  // namespace
+
+Model read_isolated(const std::function<Model()>& read) {
+    int pipe_ends[2];
+    if (pipe(pipe_ends) != 0) throw ReadError(std::string("pipe: ") + std::strerror(errno));
+    const pid_t child = fork();
+    if (child < 0) {
+        close(pipe_ends[0]);
+        close(pipe_ends[1]);
+        throw ReadError(std::string("fork: ") + std::strerror(errno));
+    }
+    if (child == 0) {
+        close(pipe_ends[0]);
+        run_child(pipe_ends[1], read);
+    }
+    close(pipe_ends[1]);
+    const std::string answer = read_all(pipe_ends[0]);
+    close(pipe_ends[0]);
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFSIGNALED(status))
+        throw ReadError(std::string("the reader crashed on this file (") +
+                        strsignal(WTERMSIG(status)) + "): it is corrupt or not of its format");
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        throw ReadError("the reader failed (exit status " + std::to_string(WEXITSTATUS(status)) +
+                        ", e.g. out of memory)");
+    return deserialize(answer);
+}
+
+}  // namespace polymass_cli

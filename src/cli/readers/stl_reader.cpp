@@ -1,0 +1,146 @@
+// STL, binary and ASCII. Binary: an 80-byte header, a little-endian uint32
+// triangle count, then 50 bytes per triangle (normal, three float32 vertices,
+// attribute word); the file must be exactly that long. ASCII: `solid` blocks of
+// `facet normal ... outer loop vertex x y z ... endloop endfacet`, each block a
+// part. Normals are ignored (the vertex order says which side is out) and equal
+// positions are welded exactly, since STL stores every triangle's corners.
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+#include "readers/format_readers.hpp"
+#include "readers/mesh_reader.hpp"
+#include "readers/text_lines.hpp"
+#include "readers/vertex_welder.hpp"
+
+namespace polymass_cli {
+namespace {
+
+constexpr uint64_t kBinaryHeaderBytes = 84;
+constexpr uint64_t kBinaryTriangleBytes = 50;
+
+uint32_t little_endian_u32(const unsigned char* bytes) {
+    return static_cast<uint32_t>(bytes[0]) | static_cast<uint32_t>(bytes[1]) << 8 |
+           static_cast<uint32_t>(bytes[2]) << 16 | static_cast<uint32_t>(bytes[3]) << 24;
+}
+
+float little_endian_f32(const unsigned char* bytes) {
+    const uint32_t bits = little_endian_u32(bytes);
+    float value = 0.0f;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+bool starts_with_solid(const std::string& bytes) {
+    const std::string::size_type first = bytes.find_first_not_of(" \t\r\n");
+    return first != std::string::npos && bytes.compare(first, 5, "solid") == 0;
+}
+
+Model read_binary(const std::string& bytes, uint64_t triangle_count) {
+    Model model;
+    Part& part = model.parts.emplace_back();
+    VertexWelder welder(model.positions);
+    part.indices.reserve(3 * triangle_count);
+    part.face_sizes.assign(triangle_count, 3);
+    const unsigned char* triangle =
+        reinterpret_cast<const unsigned char*>(bytes.data()) + kBinaryHeaderBytes;
+    for (uint64_t t = 0; t < triangle_count; ++t, triangle += kBinaryTriangleBytes) {
+        const unsigned char* corner = triangle + 12;  // after the normal
+        for (int c = 0; c < 3; ++c, corner += 12) {
+            part.indices.push_back(welder.index_of(little_endian_f32(corner),
+                                                   little_endian_f32(corner + 4),
+                                                   little_endian_f32(corner + 8)));
+        }
+    }
+    return model;
+}
+
+Model read_ascii(const std::string& bytes) {
+    Model model;
+    VertexWelder welder(model.positions);
+    TextLines lines(bytes);
+    Part* part = nullptr;
+    // Where in a facet the reader is. Only `vertex` and `endloop` may appear
+    // in a loop and one `outer loop` in a facet, so every corner read belongs
+    // to the face its `endloop` records.
+    bool in_facet = false;
+    bool in_loop = false;
+    bool facet_has_loop = false;
+    uint32_t corners = 0;
+    auto shown = [](std::string_view keyword) { return std::string(keyword.substr(0, 40)); };
+    while (lines.next_line(false)) {
+        std::string_view keyword;
+        if (!lines.next_token(keyword)) continue;
+        if (in_loop && keyword != "vertex" && keyword != "endloop") {
+            lines.fail("'" + shown(keyword) + "' inside a facet's loop (expected 'vertex' or " +
+                       "'endloop')");
+        }
+        if (keyword == "solid") {
+            if (in_facet) lines.fail("'solid' inside a facet");
+            part = &model.parts.emplace_back();
+            std::string_view name;
+            if (lines.next_token(name)) part->name = std::string(name);
+        } else if (part == nullptr) {
+            lines.fail("expected 'solid' before '" + shown(keyword) + "'");
+        } else if (keyword == "facet") {
+            if (in_facet) lines.fail("'facet' inside a facet (no 'endfacet' before it)");
+            in_facet = true;
+            facet_has_loop = false;
+        } else if (keyword == "outer") {
+            if (facet_has_loop) lines.fail("a second 'outer loop' in a facet");
+            in_loop = true;
+            facet_has_loop = in_facet;
+            corners = 0;
+        } else if (keyword == "vertex") {
+            if (!in_loop) lines.fail("'vertex' outside an 'outer loop'");
+            const double x = lines.expect_double("an x coordinate");
+            const double y = lines.expect_double("a y coordinate");
+            const double z = lines.expect_double("a z coordinate");
+            part->indices.push_back(welder.index_of(x, y, z));
+            ++corners;
+        } else if (keyword == "endloop") {
+            if (!in_loop) lines.fail("'endloop' without 'outer loop'");
+            part->face_sizes.push_back(corners);  // fewer than 3: the library names it
+            in_loop = false;
+        } else if (keyword == "endfacet") {
+            in_facet = false;
+        } else if (keyword == "endsolid") {
+            if (in_facet) lines.fail("'endsolid' inside a facet");
+            part = nullptr;
+        } else {
+            lines.fail("unexpected '" + shown(keyword) + "' in an ASCII STL");
+        }
+    }
+    if (in_loop || in_facet) lines.fail("the file ends inside a facet");
+    return model;
+}
+
+}  // namespace
+
+Model read_stl(const std::string& bytes) {
+    const uint64_t size = bytes.size();
+    uint64_t binary_count = 0;
+    bool binary_size_matches = false;
+    if (size >= kBinaryHeaderBytes) {
+        binary_count = little_endian_u32(reinterpret_cast<const unsigned char*>(bytes.data()) + 80);
+        binary_size_matches = size == kBinaryHeaderBytes + kBinaryTriangleBytes * binary_count;
+    }
+    // Some binary exporters also begin their header with "solid": the exact
+    // binary size decides.
+    if (starts_with_solid(bytes) && !binary_size_matches) return read_ascii(bytes);
+    if (size < kBinaryHeaderBytes) {
+        throw ReadError("not an STL file: " + std::to_string(size) +
+                        " bytes, fewer than a binary STL header (84) and no 'solid' keyword");
+    }
+    if (!binary_size_matches) {
+        const uint64_t expected = kBinaryHeaderBytes + kBinaryTriangleBytes * binary_count;
+        throw ReadError("binary STL of the wrong length: its header says " +
+                        std::to_string(binary_count) + " triangles, which take " +
+                        std::to_string(expected) + " bytes, but the file has " +
+                        std::to_string(size) +
+                        (size < expected ? " (truncated)" : " (not an STL, or corrupt)"));
+    }
+    return read_binary(bytes, binary_count);
+}
+
+}  // namespace polymass_cli

@@ -1,0 +1,73 @@
+#include <polymass/polymass.h>
+
+#include "library/categories.hpp"
+#include "reports/report.hpp"
+
+namespace polymass_cli {
+
+ExitCode FileReport::exit_code() const {
+    if (!readable) return kExitUnreadable;
+    return exit_code_of(solid.result.status);
+}
+
+Summary summarize(const std::vector<FileReport>& files) {
+    Summary summary;
+    summary.files = files.size();
+    for (const FileReport& file : files) {
+        if (file.exit_code() != kExitOk) continue;
+        ++summary.valid;
+        summary.total_volume += file.solid.result.properties.volume;
+        summary.total_mass += file.solid.result.properties.mass;
+    }
+    return summary;
+}
+
+std::array<double, 3> principal_axis(const polymass_mass_properties& properties, int i) {
+    const double* rotation = properties.principal_axes;  // row-major 3x3
+    return {rotation[i], rotation[3 + i], rotation[6 + i]};
+}
+
+namespace {
+
+const struct {
+    uint32_t bit;
+    const char* name;
+    const char* meaning;
+} kWarnings[] = {
+    {POLYMASS_WARNING_INVERTED, "inverted", "the mesh was inside out: its faces were reversed"},
+    {POLYMASS_WARNING_DEGENERATE_FACES, "degenerate_faces", "faces of zero area, harmless"},
+    {POLYMASS_WARNING_UNCHECKED, "unchecked", "the topology checks were skipped"},
+    {POLYMASS_WARNING_NON_MANIFOLD, "non_manifold", "edges with more than two faces, accepted"}};
+
+}  // namespace
+
+std::vector<std::string> warning_names(uint32_t warnings) {
+    std::vector<std::string> names;
+    for (const auto& warning : kWarnings) {
+        if (warnings & warning.bit) names.emplace_back(warning.name);
+    }
+    return names;
+}
+
+std::string warning_text(uint32_t warnings) {
+    std::string text;
+    for (const auto& warning : kWarnings) {
+        if (!(warnings & warning.bit)) continue;
+        if (!text.empty()) text += ", ";
+        text += std::string(warning.name) + " (" + warning.meaning + ")";
+    }
+    return text;
+}
+
+std::array<double, 9> symmetric_tensor(const double* values) {
+    std::array<double, 9> symmetric{};
+    for (int row = 0; row < 3; ++row) {
+        for (int column = 0; column < 3; ++column) {
+            const int upper = row <= column ? 3 * row + column : 3 * column + row;
+            symmetric[3 * row + column] = values[upper] + 0.0;
+        }
+    }
+    return symmetric;
+}
+
+}  // namespace polymass_cli

@@ -1,0 +1,95 @@
+// --json: one object per file (an array under "files" with a summary when
+// several files are given). The keys are documented in the README.
+#include <polymass/polymass.h>
+
+#include "library/categories.hpp"
+#include "reports/json_output.hpp"
+#include "reports/report.hpp"
+
+namespace polymass_cli {
+namespace {
+
+Json error_object(const char* category, const std::string& message) {
+    return Json{{"category", category}, {"message", message}};
+}
+
+// The members of a solid's object.
+void add_solid_members(Json& solid, const PartReport& part, const OutputSettings& settings) {
+    solid["vertices"] = part.vertices;
+    solid["faces"] = part.faces;
+    if (part.result.status != POLYMASS_OK) {
+        solid["error"] = error_object(category_of(part.result.status), part.result.message);
+        return;
+    }
+    const polymass_mass_properties& p = part.result.properties;
+    solid["volume"] = json_number(p.volume);
+    solid["mass"] = json_number(p.mass);
+    solid["density"] = json_number(p.density);
+    solid["center_of_mass"] = json_numbers(p.center_of_mass, 3);
+    solid["inertia"] = json_tensor(p.inertia);
+    solid["inertia_origin"] = json_tensor(p.inertia_origin);
+    if (settings.about == About::kPoint) {
+        solid["about_point"] = json_numbers(settings.point.data(), 3);
+        solid["inertia_point"] = json_tensor(p.inertia_point);
+    }
+    solid["principal_moments"] = json_numbers(p.principal_moments, 3);
+    // Axis i (the columns of the library's rotation) goes with moment i.
+    Json axes = Json::array();
+    for (int axis = 0; axis < 3; ++axis)
+        axes.push_back(json_numbers(principal_axis(p, axis).data(), 3));
+    solid["principal_axes"] = axes;
+    solid["surface_area"] = json_number(p.surface_area);
+    solid["warnings"] = warning_names(p.warnings);
+}
+
+Json file_object(const FileReport& file, const OutputSettings& settings) {
+    Json object;
+    object["file"] = file.path;
+    if (!file.readable) {
+        object["error"] = error_object(kUnreadableCategory, file.read_error);
+        return object;
+    }
+    object["format"] = file.format;
+    if (!settings.length_unit.empty()) object["length_unit"] = settings.length_unit;
+    if (!file.notes.empty()) object["notes"] = file.notes;
+    add_solid_members(object, file.solid, settings);
+    if (!file.parts.empty()) {
+        Json parts = Json::array();
+        for (const PartReport& part : file.parts) {
+            Json entry;
+            entry["name"] = part.name;
+            if (part.computed) {
+                add_solid_members(entry, part, settings);
+            } else {
+                entry["vertices"] = part.vertices;
+                entry["faces"] = part.faces;
+            }
+            parts.push_back(entry);
+        }
+        object["parts"] = parts;
+    }
+    return object;
+}
+
+}  // namespace
+
+void write_json(std::ostream& out, const std::vector<FileReport>& files,
+                const OutputSettings& settings) {
+    if (files.size() == 1) {
+        print_json(out, file_object(files.front(), settings));
+        return;
+    }
+    Json all = Json::array();
+    for (const FileReport& file : files) all.push_back(file_object(file, settings));
+    const Summary summary = summarize(files);
+    Json document;
+    document["files"] = all;
+    document["summary"] = {{"files", summary.files},
+                           {"valid", summary.valid},
+                           {"failed", summary.files - summary.valid},
+                           {"total_volume", json_number(summary.total_volume)},
+                           {"total_mass", json_number(summary.total_mass)}};
+    print_json(out, document);
+}
+
+}  // namespace polymass_cli
