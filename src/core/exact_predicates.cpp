@@ -56,6 +56,7 @@ public:
     // through the terms with two_sum, keeping every nonzero remainder.
     void add(double b) {
         assert(count_ < Capacity);
+        if (b == 0.0) return;
         double carry = b;
         std::size_t kept = 0;
         for (std::size_t i = 0; i < count_; ++i) {
@@ -77,11 +78,14 @@ private:
     std::size_t count_ = 0;
 };
 
-// Adds sign * x * y exactly: four exact products of doubles.
+// Adds sign * x * y exactly: four exact products of doubles. Zero parts (the
+// low part of a difference that was exact in double, usually) are skipped.
 template <std::size_t Capacity>
 void add_product(Expansion<Capacity>& sum, double sign, const TwoTerm& x, const TwoTerm& y) {
     for (const double xi : {x.hi, x.lo}) {
+        if (xi == 0.0) continue;
         for (const double yi : {y.hi, y.lo}) {
+            if (yi == 0.0) continue;
             const TwoTerm p = two_product(xi, yi);
             sum.add(sign * p.hi);
             sum.add(sign * p.lo);
@@ -95,9 +99,12 @@ template <std::size_t Capacity>
 void add_product(Expansion<Capacity>& sum, double sign, const TwoTerm& x, const TwoTerm& y,
                  const TwoTerm& z) {
     for (const double xi : {x.hi, x.lo}) {
+        if (xi == 0.0) continue;
         for (const double yi : {y.hi, y.lo}) {
+            if (yi == 0.0) continue;
             const TwoTerm p = two_product(xi, yi);
             for (const double zi : {z.hi, z.lo}) {
+                if (zi == 0.0) continue;
                 const TwoTerm hi = two_product(p.hi, zi);
                 const TwoTerm lo = two_product(p.lo, zi);
                 sum.add(sign * hi.hi);

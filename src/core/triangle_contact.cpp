@@ -45,8 +45,8 @@ int projected_orientation(const Triangle& t, const Projection& project) {
     return orient2d(project(t[0]), project(t[1]), project(t[2]));
 }
 
-constexpr std::array<Projection, 3> dropping_axis = {
-    Projection{1, 2}, Projection{2, 0}, Projection{0, 1}};
+constexpr std::array<Projection, 3> dropping_axis = {Projection{1, 2}, Projection{2, 0},
+                                                     Projection{0, 1}};
 
 // A projection that keeps t non-degenerate: dropping the axis of the largest
 // normal component when its exact projected orientation is nonzero,
@@ -172,10 +172,12 @@ Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corne
         return contact;
     }
     if (shared_corner) return Contact::none;
-    if (p_sides == Signs{0, 0, 0}) return coplanar_overlap(p, q) ? Contact::touching : Contact::none;
+    if (p_sides == Signs{0, 0, 0})
+        return coplanar_overlap(p, q) ? Contact::touching : Contact::none;
     // One triangle lies on one side of the other's plane with a corner or an
     // edge on it: that corner or edge is all the two can have in common.
-    const bool meet = p_straddles ? touches_on_plane(q, q_sides, p) : touches_on_plane(p, p_sides, q);
+    const bool meet =
+        p_straddles ? touches_on_plane(q, q_sides, p) : touches_on_plane(p, p_sides, q);
     return meet ? Contact::touching : Contact::none;
 }
 

@@ -19,10 +19,10 @@
 
 namespace {
 
-using polymass::core::orient2d;
-using polymass::core::orient3d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using polymass::core::orient2d;
+using polymass::core::orient3d;
 
 // Signed integer of any size: sign and magnitude in base 2^32, little-endian.
 struct BigInt {
@@ -114,7 +114,8 @@ BigInt scaled_integer(double x) {
     const std::size_t limb = static_cast<std::size_t>(shift / 32);
     // mantissa * 2^bit spread over three limbs (mantissa < 2^53, bit < 32).
     r.limbs[limb] = static_cast<std::uint32_t>(mantissa << bit);
-    r.limbs[limb + 1] = static_cast<std::uint32_t>(bit == 0 ? mantissa >> 32 : mantissa >> (32 - bit));
+    r.limbs[limb + 1] =
+        static_cast<std::uint32_t>(bit == 0 ? mantissa >> 32 : mantissa >> (32 - bit));
     r.limbs[limb + 2] = static_cast<std::uint32_t>(bit == 0 ? 0 : mantissa >> (64 - bit));
     r.negative = x < 0;
     r.trim();
@@ -129,8 +130,7 @@ std::array<BigInt, Dim> exact_difference(const Eigen::Matrix<double, Dim, 1>& b,
     return d;
 }
 
-int reference_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c,
-                       const Vector3d& d) {
+int reference_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c, const Vector3d& d) {
     const auto u = exact_difference<3>(b, a);
     const auto v = exact_difference<3>(c, a);
     const auto w = exact_difference<3>(d, a);
@@ -218,8 +218,8 @@ void near_coplanar(std::mt19937_64& random) {
                 check_orient3d(p[0], p[1], p[2], p[3], counts);
             }
             char what[96];
-            std::snprintf(what, sizeof what, "orient3d near a plane, offset %g, scale 2^%d",
-                          offset, exponent);
+            std::snprintf(what, sizeof what, "orient3d near a plane, offset %g, scale 2^%d", offset,
+                          exponent);
             report(what, counts);
         }
     }
@@ -266,7 +266,8 @@ void mixed_magnitudes(std::mt19937_64& random) {
         std::array<Vector3d, 4> p;
         const int base = exponent(random);
         for (Vector3d& x : p) {
-            for (int i = 0; i < 2; ++i) x[i] = std::ldexp(unit(random), base + exponent(random) / 3);
+            for (int i = 0; i < 2; ++i)
+                x[i] = std::ldexp(unit(random), base + exponent(random) / 3);
             x.z() = x.x() / 2 + x.y() / 4;
         }
         for (Vector3d& x : p) x = nudge(x, 2, ulps(random));
@@ -304,8 +305,10 @@ void orient2d_cases(std::mt19937_64& random) {
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (const int exponent : {-1000, -664, 664, 1000}) {
         for (int n = 0; n < 500; ++n) {
-            const Vector2d a(std::ldexp(unit(random), exponent), std::ldexp(unit(random), exponent));
-            const Vector2d b(std::ldexp(unit(random), exponent), std::ldexp(unit(random), exponent));
+            const Vector2d a(std::ldexp(unit(random), exponent),
+                             std::ldexp(unit(random), exponent));
+            const Vector2d b(std::ldexp(unit(random), exponent),
+                             std::ldexp(unit(random), exponent));
             Vector2d c = a + (b - a) * 0.5;
             c.y() = std::nextafter(c.y(), n % 2 ? INFINITY : -INFINITY);
             check_orient2d(a, b, c, scales);
@@ -342,7 +345,8 @@ void random_small_integers(std::mt19937_64& random) {
     Counts counts;
     for (int n = 0; n < 5000; ++n) {
         std::array<Vector3d, 4> p;
-        for (Vector3d& x : p) x = Vector3d(coordinate(random), coordinate(random), coordinate(random));
+        for (Vector3d& x : p)
+            x = Vector3d(coordinate(random), coordinate(random), coordinate(random));
         check_orient3d(p[0], p[1], p[2], p[3], counts);
         check_orient2d(p[0].head<2>(), p[1].head<2>(), p[2].head<2>(), counts);
     }
