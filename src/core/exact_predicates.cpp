@@ -168,7 +168,9 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
         !exact_difference<3>(d, a, rows[2])) {
         // A difference beyond the double range (a coordinate above 2^1023):
         // a quarter of every point, exact unless a coordinate is also below
-        // 2^-1020 (see the range in docs/exact-predicates.md).
+        // 2^-1020 (see the range in docs/exact-predicates.md). Non-finite
+        // input breaks the precondition: 0 rather than endless recursion.
+        if (!(a.allFinite() && b.allFinite() && c.allFinite() && d.allFinite())) return 0;
         return orient3d_exact(a / 4, b / 4, c / 4, d / 4);
     }
     for (Row<3>& row : rows) {
@@ -190,6 +192,7 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
 int orient2d_exact(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
     std::array<Row<2>, 2> rows;
     if (!exact_difference<2>(b, a, rows[0]) || !exact_difference<2>(c, a, rows[1])) {
+        if (!(a.allFinite() && b.allFinite() && c.allFinite())) return 0;
         return orient2d_exact(a / 4, b / 4, c / 4);
     }
     for (Row<2>& row : rows) {

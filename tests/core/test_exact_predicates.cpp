@@ -336,7 +336,11 @@ void edge_cases() {
                    Vector3d(huge, huge, -huge)) == 0);
     CHECK(orient2d(Vector2d(-huge, -huge), Vector2d(huge, -huge), Vector2d(-huge, huge)) == 1);
     CHECK(orient2d(Vector2d(tiny, 0), Vector2d(0, tiny), Vector2d(0, 0)) == 1);
-    std::printf("  %-58s %6d cases\n", "zeros, subnormals, the largest doubles", 10);
+    // Not finite: outside the contract, but it must return (0), not loop.
+    const Vector3d nan(NAN, 0, 0);
+    CHECK(orient3d(nan, x, y, z) == 0);
+    CHECK(orient2d(Vector2d(INFINITY, 0), Vector2d(0, 1), Vector2d(1, 0)) == 0);
+    std::printf("  %-58s %6d cases\n", "zeros, subnormals, the largest doubles, not finite", 12);
 }
 
 // Random points with small integer coordinates: many exact zeros.
