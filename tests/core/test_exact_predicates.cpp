@@ -203,7 +203,7 @@ void near_coplanar(std::mt19937_64& random) {
     for (const double offset : offsets) {
         for (const int exponent : exponents) {
             Counts counts;
-            for (int n = 0; n < 300; ++n) {
+            for (int n = 0; n < 100; ++n) {
                 std::array<Vector3d, 4> p;
                 for (Vector3d& x : p) {
                     // Spread comparable to the offset: differences with all
@@ -234,7 +234,7 @@ void integer_coplanar(std::mt19937_64& random) {
     const double offsets[] = {0.0, 1e6, 1e8, 4503599627370496.0 /* 2^52 */};
     for (const double offset : offsets) {
         Counts counts;
-        for (int n = 0; n < 500; ++n) {
+        for (int n = 0; n < 200; ++n) {
             Eigen::Matrix<std::int64_t, 3, 1> a, b, c;
             for (int i = 0; i < 3; ++i) {
                 a[i] = small(random);
@@ -262,7 +262,7 @@ void mixed_magnitudes(std::mt19937_64& random) {
     std::uniform_int_distribution<int> exponent(-300, 300);
     std::uniform_int_distribution<int> ulps(-1, 1);
     Counts counts;
-    for (int n = 0; n < 2000; ++n) {
+    for (int n = 0; n < 600; ++n) {
         std::array<Vector3d, 4> p;
         const int base = exponent(random);
         for (Vector3d& x : p) {
@@ -280,17 +280,17 @@ void mixed_magnitudes(std::mt19937_64& random) {
 // random integer points at offsets, compared with the reference.
 void orient2d_cases(std::mt19937_64& random) {
     Counts near_line;
-    for (int i = 0; i < 64; ++i) {
-        for (int j = 0; j < 64; ++j) {
+    for (int i = 0; i < 32; ++i) {
+        for (int j = 0; j < 32; ++j) {
             const Vector2d a(0.5 + i * 0x1p-53, 0.5 + j * 0x1p-53);
             check_orient2d(a, Vector2d(12, 12), Vector2d(24, 24), near_line);
         }
     }
-    report("orient2d on a 64x64 ulp grid near the line y = x", near_line);
+    report("orient2d on a 32x32 ulp grid near the line y = x", near_line);
     Counts offsets;
     std::uniform_int_distribution<std::int64_t> small(-100, 100);
     for (const double offset : {0.0, 1e8, 1e15}) {
-        for (int n = 0; n < 2000; ++n) {
+        for (int n = 0; n < 500; ++n) {
             const double ax = double(small(random)), ay = double(small(random));
             const double bx = double(small(random)), by = double(small(random));
             const double t = double(small(random) / 10);
@@ -304,7 +304,7 @@ void orient2d_cases(std::mt19937_64& random) {
     Counts scales;
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (const int exponent : {-1000, -664, 664, 1000}) {
-        for (int n = 0; n < 500; ++n) {
+        for (int n = 0; n < 150; ++n) {
             const Vector2d a(std::ldexp(unit(random), exponent),
                              std::ldexp(unit(random), exponent));
             const Vector2d b(std::ldexp(unit(random), exponent),
@@ -347,7 +347,7 @@ void edge_cases() {
 void random_small_integers(std::mt19937_64& random) {
     std::uniform_int_distribution<int> coordinate(-3, 3);
     Counts counts;
-    for (int n = 0; n < 5000; ++n) {
+    for (int n = 0; n < 1500; ++n) {
         std::array<Vector3d, 4> p;
         for (Vector3d& x : p)
             x = Vector3d(coordinate(random), coordinate(random), coordinate(random));

@@ -257,7 +257,7 @@ void random_triangles() {
     std::uniform_int_distribution<int> coordinate(-2, 2);
     long pairs = 0, shared_pairs = 0, straddling = 0, disagreeing = 0, reference_wrong = 0;
     long seen[3] = {0, 0, 0};
-    while (pairs < 20000) {
+    while (pairs < 5000) {
         std::array<IntVector, 3> p, q;
         for (IntVector& x : p)
             x = IntVector(coordinate(random), coordinate(random), coordinate(random));
