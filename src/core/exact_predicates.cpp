@@ -154,11 +154,11 @@ constexpr int orient3d_row_top = 336;
 // 6 monomials x 8 products of three doubles x 4 exact terms.
 constexpr std::size_t orient3d_terms = 6 * 8 * 4;
 
-// Rows scaled to [2^508, 2^509): products below 2^1020, the 16 terms below 2^1024.
+// Rows scaled to [2^508, 2^509): products below 2^1018, the 16 terms sum below 2^1022.
 constexpr int orient2d_row_top = 508;
 // 2 monomials x 4 products of two doubles x 2 exact terms.
 constexpr std::size_t orient2d_terms = 2 * 4 * 2;
-static_assert(2 * (orient2d_row_top + 1) + 4 <= 1024, "orient2d terms must not overflow");
+static_assert(2 * (orient2d_row_top + 1) + 4 <= 1023, "orient2d terms must not overflow");
 static_assert(3 * (orient3d_row_top + 1) + 8 <= 1023, "orient3d terms must not overflow");
 
 int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
