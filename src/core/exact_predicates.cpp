@@ -56,6 +56,7 @@ public:
     // through the terms with two_sum, keeping every nonzero remainder.
     void add(double b) {
         assert(count_ < Capacity);
+        if (b == 0.0) return;
         double carry = b;
         std::size_t kept = 0;
         for (std::size_t i = 0; i < count_; ++i) {
@@ -77,11 +78,14 @@ private:
     std::size_t count_ = 0;
 };
 
-// Adds sign * x * y exactly: four exact products of doubles.
+// Adds sign * x * y exactly: four exact products of doubles. Zero parts (the
+// low part of a difference that was exact in double, usually) are skipped.
 template <std::size_t Capacity>
 void add_product(Expansion<Capacity>& sum, double sign, const TwoTerm& x, const TwoTerm& y) {
     for (const double xi : {x.hi, x.lo}) {
+        if (xi == 0.0) continue;
         for (const double yi : {y.hi, y.lo}) {
+            if (yi == 0.0) continue;
             const TwoTerm p = two_product(xi, yi);
             sum.add(sign * p.hi);
             sum.add(sign * p.lo);
@@ -95,9 +99,12 @@ template <std::size_t Capacity>
 void add_product(Expansion<Capacity>& sum, double sign, const TwoTerm& x, const TwoTerm& y,
                  const TwoTerm& z) {
     for (const double xi : {x.hi, x.lo}) {
+        if (xi == 0.0) continue;
         for (const double yi : {y.hi, y.lo}) {
+            if (yi == 0.0) continue;
             const TwoTerm p = two_product(xi, yi);
             for (const double zi : {z.hi, z.lo}) {
+                if (zi == 0.0) continue;
                 const TwoTerm hi = two_product(p.hi, zi);
                 const TwoTerm lo = two_product(p.lo, zi);
                 sum.add(sign * hi.hi);
@@ -147,11 +154,11 @@ constexpr int orient3d_row_top = 336;
 // 6 monomials x 8 products of three doubles x 4 exact terms.
 constexpr std::size_t orient3d_terms = 6 * 8 * 4;
 
-// Rows scaled to [2^508, 2^509): products below 2^1020, the 16 terms below 2^1024.
+// Rows scaled to [2^508, 2^509): products below 2^1018, the 16 terms sum below 2^1022.
 constexpr int orient2d_row_top = 508;
 // 2 monomials x 4 products of two doubles x 2 exact terms.
 constexpr std::size_t orient2d_terms = 2 * 4 * 2;
-static_assert(2 * (orient2d_row_top + 1) + 4 <= 1024, "orient2d terms must not overflow");
+static_assert(2 * (orient2d_row_top + 1) + 4 <= 1023, "orient2d terms must not overflow");
 static_assert(3 * (orient3d_row_top + 1) + 8 <= 1023, "orient3d terms must not overflow");
 
 int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
@@ -161,7 +168,9 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
         !exact_difference<3>(d, a, rows[2])) {
         // A difference beyond the double range (a coordinate above 2^1023):
         // a quarter of every point, exact unless a coordinate is also below
-        // 2^-1020 (see the range in docs/exact-predicates.md).
+        // 2^-1020 (see the range in docs/exact-predicates.md). Non-finite
+        // input breaks the precondition: 0 rather than endless recursion.
+        if (!(a.allFinite() && b.allFinite() && c.allFinite() && d.allFinite())) return 0;
         return orient3d_exact(a / 4, b / 4, c / 4, d / 4);
     }
     for (Row<3>& row : rows) {
@@ -183,6 +192,7 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
 int orient2d_exact(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
     std::array<Row<2>, 2> rows;
     if (!exact_difference<2>(b, a, rows[0]) || !exact_difference<2>(c, a, rows[1])) {
+        if (!(a.allFinite() && b.allFinite() && c.allFinite())) return 0;
         return orient2d_exact(a / 4, b / 4, c / 4);
     }
     for (Row<2>& row : rows) {

@@ -1,4 +1,7 @@
-// Orientation predicates whose sign is exact for any finite double input.
+// Orientation predicates whose sign is exact for finite double inputs whose
+// nonzero coordinates lie within a factor 2^640 (about 4.6e192) of one
+// another (orient2d: 2^990); docs/exact-predicates.md states the precise
+// range and what happens beyond it.
 //
 // Deciding whether two faces cross depends, for faces that touch or nearly
 // touch, on the last bit of a determinant. Each predicate first evaluates the

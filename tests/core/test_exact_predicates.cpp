@@ -19,10 +19,10 @@
 
 namespace {
 
-using polymass::core::orient2d;
-using polymass::core::orient3d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using polymass::core::orient2d;
+using polymass::core::orient3d;
 
 // Signed integer of any size: sign and magnitude in base 2^32, little-endian.
 struct BigInt {
@@ -114,7 +114,8 @@ BigInt scaled_integer(double x) {
     const std::size_t limb = static_cast<std::size_t>(shift / 32);
     // mantissa * 2^bit spread over three limbs (mantissa < 2^53, bit < 32).
     r.limbs[limb] = static_cast<std::uint32_t>(mantissa << bit);
-    r.limbs[limb + 1] = static_cast<std::uint32_t>(bit == 0 ? mantissa >> 32 : mantissa >> (32 - bit));
+    r.limbs[limb + 1] =
+        static_cast<std::uint32_t>(bit == 0 ? mantissa >> 32 : mantissa >> (32 - bit));
     r.limbs[limb + 2] = static_cast<std::uint32_t>(bit == 0 ? 0 : mantissa >> (64 - bit));
     r.negative = x < 0;
     r.trim();
@@ -129,8 +130,7 @@ std::array<BigInt, Dim> exact_difference(const Eigen::Matrix<double, Dim, 1>& b,
     return d;
 }
 
-int reference_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c,
-                       const Vector3d& d) {
+int reference_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c, const Vector3d& d) {
     const auto u = exact_difference<3>(b, a);
     const auto v = exact_difference<3>(c, a);
     const auto w = exact_difference<3>(d, a);
@@ -203,7 +203,7 @@ void near_coplanar(std::mt19937_64& random) {
     for (const double offset : offsets) {
         for (const int exponent : exponents) {
             Counts counts;
-            for (int n = 0; n < 300; ++n) {
+            for (int n = 0; n < 100; ++n) {
                 std::array<Vector3d, 4> p;
                 for (Vector3d& x : p) {
                     // Spread comparable to the offset: differences with all
@@ -218,8 +218,8 @@ void near_coplanar(std::mt19937_64& random) {
                 check_orient3d(p[0], p[1], p[2], p[3], counts);
             }
             char what[96];
-            std::snprintf(what, sizeof what, "orient3d near a plane, offset %g, scale 2^%d",
-                          offset, exponent);
+            std::snprintf(what, sizeof what, "orient3d near a plane, offset %g, scale 2^%d", offset,
+                          exponent);
             report(what, counts);
         }
     }
@@ -234,7 +234,7 @@ void integer_coplanar(std::mt19937_64& random) {
     const double offsets[] = {0.0, 1e6, 1e8, 4503599627370496.0 /* 2^52 */};
     for (const double offset : offsets) {
         Counts counts;
-        for (int n = 0; n < 500; ++n) {
+        for (int n = 0; n < 200; ++n) {
             Eigen::Matrix<std::int64_t, 3, 1> a, b, c;
             for (int i = 0; i < 3; ++i) {
                 a[i] = small(random);
@@ -262,11 +262,12 @@ void mixed_magnitudes(std::mt19937_64& random) {
     std::uniform_int_distribution<int> exponent(-300, 300);
     std::uniform_int_distribution<int> ulps(-1, 1);
     Counts counts;
-    for (int n = 0; n < 2000; ++n) {
+    for (int n = 0; n < 600; ++n) {
         std::array<Vector3d, 4> p;
         const int base = exponent(random);
         for (Vector3d& x : p) {
-            for (int i = 0; i < 2; ++i) x[i] = std::ldexp(unit(random), base + exponent(random) / 3);
+            for (int i = 0; i < 2; ++i)
+                x[i] = std::ldexp(unit(random), base + exponent(random) / 3);
             x.z() = x.x() / 2 + x.y() / 4;
         }
         for (Vector3d& x : p) x = nudge(x, 2, ulps(random));
@@ -279,17 +280,17 @@ void mixed_magnitudes(std::mt19937_64& random) {
 // random integer points at offsets, compared with the reference.
 void orient2d_cases(std::mt19937_64& random) {
     Counts near_line;
-    for (int i = 0; i < 64; ++i) {
-        for (int j = 0; j < 64; ++j) {
+    for (int i = 0; i < 32; ++i) {
+        for (int j = 0; j < 32; ++j) {
             const Vector2d a(0.5 + i * 0x1p-53, 0.5 + j * 0x1p-53);
             check_orient2d(a, Vector2d(12, 12), Vector2d(24, 24), near_line);
         }
     }
-    report("orient2d on a 64x64 ulp grid near the line y = x", near_line);
+    report("orient2d on a 32x32 ulp grid near the line y = x", near_line);
     Counts offsets;
     std::uniform_int_distribution<std::int64_t> small(-100, 100);
     for (const double offset : {0.0, 1e8, 1e15}) {
-        for (int n = 0; n < 2000; ++n) {
+        for (int n = 0; n < 500; ++n) {
             const double ax = double(small(random)), ay = double(small(random));
             const double bx = double(small(random)), by = double(small(random));
             const double t = double(small(random) / 10);
@@ -303,9 +304,11 @@ void orient2d_cases(std::mt19937_64& random) {
     Counts scales;
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     for (const int exponent : {-1000, -664, 664, 1000}) {
-        for (int n = 0; n < 500; ++n) {
-            const Vector2d a(std::ldexp(unit(random), exponent), std::ldexp(unit(random), exponent));
-            const Vector2d b(std::ldexp(unit(random), exponent), std::ldexp(unit(random), exponent));
+        for (int n = 0; n < 150; ++n) {
+            const Vector2d a(std::ldexp(unit(random), exponent),
+                             std::ldexp(unit(random), exponent));
+            const Vector2d b(std::ldexp(unit(random), exponent),
+                             std::ldexp(unit(random), exponent));
             Vector2d c = a + (b - a) * 0.5;
             c.y() = std::nextafter(c.y(), n % 2 ? INFINITY : -INFINITY);
             check_orient2d(a, b, c, scales);
@@ -333,16 +336,21 @@ void edge_cases() {
                    Vector3d(huge, huge, -huge)) == 0);
     CHECK(orient2d(Vector2d(-huge, -huge), Vector2d(huge, -huge), Vector2d(-huge, huge)) == 1);
     CHECK(orient2d(Vector2d(tiny, 0), Vector2d(0, tiny), Vector2d(0, 0)) == 1);
-    std::printf("  %-58s %6d cases\n", "zeros, subnormals, the largest doubles", 10);
+    // Not finite: outside the contract, but it must return (0), not loop.
+    const Vector3d nan(NAN, 0, 0);
+    CHECK(orient3d(nan, x, y, z) == 0);
+    CHECK(orient2d(Vector2d(INFINITY, 0), Vector2d(0, 1), Vector2d(1, 0)) == 0);
+    std::printf("  %-58s %6d cases\n", "zeros, subnormals, the largest doubles, not finite", 12);
 }
 
 // Random points with small integer coordinates: many exact zeros.
 void random_small_integers(std::mt19937_64& random) {
     std::uniform_int_distribution<int> coordinate(-3, 3);
     Counts counts;
-    for (int n = 0; n < 5000; ++n) {
+    for (int n = 0; n < 1500; ++n) {
         std::array<Vector3d, 4> p;
-        for (Vector3d& x : p) x = Vector3d(coordinate(random), coordinate(random), coordinate(random));
+        for (Vector3d& x : p)
+            x = Vector3d(coordinate(random), coordinate(random), coordinate(random));
         check_orient3d(p[0], p[1], p[2], p[3], counts);
         check_orient2d(p[0].head<2>(), p[1].head<2>(), p[2].head<2>(), counts);
     }
