@@ -179,8 +179,9 @@ typedef struct polymass_allocator {
    nest exactly; faces that touch without crossing (parts resting on each
    other) give POLYMASS_WARNING_TOUCHING_FACES. Exact predicates decide every
    case. Off by default: it costs about as much again as the topology checks
-   (see the README for figures), and an engine's load path need not pay it;
-   polymass_mesh_check and the polymass tool turn it on. Without it a shell
+   (see the README for figures), and an engine's load path need not pay it.
+   polymass_mesh_check follows it too: set it there to list crossing and
+   touching faces (the polymass tool does, by default). Without it a shell
    turned inside out is still refused when it lies outside every solid
    shell's bounding box. Needs the topology checks for the shells' nesting. */
 #define POLYMASS_OPTION_CHECK_INTERSECTIONS (1u << 4)

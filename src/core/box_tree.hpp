@@ -49,13 +49,16 @@ struct FloatBox {
     bool may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double pad) const;
 
 private:
+    // x rounded down (up) to a float. Rounding to nearest is off by at most
+    // half a step, so one step of relative size 2^-23, or the smallest
+    // subnormal near zero, always covers it; cheaper than nextafter.
     static float below(double x) {
         const float f = float(x);
-        return double(f) > x ? std::nextafter(f, -INFINITY) : f;
+        return double(f) > x ? f - std::max(std::abs(f) * 0x1p-23f, 0x1p-149f) : f;
     }
     static float above(double x) {
         const float f = float(x);
-        return double(f) < x ? std::nextafter(f, INFINITY) : f;
+        return double(f) < x ? f + std::max(std::abs(f) * 0x1p-23f, 0x1p-149f) : f;
     }
 };
 
@@ -107,14 +110,17 @@ private:
 template <class Visit>
 void BoxTree::for_each_overlapping_pair(Visit&& visit) const {
     if (order_.empty()) return;
-    // A task is a node with itself (pairs inside it) or two distinct nodes.
-    std::pmr::vector<std::pair<Node, Node>> tasks(memory_);
-    tasks.push_back({root(), root()});
-    while (!tasks.empty()) {
-        const auto [a, b] = tasks.back();
-        tasks.pop_back();
+    // A task is a node with itself (pairs inside it) or two distinct nodes
+    // whose boxes overlap. Depth first: a task adds at most three, each one
+    // level lower in one of its nodes, so the stack holds fewer than three
+    // per level of the two nodes together.
+    constexpr std::size_t kMaxTasks = 3 * 2 * 64;
+    std::array<std::pair<Node, Node>, kMaxTasks> tasks;
+    std::size_t pending = 0;
+    tasks[pending++] = {root(), root()};
+    while (pending > 0) {
+        const auto [a, b] = tasks[--pending];
         const bool same = a.level == b.level && a.index == b.index;
-        if (!same && !box(a).overlaps(box(b))) continue;
         if (a.level == 0 && b.level == 0) {
             for (std::size_t i = leaf_first(a); i < leaf_last(a); ++i) {
                 const FloatBox& first = items_[order_[i]];
@@ -122,18 +128,19 @@ void BoxTree::for_each_overlapping_pair(Visit&& visit) const {
                     if (first.overlaps(items_[order_[j]])) visit(order_[i], order_[j]);
             }
         } else if (same) {
-            const std::size_t children = child_count(a);
-            for (std::size_t i = 0; i < children; ++i) {
-                tasks.push_back({child(a, i), child(a, i)});
-                for (std::size_t j = i + 1; j < children; ++j)
-                    tasks.push_back({child(a, i), child(a, j)});
+            tasks[pending++] = {child(a, 0), child(a, 0)};
+            if (child_count(a) == 2) {
+                tasks[pending++] = {child(a, 1), child(a, 1)};
+                if (box(child(a, 0)).overlaps(box(child(a, 1))))
+                    tasks[pending++] = {child(a, 0), child(a, 1)};
             }
         } else {
             // Open the higher node (the larger box, most often).
             const bool open_a = a.level >= b.level;
             const Node open = open_a ? a : b, other = open_a ? b : a;
             for (std::size_t i = 0; i < child_count(open); ++i)
-                tasks.push_back({child(open, i), other});
+                if (box(child(open, i)).overlaps(box(other)))
+                    tasks[pending++] = {child(open, i), other};
         }
     }
 }

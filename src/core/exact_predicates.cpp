@@ -173,9 +173,11 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
         if (!(a.allFinite() && b.allFinite() && c.allFinite() && d.allFinite())) return 0;
         return orient3d_exact(a / 4, b / 4, c / 4, d / 4);
     }
-    for (Row<3>& row : rows) {
-        if (!normalize<3>(row, orient3d_row_top)) return 0;
-    }
+    // Two of the points the same make the determinant zero: checked before
+    // any scaling, as it is the common case here (a corner shared by two
+    // triangles).
+    if (a == b || a == c || a == d || b == c || b == d || c == d) return 0;
+    for (Row<3>& row : rows) normalize<3>(row, orient3d_row_top);
     const Row<3>& u = rows[0];
     const Row<3>& v = rows[1];
     const Row<3>& w = rows[2];

@@ -52,7 +52,6 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         return Triangle{mesh.positions[corners[0]], mesh.positions[corners[1]],
                         mesh.positions[corners[2]]};
     };
-    auto id = [&](std::uint32_t vertex) { return vertex_ids ? vertex_ids[vertex] : vertex; };
     // The tree's boxes are in a power-of-two unit near the surface's size, so
     // that single precision holds them for any size a double does.
     const double per_unit = 1.0 / unit_length_near(size);
@@ -61,6 +60,12 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     };
 
     // Degenerate triangles keep an empty box: they bound nothing and meet nothing.
+    // Each corner's vertex identity (after welding), next to the others: the
+    // test of shared corners reads nothing else for most candidate pairs.
+    std::pmr::vector<std::array<std::uint32_t, 3>> ids(triangles.corners, memory);
+    if (vertex_ids)
+        for (auto& corners : ids)
+            for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
     std::pmr::vector<FloatBox> boxes(triangles.size(), memory);
     FloatBox everything;
     for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -78,7 +83,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         int shared = 0, at_i = 0, at_j = 0;
         for (int k = 0; k < 3; ++k)
             for (int l = 0; l < 3; ++l)
-                if (id(triangles.corners[i][k]) == id(triangles.corners[j][l])) {
+                if (ids[i][k] == ids[j][l]) {
                     ++shared;
                     at_i = k;
                     at_j = l;

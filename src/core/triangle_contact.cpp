@@ -156,9 +156,23 @@ Contact straddling_contact(Triangle p, Signs p_sides, Triangle q, Signs q_sides)
     return Contact::none;
 }
 
+// Triangles meeting at a shared first corner cross only if each has its two
+// other corners strictly on both sides of the other's plane: on a surface
+// almost every pair of neighbours around a vertex fails that at the first
+// two predicates, and the shared corner's own side (zero) costs none.
+Contact shared_corner_contact(const Triangle& p, const Triangle& q) {
+    const Signs p_sides{0, orient3d(q[0], q[1], q[2], p[1]), orient3d(q[0], q[1], q[2], p[2])};
+    if (p_sides[1] * p_sides[2] >= 0) return Contact::none;
+    const Signs q_sides{0, orient3d(p[0], p[1], p[2], q[1]), orient3d(p[0], p[1], p[2], q[2])};
+    if (q_sides[1] * q_sides[2] >= 0) return Contact::none;
+    const Contact contact = straddling_contact(p, p_sides, q, q_sides);
+    return contact == Contact::crossing ? contact : Contact::none;
+}
+
 }  // namespace
 
 Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corner) {
+    if (shared_corner) return shared_corner_contact(p, q);
     const Signs p_sides = sides(q, p);
     if (all_strictly_one_side(p_sides)) return Contact::none;
     const Signs q_sides = sides(p, q);
@@ -166,12 +180,7 @@ Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corne
 
     const bool p_straddles = straddles(p_sides);
     const bool q_straddles = straddles(q_sides);
-    if (p_straddles && q_straddles) {
-        const Contact contact = straddling_contact(p, p_sides, q, q_sides);
-        if (shared_corner && contact == Contact::touching) return Contact::none;
-        return contact;
-    }
-    if (shared_corner) return Contact::none;
+    if (p_straddles && q_straddles) return straddling_contact(p, p_sides, q, q_sides);
     if (p_sides == Signs{0, 0, 0})
         return coplanar_overlap(p, q) ? Contact::touching : Contact::none;
     // One triangle lies on one side of the other's plane with a corner or an
