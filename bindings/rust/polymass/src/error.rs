@@ -5,6 +5,8 @@ use std::fmt;
 
 use polymass_sys as sys;
 
+use crate::codes::{known_code, known_kind};
+
 /// A `Result` whose error is a [`polymass::Error`](Error).
 pub type Result<T> = std::result::Result<T, Error>;
 
@@ -110,8 +112,7 @@ impl ErrorKind {
         if code == sys::POLYMASS_OK {
             return None;
         }
-        let known = KNOWN_KINDS.iter().find(|(_, known)| *known == code);
-        Some(known.map_or(ErrorKind::Unknown(code), |(kind, _)| *kind))
+        Some(known_kind(&KNOWN_KINDS, code).unwrap_or(ErrorKind::Unknown(code)))
     }
 
     /// The C status code (`POLYMASS_ERROR_*`).
@@ -124,11 +125,7 @@ impl ErrorKind {
     pub fn code(self) -> i32 {
         match self {
             ErrorKind::Unknown(code) => code,
-            known => KNOWN_KINDS
-                .iter()
-                .find(|(kind, _)| *kind == known)
-                .map(|(_, code)| *code)
-                .expect("every known kind is in KNOWN_KINDS"),
+            known => known_code(&KNOWN_KINDS, known),
         }
     }
 

@@ -58,6 +58,7 @@
 #![warn(missing_docs)]
 
 mod body;
+mod codes;
 mod context;
 mod diagnostics;
 mod error;

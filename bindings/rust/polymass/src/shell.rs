@@ -2,6 +2,8 @@
 
 use polymass_sys as sys;
 
+use crate::codes::{known_code, known_kind};
+
 /// What a shell is, as the library judges it (`POLYMASS_SHELL_*`).
 ///
 /// `#[non_exhaustive]`, with [`ShellKind::Unknown`] for a kind a newer
@@ -48,10 +50,7 @@ impl ShellKind {
     /// assert_eq!(polymass::ShellKind::from_code(1), polymass::ShellKind::Solid);
     /// ```
     pub fn from_code(code: i32) -> ShellKind {
-        KNOWN_KINDS
-            .iter()
-            .find(|(_, known)| *known == code)
-            .map_or(ShellKind::Unknown(code), |(kind, _)| *kind)
+        known_kind(&KNOWN_KINDS, code).unwrap_or(ShellKind::Unknown(code))
     }
 
     /// The `POLYMASS_SHELL_*` code.
@@ -62,11 +61,7 @@ impl ShellKind {
     pub fn code(self) -> i32 {
         match self {
             ShellKind::Unknown(code) => code,
-            known => KNOWN_KINDS
-                .iter()
-                .find(|(kind, _)| *kind == known)
-                .map(|(_, code)| *code)
-                .expect("every known kind is in KNOWN_KINDS"),
+            known => known_code(&KNOWN_KINDS, known),
         }
     }
 }
