@@ -173,7 +173,8 @@ def shells(
     tolerance) vertices at the same position are one first, so a triangle soup
     splits as its solid does. Indices out of range and non-finite coordinates
     raise, as in `mass_properties`; the topology is not checked. Each shell can
-    then be checked or computed on its own (a cavity has a negative volume).
+    then be checked or computed on its own (a cavity has a negative volume);
+    `shell_list` says what each one is.
     """
     mesh = mesh_description(vertices, faces, face_sizes)
     ctx = context()
