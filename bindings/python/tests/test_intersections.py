@@ -276,6 +276,22 @@ def test_shell_list_describes_each_shell(name, scale, translation):
     assert kinds_of(overlapping_cubes, check_intersections=True)[0] == "solid"
 
 
+def test_shell_list_names_every_kind_of_the_header():
+    from polymass import _header
+    from polymass.diagnostics import _SHELL_KINDS
+
+    kinds = {v for k, v in vars(_header).items() if k.startswith("POLYMASS_SHELL_")}
+    assert kinds == set(_SHELL_KINDS)
+    # A double-sided sheet beside a cube: a shell without volume.
+    sheet = (
+        Surface()
+        .box((0, 0, 0), (1, 1, 1))
+        .add([[3, 0, 0], [4, 0, 0], [3, 1, 0]], [[0, 1, 2], [0, 2, 1]])
+    )
+    shells = polymass.shell_list(*sheet.placed(1.0, (0, 0, 0)), check_intersections=True)
+    assert [(s.kind, s.face_count, s.signed_volume) for s in shells[1:]] == [("no_volume", 2, 0.0)]
+
+
 def test_shell_list_lists_many_shells():
     surface = Surface()
     for k in range(40):  # more than the first call makes room for

@@ -318,6 +318,20 @@ fn the_shell_list_describes_each_shell_everywhere() {
 }
 
 #[test]
+fn a_double_sided_sheet_is_a_shell_without_volume() {
+    let sheet = Shape {
+        positions: vec![[3.0, 0.0, 0.0], [4.0, 0.0, 0.0], [3.0, 1.0, 0.0]],
+        indices: vec![0, 1, 2, 0, 2, 1],
+        face_sizes: vec![3, 3],
+    };
+    let shape = cuboid([0.0; 3], [1.0; 3]).with(&sheet);
+    let shells = checking().shell_list(&shape.surface()).unwrap();
+    assert_eq!(kinds(&shells), [ShellKind::Solid, ShellKind::NoVolume]);
+    assert_eq!((shells[1].face_count, shells[1].first_face), (2, 6));
+    assert_eq!(shells[1].signed_volume, 0.0);
+}
+
+#[test]
 fn the_shell_list_lists_many_shells() {
     let mut shape = cuboid([0.0; 3], [1.0; 3]);
     for k in 1..40 {
