@@ -15,13 +15,14 @@ at the path in the environment variable POLYMASS_LIBRARY.
 from . import _header
 from ._library import ffi as _ffi
 from ._library import lib as _lib
-from .diagnostics import Diagnostics, check, shells
+from .diagnostics import Diagnostics, Shell, check, shell_list, shells
 from .errors import (
     Error,
     FaceTooSmallError,
     InconsistentOrientationError,
     IndexOutOfRangeError,
     InternalError,
+    IntersectingSurfaceError,
     InvalidArgumentError,
     InvertedError,
     NonFiniteError,
@@ -53,6 +54,7 @@ __all__ = [
     "InconsistentOrientationError",
     "IndexOutOfRangeError",
     "InternalError",
+    "IntersectingSurfaceError",
     "InvalidArgumentError",
     "InvertedError",
     "MassProperties",
@@ -64,6 +66,7 @@ __all__ = [
     "OutOfMemoryError",
     "PolygonProperties",
     "ResultOutOfRangeError",
+    "Shell",
     "TopologyError",
     "Warnings",
     "ZeroAreaError",
@@ -73,5 +76,6 @@ __all__ = [
     "library_version",
     "mass_properties",
     "polygon_properties",
+    "shell_list",
     "shells",
 ]

@@ -39,6 +39,7 @@ def apply_options(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
+    check_intersections: bool = False,
 ) -> None:
     """Sets the options of this thread's context for the next call through it."""
     options = new_struct("polymass_options")
@@ -49,6 +50,8 @@ def apply_options(
         flags |= _header.POLYMASS_OPTION_ACCEPT_INVERTED
     if accept_non_manifold:
         flags |= _header.POLYMASS_OPTION_ACCEPT_NON_MANIFOLD
+    if check_intersections:
+        flags |= _header.POLYMASS_OPTION_CHECK_INTERSECTIONS
     if _weld_tolerance(weld) is not None:
         flags |= _header.POLYMASS_OPTION_WELD_VERTICES
         options.weld_tolerance = _weld_tolerance(weld)

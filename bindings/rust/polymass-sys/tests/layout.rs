@@ -49,6 +49,11 @@ fn struct_sizes_match_the_library() {
                 size_of_u32::<sys::polymass_polygon_properties>(),
                 sys::polymass_sizeof_polygon_properties(),
             ),
+            (
+                "polymass_shell",
+                size_of_u32::<sys::polymass_shell>(),
+                sys::polymass_sizeof_shell(),
+            ),
         ]
     };
     for (name, rust, library) in sizes {
@@ -85,6 +90,7 @@ fn every_status_has_a_name_and_unknown_codes_say_so() {
         sys::POLYMASS_ERROR_NON_MANIFOLD,
         sys::POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
         sys::POLYMASS_ERROR_NON_PLANAR_FACE,
+        sys::POLYMASS_ERROR_INTERSECTING,
         sys::POLYMASS_ERROR_INVERTED,
         sys::POLYMASS_ERROR_ZERO_VOLUME,
         sys::POLYMASS_ERROR_ZERO_AREA,

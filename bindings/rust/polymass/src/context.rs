@@ -14,6 +14,7 @@ use crate::mesh::Mesh;
 use crate::options::Options;
 use crate::polygon::PolygonProperties;
 use crate::properties::MassProperties;
+use crate::shell::Shell;
 use crate::surface::{struct_size, Surface};
 
 /// A context: the [`Options`] calls use and the message of the last failure.
@@ -226,6 +227,11 @@ impl Context {
     /// tolerances apply). A bad surface is not an `Err`: its failure is in
     /// [`Diagnostics::error`]. `Err` means no report could be made.
     ///
+    /// Check with [`Options::check_intersections`] on unless the surface is
+    /// known not to overlap itself: only then are crossing faces, shells
+    /// nested twice and touching faces found. It costs about as much again as
+    /// the topology checks.
+    ///
     /// ```
     /// use polymass::{Context, Surface};
     ///
@@ -310,6 +316,71 @@ impl Context {
         };
         self.result(status)?;
         Ok(of_face)
+    }
+
+    /// What each shell of a closed surface is: shell `i` of the list is the
+    /// one [`shells`](Context::shells) numbers `i`. The surface must pass the
+    /// checks that come before the shells (closed, manifold, oriented,
+    /// planar, with a volume), otherwise their error; the shells are
+    /// described whether or not they pass themselves, so an inside-out or
+    /// overlapping shell is listed, not an `Err`. With
+    /// [`Options::check_intersections`] the nesting of the shells is counted
+    /// exactly; without, it is judged by bounding boxes, which can show a
+    /// shell to be inside out but take any negative shell within a solid's
+    /// box for a cavity. Fails with
+    /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) when
+    /// the options skip the topology checks.
+    ///
+    /// ```
+    /// use polymass::{Context, Options, ShellKind, Surface};
+    ///
+    /// // A tetrahedron with legs 4 and, inside it, a cavity: a unit tetrahedron
+    /// // moved by (0.5, 0.5, 0.5), its faces reversed.
+    /// let positions = [
+    ///     [0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0],
+    ///     [0.5, 0.5, 0.5], [1.5, 0.5, 0.5], [0.5, 1.5, 0.5], [0.5, 0.5, 1.5],
+    /// ];
+    /// let triangles = [
+    ///     [0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3],
+    ///     [4, 5, 6], [4, 7, 5], [4, 6, 7], [5, 7, 6],
+    /// ];
+    /// let mut context = Context::with_options(&Options::new().check_intersections(true))?;
+    /// let shells = context.shell_list(&Surface::triangles(&positions, &triangles))?;
+    /// let kinds: Vec<ShellKind> = shells.iter().map(|shell| shell.kind).collect();
+    /// assert_eq!(kinds, [ShellKind::Solid, ShellKind::Cavity]);
+    /// assert!((shells[1].signed_volume + 1.0 / 6.0).abs() < 1e-15);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn shell_list(&mut self, surface: &Surface<'_>) -> Result<Vec<Shell>> {
+        // Room for this many in the first call: most surfaces need no second.
+        const FIRST_GUESS: usize = 16;
+        let desc = surface.desc();
+        let blank = sys::polymass_shell {
+            struct_size: struct_size::<sys::polymass_shell>(),
+            ..Default::default()
+        };
+        let mut described = vec![blank; FIRST_GUESS];
+        loop {
+            let mut count = 0u64;
+            // SAFETY: live context, this thread only; desc points into slices
+            // borrowed by `surface`; `described` holds as many shells, each
+            // with struct_size set, as the capacity passed.
+            let status = unsafe {
+                sys::polymass_mesh_shell_list(
+                    described.as_mut_ptr(),
+                    described.len() as u64,
+                    &mut count,
+                    self.raw.as_ptr(),
+                    &desc,
+                )
+            };
+            self.result(status)?;
+            let count = usize::try_from(count).expect("shells fit in memory as faces do");
+            if count <= described.len() {
+                return Ok(described[..count].iter().map(Shell::from_raw).collect());
+            }
+            described.resize(count, blank);
+        }
     }
 
     /// Area, centroid and second moments of area of a simple polygon in the

@@ -98,6 +98,11 @@ impl Warnings {
     /// Balanced non-manifold edges were accepted
     /// ([`Options::accept_non_manifold`](crate::Options::accept_non_manifold)).
     pub const NON_MANIFOLD: Warnings = Warnings(sys::POLYMASS_WARNING_NON_MANIFOLD);
+    /// Faces touch without crossing, such as parts resting on each other;
+    /// found with
+    /// [`Options::check_intersections`](crate::Options::check_intersections),
+    /// and listed by [`Diagnostics::touching_face_pairs`](crate::Diagnostics::touching_face_pairs).
+    pub const TOUCHING_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_TOUCHING_FACES);
 
     /// Whether every bit of `other` is set.
     ///
