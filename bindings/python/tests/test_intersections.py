@@ -112,11 +112,6 @@ def inverted_in_the_notch() -> Surface:
     return Surface().l_prism().box((2.5, 2.5, 0.25), (3, 3, 0.75), triangles=True, inside_out=True)
 
 
-PLACEHOLDER = (
-    "the library's triangle contact test is a floating-point placeholder (touching and "
-    "shared corners misjudged) until the exact one lands"
-)
-
 # (case, status with the check, status without, volume when accepted with the check)
 OK = 0
 VERDICTS = [
@@ -317,12 +312,7 @@ def test_shell_list_raises_what_comes_before_the_shells(tetrahedron, cube):
 
 @pytest.mark.parametrize(
     "shape",
-    [
-        pytest.param(name, marks=pytest.mark.xfail(strict=False, reason=PLACEHOLDER))
-        if name == "star"  # non-convex: faces sharing a corner fold towards each other
-        else name
-        for name in sorted(SHAPES)
-    ],
+    sorted(SHAPES),
 )
 @pytest.mark.parametrize("seed", range(4))
 def test_valid_solids_give_bit_identical_results_with_the_check(shape, seed):
@@ -363,7 +353,6 @@ TOUCHING = [
 ]
 
 
-@pytest.mark.xfail(strict=False, reason=PLACEHOLDER)
 @pytest.mark.parametrize(("name", "scale", "translation"), PLACEMENTS, ids=PLACEMENT_IDS)
 @pytest.mark.parametrize(("case", "make", "volume"), TOUCHING, ids=[t[0] for t in TOUCHING])
 def test_touching_faces_are_a_warning_with_locations(case, make, volume, name, scale, translation):

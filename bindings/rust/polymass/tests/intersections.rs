@@ -456,8 +456,6 @@ const TOUCHING: [Verdict; 3] = [
 ];
 
 #[test]
-#[ignore = "the library's triangle contact test is a floating-point placeholder (touching \
-            and shared corners misjudged) until the exact one lands"]
 fn touching_faces_are_a_warning_with_locations() {
     for touching in &TOUCHING {
         for (name, scale, translation) in PLACEMENTS {
