@@ -47,10 +47,19 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                               std::pmr::memory_resource* memory) {
     SurfaceOverlaps result(memory);
     const SurfaceTriangles triangles = triangulate_faces(mesh, memory);
+    // Each corner's vertex identity (after welding), next to the others: the
+    // test of shared corners reads nothing else for most candidate pairs.
+    std::pmr::vector<std::array<std::uint32_t, 3>> ids(triangles.corners, memory);
+    if (vertex_ids)
+        for (auto& corners : ids)
+            for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
+    // The surface as the topology check saw it: a welded vertex at the
+    // position of the vertex it was welded to, so that corners the surface
+    // shares are the same point, not two points 1e-17 apart whose triangles
+    // would seem to cross.
     auto triangle = [&](std::size_t t) {
-        const auto& corners = triangles.corners[t];
-        return Triangle{mesh.positions[corners[0]], mesh.positions[corners[1]],
-                        mesh.positions[corners[2]]};
+        return Triangle{mesh.positions[ids[t][0]], mesh.positions[ids[t][1]],
+                        mesh.positions[ids[t][2]]};
     };
     // The tree's boxes are in a power-of-two unit near the surface's size, so
     // that single precision holds them for any size a double does.
@@ -60,12 +69,6 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     };
 
     // Degenerate triangles keep an empty box: they bound nothing and meet nothing.
-    // Each corner's vertex identity (after welding), next to the others: the
-    // test of shared corners reads nothing else for most candidate pairs.
-    std::pmr::vector<std::array<std::uint32_t, 3>> ids(triangles.corners, memory);
-    if (vertex_ids)
-        for (auto& corners : ids)
-            for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
     std::pmr::vector<FloatBox> boxes(triangles.size(), memory);
     FloatBox everything;
     for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -162,7 +165,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     for (std::uint32_t shell = 0; shell < shells->count; ++shell) {
         int& winding = result.winding_of_shell[shell];
         for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
-            const Eigen::Vector3d p = mesh.positions[triangles.corners[probes[shell][k]][0]];
+            const Eigen::Vector3d p = mesh.positions[ids[probes[shell][k]][0]];
             for (const Eigen::Vector3d& direction : kProbeDirections) {
                 winding = winding_at(p, direction, shell);
                 if (winding != kUnknownWinding) break;
