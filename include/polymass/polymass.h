@@ -49,7 +49,11 @@
  *   added, never changed or removed, status values are never reused, and
  *   public structs only gain fields at their end. Every struct passed in or out
  *   starts with struct_size, which the caller sets to sizeof(the struct) it was
- *   compiled with, so an older caller keeps working with a newer library.
+ *   compiled with (the polymass_*_init functions and POLYMASS_*_INIT macros do
+ *   it), so an older caller keeps working with a newer library: the library
+ *   accepts the size of every version of a struct since 1.0.0, reads an input
+ *   struct only up to its struct_size (later fields take their defaults) and
+ *   writes an output struct only up to its struct_size.
  */
 #ifndef POLYMASS_POLYMASS_H
 #define POLYMASS_POLYMASS_H
@@ -326,6 +330,46 @@ POLYMASS_API uint32_t polymass_sizeof_mass_desc(void);
 POLYMASS_API uint32_t polymass_sizeof_mass_properties(void);
 POLYMASS_API uint32_t polymass_sizeof_diagnostics(void);
 POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void);
+
+/* Initialisers. Each writes a struct's defaults, struct_size included, up to
+   the struct_size given, which must be the size of a version of the struct
+   this library knows (sizeof the struct as the caller's header declares it):
+     polymass_mesh_desc desc;
+     polymass_mesh_desc_init(&desc, sizeof desc);
+   The defaults are zeros, except polymass_mass_desc's: unit density
+   (POLYMASS_MASS_FROM_DENSITY, density 1). Options' zero tolerances mean the
+   default tolerances. Return POLYMASS_ERROR_INVALID_ARGUMENT (writing
+   nothing) for a NULL struct or an unknown size. Thread-safe. */
+POLYMASS_API int32_t polymass_options_init(polymass_options* options, uint32_t struct_size);
+POLYMASS_API int32_t polymass_mesh_desc_init(polymass_mesh_desc* desc, uint32_t struct_size);
+POLYMASS_API int32_t polymass_mass_desc_init(polymass_mass_desc* mass, uint32_t struct_size);
+POLYMASS_API int32_t polymass_mass_properties_init(polymass_mass_properties* properties,
+                                                   uint32_t struct_size);
+POLYMASS_API int32_t polymass_diagnostics_init(polymass_diagnostics* report, uint32_t struct_size);
+POLYMASS_API int32_t polymass_polygon_properties_init(polymass_polygon_properties* properties,
+                                                      uint32_t struct_size);
+
+/* The same defaults as static initialisers, for C (designated initialisers
+   are C99; C++ before C++20 has none: call the functions above there):
+     polymass_mass_desc body = POLYMASS_MASS_DESC_INIT;
+     body.density = 2700.0; */
+#ifndef __cplusplus
+#define POLYMASS_OPTIONS_INIT \
+    { .struct_size = sizeof(polymass_options) }
+#define POLYMASS_MESH_DESC_INIT \
+    { .struct_size = sizeof(polymass_mesh_desc) }
+#define POLYMASS_MASS_DESC_INIT                                                             \
+    {                                                                                       \
+        .struct_size = sizeof(polymass_mass_desc), .mass_mode = POLYMASS_MASS_FROM_DENSITY, \
+        .density = 1.0                                                                      \
+    }
+#define POLYMASS_MASS_PROPERTIES_INIT \
+    { .struct_size = sizeof(polymass_mass_properties) }
+#define POLYMASS_DIAGNOSTICS_INIT \
+    { .struct_size = sizeof(polymass_diagnostics) }
+#define POLYMASS_POLYGON_PROPERTIES_INIT \
+    { .struct_size = sizeof(polymass_polygon_properties) }
+#endif
 
 /* ========================================================================== */
 /* Context                                                                    */

@@ -67,25 +67,27 @@ POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
                                                   const polymass_options* options) {
     return guarded(context, [&] {
         if (const int32_t status = check_struct(context, options, "options")) return status;
+        const polymass_options read =
+            read_struct(*options, StructVersions<polymass_options>::defaults());
         constexpr uint32_t known_flags =
             POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
             POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-        if (options->flags & ~known_flags)
+        if (read.flags & ~known_flags)
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                                  "options->flags has unknown bits 0x%x",
-                                 unsigned(options->flags & ~known_flags));
-        const double tolerance = options->planarity_tolerance;
+                                 unsigned(read.flags & ~known_flags));
+        const double tolerance = read.planarity_tolerance;
         if (!(tolerance >= 0.0 && tolerance < 1.0))  // also rejects NaN
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                                  "options->planarity_tolerance is %g; it must be in [0, 1) "
                                  "(0 selects the default %g)",
                                  tolerance, POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
-        const double weld = options->weld_tolerance;
+        const double weld = read.weld_tolerance;
         if (!(weld >= 0.0 && weld <= POLYMASS_MAX_WELD_TOLERANCE))  // also rejects NaN
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                                  "options->weld_tolerance is %g; it must be in [0, %g]", weld,
                                  POLYMASS_MAX_WELD_TOLERANCE);
-        context->options = *options;
+        context->options = read;
         if (tolerance == 0.0)
             context->options.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
         return POLYMASS_OK;
@@ -96,7 +98,7 @@ POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
                                                   polymass_context* context) {
     return guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_options, "out_options")) return status;
-        *out_options = context->options;
+        write_struct(out_options, context->options);
         return POLYMASS_OK;
     });
 }

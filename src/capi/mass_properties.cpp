@@ -17,26 +17,27 @@ using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 // A NULL mass description means unit density, inertia_point about the origin.
 int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass,
                        polymass_mass_desc& out) {
-    out = {sizeof(polymass_mass_desc), POLYMASS_MASS_FROM_DENSITY, 1.0, 0.0, {0.0, 0.0, 0.0}};
+    out = StructVersions<polymass_mass_desc>::defaults();
     if (!mass) return POLYMASS_OK;
     if (const int32_t status = check_struct(context, mass, "mass")) return status;
-    const bool from_density = mass->mass_mode == POLYMASS_MASS_FROM_DENSITY;
-    if (!from_density && mass->mass_mode != POLYMASS_MASS_FROM_TOTAL)
+    const polymass_mass_desc read = read_struct(*mass, out);
+    const bool from_density = read.mass_mode == POLYMASS_MASS_FROM_DENSITY;
+    if (!from_density && read.mass_mode != POLYMASS_MASS_FROM_TOTAL)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "mass->mass_mode %u is not POLYMASS_MASS_FROM_DENSITY (0) or "
                              "POLYMASS_MASS_FROM_TOTAL (1)",
-                             unsigned(mass->mass_mode));
-    const double value = from_density ? mass->density : mass->mass;
+                             unsigned(read.mass_mode));
+    const double value = from_density ? read.density : read.mass;
     if (!(value > 0.0 && std::isfinite(value)))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "mass->%s is %g; it must be positive and finite",
                              from_density ? "density" : "mass", value);
     for (int axis = 0; axis < 3; ++axis)
-        if (!std::isfinite(mass->point[axis]))
+        if (!std::isfinite(read.point[axis]))
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                                  "mass->point[%d] is %g; it must be finite", axis,
-                                 mass->point[axis]);
-    out = *mass;
+                                 read.point[axis]);
+    out = read;
     return POLYMASS_OK;
 }
 
@@ -94,7 +95,7 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
             result.mass, result.density,
             std::max(body.center_of_mass.cwiseAbs().maxCoeff(),
                      Eigen::Map<const Eigen::Vector3d>(body_desc.point).cwiseAbs().maxCoeff()));
-    *out = result;
+    write_struct(out, result);
     return POLYMASS_OK;
 }
 

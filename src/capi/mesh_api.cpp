@@ -80,18 +80,21 @@ POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* 
 POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
                                          polymass_context* context,
                                          const polymass_mesh_desc* desc) {
-    const bool report_valid = out_report && out_report->struct_size == sizeof *out_report;
+    const bool report_valid =
+        out_report && is_known_size<polymass_diagnostics>(out_report->struct_size);
     const int32_t status = guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_report, "out_report")) return status;
         MeshInput input;
+        polymass_diagnostics report;
         int32_t found = read_mesh_desc(context, desc, input);
-        fill_report(*out_report, input, nullptr);  // what the arguments tell, if anything
+        fill_report(report, input, nullptr);  // what the arguments tell, if anything
         if (found == POLYMASS_OK) {
             const polymass::core::MeshAnalysis analysis = analyse(context, input, true);
             uint32_t warnings = 0;
             found = judge(context, input, analysis, warnings);
-            fill_report(*out_report, input, &analysis);
+            fill_report(report, input, &analysis);
         }
+        write_struct(out_report, report);
         return found;
     });
     // Also when the checks could not finish (out of memory) or there is no context.
