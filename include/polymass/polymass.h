@@ -471,6 +471,155 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
                                               polymass_context* context, const double* points,
                                               uint64_t point_count, uint64_t stride);
 
+/* ========================================================================== */
+/* Options per call                                                           */
+/* ========================================================================== */
+
+/* The functions above with options given for the one call (NULL: the
+   context's), checked as polymass_context_set_options checks them; the
+   context's options are left as they are. So items of a batch and parts of an
+   assembly can each have their own. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_create_with_options(polymass_mesh** out_mesh,
+                                                       polymass_context* context,
+                                                       const polymass_mesh_desc* desc,
+                                                       const polymass_options* options);
+POLYMASS_API int32_t polymass_mass_properties_compute_with_options(
+    polymass_mass_properties* out_properties, polymass_context* context,
+    const polymass_mesh_desc* desc, const polymass_mass_desc* mass,
+    const polymass_options* options);
+POLYMASS_API int32_t polymass_mesh_check_with_options(polymass_diagnostics* out_report,
+                                                      polymass_context* context,
+                                                      const polymass_mesh_desc* desc,
+                                                      const polymass_options* options);
+POLYMASS_API int32_t polymass_mesh_shells_with_options(uint32_t* out_shell_of_face,
+                                                       uint64_t* out_shell_count,
+                                                       polymass_context* context,
+                                                       const polymass_mesh_desc* desc,
+                                                       const polymass_options* options);
+
+/* ========================================================================== */
+/* Moments: mass integrals that compose                                       */
+/* ========================================================================== */
+
+/* polymass_moments.flags */
+/* The moments of a range of faces, not of a closed surface: they add only to
+   moments about the same reference point (the other ranges of the same
+   surface) and are refused by everything else. Once ranges covering the whole
+   closed surface are added up, the caller clears the flag. */
+#define POLYMASS_MOMENTS_PARTIAL (1u << 0)
+
+/* The mass integrals of a body about its own reference point, which the
+   library puts near the body (the centre of its bounding box) so that a body
+   far from the origin keeps its digits. With r the position relative to
+   `reference` and rho the density:
+     mass = integral rho dV, first = integral rho r dV,
+     second = integral rho (x^2, y^2, z^2, x y, y z, z x) dV.
+   A plain struct of doubles rather than a handle: moments are values, copied,
+   stored in arrays (one per item of a batch, per thread's range of faces, per
+   part of an assembly) and passed through any FFI without allocation, and
+   what they hold is the documented mathematics above, which cannot change.
+   Composition (add, subtract, transform, scale, weight) goes through the
+   functions below; each may write its result over one of its operands.
+   Combining re-expresses the second operand about the first's reference
+   point with the parallel-axis identities (docs/moments.md): sums are
+   deterministic given the order of the operands, and equal, to rounding,
+   whatever the grouping. */
+typedef struct polymass_moments {
+    uint32_t struct_size; /* sizeof(polymass_moments) */
+    uint32_t flags;       /* POLYMASS_MOMENTS_* bits */
+    double reference[3];  /* the point the integrals are about */
+    double volume;        /* integral dV: the solid's volume (a difference may be 0 or less) */
+    double mass;          /* integral rho dV: the volume until a density is applied */
+    double first[3];
+    double second[6]; /* xx, yy, zz, xy, yz, zx */
+} polymass_moments;
+
+POLYMASS_API uint32_t polymass_sizeof_moments(void);
+POLYMASS_API int32_t polymass_moments_init(polymass_moments* moments, uint32_t struct_size);
+#ifndef __cplusplus
+#define POLYMASS_MOMENTS_INIT \
+    { .struct_size = sizeof(polymass_moments) }
+#endif
+
+/* The moments (unit density) of a closed surface, validated as by
+   polymass_mesh_create_with_options (options NULL: the context's).
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_moments_compute(polymass_moments* out_moments,
+                                              polymass_context* context,
+                                              const polymass_mesh_desc* desc,
+                                              const polymass_options* options);
+
+/* The moments of faces [first_face, first_face + face_count) of the surface,
+   about `reference` (every range of one surface must use the same point; one
+   near the surface keeps the digits), flagged POLYMASS_MOMENTS_PARTIAL. For a
+   caller's own threads: each takes a range, and the ranges added up (in a
+   fixed order for a deterministic result) are the surface's moments. Indices
+   and coordinates are checked, and polygon faces' planarity unless the
+   options skip the topology checks; face numbers in messages count from
+   first_face. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_moments_compute_faces(polymass_moments* out_moments,
+                                                    polymass_context* context,
+                                                    const polymass_mesh_desc* desc,
+                                                    uint64_t first_face, uint64_t face_count,
+                                                    const double reference[3],
+                                                    const polymass_options* options);
+
+/* The moments (unit density) of a mesh. The mesh may be read by several
+   threads at once, each with its own context. */
+POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polymass_context* context,
+                                           const polymass_mesh* mesh);
+
+/* a + b: two disjoint bodies as one, about a's reference point. */
+POLYMASS_API int32_t polymass_moments_add(polymass_moments* out_moments, polymass_context* context,
+                                          const polymass_moments* a, const polymass_moments* b);
+
+/* a - b: b removed from a (a bore from a block: b inside a), about a's
+   reference point. */
+POLYMASS_API int32_t polymass_moments_subtract(polymass_moments* out_moments,
+                                               polymass_context* context, const polymass_moments* a,
+                                               const polymass_moments* b);
+
+/* The body moved by r -> rotation r + translation: rotation is row-major,
+   orthonormal to 1e-12 (a proper rotation, or of determinant -1: a mirror);
+   translation may be NULL (none). A mirrored body is the mirror image solid,
+   of the same positive volume and mass (its faces reversed, as a mirrored
+   mesh must be to stay a valid solid). */
+POLYMASS_API int32_t polymass_moments_transform(polymass_moments* out_moments,
+                                                polymass_context* context,
+                                                const polymass_moments* moments,
+                                                const double rotation[9],
+                                                const double translation[3]);
+
+/* The body stretched by factors[i] along axis i, about the origin: uniform
+   scale (three equal factors, e.g. a unit conversion), per-axis scale, or a
+   mirror (negative factors; volume and mass stay positive). Density is kept:
+   the mass scales with the volume. Factors must be finite and non-zero. */
+POLYMASS_API int32_t polymass_moments_scale(polymass_moments* out_moments,
+                                            polymass_context* context,
+                                            const polymass_moments* moments,
+                                            const double factors[3]);
+
+/* The body with a density or a total mass (mass->point is not used): its
+   whole mass distribution rescaled so that its mean density is mass->density
+   (POLYMASS_MASS_FROM_DENSITY) or its mass is mass->mass
+   (POLYMASS_MASS_FROM_TOTAL). For a single part that is "made of this
+   material"; parts weighted first and added keep their own densities. */
+POLYMASS_API int32_t polymass_moments_weight(polymass_moments* out_moments,
+                                             polymass_context* context,
+                                             const polymass_moments* moments,
+                                             const polymass_mass_desc* mass);
+
+/* The mass properties of the body: NULL mass takes the moments as weighted
+   (inertia_point about the origin); otherwise weighted as by
+   polymass_moments_weight, inertia_point about mass->point. density is the
+   mean density (mass / volume); surface_area is NaN (moments do not keep the
+   surface); warnings are 0. Fails with POLYMASS_ERROR_ZERO_VOLUME when the
+   volume or mass is not positive. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_moments_mass_properties(polymass_mass_properties* out_properties,
+                                                      polymass_context* context,
+                                                      const polymass_moments* moments,
+                                                      const polymass_mass_desc* mass);
+
 #ifdef __cplusplus
 }
 #endif

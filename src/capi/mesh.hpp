@@ -16,3 +16,13 @@ struct polymass_mesh {
     double surface_area = 0.0;
     uint32_t warnings = 0;
 };
+
+namespace polymass::capi {
+
+// Validates (with the call's options) and integrates the caller's surface
+// into `mesh`: the body of polymass_mesh_create. Returns the status, with the
+// message in the context.
+int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc,
+                   const polymass_options& options, polymass_mesh& mesh);
+
+}  // namespace polymass::capi

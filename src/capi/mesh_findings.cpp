@@ -18,8 +18,8 @@ int32_t fail_on_edge(polymass_context* context, int32_t status, const core::Edge
 
 }  // namespace
 
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report) {
-    const polymass_options& options = context->options;
+core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
+                           const polymass_options& options, bool full_report) {
     core::AnalysisSettings settings;
     settings.check_topology =
         full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
@@ -54,9 +54,9 @@ int32_t judge_scan(polymass_context* context, const MeshInput& input, const core
     return POLYMASS_OK;
 }
 
-int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
-              uint32_t& warnings) {
-    const uint32_t flags = context->options.flags;
+int32_t judge(polymass_context* context, const MeshInput& input, const polymass_options& options,
+              const core::MeshAnalysis& analysis, uint32_t& warnings) {
+    const uint32_t flags = options.flags;
     const core::MeshScan& scan = analysis.scan;
     if (const int32_t status = judge_scan(context, input, scan)) return status;
     if (const auto& topology = analysis.topology) {
@@ -91,7 +91,7 @@ int32_t judge(polymass_context* context, const MeshInput& input, const core::Mes
                              "face %llu is not planar: a vertex is off its plane by %.3g of "
                              "the face's diameter, more than the tolerance %.3g (%llu such faces)",
                              u64(integration.non_planar_faces.first()),
-                             integration.max_non_planarity, context->options.planarity_tolerance,
+                             integration.max_non_planarity, options.planarity_tolerance,
                              u64(integration.non_planar_faces.count));
     if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
 

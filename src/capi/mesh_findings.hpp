@@ -11,9 +11,10 @@
 
 namespace polymass::capi {
 
-// Runs core::analyse_mesh with the context's options; full_report runs every
+// Runs core::analyse_mesh with the call's options; full_report runs every
 // check (topology even when the options skip it) without stopping early.
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report);
+core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
+                           const polymass_options& options, bool full_report);
 
 // The status of what the scan found (indices out of range, non-finite or
 // overflowing coordinates), with its message in the context.
@@ -21,8 +22,8 @@ int32_t judge_scan(polymass_context* context, const MeshInput& input, const core
 
 // The status of the first problem, in the order the checks run, with its
 // message in the context; what the options accept instead is added to warnings.
-int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
-              uint32_t& warnings);
+int32_t judge(polymass_context* context, const MeshInput& input, const polymass_options& options,
+              const core::MeshAnalysis& analysis, uint32_t& warnings);
 
 // The report of what the arguments (and, when given, the analysis) show.
 void fill_report(polymass_diagnostics& report, const MeshInput& input,

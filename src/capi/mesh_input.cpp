@@ -127,4 +127,29 @@ int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* call
     return read_face_sizes(context, desc, input);
 }
 
+int32_t select_faces(polymass_context* context, MeshInput& input, uint64_t first_face,
+                     uint64_t face_count) {
+    if (first_face > input.face_count || face_count > input.face_count - first_face)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "faces [%llu, %llu + %llu) are not all in the mesh, which has %llu",
+                             u64(first_face), u64(first_face), u64(face_count),
+                             u64(input.face_count));
+    if (face_count == 0)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "face_count is 0: no faces");
+    std::size_t first_index = 3 * std::size_t(first_face), index_count = 3 * face_count;
+    if (input.face_sizes) {
+        first_index = 0;
+        for (std::size_t face = 0; face < first_face; ++face) first_index += input.face_sizes[face];
+        index_count = 0;
+        for (std::size_t face = first_face; face < first_face + face_count; ++face)
+            index_count += input.face_sizes[face];
+        input.face_sizes += first_face;
+    }
+    const std::size_t index_bytes = input.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    input.indices += first_index * index_bytes;
+    input.index_count = index_count;
+    input.face_count = std::size_t(face_count);
+    return POLYMASS_OK;
+}
+
 }  // namespace polymass::capi

@@ -80,4 +80,10 @@ struct StructVersions<polymass_polygon_properties> {
     static polymass_polygon_properties defaults() { return zeroed<polymass_polygon_properties>(); }
 };
 
+template <>
+struct StructVersions<polymass_moments> {  // new in the release after 1.0.0
+    static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_moments, second)};
+    static polymass_moments defaults() { return zeroed<polymass_moments>(); }
+};
+
 }  // namespace polymass::capi
