@@ -34,6 +34,7 @@ from .errors import (
     ZeroAreaError,
     ZeroVolumeError,
 )
+from .moments import Moments, moments
 from .polygons import PolygonProperties, polygon_properties
 from .solids import MassProperties, Mesh, Warnings, mass_properties
 
@@ -57,6 +58,7 @@ __all__ = [
     "InvertedError",
     "MassProperties",
     "Mesh",
+    "Moments",
     "NonFiniteError",
     "NonManifoldError",
     "NonPlanarFaceError",
@@ -72,6 +74,7 @@ __all__ = [
     "check",
     "library_version",
     "mass_properties",
+    "moments",
     "polygon_properties",
     "shells",
 ]
