@@ -259,6 +259,21 @@ typedef struct polymass_mass_properties {
        inertia = R diag(principal_moments) R^T. Where moments coincide the axes
        are chosen deterministically (coordinate axes when all three do). */
     double principal_axes[9];
+    /* Bounds on the rounding errors of the results above: absolute, in their
+       units, from sums of absolute terms carried through the integration,
+       the move to the centre of mass and the principal-axes step
+       (docs/error_bound.md). They hold for the surface as given: its
+       coordinates are taken as exact. The axes' bound, in radians, grows as
+       the bound over the gap between the nearest moments, so as moments
+       approach each other; it is pi/2 when moments are closer than their
+       bounds can tell apart, and covers only axes the moments determine
+       (where moments coincide the axes are chosen by convention). Infinite
+       when rounding could be the whole mass. */
+    double error_bound_volume;
+    double error_bound_center_of_mass;    /* of each coordinate */
+    double error_bound_inertia;           /* of each entry of `inertia` */
+    double error_bound_principal_moments; /* of each */
+    double error_bound_principal_axes;    /* angle of each axis, radians */
 } polymass_mass_properties;
 
 /* How many locations of each finding polymass_diagnostics lists: the lowest
@@ -532,6 +547,15 @@ typedef struct polymass_moments {
     double mass;          /* integral rho dV: the volume until a density is applied */
     double first[3];
     double second[6]; /* xx, yy, zz, xy, yz, zx */
+    /* Bounds on the rounding errors carried so far, absolute: of each
+       coordinate of reference, of volume, of mass, of each first moment, of
+       each second moment. Operations carry them; mass properties turn them
+       into their error bounds. Zero for moments a caller writes. */
+    double reference_error_bound;
+    double volume_error_bound;
+    double mass_error_bound;
+    double first_error_bound;
+    double second_error_bound;
 } polymass_moments;
 
 POLYMASS_API uint32_t polymass_sizeof_moments(void);
@@ -619,6 +643,50 @@ POLYMASS_API int32_t polymass_moments_mass_properties(polymass_mass_properties* 
                                                       polymass_context* context,
                                                       const polymass_moments* moments,
                                                       const polymass_mass_desc* mass);
+
+/* ========================================================================== */
+/* Batch: many meshes in one call                                             */
+/* ========================================================================== */
+
+/* Length of polymass_batch_item.message, its terminating NUL included. */
+#define POLYMASS_BATCH_MESSAGE_SIZE 256
+
+/* One mesh of a batch: what polymass_mass_properties_compute_with_options
+   takes, and what it gives. */
+typedef struct polymass_batch_item {
+    uint32_t struct_size;                 /* sizeof(polymass_batch_item) */
+    int32_t status;                       /* out: the item's status */
+    const polymass_mesh_desc* desc;       /* in */
+    const polymass_mass_desc* mass;       /* in; NULL: unit density, point = origin */
+    const polymass_options* options;      /* in; NULL: the context's */
+    polymass_mass_properties* properties; /* out, written on success; its
+                                             struct_size set by the caller */
+    /* out: the item's message ("" on success), NUL-terminated, truncated to
+       fit. */
+    char message[POLYMASS_BATCH_MESSAGE_SIZE];
+} polymass_batch_item;
+
+POLYMASS_API uint32_t polymass_sizeof_batch_item(void);
+POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_t struct_size);
+#ifndef __cplusplus
+#define POLYMASS_BATCH_ITEM_INIT \
+    { .struct_size = sizeof(polymass_batch_item) }
+#endif
+
+/* The mass properties of item_count meshes: items[i] is found
+   items[0].struct_size bytes after items[i - 1] (every item has that
+   struct_size). Each item gets its own status, message and, on success,
+   properties, exactly (bit for bit) those of
+   polymass_mass_properties_compute_with_options; an item's failure does not
+   stop the others. *out_failed (may be NULL) counts the items that failed.
+   Returns POLYMASS_OK once every item has its status, or the status of what
+   kept the batch from running (items NULL with item_count > 0, an unknown
+   struct_size), with the context's message. Items are independent: they are
+   computed one after another today, and a later version may spread them over
+   the library's threads without changing any result.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t item_count,
+                                            uint64_t* out_failed, polymass_context* context);
 
 #ifdef __cplusplus
 }

@@ -63,11 +63,13 @@ bool result_in_range(const polymass_mass_properties& p) {
 }
 
 // The body's properties, with inertia_point about `point`, written to *out
-// when they fit in doubles.
+// when they fit in doubles. `moments` are those the body was computed from,
+// for the error bounds.
 int32_t write_body(polymass_mass_properties* out, polymass_context* context,
-                   const core::RigidBody& body, const Eigen::Vector3d& point, double surface_area,
-                   uint32_t warnings) {
+                   const core::RigidBody& body, const core::Moments& moments,
+                   const Eigen::Vector3d& point, double surface_area, uint32_t warnings) {
     const core::PrincipalAxes principal = core::principal_axes(body.inertia);
+    const core::ResultBounds bounds = moments.result_bounds(body, principal);
     polymass_mass_properties result{};
     result.struct_size = sizeof result;
     result.warnings = warnings;
@@ -81,6 +83,11 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
     copy_matrix(core::inertia_about(body, point), result.inertia_point);
     copy_vector(principal.moments, result.principal_moments);
     copy_matrix(principal.axes, result.principal_axes);
+    result.error_bound_volume = bounds.volume;
+    result.error_bound_center_of_mass = bounds.center_of_mass;
+    result.error_bound_inertia = bounds.inertia;
+    result.error_bound_principal_moments = bounds.principal_moments;
+    result.error_bound_principal_axes = bounds.principal_axes;
     if (!(result_in_range(result)))
         return context->fail(
             POLYMASS_ERROR_OVERFLOW,
@@ -103,8 +110,11 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
                                ? body_desc.mass / mesh.integrals.volume
                                : body_desc.density;
     const core::RigidBody body = core::rigid_body(mesh.integrals, mesh.reference, density);
-    return write_body(out, context, body, Eigen::Map<const Eigen::Vector3d>(body_desc.point),
-                      mesh.surface_area, mesh.warnings);
+    const core::Moments moments =
+        core::Moments::of_solid(mesh.integrals, mesh.bounds, mesh.reference, density);
+    return write_body(out, context, body, moments,
+                      Eigen::Map<const Eigen::Vector3d>(body_desc.point), mesh.surface_area,
+                      mesh.warnings);
 }
 
 int32_t weight_moments(polymass_context* context, const core::Moments& moments,
@@ -142,7 +152,7 @@ int32_t moments_mass_properties(polymass_mass_properties* out, polymass_context*
                              "body of positive volume and mass (a difference larger than what "
                              "it is taken from?)",
                              weighted.volume, weighted.mass.volume);
-    return write_body(out, context, weighted.rigid_body(), point,
+    return write_body(out, context, weighted.rigid_body(), weighted, point,
                       std::numeric_limits<double>::quiet_NaN(), 0);
 }
 

@@ -12,6 +12,7 @@
 struct polymass_mesh {
     polymass_allocator allocator;               // to free it with; the context may be gone by then
     polymass::core::VolumeIntegrals integrals;  // about `reference`, outward-oriented
+    polymass::core::IntegralBounds bounds;      // on their rounding errors
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();
     double surface_area = 0.0;
     uint32_t warnings = 0;

@@ -20,6 +20,7 @@ int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc,
     const core::IntegrationResult& integration = *analysis.integration;
     mesh.integrals = (warnings & POLYMASS_WARNING_INVERTED) ? integration.integrals.negated()
                                                             : integration.integrals;
+    mesh.bounds = integration.bounds;
     mesh.reference = analysis.scan.reference_point();
     mesh.surface_area = integration.surface_area;
     mesh.warnings = warnings;
@@ -46,7 +47,7 @@ POLYMASS_API int32_t polymass_mesh_create_with_options(polymass_mesh** out_mesh,
         if (!out_mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_mesh is NULL");
         polymass_options call;
         if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, Eigen::Vector3d::Zero(), 0.0, 0};
+        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0};
         if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
         *out_mesh = create_object<polymass_mesh>(context->allocator, mesh);
         if (!*out_mesh)
@@ -87,7 +88,7 @@ POLYMASS_API int32_t polymass_mass_properties_compute_with_options(
             return status;
         polymass_options call;
         if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, Eigen::Vector3d::Zero(), 0.0, 0};
+        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0};
         if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
         return mass_properties(out_properties, context, mesh, mass);
     });

@@ -54,6 +54,16 @@ int32_t judge_scan(polymass_context* context, const MeshInput& input, const core
     return POLYMASS_OK;
 }
 
+int32_t judge_planarity(polymass_context* context, const core::IntegrationResult& integration,
+                        const polymass_options& options) {
+    if (integration.non_planar_faces.count == 0) return POLYMASS_OK;
+    return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
+                         "face %llu is not planar: a vertex is off its plane by %.3g of "
+                         "the face's diameter, more than the tolerance %.3g (%llu such faces)",
+                         u64(integration.non_planar_faces.first()), integration.max_non_planarity,
+                         options.planarity_tolerance, u64(integration.non_planar_faces.count));
+}
+
 int32_t judge(polymass_context* context, const MeshInput& input, const polymass_options& options,
               const core::MeshAnalysis& analysis, uint32_t& warnings) {
     const uint32_t flags = options.flags;
@@ -86,13 +96,7 @@ int32_t judge(polymass_context* context, const MeshInput& input, const polymass_
     }
 
     const core::IntegrationResult& integration = *analysis.integration;
-    if (integration.non_planar_faces.count > 0)
-        return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
-                             "face %llu is not planar: a vertex is off its plane by %.3g of "
-                             "the face's diameter, more than the tolerance %.3g (%llu such faces)",
-                             u64(integration.non_planar_faces.first()),
-                             integration.max_non_planarity, options.planarity_tolerance,
-                             u64(integration.non_planar_faces.count));
+    if (const int32_t status = judge_planarity(context, integration, options)) return status;
     if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
 
     if (integration.encloses_no_volume)

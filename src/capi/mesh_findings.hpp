@@ -20,6 +20,11 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
 // overflowing coordinates), with its message in the context.
 int32_t judge_scan(polymass_context* context, const MeshInput& input, const core::MeshScan& scan);
 
+// POLYMASS_ERROR_NON_PLANAR_FACE, with its message in the context, when the
+// integration found polygon faces off their planes by more than the tolerance.
+int32_t judge_planarity(polymass_context* context, const core::IntegrationResult& integration,
+                        const polymass_options& options);
+
 // The status of the first problem, in the order the checks run, with its
 // message in the context; what the options accept instead is added to warnings.
 int32_t judge(polymass_context* context, const MeshInput& input, const polymass_options& options,

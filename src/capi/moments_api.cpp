@@ -3,7 +3,9 @@
 #include <polymass/polymass.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "api_guard.hpp"
 #include "core/mesh_integration.hpp"
@@ -17,8 +19,6 @@
 
 namespace polymass::capi {
 namespace {
-
-using u64 = unsigned long long;  // for printf
 
 constexpr uint32_t known_moment_flags = POLYMASS_MOMENTS_PARTIAL;
 
@@ -39,6 +39,12 @@ int32_t read_moments(polymass_context* context, const polymass_moments* caller, 
     if (!(all_finite(in.reference) && all_finite(scalars) && all_finite(in.first) &&
           all_finite(in.second)))
         return context->fail(POLYMASS_ERROR_NON_FINITE, "%s holds a NaN or infinite value", name);
+    const double bounds[] = {in.reference_error_bound, in.volume_error_bound, in.mass_error_bound,
+                             in.first_error_bound, in.second_error_bound};
+    if (!std::all_of(std::begin(bounds), std::end(bounds),
+                     [](double bound) { return bound >= 0.0; }))  // also rejects NaN
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "%s has a negative or NaN error bound", name);
     core::Moments& m = out.moments;
     m.reference = Eigen::Map<const Eigen::Vector3d>(in.reference);
     m.volume = in.volume;
@@ -46,6 +52,9 @@ int32_t read_moments(polymass_context* context, const polymass_moments* caller, 
     m.mass.first = Eigen::Map<const Eigen::Vector3d>(in.first);
     m.mass.second = Eigen::Map<const Eigen::Vector3d>(in.second);
     m.mass.products = Eigen::Map<const Eigen::Vector3d>(in.second + 3);
+    m.reference_bound = in.reference_error_bound;
+    m.volume_bound = in.volume_error_bound;
+    m.mass_bounds = {in.mass_error_bound, in.first_error_bound, in.second_error_bound};
     out.partial = in.flags & POLYMASS_MOMENTS_PARTIAL;
     return POLYMASS_OK;
 }
@@ -60,6 +69,11 @@ int32_t write_moments(polymass_context* context, polymass_moments* out, const Mo
     Eigen::Vector3d::Map(result.first) = m.mass.first;
     Eigen::Vector3d::Map(result.second) = m.mass.second;
     Eigen::Vector3d::Map(result.second + 3) = m.mass.products;
+    result.reference_error_bound = m.reference_bound;
+    result.volume_error_bound = m.volume_bound;
+    result.mass_error_bound = m.mass_bounds.volume;
+    result.first_error_bound = m.mass_bounds.first;
+    result.second_error_bound = m.mass_bounds.second;
     const double scalars[] = {result.volume, result.mass};
     if (!(all_finite(result.reference) && all_finite(scalars) && all_finite(result.first) &&
           all_finite(result.second)))
@@ -120,9 +134,11 @@ core::IntegrationSettings range_settings(const core::MeshScan& scan,
                                          const polymass_options& options) {
     core::IntegrationSettings settings;
     settings.reference = reference;
-    Eigen::AlignedBox3d reach = scan.bounds;
-    reach.extend(reference);
-    settings.size = reach.diagonal().stableNorm();
+    // Twice the largest distance from the reference to a corner of the box.
+    const Eigen::Vector3d farthest = (scan.bounds.min() - reference)
+                                         .cwiseAbs()
+                                         .cwiseMax((scan.bounds.max() - reference).cwiseAbs());
+    settings.size = 2.0 * farthest.stableNorm();
     settings.check_planarity = !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
     settings.planarity_tolerance = options.planarity_tolerance;
     return settings;
@@ -145,14 +161,8 @@ int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* 
         if (const int32_t status = judge_scan(context, input, scan)) return status;
         const core::IntegrationResult integration =
             core::integrate_mesh(view, range_settings(scan, point, options));
-        if (integration.non_planar_faces.count > 0)
-            return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
-                                 "face %llu is not planar: a vertex is off its plane by %g of "
-                                 "its diameter (tolerance %g; %llu such faces)",
-                                 u64(integration.non_planar_faces.first()),
-                                 integration.max_non_planarity, options.planarity_tolerance,
-                                 u64(integration.non_planar_faces.count));
-        out.moments = core::Moments::of_solid(integration.integrals, point);
+        if (const int32_t status = judge_planarity(context, integration, options)) return status;
+        out.moments = core::Moments::of_solid(integration.integrals, integration.bounds, point);
         out.partial = true;
         return int32_t(POLYMASS_OK);
     });
@@ -198,10 +208,10 @@ POLYMASS_API int32_t polymass_moments_compute(polymass_moments* out_moments,
         if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
         polymass_options call;
         if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, Eigen::Vector3d::Zero(), 0.0, 0};
+        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0};
         if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
         MomentsValue value;
-        value.moments = core::Moments::of_solid(mesh.integrals, mesh.reference);
+        value.moments = core::Moments::of_solid(mesh.integrals, mesh.bounds, mesh.reference);
         return write_moments(context, out_moments, value);
     });
 }
@@ -230,7 +240,7 @@ POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polyma
         if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
         if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
         MomentsValue value;
-        value.moments = core::Moments::of_solid(mesh->integrals, mesh->reference);
+        value.moments = core::Moments::of_solid(mesh->integrals, mesh->bounds, mesh->reference);
         return write_moments(context, out_moments, value);
     });
 }

@@ -82,8 +82,14 @@ struct StructVersions<polymass_polygon_properties> {
 
 template <>
 struct StructVersions<polymass_moments> {  // new in the release after 1.0.0
-    static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_moments, second)};
+    static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_moments, second_error_bound)};
     static polymass_moments defaults() { return zeroed<polymass_moments>(); }
+};
+
+template <>
+struct StructVersions<polymass_batch_item> {  // new in the release after 1.0.0
+    static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_batch_item, message)};
+    static polymass_batch_item defaults() { return zeroed<polymass_batch_item>(); }
 };
 
 }  // namespace polymass::capi

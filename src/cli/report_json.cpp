@@ -2,6 +2,9 @@
 // several files are given). The keys are documented in the README.
 #include <polymass/polymass.h>
 
+#include <cmath>
+#include <utility>
+
 #include "categories.hpp"
 #include "json_writer.hpp"
 #include "report.hpp"
@@ -44,6 +47,17 @@ void write_solid_members(JsonWriter& json, const PartReport& part, const OutputS
     json.key("warnings").begin_array();
     for (const std::string& name : warning_names(p.warnings)) json.value(name);
     json.end_array();
+    // An infinite bound (rounding could be the whole mass) is left out.
+    const std::pair<const char*, double> bounds[] = {
+        {"volume", p.error_bound_volume},
+        {"center_of_mass", p.error_bound_center_of_mass},
+        {"inertia", p.error_bound_inertia},
+        {"principal_moments", p.error_bound_principal_moments},
+        {"principal_axes", p.error_bound_principal_axes}};
+    json.key("error_bound").begin_object();
+    for (const auto& [name, bound] : bounds)
+        if (std::isfinite(bound)) json.key(name).value(bound);
+    json.end_object();
 }
 
 void write_file(JsonWriter& json, const FileReport& file, const OutputSettings& settings) {

@@ -1,7 +1,12 @@
 #include "moments.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace polymass::core {
 namespace {
+
+constexpr double u = 0x1p-53;  // unit roundoff
 
 // ∫ρ r rᵀ as a symmetric matrix, and back.
 Eigen::Matrix3d second_moment_matrix(const VolumeIntegrals& m) {
@@ -19,14 +24,21 @@ void set_second_moments(VolumeIntegrals& m, const Eigen::Matrix3d& s) {
     m.products = {s(0, 1), s(1, 2), s(2, 0)};
 }
 
+// The largest magnitude of a VolumeIntegrals' second moments and products.
+double largest_second(const VolumeIntegrals& m) {
+    return std::max(m.second.cwiseAbs().maxCoeff(), m.products.cwiseAbs().maxCoeff());
+}
+
 }  // namespace
 
-Moments Moments::of_solid(const VolumeIntegrals& integrals, const Eigen::Vector3d& reference,
-                          double density) {
+Moments Moments::of_solid(const VolumeIntegrals& integrals, const IntegralBounds& bounds,
+                          const Eigen::Vector3d& reference, double density) {
     Moments moments;
     moments.reference = reference;
     moments.volume = integrals.volume;
     moments.mass = integrals;
+    moments.volume_bound = bounds.volume;
+    moments.mass_bounds = bounds;
     return density == 1.0 ? moments : moments.weighted(density);
 }
 
@@ -41,6 +53,16 @@ Moments Moments::about(const Eigen::Vector3d& point) const {
     const Eigen::Matrix3d shift =
         f * d.transpose() + d * f.transpose() + mass.volume * d * d.transpose();
     set_second_moments(moved.mass, second_moment_matrix(mass) + shift);
+    // The shift's terms and its roundings; an error r in where the reference
+    // is counts as a shift by r (docs/error_bound.md).
+    const double m = std::abs(mass.volume), first = f.cwiseAbs().maxCoeff();
+    const double dd = d.cwiseAbs().maxCoeff(), r = reference_bound;
+    const IntegralBounds& b = mass_bounds;
+    moved.mass_bounds.first = b.first + b.volume * dd + m * r + 3.0 * u * (first + m * dd);
+    moved.mass_bounds.second = b.second + 2.0 * b.first * dd + b.volume * dd * dd +
+                               2.0 * (first + m * dd) * r +
+                               8.0 * u * (largest_second(mass) + 2.0 * first * dd + m * dd * dd);
+    moved.reference_bound = 0.0;
     return moved;
 }
 
@@ -66,6 +88,16 @@ Moments Moments::scaled(const Eigen::Vector3d& factors) const {
     stretched.mass.first = jacobian * factors.cwiseProduct(mass.first);
     const Eigen::Matrix3d d = factors.asDiagonal();
     set_second_moments(stretched.mass, jacobian * (d * second_moment_matrix(mass) * d));
+    const double largest = factors.cwiseAbs().maxCoeff();
+    stretched.reference_bound =
+        largest * reference_bound + u * stretched.reference.cwiseAbs().maxCoeff();
+    stretched.volume_bound = jacobian * volume_bound + 2.0 * u * std::abs(stretched.volume);
+    stretched.mass_bounds = {
+        jacobian * mass_bounds.volume + 2.0 * u * std::abs(stretched.mass.volume),
+        jacobian * largest * mass_bounds.first +
+            3.0 * u * stretched.mass.first.cwiseAbs().maxCoeff(),
+        jacobian * largest * largest * mass_bounds.second +
+            4.0 * u * largest_second(stretched.mass)};
     return stretched;
 }
 
@@ -73,6 +105,10 @@ Moments Moments::weighted(double factor) const {
     Moments weighted = *this;
     weighted.mass = {factor * mass.volume, factor * mass.first, factor * mass.second,
                      factor * mass.products};
+    const double f = std::abs(factor);
+    weighted.mass_bounds = {f * mass_bounds.volume + u * std::abs(weighted.mass.volume),
+                            f * mass_bounds.first + u * weighted.mass.first.cwiseAbs().maxCoeff(),
+                            f * mass_bounds.second + u * largest_second(weighted.mass)};
     return weighted;
 }
 
@@ -85,19 +121,34 @@ RigidBody Moments::rigid_body() const {
     return body;
 }
 
+ResultBounds Moments::result_bounds(const RigidBody& body, const PrincipalAxes& principal) const {
+    ResultBounds bounds =
+        core::result_bounds(mass, mass_bounds, volume_bound, reference, body, principal);
+    bounds.center_of_mass += reference_bound;  // the body is where its reference is
+    return bounds;
+}
+
 Moments operator+(const Moments& a, const Moments& b) {
+    // Both about a's reference, whose own error r counts as a shift of a by r.
     const Moments shifted = b.about(a.reference);
-    Moments sum = a;
+    const Moments anchored = a.about(a.reference);
+    Moments sum = anchored;
     sum.volume += shifted.volume;
     sum.mass.volume += shifted.mass.volume;
     sum.mass.first += shifted.mass.first;
     sum.mass.second += shifted.mass.second;
     sum.mass.products += shifted.mass.products;
+    sum.volume_bound = a.volume_bound + b.volume_bound + u * std::abs(sum.volume);
+    sum.mass_bounds = {
+        anchored.mass_bounds.volume + shifted.mass_bounds.volume + u * std::abs(sum.mass.volume),
+        anchored.mass_bounds.first + shifted.mass_bounds.first +
+            u * sum.mass.first.cwiseAbs().maxCoeff(),
+        anchored.mass_bounds.second + shifted.mass_bounds.second + u * largest_second(sum.mass)};
     return sum;
 }
 
 Moments operator-(const Moments& a, const Moments& b) {
-    Moments negated = b;
+    Moments negated = b;  // the bounds stay: they are magnitudes
     negated.volume = -b.volume;
     negated.mass = b.mass.negated();
     return a + negated;

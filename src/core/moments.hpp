@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "result_bounds.hpp"
 #include "rigid_body.hpp"
 #include "volume_integrals.hpp"
 
@@ -21,10 +22,16 @@ struct Moments {
     // ∫ρ dm-weighted integrals of 1, r, r rᵀ with r measured from `reference`:
     // mass.volume is the mass, mass.first the first moments, and so on.
     VolumeIntegrals mass;
+    // Bounds on the rounding errors carried so far (docs/error_bound.md): of
+    // each coordinate of the reference, of the volume, of the mass integrals.
+    double reference_bound = 0.0;
+    double volume_bound = 0.0;
+    IntegralBounds mass_bounds;
 
-    // A solid of uniform `density` from its volume integrals about `reference`.
-    static Moments of_solid(const VolumeIntegrals& integrals, const Eigen::Vector3d& reference,
-                            double density = 1.0);
+    // A solid of uniform `density` from its volume integrals about `reference`
+    // and their rounding bounds.
+    static Moments of_solid(const VolumeIntegrals& integrals, const IntegralBounds& bounds,
+                            const Eigen::Vector3d& reference, double density = 1.0);
 
     // The same body measured from another reference point (parallel-axis identities).
     Moments about(const Eigen::Vector3d& point) const;
@@ -43,6 +50,9 @@ struct Moments {
     // Mass, centre of mass and inertia (about the centre of mass); density is
     // the mean density, mass / volume.
     RigidBody rigid_body() const;
+
+    // The bounds of rigid_body()'s results (with `principal` from its inertia).
+    ResultBounds result_bounds(const RigidBody& body, const PrincipalAxes& principal) const;
 };
 
 // The union of two disjoint bodies, about a's reference point.

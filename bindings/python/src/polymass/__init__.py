@@ -15,6 +15,7 @@ at the path in the environment variable POLYMASS_LIBRARY.
 from . import _header
 from ._library import ffi as _ffi
 from ._library import lib as _lib
+from .batch import batch
 from .diagnostics import Diagnostics, check, shells
 from .errors import (
     Error,
@@ -36,7 +37,7 @@ from .errors import (
 )
 from .moments import Moments, moments
 from .polygons import PolygonProperties, polygon_properties
-from .solids import MassProperties, Mesh, Warnings, mass_properties
+from .solids import ErrorBound, MassProperties, Mesh, Warnings, mass_properties
 
 __version__: str = _header.POLYMASS_VERSION_STRING
 """The version of the header this binding was built from (the package's version)."""
@@ -50,6 +51,7 @@ def library_version() -> str:
 __all__ = [
     "Diagnostics",
     "Error",
+    "ErrorBound",
     "FaceTooSmallError",
     "InconsistentOrientationError",
     "IndexOutOfRangeError",
@@ -71,6 +73,7 @@ __all__ = [
     "ZeroAreaError",
     "ZeroVolumeError",
     "__version__",
+    "batch",
     "check",
     "library_version",
     "mass_properties",

@@ -437,6 +437,82 @@ impl Context {
         Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
     }
 
+    /// The mass properties of many surfaces in one call, in order: each item
+    /// its own result, bit for bit [`mass_properties`](Context::mass_properties)'s,
+    /// or its own error, which does not stop the others. The outer `Err` is a
+    /// failure of the call itself.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, ErrorKind, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let closed = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
+    /// let items = [
+    ///     (Surface::triangles(&positions, &closed), Body::density(2.0)),
+    ///     (Surface::triangles(&positions, &open), Body::default()),
+    /// ];
+    /// let results = Context::new()?.batch(&items)?;
+    /// assert!((results[0].as_ref().unwrap().mass - 2.0 / 6.0).abs() < 1e-15);
+    /// assert_eq!(results[1].as_ref().unwrap_err().kind(), ErrorKind::Open);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn batch(&mut self, items: &[(Surface<'_>, Body)]) -> Result<Vec<Result<MassProperties>>> {
+        let descs: Vec<sys::polymass_mesh_desc> =
+            items.iter().map(|(surface, _)| surface.desc()).collect();
+        let masses: Vec<sys::polymass_mass_desc> =
+            items.iter().map(|(_, body)| body.to_raw()).collect();
+        let mut results = vec![
+            sys::polymass_mass_properties {
+                struct_size: struct_size::<sys::polymass_mass_properties>(),
+                ..Default::default()
+            };
+            items.len()
+        ];
+        let mut raw: Vec<sys::polymass_batch_item> = descs
+            .iter()
+            .zip(&masses)
+            .zip(results.iter_mut())
+            .map(|((desc, mass), result)| sys::polymass_batch_item {
+                struct_size: struct_size::<sys::polymass_batch_item>(),
+                status: 0,
+                desc,
+                mass,
+                options: ptr::null(),
+                properties: result,
+                message: [0; sys::POLYMASS_BATCH_MESSAGE_SIZE as usize],
+            })
+            .collect();
+        let mut failed = 0u64;
+        // SAFETY: live context, this thread only; every item points into
+        // descs, masses and results (alive and not moved during the call),
+        // and the descs into slices borrowed by `items`.
+        let status = unsafe {
+            sys::polymass_batch_compute(
+                raw.as_mut_ptr(),
+                raw.len() as u64,
+                &mut failed,
+                self.raw.as_ptr(),
+            )
+        };
+        self.result(status)?;
+        Ok(raw
+            .iter()
+            .zip(&results)
+            .map(|(item, result)| {
+                if item.status == sys::POLYMASS_OK {
+                    return Ok(MassProperties::from_raw(result));
+                }
+                // SAFETY: the library NUL-terminates the message within the array.
+                let message = unsafe { CStr::from_ptr(item.message.as_ptr()) };
+                Err(Error::new(
+                    item.status,
+                    message.to_string_lossy().into_owned(),
+                ))
+            })
+            .collect())
+    }
+
     /// Runs a `polymass_moments_*` call writing to a fresh output struct
     /// through this context. `call` must pass the pointers it gets and
     /// arguments that outlive it.
