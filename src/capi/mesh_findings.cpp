@@ -35,8 +35,8 @@ int32_t fail_on_shell(polymass_context* context, int32_t status, const core::She
 
 }  // namespace
 
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report) {
-    const polymass_options& options = context->options;
+core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
+                           const polymass_options& options, bool full_report) {
     core::AnalysisSettings settings;
     settings.check_topology =
         full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
@@ -54,7 +54,8 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bo
 }
 
 int32_t report_verdict(polymass_context* context, const MeshInput& input,
-                       const core::MeshAnalysis& analysis, uint32_t& warnings) {
+                       const polymass_options& options, const core::MeshAnalysis& analysis,
+                       uint32_t& warnings) {
     using core::Defect;
     const core::MeshScan& scan = analysis.scan;
     warnings = analysis.verdict.warnings;
@@ -97,13 +98,13 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
                                 "them is reversed");
         case Defect::non_planar: {
             const core::IntegrationResult& integration = *analysis.integration;
-            return context->fail(
-                POLYMASS_ERROR_NON_PLANAR_FACE,
-                "face %llu is not planar: a vertex is off its plane by %.3g of "
-                "the face's diameter, more than the tolerance %.3g (%llu such "
-                "faces)",
-                u64(integration.non_planar_faces.first()), integration.max_non_planarity,
-                context->options.planarity_tolerance, u64(integration.non_planar_faces.count));
+            return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
+                                 "face %llu is not planar: a vertex is off its plane by %.3g of "
+                                 "the face's diameter, more than the tolerance %.3g (%llu such "
+                                 "faces)",
+                                 u64(integration.non_planar_faces.first()),
+                                 integration.max_non_planarity, options.planarity_tolerance,
+                                 u64(integration.non_planar_faces.count));
         }
         case Defect::zero_volume:
             return context->fail(POLYMASS_ERROR_ZERO_VOLUME,

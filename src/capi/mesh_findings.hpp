@@ -11,14 +11,17 @@
 
 namespace polymass::capi {
 
-// Runs core::analyse_mesh with the context's options; full_report runs every
+// Runs core::analyse_mesh with the call's options; full_report runs every
 // check (topology even when the options skip it) without stopping early.
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report);
+core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
+                           const polymass_options& options, bool full_report);
 
 // The status of the analysis's verdict, with its message in the context; the
-// warnings it accepted, as POLYMASS_WARNING_* bits, in `warnings`.
+// warnings it accepted, as POLYMASS_WARNING_* bits, in `warnings`. options
+// are the call's (the message quotes the planarity tolerance).
 int32_t report_verdict(polymass_context* context, const MeshInput& input,
-                       const core::MeshAnalysis& analysis, uint32_t& warnings);
+                       const polymass_options& options, const core::MeshAnalysis& analysis,
+                       uint32_t& warnings);
 
 // The report of what the arguments (and, when given, the analysis) show.
 void fill_report(polymass_diagnostics& report, const MeshInput& input,

@@ -60,4 +60,10 @@ struct MeshAnalysis;
 // not judged).
 Verdict judge(const MeshAnalysis& analysis, const Policy& policy);
 
+// The verdict on a piece of a surface (a range of its faces, integrated on
+// its own): only what a piece can be judged on - its indices, coordinates
+// and planar faces. Whether the whole is closed and bounds a volume is the
+// whole's question.
+Verdict judge_piece(const MeshAnalysis& analysis);
+
 }  // namespace polymass::core

@@ -14,6 +14,7 @@ import os
 import re
 import struct
 import subprocess
+import sys
 import unittest
 from pathlib import Path
 from xml.etree import ElementTree
@@ -148,6 +149,24 @@ class EveryFormat(Case):
         )
         self.assertIn("the file declares its unit: millimeter", out["notes"])
         self.assertIn("32-bit floats", result.stderr)
+
+    def test_error_bound_contains_the_error(self):
+        result, out = run_json(WORK / "bracket.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        bound = out["error_bound"]
+
+        def error(got, exact):  # the exact value is rounded: half an ulp of slack
+            return abs(got - exact) - 0.5 * sys.float_info.epsilon * abs(exact)
+
+        self.assertLessEqual(error(out["volume"], self.expected["volume"]), bound["volume"])
+        for k in range(3):
+            com = error(out["center_of_mass"][k], self.expected["center_of_mass"][k])
+            self.assertLessEqual(com, bound["center_of_mass"])
+            for j in range(3):
+                inertia = error(out["inertia"][k][j], self.expected["inertia"][k][j])
+                self.assertLessEqual(inertia, bound["inertia"])
+        self.assertLess(bound["volume"], 1e-9 * out["volume"])
+        self.assertLessEqual(bound["principal_axes"], 1.5707963267948966)
 
     def test_polygon_formats_keep_their_faces(self):
         for name in ("bracket.obj", "bracket_ascii.ply", "bracket_binary.ply", "bracket.off"):

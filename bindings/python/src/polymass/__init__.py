@@ -15,6 +15,7 @@ at the path in the environment variable POLYMASS_LIBRARY.
 from . import _header
 from ._library import ffi as _ffi
 from ._library import lib as _lib
+from .batch import batch
 from .diagnostics import Diagnostics, Shell, check, shell_list, shells
 from .errors import (
     Error,
@@ -35,8 +36,9 @@ from .errors import (
     ZeroAreaError,
     ZeroVolumeError,
 )
+from .moments import Moments, moments
 from .polygons import PolygonProperties, polygon_properties
-from .solids import MassProperties, Mesh, Warnings, mass_properties
+from .solids import ErrorBound, MassProperties, Mesh, Warnings, mass_properties
 
 __version__: str = _header.POLYMASS_VERSION_STRING
 """The version of the header this binding was built from (the package's version)."""
@@ -50,6 +52,7 @@ def library_version() -> str:
 __all__ = [
     "Diagnostics",
     "Error",
+    "ErrorBound",
     "FaceTooSmallError",
     "InconsistentOrientationError",
     "IndexOutOfRangeError",
@@ -59,6 +62,7 @@ __all__ = [
     "InvertedError",
     "MassProperties",
     "Mesh",
+    "Moments",
     "NonFiniteError",
     "NonManifoldError",
     "NonPlanarFaceError",
@@ -72,9 +76,11 @@ __all__ = [
     "ZeroAreaError",
     "ZeroVolumeError",
     "__version__",
+    "batch",
     "check",
     "library_version",
     "mass_properties",
+    "moments",
     "polygon_properties",
     "shell_list",
     "shells",

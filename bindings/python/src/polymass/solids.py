@@ -54,6 +54,25 @@ def _frozen(values, shape: tuple[int, ...]) -> np.ndarray:
     return array
 
 
+@dataclass(frozen=True)
+class ErrorBound:
+    """Bounds on the rounding errors of a result, absolute, in its units (docs/error_bound.md).
+
+    They hold for the surface as given (its coordinates taken as exact).
+    volume: L^3. center_of_mass: L, of each coordinate. inertia: M*L^2, of each
+    entry of the tensor about the centre of mass. principal_moments: of each.
+    principal_axes: radians, of each axis the moments determine: it grows as
+    two moments approach each other, and is pi/2 when they are closer than
+    their bounds tell apart.
+    """
+
+    volume: float
+    center_of_mass: float
+    inertia: float
+    principal_moments: float
+    principal_axes: float
+
+
 # eq=False: arrays have no single truth value, so a field-wise == would raise.
 @dataclass(frozen=True, eq=False)
 class MassProperties:
@@ -70,6 +89,7 @@ class MassProperties:
     principal_axes: (3, 3) rotation R (det R = +1) whose columns are the
         principal axes: inertia = R @ diag(principal_moments) @ R.T.
     warnings: what was accepted (see `Warnings`).
+    error_bound: bounds on the rounding errors (see `ErrorBound`).
     """
 
     volume: float
@@ -84,6 +104,7 @@ class MassProperties:
     principal_moments: np.ndarray
     principal_axes: np.ndarray
     warnings: Warnings
+    error_bound: ErrorBound
 
     @classmethod
     def _from_c(cls, result, point: np.ndarray | None) -> MassProperties:
@@ -103,6 +124,13 @@ class MassProperties:
             principal_moments=_frozen(result.principal_moments, (3,)),
             principal_axes=_frozen(result.principal_axes, (3, 3)),
             warnings=Warnings(result.warnings),
+            error_bound=ErrorBound(
+                volume=result.error_bound_volume,
+                center_of_mass=result.error_bound_center_of_mass,
+                inertia=result.error_bound_inertia,
+                principal_moments=result.error_bound_principal_moments,
+                principal_axes=result.error_bound_principal_axes,
+            ),
         )
 
 

@@ -35,6 +35,11 @@ fn struct_sizes_match_the_library() {
                 sys::polymass_sizeof_mass_desc(),
             ),
             (
+                "polymass_moments",
+                size_of_u32::<sys::polymass_moments>(),
+                sys::polymass_sizeof_moments(),
+            ),
+            (
                 "polymass_mass_properties",
                 size_of_u32::<sys::polymass_mass_properties>(),
                 sys::polymass_sizeof_mass_properties(),

@@ -63,6 +63,7 @@ mod context;
 mod diagnostics;
 mod error;
 mod mesh;
+mod moments;
 mod options;
 mod polygon;
 mod properties;
@@ -76,9 +77,10 @@ pub use context::Context;
 pub use diagnostics::{Diagnostics, Occurrences};
 pub use error::{Error, ErrorKind, Result};
 pub use mesh::Mesh;
+pub use moments::Moments;
 pub use options::Options;
 pub use polygon::{Orientation, PolygonProperties, SecondMoments};
-pub use properties::{MassProperties, Warnings};
+pub use properties::{ErrorBound, MassProperties, Warnings};
 pub use shell::{Shell, ShellKind};
 pub use surface::{Index, Surface, Vertex};
 
@@ -112,6 +114,23 @@ pub struct ReadmeDoctests;
 /// ```
 pub fn mass_properties(surface: &Surface<'_>, body: &Body) -> Result<MassProperties> {
     Context::new()?.mass_properties(surface, body)
+}
+
+/// The mass properties of many surfaces in one call, with the default
+/// options; see [`Context::batch`].
+///
+/// ```
+/// use polymass::{Body, Surface};
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let surface = Surface::triangles(&positions, &triangles);
+/// let results = polymass::batch(&[(surface, Body::default()), (surface, Body::mass(1.0))])?;
+/// assert_eq!(results.len(), 2);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+pub fn batch(items: &[(Surface<'_>, Body)]) -> Result<Vec<Result<MassProperties>>> {
+    Context::new()?.batch(items)
 }
 
 /// Every check of a surface, run to the end, with the default options; see
