@@ -174,6 +174,8 @@ def _define(line: str, header: Header, where: str) -> None:
         return
     if not name.startswith("POLYMASS_"):
         raise HeaderError(f"{where}: unexpected macro {name}")
+    if value.startswith("{"):
+        return  # a struct initialiser for C callers (POLYMASS_*_INIT): no constant
     header.constants[name] = _evaluate(value, header.constants, where)
 
 

@@ -59,9 +59,11 @@ int main(void) {
     static const uint32_t face_sizes[] = {6, 6, 4, 4, 4, 4, 4, 4};
 
     polymass_context* context = NULL;
-    polymass_mesh_desc mesh = {0};
-    polymass_mass_desc body = {0};
-    polymass_mass_properties p = {0};
+    /* Every struct starts with struct_size = sizeof(the struct): the
+       initialisers set it and the defaults (here: unit density). */
+    polymass_mesh_desc mesh = POLYMASS_MESH_DESC_INIT;
+    polymass_mass_desc body = POLYMASS_MASS_DESC_INIT;
+    polymass_mass_properties p = POLYMASS_MASS_PROPERTIES_INIT;
     int32_t status;
     int i;
 
@@ -76,8 +78,6 @@ int main(void) {
     status = polymass_context_create(&context, NULL); /* NULL: malloc */
     if (failed(status, NULL, "polymass_context_create")) return 1;
 
-    /* Every struct starts with struct_size = sizeof(the struct). */
-    mesh.struct_size = sizeof mesh;
     mesh.position_type = POLYMASS_POSITION_FLOAT64;
     mesh.positions = positions;
     mesh.vertex_count = 12;
@@ -88,11 +88,9 @@ int main(void) {
     mesh.face_sizes = face_sizes;
     mesh.face_count = sizeof face_sizes / sizeof face_sizes[0];
 
-    body.struct_size = sizeof body;
     body.mass_mode = POLYMASS_MASS_FROM_DENSITY;
     body.density = 2700.0; /* aluminium, kg/m^3 */
 
-    p.struct_size = sizeof p;
     status = polymass_mass_properties_compute(&p, context, &mesh, &body);
     if (failed(status, context, "polymass_mass_properties_compute")) {
         polymass_context_destroy(context);

@@ -37,7 +37,8 @@ def main() -> int:
     vertices = np.asarray(loaded.vertices) * UNITS[arguments.unit]
     faces = np.asarray(loaded.faces)
 
-    report = polymass.check(vertices, faces, weld=True)
+    # A file from elsewhere may hold parts that overlap: look for crossing faces too.
+    report = polymass.check(vertices, faces, weld=True, check_intersections=True)
     if not report.ok:
         print(f"{arguments.mesh}: not a closed solid: {report.message}", file=sys.stderr)
         return 1

@@ -49,7 +49,11 @@
  *   added, never changed or removed, status values are never reused, and
  *   public structs only gain fields at their end. Every struct passed in or out
  *   starts with struct_size, which the caller sets to sizeof(the struct) it was
- *   compiled with, so an older caller keeps working with a newer library.
+ *   compiled with (the polymass_*_init functions and POLYMASS_*_INIT macros do
+ *   it), so an older caller keeps working with a newer library: the library
+ *   accepts the size of every version of a struct since 1.0.0, reads an input
+ *   struct only up to its struct_size (later fields take their defaults) and
+ *   writes an output struct only up to its struct_size.
  */
 #ifndef POLYMASS_POLYMASS_H
 #define POLYMASS_POLYMASS_H
@@ -107,7 +111,13 @@ extern "C" {
 #define POLYMASS_ERROR_INCONSISTENT_ORIENTATION 22
 /* A polygon face's vertices are off its plane by more than the tolerance. */
 #define POLYMASS_ERROR_NON_PLANAR_FACE 23
-/* The enclosed volume is negative: every face is reversed. */
+/* Faces cross each other, or a shell lies inside a solid of the same sense:
+   the surface bounds some region twice and its volume would be counted twice
+   (two overlapping parts exported as one file, a surface folded through
+   itself). Found with POLYMASS_OPTION_CHECK_INTERSECTIONS. */
+#define POLYMASS_ERROR_INTERSECTING 24
+/* The enclosed volume is negative: every face is reversed - or one shell is
+   inside out (negative volume) while lying inside no solid shell. */
 #define POLYMASS_ERROR_INVERTED 30
 /* The surface encloses no volume (to rounding), e.g. a flat double-sided sheet. */
 #define POLYMASS_ERROR_ZERO_VOLUME 31
@@ -168,6 +178,17 @@ typedef struct polymass_allocator {
 /* Accept edges shared by more than two faces when they are traversed as often
    in one direction as in the other (two solids touching along an edge). */
 #define POLYMASS_OPTION_ACCEPT_NON_MANIFOLD (1u << 3)
+/* Also check that no faces cross each other and that no shell lies inside a
+   solid of the same sense (POLYMASS_ERROR_INTERSECTING), counting how shells
+   nest exactly; faces that touch without crossing (parts resting on each
+   other) give POLYMASS_WARNING_TOUCHING_FACES. Exact predicates decide every
+   case. Off by default: it costs about as much again as the topology checks
+   (see the README for figures), and an engine's load path need not pay it.
+   polymass_mesh_check follows it too: set it there to list crossing and
+   touching faces (the polymass tool does, by default). Without it a shell
+   turned inside out is still refused when it lies outside every solid
+   shell's bounding box. Needs the topology checks for the shells' nesting. */
+#define POLYMASS_OPTION_CHECK_INTERSECTIONS (1u << 4)
 
 /* Default of polymass_options.planarity_tolerance. */
 #define POLYMASS_DEFAULT_PLANARITY_TOLERANCE 1e-6
@@ -238,6 +259,7 @@ typedef struct polymass_mass_desc {
 #define POLYMASS_WARNING_DEGENERATE_FACES (1u << 1) /* zero-area faces, harmless */
 #define POLYMASS_WARNING_UNCHECKED (1u << 2)        /* topology checks skipped */
 #define POLYMASS_WARNING_NON_MANIFOLD (1u << 3)     /* accepted non-manifold edges */
+#define POLYMASS_WARNING_TOUCHING_FACES (1u << 4)   /* faces touch without crossing */
 
 typedef struct polymass_mass_properties {
     uint32_t struct_size; /* set by the caller: sizeof(polymass_mass_properties) */
@@ -255,6 +277,21 @@ typedef struct polymass_mass_properties {
        inertia = R diag(principal_moments) R^T. Where moments coincide the axes
        are chosen deterministically (coordinate axes when all three do). */
     double principal_axes[9];
+    /* Bounds on the rounding errors of the results above: absolute, in their
+       units, from sums of absolute terms carried through the integration,
+       the move to the centre of mass and the principal-axes step
+       (docs/error_bound.md). They hold for the surface as given: its
+       coordinates are taken as exact. The axes' bound, in radians, grows as
+       the bound over the gap between the nearest moments, so as moments
+       approach each other; it is pi/2 when moments are closer than their
+       bounds can tell apart, and covers only axes the moments determine
+       (where moments coincide the axes are chosen by convention). Infinite
+       when rounding could be the whole mass. */
+    double error_bound_volume;
+    double error_bound_center_of_mass;    /* of each coordinate */
+    double error_bound_inertia;           /* of each entry of `inertia` */
+    double error_bound_principal_moments; /* of each */
+    double error_bound_principal_axes;    /* angle of each axis, radians */
 } polymass_mass_properties;
 
 /* How many locations of each finding polymass_diagnostics lists: the lowest
@@ -294,7 +331,38 @@ typedef struct polymass_diagnostics {
     uint64_t first_non_planar_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
     double max_non_planarity; /* largest relative off-plane distance seen */
     double signed_volume;     /* NaN when the faces could not be integrated */
+    /* Since 1.1. Shells are counted on a closed, oriented surface; the face
+       pairs with POLYMASS_OPTION_CHECK_INTERSECTIONS, each pair (lower face,
+       higher face), lowest pairs first. */
+    uint64_t shell_count;
+    uint64_t inverted_shells; /* inside out, inside no solid shell */
+    uint64_t first_inverted_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t overlapping_shells; /* inside a solid of the same sense */
+    uint64_t first_overlapping_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t intersecting_face_pairs; /* faces that cross */
+    uint64_t first_intersecting_face_pairs[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
+    uint64_t touching_face_pairs; /* faces that touch without crossing nor sharing a vertex */
+    uint64_t first_touching_face_pairs[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
 } polymass_diagnostics;
+
+/* polymass_shell.kind */
+#define POLYMASS_SHELL_SOLID 1       /* encloses positive volume, in no other solid */
+#define POLYMASS_SHELL_CAVITY 2      /* negative volume, inside a solid */
+#define POLYMASS_SHELL_INVERTED 3    /* negative volume, inside no solid: inside out */
+#define POLYMASS_SHELL_OVERLAPPING 4 /* inside a solid of the same sense: counted twice */
+#define POLYMASS_SHELL_NO_VOLUME 5   /* encloses no volume (to rounding) */
+
+/* One shell of a closed surface, as polymass_mesh_shell_list describes it.
+   Since 1.1. */
+typedef struct polymass_shell {
+    uint32_t struct_size; /* set by the caller: sizeof(polymass_shell) */
+    int32_t kind;         /* POLYMASS_SHELL_* */
+    uint64_t face_count;
+    uint64_t first_face;
+    /* Signed so that the whole surface's volume is positive (a surface
+       accepted inside out as a whole counts turned). */
+    double signed_volume;
+} polymass_shell;
 
 /* polymass_polygon_properties.orientation */
 #define POLYMASS_COUNTER_CLOCKWISE 1
@@ -326,6 +394,47 @@ POLYMASS_API uint32_t polymass_sizeof_mass_desc(void);
 POLYMASS_API uint32_t polymass_sizeof_mass_properties(void);
 POLYMASS_API uint32_t polymass_sizeof_diagnostics(void);
 POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void);
+POLYMASS_API uint32_t polymass_sizeof_shell(void); /* since 1.1 */
+
+/* Initialisers. Each writes a struct's defaults, struct_size included, up to
+   the struct_size given, which must be the size of a version of the struct
+   this library knows (sizeof the struct as the caller's header declares it):
+     polymass_mesh_desc desc;
+     polymass_mesh_desc_init(&desc, sizeof desc);
+   The defaults are zeros, except polymass_mass_desc's: unit density
+   (POLYMASS_MASS_FROM_DENSITY, density 1). Options' zero tolerances mean the
+   default tolerances. Return POLYMASS_ERROR_INVALID_ARGUMENT (writing
+   nothing) for a NULL struct or an unknown size. Thread-safe. */
+POLYMASS_API int32_t polymass_options_init(polymass_options* options, uint32_t struct_size);
+POLYMASS_API int32_t polymass_mesh_desc_init(polymass_mesh_desc* desc, uint32_t struct_size);
+POLYMASS_API int32_t polymass_mass_desc_init(polymass_mass_desc* mass, uint32_t struct_size);
+POLYMASS_API int32_t polymass_mass_properties_init(polymass_mass_properties* properties,
+                                                   uint32_t struct_size);
+POLYMASS_API int32_t polymass_diagnostics_init(polymass_diagnostics* report, uint32_t struct_size);
+POLYMASS_API int32_t polymass_polygon_properties_init(polymass_polygon_properties* properties,
+                                                      uint32_t struct_size);
+
+/* The same defaults as static initialisers, for C (designated initialisers
+   are C99; C++ before C++20 has none: call the functions above there):
+     polymass_mass_desc body = POLYMASS_MASS_DESC_INIT;
+     body.density = 2700.0; */
+#ifndef __cplusplus
+#define POLYMASS_OPTIONS_INIT \
+    { .struct_size = sizeof(polymass_options) }
+#define POLYMASS_MESH_DESC_INIT \
+    { .struct_size = sizeof(polymass_mesh_desc) }
+#define POLYMASS_MASS_DESC_INIT                                                             \
+    {                                                                                       \
+        .struct_size = sizeof(polymass_mass_desc), .mass_mode = POLYMASS_MASS_FROM_DENSITY, \
+        .density = 1.0                                                                      \
+    }
+#define POLYMASS_MASS_PROPERTIES_INIT \
+    { .struct_size = sizeof(polymass_mass_properties) }
+#define POLYMASS_DIAGNOSTICS_INIT \
+    { .struct_size = sizeof(polymass_diagnostics) }
+#define POLYMASS_POLYGON_PROPERTIES_INIT \
+    { .struct_size = sizeof(polymass_polygon_properties) }
+#endif
 
 /* ========================================================================== */
 /* Context                                                                    */
@@ -413,6 +522,23 @@ POLYMASS_API int32_t polymass_mesh_shells(uint32_t* out_shell_of_face, uint64_t*
                                           polymass_context* context,
                                           const polymass_mesh_desc* desc);
 
+/* The shells of a closed surface and what each one is: a solid, a cavity in
+   a solid, inside out, overlapping another, or without volume - the
+   classification polymass_mesh_create judges by (with
+   POLYMASS_OPTION_CHECK_INTERSECTIONS: by how the shells nest, counted
+   exactly; without: by bounding boxes, which can show a shell to be inside
+   out but take any negative shell within a solid's box for a cavity). Shell
+   i is the one polymass_mesh_shells numbers i. Writes the first
+   min(capacity, count) shells to out_shells, an array whose elements all
+   have struct_size set, and the count to *out_shell_count (out_shells may be
+   NULL when capacity is 0, to ask for the count). The surface must pass the
+   checks before the shells (closed, manifold, oriented, planar, with a
+   volume): otherwise that status and message, and nothing written.
+   Since 1.1. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_shell_list(polymass_shell* out_shells, uint64_t capacity,
+                                              uint64_t* out_shell_count, polymass_context* context,
+                                              const polymass_mesh_desc* desc);
+
 /* ========================================================================== */
 /* Planar polygons                                                            */
 /* ========================================================================== */
@@ -426,6 +552,208 @@ POLYMASS_API int32_t polymass_mesh_shells(uint32_t* out_shell_of_face, uint64_t*
 POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_properties,
                                               polymass_context* context, const double* points,
                                               uint64_t point_count, uint64_t stride);
+
+/* ========================================================================== */
+/* Options per call                                                           */
+/* ========================================================================== */
+
+/* The functions above with options given for the one call (NULL: the
+   context's), checked as polymass_context_set_options checks them; the
+   context's options are left as they are. So items of a batch and parts of an
+   assembly can each have their own. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_create_with_options(polymass_mesh** out_mesh,
+                                                       polymass_context* context,
+                                                       const polymass_mesh_desc* desc,
+                                                       const polymass_options* options);
+POLYMASS_API int32_t polymass_mass_properties_compute_with_options(
+    polymass_mass_properties* out_properties, polymass_context* context,
+    const polymass_mesh_desc* desc, const polymass_mass_desc* mass,
+    const polymass_options* options);
+POLYMASS_API int32_t polymass_mesh_check_with_options(polymass_diagnostics* out_report,
+                                                      polymass_context* context,
+                                                      const polymass_mesh_desc* desc,
+                                                      const polymass_options* options);
+POLYMASS_API int32_t polymass_mesh_shells_with_options(uint32_t* out_shell_of_face,
+                                                       uint64_t* out_shell_count,
+                                                       polymass_context* context,
+                                                       const polymass_mesh_desc* desc,
+                                                       const polymass_options* options);
+
+/* ========================================================================== */
+/* Moments: mass integrals that compose                                       */
+/* ========================================================================== */
+
+/* polymass_moments.flags */
+/* The moments of a range of faces, not of a closed surface: they add only to
+   moments about the same reference point (the other ranges of the same
+   surface) and are refused by everything else. Once ranges covering the whole
+   closed surface are added up, the caller clears the flag. */
+#define POLYMASS_MOMENTS_PARTIAL (1u << 0)
+
+/* The mass integrals of a body about its own reference point, which the
+   library puts near the body (the centre of its bounding box) so that a body
+   far from the origin keeps its digits. With r the position relative to
+   `reference` and rho the density:
+     mass = integral rho dV, first = integral rho r dV,
+     second = integral rho (x^2, y^2, z^2, x y, y z, z x) dV.
+   A plain struct of doubles rather than a handle: moments are values, copied,
+   stored in arrays (one per item of a batch, per thread's range of faces, per
+   part of an assembly) and passed through any FFI without allocation, and
+   what they hold is the documented mathematics above, which cannot change.
+   Composition (add, subtract, transform, scale, weight) goes through the
+   functions below; each may write its result over one of its operands.
+   Combining re-expresses the second operand about the first's reference
+   point with the parallel-axis identities (docs/moments.md): sums are
+   deterministic given the order of the operands, and equal, to rounding,
+   whatever the grouping. */
+typedef struct polymass_moments {
+    uint32_t struct_size; /* sizeof(polymass_moments) */
+    uint32_t flags;       /* POLYMASS_MOMENTS_* bits */
+    double reference[3];  /* the point the integrals are about */
+    double volume;        /* integral dV: the solid's volume (a difference may be 0 or less) */
+    double mass;          /* integral rho dV: the volume until a density is applied */
+    double first[3];
+    double second[6]; /* xx, yy, zz, xy, yz, zx */
+    /* Bounds on the rounding errors carried so far, absolute: of each
+       coordinate of reference, of volume, of mass, of each first moment, of
+       each second moment. Operations carry them; mass properties turn them
+       into their error bounds. Zero for moments a caller writes. */
+    double reference_error_bound;
+    double volume_error_bound;
+    double mass_error_bound;
+    double first_error_bound;
+    double second_error_bound;
+} polymass_moments;
+
+POLYMASS_API uint32_t polymass_sizeof_moments(void);
+POLYMASS_API int32_t polymass_moments_init(polymass_moments* moments, uint32_t struct_size);
+#ifndef __cplusplus
+#define POLYMASS_MOMENTS_INIT \
+    { .struct_size = sizeof(polymass_moments) }
+#endif
+
+/* The moments (unit density) of a closed surface, validated as by
+   polymass_mesh_create_with_options (options NULL: the context's).
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_moments_compute(polymass_moments* out_moments,
+                                              polymass_context* context,
+                                              const polymass_mesh_desc* desc,
+                                              const polymass_options* options);
+
+/* The moments of faces [first_face, first_face + face_count) of the surface,
+   about `reference` (every range of one surface must use the same point; one
+   near the surface keeps the digits), flagged POLYMASS_MOMENTS_PARTIAL. For a
+   caller's own threads: each takes a range, and the ranges added up (in a
+   fixed order for a deterministic result) are the surface's moments. Indices
+   and coordinates are checked, and polygon faces' planarity unless the
+   options skip the topology checks; face numbers in messages count from
+   first_face. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_moments_compute_faces(polymass_moments* out_moments,
+                                                    polymass_context* context,
+                                                    const polymass_mesh_desc* desc,
+                                                    uint64_t first_face, uint64_t face_count,
+                                                    const double reference[3],
+                                                    const polymass_options* options);
+
+/* The moments (unit density) of a mesh. The mesh may be read by several
+   threads at once, each with its own context. */
+POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polymass_context* context,
+                                           const polymass_mesh* mesh);
+
+/* a + b: two disjoint bodies as one, about a's reference point. */
+POLYMASS_API int32_t polymass_moments_add(polymass_moments* out_moments, polymass_context* context,
+                                          const polymass_moments* a, const polymass_moments* b);
+
+/* a - b: b removed from a (a bore from a block: b inside a), about a's
+   reference point. */
+POLYMASS_API int32_t polymass_moments_subtract(polymass_moments* out_moments,
+                                               polymass_context* context, const polymass_moments* a,
+                                               const polymass_moments* b);
+
+/* The body moved by r -> rotation r + translation: rotation is row-major,
+   orthonormal to 1e-12 (a proper rotation, or of determinant -1: a mirror);
+   translation may be NULL (none). A mirrored body is the mirror image solid,
+   of the same positive volume and mass (its faces reversed, as a mirrored
+   mesh must be to stay a valid solid). */
+POLYMASS_API int32_t polymass_moments_transform(polymass_moments* out_moments,
+                                                polymass_context* context,
+                                                const polymass_moments* moments,
+                                                const double rotation[9],
+                                                const double translation[3]);
+
+/* The body stretched by factors[i] along axis i, about the origin: uniform
+   scale (three equal factors, e.g. a unit conversion), per-axis scale, or a
+   mirror (negative factors; volume and mass stay positive). Density is kept:
+   the mass scales with the volume. Factors must be finite and non-zero. */
+POLYMASS_API int32_t polymass_moments_scale(polymass_moments* out_moments,
+                                            polymass_context* context,
+                                            const polymass_moments* moments,
+                                            const double factors[3]);
+
+/* The body with a density or a total mass (mass->point is not used): its
+   whole mass distribution rescaled so that its mean density is mass->density
+   (POLYMASS_MASS_FROM_DENSITY) or its mass is mass->mass
+   (POLYMASS_MASS_FROM_TOTAL). For a single part that is "made of this
+   material"; parts weighted first and added keep their own densities. */
+POLYMASS_API int32_t polymass_moments_weight(polymass_moments* out_moments,
+                                             polymass_context* context,
+                                             const polymass_moments* moments,
+                                             const polymass_mass_desc* mass);
+
+/* The mass properties of the body: NULL mass takes the moments as weighted
+   (inertia_point about the origin); otherwise weighted as by
+   polymass_moments_weight, inertia_point about mass->point. density is the
+   mean density (mass / volume); surface_area is NaN (moments do not keep the
+   surface); warnings are 0. Fails with POLYMASS_ERROR_ZERO_VOLUME when the
+   volume or mass is not positive. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_moments_mass_properties(polymass_mass_properties* out_properties,
+                                                      polymass_context* context,
+                                                      const polymass_moments* moments,
+                                                      const polymass_mass_desc* mass);
+
+/* ========================================================================== */
+/* Batch: many meshes in one call                                             */
+/* ========================================================================== */
+
+/* Length of polymass_batch_item.message, its terminating NUL included. */
+#define POLYMASS_BATCH_MESSAGE_SIZE 256
+
+/* One mesh of a batch: what polymass_mass_properties_compute_with_options
+   takes, and what it gives. */
+typedef struct polymass_batch_item {
+    uint32_t struct_size;                 /* sizeof(polymass_batch_item) */
+    int32_t status;                       /* out: the item's status */
+    const polymass_mesh_desc* desc;       /* in */
+    const polymass_mass_desc* mass;       /* in; NULL: unit density, point = origin */
+    const polymass_options* options;      /* in; NULL: the context's */
+    polymass_mass_properties* properties; /* out, written on success; its
+                                             struct_size set by the caller */
+    /* out: the item's message ("" on success), NUL-terminated, truncated to
+       fit. */
+    char message[POLYMASS_BATCH_MESSAGE_SIZE];
+} polymass_batch_item;
+
+POLYMASS_API uint32_t polymass_sizeof_batch_item(void);
+POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_t struct_size);
+#ifndef __cplusplus
+#define POLYMASS_BATCH_ITEM_INIT \
+    { .struct_size = sizeof(polymass_batch_item) }
+#endif
+
+/* The mass properties of item_count meshes: items[i] is found
+   items[0].struct_size bytes after items[i - 1] (every item has that
+   struct_size). Each item gets its own status, message and, on success,
+   properties, exactly (bit for bit) those of
+   polymass_mass_properties_compute_with_options; an item's failure does not
+   stop the others. *out_failed (may be NULL) counts the items that failed.
+   Returns POLYMASS_OK once every item has its status, or the status of what
+   kept the batch from running (items NULL with item_count > 0, an unknown
+   struct_size), with the context's message. Items are independent: they are
+   computed one after another today, and a later version may spread them over
+   the library's threads without changing any result.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t item_count,
+                                            uint64_t* out_failed, polymass_context* context);
 
 #ifdef __cplusplus
 }

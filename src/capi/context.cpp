@@ -36,6 +36,44 @@ polymass_allocator allocator_or_default(const polymass_allocator* allocator) {
     return {default_allocate, default_deallocate, nullptr};
 }
 
+int32_t read_options(polymass_context* context, const polymass_options* options,
+                     polymass_options& out) {
+    if (const int32_t status = check_struct(context, options, "options")) return status;
+    const polymass_options read =
+        read_struct(*options, StructVersions<polymass_options>::defaults());
+    constexpr uint32_t known_flags =
+        POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
+        POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD |
+        POLYMASS_OPTION_CHECK_INTERSECTIONS;
+    if (read.flags & ~known_flags)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "options->flags has unknown bits 0x%x",
+                             unsigned(read.flags & ~known_flags));
+    const double tolerance = read.planarity_tolerance;
+    if (!(tolerance >= 0.0 && tolerance < 1.0))  // also rejects NaN
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "options->planarity_tolerance is %g; it must be in [0, 1) "
+                             "(0 selects the default %g)",
+                             tolerance, POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
+    const double weld = read.weld_tolerance;
+    if (!(weld >= 0.0 && weld <= POLYMASS_MAX_WELD_TOLERANCE))  // also rejects NaN
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "options->weld_tolerance is %g; it must be in [0, %g]", weld,
+                             POLYMASS_MAX_WELD_TOLERANCE);
+    out = read;
+    if (tolerance == 0.0) out.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
+    return POLYMASS_OK;
+}
+
+int32_t call_options(polymass_context* context, const polymass_options* options,
+                     polymass_options& out) {
+    if (!options) {
+        out = context->options;
+        return POLYMASS_OK;
+    }
+    return read_options(context, options, out);
+}
+
 }  // namespace polymass::capi
 
 int32_t polymass_context::fail(int32_t status, const char* format, ...) {
@@ -65,38 +103,14 @@ POLYMASS_API void polymass_context_destroy(polymass_context* context) { destroy_
 
 POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
                                                   const polymass_options* options) {
-    return guarded(context, [&] {
-        if (const int32_t status = check_struct(context, options, "options")) return status;
-        constexpr uint32_t known_flags =
-            POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
-            POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-        if (options->flags & ~known_flags)
-            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                                 "options->flags has unknown bits 0x%x",
-                                 unsigned(options->flags & ~known_flags));
-        const double tolerance = options->planarity_tolerance;
-        if (!(tolerance >= 0.0 && tolerance < 1.0))  // also rejects NaN
-            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                                 "options->planarity_tolerance is %g; it must be in [0, 1) "
-                                 "(0 selects the default %g)",
-                                 tolerance, POLYMASS_DEFAULT_PLANARITY_TOLERANCE);
-        const double weld = options->weld_tolerance;
-        if (!(weld >= 0.0 && weld <= POLYMASS_MAX_WELD_TOLERANCE))  // also rejects NaN
-            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                                 "options->weld_tolerance is %g; it must be in [0, %g]", weld,
-                                 POLYMASS_MAX_WELD_TOLERANCE);
-        context->options = *options;
-        if (tolerance == 0.0)
-            context->options.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
-        return POLYMASS_OK;
-    });
+    return guarded(context, [&] { return read_options(context, options, context->options); });
 }
 
 POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
                                                   polymass_context* context) {
     return guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_options, "out_options")) return status;
-        *out_options = context->options;
+        write_struct(out_options, context->options);
         return POLYMASS_OK;
     });
 }

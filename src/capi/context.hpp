@@ -46,6 +46,17 @@ void destroy_object(Object* object) {
     allocator.deallocate(allocator.user_data, object);
 }
 
+// Checks the caller's options and writes them, tolerances resolved (0: the
+// default), to `out`; or returns the status with the message in the context.
+// `out` is written only on success.
+int32_t read_options(polymass_context* context, const polymass_options* options,
+                     polymass_options& out);
+
+// The options of one call: the caller's (checked as by read_options) or, when
+// NULL, the context's.
+int32_t call_options(polymass_context* context, const polymass_options* options,
+                     polymass_options& out);
+
 }  // namespace polymass::capi
 
 struct polymass_context {

@@ -10,124 +10,153 @@ namespace {
 
 using u64 = unsigned long long;  // for printf
 
+static_assert(core::kWarningInverted == POLYMASS_WARNING_INVERTED &&
+                  core::kWarningDegenerate == POLYMASS_WARNING_DEGENERATE_FACES &&
+                  core::kWarningUnchecked == POLYMASS_WARNING_UNCHECKED &&
+                  core::kWarningNonManifold == POLYMASS_WARNING_NON_MANIFOLD &&
+                  core::kWarningTouching == POLYMASS_WARNING_TOUCHING_FACES,
+              "the core's warning bits are the API's");
+
 int32_t fail_on_edge(polymass_context* context, int32_t status, const core::EdgeFinding& edges,
                      const char* what) {
     return context->fail(status, "edge (%u, %u) is %s (%llu such edges)", edges.first()[0],
                          edges.first()[1], what, u64(edges.count));
 }
 
+int32_t fail_on_shell(polymass_context* context, int32_t status, const core::ShellSurvey& survey,
+                      const core::Finding& shells, const char* what) {
+    const core::ShellSummary& shell = survey.summary[shells.first()];
+    return context->fail(status,
+                         "shell %llu (%llu faces, the first face %llu, signed volume %.17g) %s "
+                         "(%llu such shells)",
+                         u64(shells.first()), u64(shell.face_count), u64(shell.first_face),
+                         shell.signed_volume, what, u64(shells.count));
+}
+
 }  // namespace
 
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report) {
-    const polymass_options& options = context->options;
+core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
+                           const polymass_options& options, bool full_report) {
     core::AnalysisSettings settings;
     settings.check_topology =
         full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    settings.check_intersections = options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS;
     settings.weld = options.flags & POLYMASS_OPTION_WELD_VERTICES;
     settings.weld_tolerance = options.weld_tolerance;
     settings.stop_at_first_problem = !full_report;
     settings.planarity_tolerance = options.planarity_tolerance;
-    const bool accept_non_manifold = options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
+    settings.policy.accept_inverted = options.flags & POLYMASS_OPTION_ACCEPT_INVERTED;
+    settings.policy.accept_balanced_non_manifold =
+        options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
     return visit_mesh(input, [&](const auto& view) {
-        return core::analyse_mesh(view, settings, accept_non_manifold, &context->memory);
+        return core::analyse_mesh(view, settings, &context->memory);
     });
 }
 
-int32_t judge_scan(polymass_context* context, const MeshInput& input, const core::MeshScan& scan) {
-    if (scan.out_of_range_indices > 0)
-        return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-                             "face %llu refers to vertex %u, but there are only %llu vertices "
-                             "(%llu indices out of range, in %llu faces)",
-                             u64(scan.out_of_range_faces.first()), scan.first_out_of_range_index,
-                             u64(input.vertex_count), u64(scan.out_of_range_indices),
-                             u64(scan.out_of_range_faces.count));
-    if (scan.non_finite.count > 0)
-        return context->fail(POLYMASS_ERROR_NON_FINITE,
-                             "vertex %llu, used by a face, has a NaN or infinite coordinate "
-                             "(%llu such vertices)",
-                             u64(scan.non_finite.first()), u64(scan.non_finite.count));
-    if (!std::isfinite(scan.diagonal()))
-        return context->fail(POLYMASS_ERROR_OVERFLOW,
-                             "the mesh spans more than a double can hold (its bounding box "
-                             "reaches from %g to %g)",
-                             scan.bounds.min().minCoeff(), scan.bounds.max().maxCoeff());
-    return POLYMASS_OK;
-}
-
-int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
-              uint32_t& warnings) {
-    const uint32_t flags = context->options.flags;
+int32_t report_verdict(polymass_context* context, const MeshInput& input,
+                       const polymass_options& options, const core::MeshAnalysis& analysis,
+                       uint32_t& warnings) {
+    using core::Defect;
     const core::MeshScan& scan = analysis.scan;
-    if (const int32_t status = judge_scan(context, input, scan)) return status;
-    if (const auto& topology = analysis.topology) {
-        if (topology->open.count > 0)
-            return fail_on_edge(context, POLYMASS_ERROR_OPEN, topology->open,
+    warnings = analysis.verdict.warnings;
+    switch (analysis.verdict.defect) {
+        case Defect::none:
+            return POLYMASS_OK;
+        case Defect::index_out_of_range:
+            return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                                 "face %llu refers to vertex %u, but there are only %llu vertices "
+                                 "(%llu indices out of range, in %llu faces)",
+                                 u64(scan.out_of_range_faces.first()),
+                                 scan.first_out_of_range_index, u64(input.vertex_count),
+                                 u64(scan.out_of_range_indices),
+                                 u64(scan.out_of_range_faces.count));
+        case Defect::non_finite:
+            return context->fail(POLYMASS_ERROR_NON_FINITE,
+                                 "vertex %llu, used by a face, has a NaN or infinite coordinate "
+                                 "(%llu such vertices)",
+                                 u64(scan.non_finite.first()), u64(scan.non_finite.count));
+        case Defect::extent_overflow:
+            return context->fail(POLYMASS_ERROR_OVERFLOW,
+                                 "the mesh spans more than a double can hold (its bounding box "
+                                 "reaches from %g to %g)",
+                                 scan.bounds.min().minCoeff(), scan.bounds.max().maxCoeff());
+        case Defect::open:
+            return fail_on_edge(context, POLYMASS_ERROR_OPEN, analysis.topology->open,
                                 "used by one face only: the surface is open");
-        if (topology->non_manifold.count > 0) {
-            const bool accepted =
-                (flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD) && topology->non_manifold_balanced;
-            if (!accepted)
-                return context->fail(
-                    POLYMASS_ERROR_NON_MANIFOLD,
-                    "edge (%u, %u) is used by %llu faces; an edge of a solid's surface "
-                    "has two (%llu such edges)",
-                    topology->non_manifold.first()[0], topology->non_manifold.first()[1],
-                    u64(topology->non_manifold.first_traversals),
-                    u64(topology->non_manifold.count));
-            warnings |= POLYMASS_WARNING_NON_MANIFOLD;
+        case Defect::non_manifold: {
+            const core::EdgeFinding& edges = analysis.topology->non_manifold;
+            return context->fail(POLYMASS_ERROR_NON_MANIFOLD,
+                                 "edge (%u, %u) is used by %llu faces; an edge of a solid's "
+                                 "surface has two (%llu such edges)",
+                                 edges.first()[0], edges.first()[1], u64(edges.first_traversals),
+                                 u64(edges.count));
         }
-        if (topology->misoriented.count > 0)
+        case Defect::misoriented:
             return fail_on_edge(context, POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
-                                topology->misoriented,
+                                analysis.topology->misoriented,
                                 "traversed in the same direction by both its faces: one of "
                                 "them is reversed");
-    } else {
-        warnings |= POLYMASS_WARNING_UNCHECKED;
-    }
-
-    const core::IntegrationResult& integration = *analysis.integration;
-    if (integration.non_planar_faces.count > 0)
-        return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
-                             "face %llu is not planar: a vertex is off its plane by %.3g of "
-                             "the face's diameter, more than the tolerance %.3g (%llu such faces)",
-                             u64(integration.non_planar_faces.first()),
-                             integration.max_non_planarity, context->options.planarity_tolerance,
-                             u64(integration.non_planar_faces.count));
-    if (integration.degenerate_faces.count > 0) warnings |= POLYMASS_WARNING_DEGENERATE_FACES;
-
-    if (integration.encloses_no_volume)
-        return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
-                             "the surface encloses no volume: its signed volume is at rounding "
-                             "level for its area and its size %.3g (a flat or double-sided "
-                             "surface)",
-                             scan.diagonal());
-    const core::VolumeIntegrals& integrals = integration.integrals;
-    if (!(std::isfinite(integration.surface_area) && std::isfinite(integrals.volume) &&
-          integrals.first.allFinite() && integrals.second.allFinite() &&
-          integrals.products.allFinite()))
-        return context->fail(POLYMASS_ERROR_OVERFLOW,
-                             "the volume integrals overflow double precision: the mesh is too "
-                             "large (size %.3g); scale its coordinates down",
-                             scan.diagonal());
-    // A solid too small for a double: its volume (size^3) underflowed. The
-    // inertia (size^5 x density) can underflow too, but that depends on the
-    // density: polymass_mesh_mass_properties says so.
-    if (!(std::abs(integrals.volume) >= DBL_MIN))
-        return context->fail(POLYMASS_ERROR_OVERFLOW,
-                             "the volume %g is too small for a double (below %g): the mesh is "
-                             "too small (size %.3g); scale its coordinates up",
-                             integrals.volume, DBL_MIN, scan.diagonal());
-    const double volume = integrals.volume;
-    if (volume < 0) {
-        if (!(flags & POLYMASS_OPTION_ACCEPT_INVERTED))
+        case Defect::non_planar: {
+            const core::IntegrationResult& integration = *analysis.integration;
+            return context->fail(POLYMASS_ERROR_NON_PLANAR_FACE,
+                                 "face %llu is not planar: a vertex is off its plane by %.3g of "
+                                 "the face's diameter, more than the tolerance %.3g (%llu such "
+                                 "faces)",
+                                 u64(integration.non_planar_faces.first()),
+                                 integration.max_non_planarity, options.planarity_tolerance,
+                                 u64(integration.non_planar_faces.count));
+        }
+        case Defect::zero_volume:
+            return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
+                                 "the surface encloses no volume: its signed volume is at "
+                                 "rounding level for its area and its size %.3g (a flat or "
+                                 "double-sided surface)",
+                                 scan.diagonal());
+        case Defect::integrals_overflow:
+            return context->fail(POLYMASS_ERROR_OVERFLOW,
+                                 "the volume integrals overflow double precision: the mesh is "
+                                 "too large (size %.3g); scale its coordinates down",
+                                 scan.diagonal());
+        case Defect::volume_underflow:
+            return context->fail(POLYMASS_ERROR_OVERFLOW,
+                                 "the volume %g is too small for a double (below %g): the mesh "
+                                 "is too small (size %.3g); scale its coordinates up",
+                                 analysis.integration->integrals.volume, DBL_MIN, scan.diagonal());
+        case Defect::inverted:
             return context->fail(POLYMASS_ERROR_INVERTED,
                                  "the signed volume is %.17g: every face is reversed (faces "
                                  "must be counter-clockwise seen from outside); "
                                  "POLYMASS_OPTION_ACCEPT_INVERTED accepts it turned",
-                                 volume);
-        warnings |= POLYMASS_WARNING_INVERTED;
+                                 analysis.integration->integrals.volume);
+        case Defect::crossing: {
+            const core::PairFinding& pairs = analysis.overlaps->crossing;
+            const auto [low, high] = pairs.first();
+            if (analysis.shells) {
+                const auto& of_face = analysis.shells->shells.of_face;
+                return context->fail(POLYMASS_ERROR_INTERSECTING,
+                                     "faces %llu (shell %u) and %llu (shell %u) cross each "
+                                     "other: the region inside both would be counted twice "
+                                     "(%llu such face pairs)",
+                                     u64(low), of_face[low], u64(high), of_face[high],
+                                     u64(pairs.count));
+            }
+            return context->fail(POLYMASS_ERROR_INTERSECTING,
+                                 "faces %llu and %llu cross each other: the region inside both "
+                                 "would be counted twice (%llu such face pairs)",
+                                 u64(low), u64(high), u64(pairs.count));
+        }
+        case Defect::inverted_shell:
+            return fail_on_shell(context, POLYMASS_ERROR_INVERTED, *analysis.shells,
+                                 analysis.shells->inverted,
+                                 "is inside out: its volume is negative and it lies inside no "
+                                 "solid shell, so it would be subtracted from nothing");
+        case Defect::overlapping_shells:
+            return fail_on_shell(context, POLYMASS_ERROR_INTERSECTING, *analysis.shells,
+                                 analysis.shells->overlapping,
+                                 "lies inside another shell that already bounds the same "
+                                 "side: its region would be counted twice");
     }
-    return POLYMASS_OK;
+    return context->fail(POLYMASS_ERROR_INTERNAL, "unknown verdict");
 }
 
 namespace {
@@ -145,7 +174,8 @@ void copy_finding(const core::Finding& found, uint64_t& count,
     copy_locations(found, first);
 }
 
-void copy_finding(const core::EdgeFinding& found, uint64_t& count,
+template <class EdgeOrPairFinding>
+void copy_finding(const EdgeOrPairFinding& found, uint64_t& count,
                   uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
     count = found.count;
     for (std::size_t i = 0; i < found.kept(); ++i) {
@@ -165,11 +195,14 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
     for (uint64_t* location :
          {&report.first_non_finite_vertices[0], &report.first_out_of_range_faces[0],
           &report.first_small_faces[0], &report.first_degenerate_faces[0],
-          &report.first_non_planar_faces[0]})
+          &report.first_non_planar_faces[0], &report.first_inverted_shells[0],
+          &report.first_overlapping_shells[0]})
         std::fill_n(location, POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
-    for (uint64_t* edge : {&report.first_open_edges[0][0], &report.first_non_manifold_edges[0][0],
-                           &report.first_misoriented_edges[0][0]})
-        std::fill_n(edge, 2 * POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
+    for (uint64_t* pair :
+         {&report.first_open_edges[0][0], &report.first_non_manifold_edges[0][0],
+          &report.first_misoriented_edges[0][0], &report.first_intersecting_face_pairs[0][0],
+          &report.first_touching_face_pairs[0][0]})
+        std::fill_n(pair, 2 * POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
     report.face_count = input.face_count;
     report.signed_volume = std::numeric_limits<double>::quiet_NaN();
     copy_finding(input.small_faces, report.small_faces, report.first_small_faces);
@@ -196,6 +229,18 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
                      report.first_non_planar_faces);
         report.max_non_planarity = integration->max_non_planarity;
         report.signed_volume = integration->integrals.volume;
+    }
+    if (const auto& shells = analysis->shells) {
+        report.shell_count = shells->shells.count;
+        copy_finding(shells->inverted, report.inverted_shells, report.first_inverted_shells);
+        copy_finding(shells->overlapping, report.overlapping_shells,
+                     report.first_overlapping_shells);
+    }
+    if (const auto& overlaps = analysis->overlaps) {
+        copy_finding(overlaps->crossing, report.intersecting_face_pairs,
+                     report.first_intersecting_face_pairs);
+        copy_finding(overlaps->touching, report.touching_face_pairs,
+                     report.first_touching_face_pairs);
     }
 }
 

@@ -1,6 +1,6 @@
-// What the checks of core/ found in a mesh, in the C API's terms: the status
-// and message of the first problem (with what the options accept as warnings),
-// or the whole polymass_diagnostics report.
+// The core's analysis and verdict in the C API's terms: the status and
+// message of the defect (with the warnings the policy accepted), or the whole
+// polymass_diagnostics report. Nothing here judges: core::judge does.
 #pragma once
 
 #include <cstdint>
@@ -11,18 +11,17 @@
 
 namespace polymass::capi {
 
-// Runs core::analyse_mesh with the context's options; full_report runs every
+// Runs core::analyse_mesh with the call's options; full_report runs every
 // check (topology even when the options skip it) without stopping early.
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input, bool full_report);
+core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
+                           const polymass_options& options, bool full_report);
 
-// The status of what the scan found (indices out of range, non-finite or
-// overflowing coordinates), with its message in the context.
-int32_t judge_scan(polymass_context* context, const MeshInput& input, const core::MeshScan& scan);
-
-// The status of the first problem, in the order the checks run, with its
-// message in the context; what the options accept instead is added to warnings.
-int32_t judge(polymass_context* context, const MeshInput& input, const core::MeshAnalysis& analysis,
-              uint32_t& warnings);
+// The status of the analysis's verdict, with its message in the context; the
+// warnings it accepted, as POLYMASS_WARNING_* bits, in `warnings`. options
+// are the call's (the message quotes the planarity tolerance).
+int32_t report_verdict(polymass_context* context, const MeshInput& input,
+                       const polymass_options& options, const core::MeshAnalysis& analysis,
+                       uint32_t& warnings);
 
 // The report of what the arguments (and, when given, the analysis) show.
 void fill_report(polymass_diagnostics& report, const MeshInput& input,

@@ -68,61 +68,88 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
 
 }  // namespace
 
-int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc,
+int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* caller_desc,
                        MeshInput& input) {
-    if (const int32_t status = check_struct(context, desc, "desc")) return status;
-    if (desc->position_type != POLYMASS_POSITION_FLOAT64 &&
-        desc->position_type != POLYMASS_POSITION_FLOAT32)
+    if (const int32_t status = check_struct(context, caller_desc, "desc")) return status;
+    const polymass_mesh_desc desc =
+        read_struct(*caller_desc, StructVersions<polymass_mesh_desc>::defaults());
+    if (desc.position_type != POLYMASS_POSITION_FLOAT64 &&
+        desc.position_type != POLYMASS_POSITION_FLOAT32)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "position_type %u is not POLYMASS_POSITION_FLOAT64 (0) or "
                              "POLYMASS_POSITION_FLOAT32 (1)",
-                             unsigned(desc->position_type));
-    if (desc->index_type != POLYMASS_INDEX_UINT32 && desc->index_type != POLYMASS_INDEX_UINT16)
+                             unsigned(desc.position_type));
+    if (desc.index_type != POLYMASS_INDEX_UINT32 && desc.index_type != POLYMASS_INDEX_UINT16)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "index_type %u is not POLYMASS_INDEX_UINT32 (0) or "
                              "POLYMASS_INDEX_UINT16 (1)",
-                             unsigned(desc->index_type));
-    if (desc->reserved != 0)
+                             unsigned(desc.index_type));
+    if (desc.reserved != 0)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "reserved is %u; it must be 0",
-                             unsigned(desc->reserved));
+                             unsigned(desc.reserved));
 
-    const uint64_t vertex_bytes = desc->position_type == POLYMASS_POSITION_FLOAT32 ? 12 : 24;
-    const uint64_t stride = desc->position_stride ? desc->position_stride : vertex_bytes;
+    const uint64_t vertex_bytes = desc.position_type == POLYMASS_POSITION_FLOAT32 ? 12 : 24;
+    const uint64_t stride = desc.position_stride ? desc.position_stride : vertex_bytes;
     if (stride < vertex_bytes)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "position_stride %llu is smaller than a vertex (%llu bytes)",
                              u64(stride), u64(vertex_bytes));
-    if (desc->vertex_count > 0 && !desc->positions)
+    if (desc.vertex_count > 0 && !desc.positions)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "positions is NULL but vertex_count is %llu", u64(desc->vertex_count));
-    if (!span_fits(desc->positions, desc->vertex_count, stride, vertex_bytes))
+                             "positions is NULL but vertex_count is %llu", u64(desc.vertex_count));
+    if (!span_fits(desc.positions, desc.vertex_count, stride, vertex_bytes))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "vertex_count %llu at stride %llu is larger than any array can be",
-                             u64(desc->vertex_count), u64(stride));
+                             u64(desc.vertex_count), u64(stride));
 
-    const uint64_t index_bytes = desc->index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    const uint64_t index_bytes = desc.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
     // Faces listed without indices are faces too small (read_face_sizes says
     // which); no faces at all is not a mesh.
-    const bool faces_listed = desc->face_sizes && desc->face_count > 0;
-    if (desc->index_count == 0 && !faces_listed)
+    const bool faces_listed = desc.face_sizes && desc.face_count > 0;
+    if (desc.index_count == 0 && !faces_listed)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "the mesh has no faces (index_count is 0)");
-    if (!desc->indices && desc->index_count > 0)
+    if (!desc.indices && desc.index_count > 0)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "indices is NULL but index_count is %llu", u64(desc->index_count));
-    if (!span_fits(desc->indices, desc->index_count, index_bytes, index_bytes))
+                             "indices is NULL but index_count is %llu", u64(desc.index_count));
+    if (!span_fits(desc.indices, desc.index_count, index_bytes, index_bytes))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "index_count %llu is larger than any array can be",
-                             u64(desc->index_count));
+                             u64(desc.index_count));
 
-    input.position_type = desc->position_type;
-    input.index_type = desc->index_type;
-    input.positions = static_cast<const unsigned char*>(desc->positions);
-    input.vertex_count = std::size_t(desc->vertex_count);
+    input.position_type = desc.position_type;
+    input.index_type = desc.index_type;
+    input.positions = static_cast<const unsigned char*>(desc.positions);
+    input.vertex_count = std::size_t(desc.vertex_count);
     input.position_stride = std::size_t(stride);
-    input.indices = static_cast<const unsigned char*>(desc->indices);
-    input.index_count = std::size_t(desc->index_count);
-    return read_face_sizes(context, *desc, input);
+    input.indices = static_cast<const unsigned char*>(desc.indices);
+    input.index_count = std::size_t(desc.index_count);
+    return read_face_sizes(context, desc, input);
+}
+
+int32_t select_faces(polymass_context* context, MeshInput& input, uint64_t first_face,
+                     uint64_t face_count) {
+    if (first_face > input.face_count || face_count > input.face_count - first_face)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "faces [%llu, %llu + %llu) are not all in the mesh, which has %llu",
+                             u64(first_face), u64(first_face), u64(face_count),
+                             u64(input.face_count));
+    if (face_count == 0)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "face_count is 0: no faces");
+    std::size_t first_index = 3 * std::size_t(first_face), index_count = 3 * face_count;
+    if (input.face_sizes) {
+        first_index = 0;
+        for (std::size_t face = 0; face < first_face; ++face) first_index += input.face_sizes[face];
+        index_count = 0;
+        for (std::size_t face = first_face; face < first_face + face_count; ++face)
+            index_count += input.face_sizes[face];
+        input.face_sizes += first_face;
+    }
+    const std::size_t index_bytes = input.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    input.indices += first_index * index_bytes;
+    input.index_count = index_count;
+    input.face_count = std::size_t(face_count);
+    return POLYMASS_OK;
 }
 
 }  // namespace polymass::capi

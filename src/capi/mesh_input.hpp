@@ -31,6 +31,12 @@ struct MeshInput {
 // POLYMASS_ERROR_FACE_TOO_SMALL (input then says which faces), with the message.
 int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc, MeshInput& input);
 
+// Narrows an input read by read_mesh_desc to its faces [first_face,
+// first_face + face_count), or returns POLYMASS_ERROR_INVALID_ARGUMENT with
+// the message when they are not all there.
+int32_t select_faces(polymass_context* context, MeshInput& input, uint64_t first_face,
+                     uint64_t face_count);
+
 // Calls visit(view) with the core::MeshView<Scalar, Index> matching the input's types.
 template <class Visit>
 decltype(auto) visit_mesh(const MeshInput& input, Visit&& visit) {

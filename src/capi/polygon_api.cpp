@@ -92,7 +92,7 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
                                  "(area %g): its coordinates are too large or too small; scale "
                                  "them",
                                  result.area);
-        *out_properties = result;
+        write_struct(out_properties, result);
         return POLYMASS_OK;
     });
 }

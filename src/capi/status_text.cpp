@@ -25,6 +25,8 @@ extern "C" POLYMASS_API const char* polymass_status_string(int32_t status) {
             return "inconsistent face orientation";
         case POLYMASS_ERROR_NON_PLANAR_FACE:
             return "non-planar face";
+        case POLYMASS_ERROR_INTERSECTING:
+            return "intersecting surface";
         case POLYMASS_ERROR_INVERTED:
             return "inverted solid";
         case POLYMASS_ERROR_ZERO_VOLUME:

@@ -18,5 +18,6 @@ POLYMASS_API uint32_t polymass_sizeof_diagnostics(void) { return sizeof(polymass
 POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void) {
     return sizeof(polymass_polygon_properties);
 }
+POLYMASS_API uint32_t polymass_sizeof_shell(void) { return sizeof(polymass_shell); }
 
 }  // extern "C"

@@ -93,6 +93,10 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
     app.add_flag("--no-check", arguments.no_check,
                  "skip the topology checks (trusted input; faster)")
         ->group("Checks");
+    app.add_flag("--no-intersection-check", arguments.no_intersection_check,
+                 "do not look for faces that cross each other or parts nested\n"
+                 "in parts (overlaps counted twice); faster on large meshes")
+        ->group("Checks");
     app.add_option("--weld-tolerance", raw.weld_tolerance,
                    "vertices closer than T times the mesh size are one vertex\n"
                    "(default 1e-9; 0: exact positions only)")

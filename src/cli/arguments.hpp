@@ -30,6 +30,7 @@ struct Arguments {
     std::array<double, 3> link_origin{0.0, 0.0, 0.0};
     bool accept_inverted = false;
     bool no_check = false;
+    bool no_intersection_check = false;
     bool timings = false;
     double weld_tolerance = 1e-9;
     double planarity_tolerance = 0.0;  // 0: the library's default

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace polymass::core {
 
@@ -36,6 +37,24 @@ struct Finding {
         const std::size_t total = count + other.count;
         for (std::size_t i = 0; i < other.kept(); ++i) record(other.lowest[i]);
         count = total;
+    }
+};
+
+// Pairs of faces (or shells), each pair (low, high), counted once.
+struct PairFinding {
+    std::size_t count = 0;
+    std::array<std::array<std::uint64_t, 2>, kKeptLocations> lowest{};  // ascending
+
+    std::size_t kept() const { return std::min(count, kKeptLocations); }
+    const std::array<std::uint64_t, 2>& first() const { return lowest[0]; }  // when count > 0
+
+    // From pairs sorted ascending with no repeats.
+    template <class SortedPairs>
+    static PairFinding of(const SortedPairs& pairs) {
+        PairFinding finding;
+        finding.count = pairs.size();
+        for (std::size_t i = 0; i < finding.kept(); ++i) finding.lowest[i] = pairs[i];
+        return finding;
     }
 };
 

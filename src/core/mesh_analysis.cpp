@@ -6,16 +6,24 @@ namespace polymass::core {
 
 template <class Scalar, class Index>
 MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSettings& settings,
-                          bool accept_balanced_non_manifold, std::pmr::memory_resource* memory) {
+                          std::pmr::memory_resource* memory) {
     MeshAnalysis analysis(scan_mesh(mesh, memory));
     const MeshScan& scan = analysis.scan;
     analysis.used_vertex_count = scan.used_vertex_count;
+    // Judges what is known; true when the analysis should end here.
+    auto stop = [&] {
+        analysis.verdict = judge(analysis, settings.policy);
+        return settings.stop_at_first_problem && !analysis.verdict.valid();
+    };
     // Out-of-range indices cannot be read and non-finite coordinates poison
     // every sum: nothing after this is meaningful.
-    if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0) return analysis;
+    if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0) {
+        stop();
+        return analysis;
+    }
 
+    std::pmr::vector<std::uint32_t> welded(memory);
     if (settings.check_topology) {
-        std::pmr::vector<std::uint32_t> welded(memory);
         if (settings.weld) {
             welded = weld_vertices(mesh, scan, settings.weld_tolerance, memory);
             analysis.used_vertex_count = 0;
@@ -23,10 +31,9 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
                 analysis.used_vertex_count += scan.is_used(vertex) && welded[vertex] == vertex;
         }
         analysis.topology = analyse_topology(mesh, settings.weld ? welded.data() : nullptr, memory);
-        if (settings.stop_at_first_problem &&
-            !analysis.topology->closed_and_oriented(accept_balanced_non_manifold))
-            return analysis;
+        if (stop()) return analysis;
     }
+    const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
 
     IntegrationSettings integration;
     integration.reference = scan.reference_point();
@@ -34,13 +41,32 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     integration.check_planarity = settings.check_topology;
     integration.planarity_tolerance = settings.planarity_tolerance;
     analysis.integration = integrate_mesh(mesh, integration);
+    if (stop()) return analysis;
+
+    // Shells are judged on a closed, oriented surface with a volume.
+    if (analysis.topology &&
+        analysis.topology->closed_and_oriented(settings.policy.accept_balanced_non_manifold) &&
+        analysis.verdict.valid()) {
+        analysis.shells =
+            survey_shells(mesh, vertex_ids, integration.reference, analysis.verdict.outward,
+                          analysis.integration->integrals.volume, memory);
+        if (stop()) return analysis;
+    }
+    if (settings.check_intersections && std::isfinite(scan.diagonal())) {
+        const Shells* shells = analysis.shells ? &analysis.shells->shells : nullptr;
+        analysis.overlaps = find_overlaps(mesh, vertex_ids, integration.reference, integration.size,
+                                          shells, memory);
+        if (!analysis.overlaps->winding_of_shell.empty())
+            classify_by_winding(*analysis.shells, analysis.overlaps->winding_of_shell,
+                                analysis.verdict.outward);
+    }
+    stop();
     return analysis;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                           \
-    template MeshAnalysis analyse_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
-                                                      const AnalysisSettings&, bool,  \
-                                                      std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)            \
+    template MeshAnalysis analyse_mesh<Scalar, Index>( \
+        const MeshView<Scalar, Index>&, const AnalysisSettings&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -1,6 +1,7 @@
 // Everything the library learns about a mesh before it trusts it: the scan,
-// welding, the topology check and the integration pass, in that order, each
-// run only when the ones before it leave the next one meaningful.
+// welding, the topology check, the integration pass, the shells and (when
+// asked) the intersection check, in that order, each run only when the ones
+// before it leave the next one meaningful - and the verdict on all of it.
 #pragma once
 
 #include <cstddef>
@@ -11,16 +12,21 @@
 #include "mesh_integration.hpp"
 #include "mesh_scan.hpp"
 #include "mesh_view.hpp"
+#include "shell_survey.hpp"
+#include "surface_overlaps.hpp"
 #include "topology.hpp"
+#include "verdict.hpp"
 
 namespace polymass::core {
 
 struct AnalysisSettings {
-    bool check_topology = true;  // closed, manifold, oriented, planar
-    bool weld = false;           // identify coincident vertices first
-    double weld_tolerance = 0;   // relative to the mesh's extent; 0: exact
+    bool check_topology = true;        // closed, manifold, oriented, planar, shells
+    bool check_intersections = false;  // crossing faces, shells nested twice
+    bool weld = false;                 // identify coincident vertices first
+    double weld_tolerance = 0;         // relative to the mesh's extent; 0: exact
     bool stop_at_first_problem = true;
     double planarity_tolerance = 1e-6;
+    Policy policy;
 };
 
 struct MeshAnalysis {
@@ -28,12 +34,15 @@ struct MeshAnalysis {
     std::size_t used_vertex_count = 0;             // after welding
     std::optional<TopologyReport> topology;        // when checked
     std::optional<IntegrationResult> integration;  // about scan.reference_point()
+    std::optional<ShellSurvey> shells;             // when checked and closed
+    std::optional<SurfaceOverlaps> overlaps;       // when asked for
+    Verdict verdict;
 
     explicit MeshAnalysis(MeshScan scanned) : scan(std::move(scanned)) {}
 };
 
 template <class Scalar, class Index>
 MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSettings& settings,
-                          bool accept_balanced_non_manifold, std::pmr::memory_resource* memory);
+                          std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

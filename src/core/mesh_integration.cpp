@@ -56,6 +56,9 @@ struct TriangleBatch {
 struct BatchResult {
     FaceSums sums;
     double surface_area = 0.0;
+    // Σ max(|E1|², |E2|²) ≥ Σ |E1||E2|: what scales each triangle's rounding
+    // (docs/error_bound.md).
+    double extents_squared = 0.0;
     Finding degenerate_faces;
 };
 
@@ -64,7 +67,7 @@ struct BatchResult {
 __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_triangle_batch(
     const TriangleBatch& batch, BatchResult& result) {
     UnscaledTriangleSums<Lanes> sums;
-    Lanes twice_areas{};
+    Lanes twice_areas{}, extents{};
     for (std::size_t first = 0; first < batch.size; first += lane_count) {
         Lanes p[3][3];
 #pragma GCC unroll 3
@@ -106,6 +109,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         // A degenerate triangle is reported; its terms, at rounding level, stay:
         // they are what keeps a closed surface's sum balanced.
         const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+        extents += extent_squared;  // padding lanes add zero
         const LaneMask degenerate = twice_area <= degenerate_area_ratio * extent_squared;
         if (any_lane(degenerate)) {
             const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
@@ -114,6 +118,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
         }
     }
     result.surface_area += sum_lanes(twice_areas) / 2.0;
+    result.extents_squared += sum_lanes(extents);
     UnscaledTriangleSums<double> reduced;
     reduced.x = sum_lanes(sums.x);
     for (int axis = 0; axis < 3; ++axis) {
@@ -161,6 +166,10 @@ public:
     void add_polygon(std::size_t face, std::size_t count, VertexAt&& vertex_at) {
         const FacePlane plane = face_plane(count, vertex_at);
         result_.surface_area += plane.area;
+        // Each triangle of a fan has |E1||E2| ≤ (2 extent)²; the projection
+        // and lift add operations, hence the extra factor (docs/error_bound.md).
+        extents_squared_ += 8.0 * double(count) * 4.0 * plane.extent * plane.extent;
+        ++summed_terms_;
         if (plane.degenerate) {
             // No normal to project along; its terms would be at rounding level.
             result_.degenerate_faces.record(face);
@@ -182,17 +191,35 @@ public:
         result_.encloses_no_volume =
             std::abs(in_units.volume) <= slack * result_.surface_area * (settings_.size / unit);
         result_.integrals = in_units.scaled(unit);
+        result_.bounds = rounding_bounds().scaled(unit);
         result_.surface_area = times_unit_power(result_.surface_area, unit, 2);
         return result_;
     }
 
 private:
+    // docs/error_bound.md: each face's terms carry a relative error of a few
+    // dozen roundings of (|δ|/2)·R^k, the sum one rounding per term it adds up
+    // (blocks of a batch, then batches and polygons one by one), and rounding
+    // the vertices into the integration frame moves them by √3·u·R at most: a
+    // shell of the surface's area that thick. In integration units.
+    IntegralBounds rounding_bounds() const {
+        constexpr double u = 0x1p-53;
+        const double radius = settings_.size / 2.0 / unit_;
+        const double depth = 64.0 + double(summed_terms_);
+        const double terms = depth * u * extents_squared_ / 2.0;
+        const double shell = std::sqrt(3.0) * u * radius * result_.surface_area;
+        return {terms * radius + shell, terms * radius * radius + shell * radius,
+                terms * radius * radius * radius + shell * radius * radius};
+    }
+
     void flush_triangles() {
         batch_.pad();
         BatchResult batch_result;
         integrate_triangle_batch(batch_, batch_result);
         total_ += batch_result.sums;
         result_.surface_area += batch_result.surface_area;
+        extents_squared_ += batch_result.extents_squared;
+        ++summed_terms_;
         result_.degenerate_faces.merge(batch_result.degenerate_faces);
         batch_.size = 0;
     }
@@ -202,6 +229,8 @@ private:
     TriangleBatch batch_;
     FaceSums total_;
     IntegrationResult result_;
+    double extents_squared_ = 0.0;  // Σ over faces, in units²
+    std::size_t summed_terms_ = 0;  // batches and polygons added to total_
 };
 
 }  // namespace

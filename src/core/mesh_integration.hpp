@@ -13,13 +13,17 @@ namespace polymass::core {
 
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
-    double size = 0.0;  // the mesh's bounding-box diagonal: sets the integration unit
+    // Twice the largest distance of a vertex from the reference (about the
+    // centre of the bounding box: its diagonal): sets the integration unit,
+    // and bounds the coordinates for the rounding bound.
+    double size = 0.0;
     bool check_planarity = true;
     double planarity_tolerance = 1e-6;  // off-plane distance / face diameter
 };
 
 struct IntegrationResult {
     VolumeIntegrals integrals;  // about settings.reference
+    IntegralBounds bounds;      // on the rounding errors of `integrals`
     double surface_area = 0.0;
     Finding degenerate_faces;
     Finding non_planar_faces;

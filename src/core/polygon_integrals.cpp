@@ -5,7 +5,7 @@ namespace polymass::core {
 // Mirtich's face integrals: on the plane, c = −(n_a a + n_b b + w) / n_c and
 // dS = da db / |n_c|. Dividing by the signed n_c (not |n_c|) also undoes the
 // orientation the projection gave the polygon. Each expression is the region
-// integral of the lifted polynomial, expanded (algorithm.md, errata 1 and 6).
+// integral of the lifted polynomial, expanded (docs/integrals.md, section 2).
 FaceSums lift_projection(const FacePlane& plane, int c, const ProjectionIntegrals& p) {
     const int a = (c + 1) % 3, b = (a + 1) % 3;
     const Eigen::Vector3d& n = plane.normal;

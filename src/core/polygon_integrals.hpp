@@ -1,11 +1,11 @@
-// Integrals over planar polygons by Green's theorem (Mirtich, sections 3–4).
+// Integrals over planar polygons by Green's theorem (docs/integrals.md, section 2).
 //
 // A polygon face is projected onto the coordinate plane (a, b) most nearly
 // parallel to it (the normal's largest component is the dropped axis c), its
 // region integrals are edge sums, and the face integrals follow by lifting the
 // projection back onto the plane n·p + w = 0. The same edge sums are the area,
-// centroid and second moments of a 2D polygon (seed 003's shoelace formulas and
-// their higher-order siblings), so the 2D API uses them too.
+// centroid and second moments of a 2D polygon (the shoelace sums, docs/integrals.md
+// section 2, and their higher-order siblings), so the 2D API uses them too.
 #pragma once
 
 #include <Eigen/Core>

@@ -2,7 +2,7 @@
 //
 // Parameterising the triangle P0 + u E1 + v E2 makes n dS = δ du dv with
 // δ = E1 × E2, and the face integrals collapse to polynomials in the vertex
-// coordinates (algorithm.md, with its erratum on the x²y term). This is the
+// coordinates (docs/integrals.md, section 3, with the x²y term in full). This is the
 // fast path: no normalisation, no projection, no division per triangle.
 //
 // T is double or a vector of doubles (lanes.hpp): the same expressions then

@@ -1,8 +1,8 @@
 // The ten volume integrals of a solid and the surface sums they come from.
 //
 // The divergence theorem turns each volume integral into a sum over faces of
-// "flux" integrals n_axis * integral over the face of a polynomial (Mirtich,
-// section 2). Both face paths — the closed-form triangle and the projected
+// "flux" integrals n_axis * integral over the face of a polynomial (docs/integrals.md,
+// section 1). Both face paths — the closed-form triangle and the projected
 // polygon — produce these same ten face sums, and this file alone turns them
 // into volume integrals.
 #pragma once
@@ -48,6 +48,17 @@ struct VolumeIntegrals {
     VolumeIntegrals scaled(double unit) const;
 };
 
+// Absolute bounds on the rounding errors of a VolumeIntegrals (docs/error_bound.md):
+// of its volume, of each first moment, of each second moment and product.
+struct IntegralBounds {
+    double volume = 0.0;
+    double first = 0.0;
+    double second = 0.0;
+
+    // The bounds of VolumeIntegrals::scaled(unit) (exact powers of two).
+    IntegralBounds scaled(double unit) const;
+};
+
 // A power of two near `length`: coordinates divided by it keep every bit and
 // are of order one, so no intermediate product (up to the sixth power of a
 // coordinate) overflows or underflows for any mesh whose results fit.
@@ -67,6 +78,11 @@ inline VolumeIntegrals VolumeIntegrals::scaled(double unit) const {
     };
     return {times_unit_power(volume, unit, 3), first.unaryExpr(times(4)),
             second.unaryExpr(times(5)), products.unaryExpr(times(5))};
+}
+
+inline IntegralBounds IntegralBounds::scaled(double unit) const {
+    return {times_unit_power(volume, unit, 3), times_unit_power(first, unit, 4),
+            times_unit_power(second, unit, 5)};
 }
 
 // Divergence theorem with F = (x, 0, 0), (x²/2, 0, 0), (x³/3, 0, 0), (x²y/2, 0, 0)

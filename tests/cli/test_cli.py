@@ -14,6 +14,7 @@ import os
 import re
 import struct
 import subprocess
+import sys
 import unittest
 from pathlib import Path
 from xml.etree import ElementTree
@@ -148,6 +149,24 @@ class EveryFormat(Case):
         )
         self.assertIn("the file declares its unit: millimeter", out["notes"])
         self.assertIn("32-bit floats", result.stderr)
+
+    def test_error_bound_contains_the_error(self):
+        result, out = run_json(WORK / "bracket.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        bound = out["error_bound"]
+
+        def error(got, exact):  # the exact value is rounded: half an ulp of slack
+            return abs(got - exact) - 0.5 * sys.float_info.epsilon * abs(exact)
+
+        self.assertLessEqual(error(out["volume"], self.expected["volume"]), bound["volume"])
+        for k in range(3):
+            com = error(out["center_of_mass"][k], self.expected["center_of_mass"][k])
+            self.assertLessEqual(com, bound["center_of_mass"])
+            for j in range(3):
+                inertia = error(out["inertia"][k][j], self.expected["inertia"][k][j])
+                self.assertLessEqual(inertia, bound["inertia"])
+        self.assertLess(bound["volume"], 1e-9 * out["volume"])
+        self.assertLessEqual(bound["principal_axes"], 1.5707963267948966)
 
     def test_polygon_formats_keep_their_faces(self):
         for name in ("bracket.obj", "bracket_ascii.ply", "bracket_binary.ply", "bracket.off"):
@@ -708,6 +727,74 @@ class BadInput(Case):
 class Check(Case):
     """polymass check: diagnostics and their exit status."""
 
+    def cubes(self, name, second_lo, second_hi, second_inside_out=False):
+        """A unit cube and a box, two shells of one OBJ file."""
+        cube_vertices, cube_faces = fixtures.cube()
+        (x0, y0, z0), (x1, y1, z1) = second_lo, second_hi
+        box = [(x1 if x else x0, y1 if y else y0, z1 if z else z0) for x, y, z in cube_vertices]
+        n = len(cube_vertices)
+        turn = reversed if second_inside_out else list
+        faces = cube_faces + [[n + i for i in turn(f)] for f in cube_faces]
+        path = WORK / name
+        fixtures.write_obj(path, cube_vertices + box, faces)
+        return path
+
+    def test_overlapping_cubes_are_refused(self):
+        # Two unit cubes overlapping by 1/8: volume 2 would count the overlap twice.
+        path = self.cubes("overlapping.obj", (0.5, 0.5, 0.5), (1.5, 1.5, 1.5))
+        result = run("check", "--json", path)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stdout)
+        report = json.loads(result.stdout)
+        self.assertIs(report["valid"], False)
+        self.assertEqual(report["category"], "intersecting")
+        self.assertIn("cross each other", report["message"])
+        pairs = report["intersecting_face_pairs"]
+        self.assertGreaterEqual(pairs["count"], 3)
+        for (low, high), shells in zip(pairs["first_pairs"], pairs["first_pair_shells"]):
+            self.assertLess(low, 6)  # a face of the first cube
+            self.assertGreaterEqual(high, 6)  # crosses one of the second
+            self.assertEqual(shells, [0, 1])
+        text = run("check", path).stdout
+        self.assertIn("crossing face pairs", text)
+        self.assertIn("(shell 0) and face", text)
+        # Computing refuses it the same way, in every output.
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stdout)
+        self.assertEqual(out["error"]["category"], "intersecting")
+        self.assertEqual(run("--urdf", path).returncode, EXIT_INVALID_MESH)
+        # Unchecked, the library cannot see it: the README says so.
+        result, out = run_json("--no-intersection-check", path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 2.0)
+
+    def test_touching_cubes_are_a_valid_solid_with_a_warning(self):
+        # Resting against the cube on a smaller face, sharing no corner (the
+        # tool welds: shared corners would make its edges non-manifold).
+        path = self.cubes("touching.obj", (1, 0.25, 0.25), (2, 0.75, 0.75))
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 1.25)
+        self.assertEqual(out["warnings"], ["touching_faces"])
+        self.assertIn("touch", result.stderr)
+        report = json.loads(run("check", "--json", path).stdout)
+        self.assertIs(report["valid"], True)
+        self.assertGreater(report["touching_face_pairs"]["count"], 0)
+        self.assertEqual([s["kind"] for s in report["shell_list"]], ["solid", "solid"])
+
+    def test_a_solid_inside_a_solid_is_counted_twice(self):
+        path = self.cubes("nested.obj", (0.25, 0.25, 0.25), (0.75, 0.75, 0.75))
+        report = json.loads(run("check", "--json", path).stdout)
+        self.assertEqual(report["category"], "intersecting")
+        self.assertEqual(report["overlapping_shells"]["count"], 1)
+        self.assertEqual(report["overlapping_shells"]["first_shells"], [1])
+        kinds = [s["kind"] for s in report["shell_list"]]
+        self.assertEqual(kinds, ["solid", "overlapping"])
+        # The same box inside out is a cavity.
+        path = self.cubes("cavity.obj", (0.25, 0.25, 0.25), (0.75, 0.75, 0.75), True)
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 1 - 0.125)
+
     def test_valid_solid_with_two_shells(self):
         result = run("check", "--json", SOURCE / "examples" / "data" / "hollow_box.obj")
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
@@ -716,7 +803,10 @@ class Check(Case):
         self.assertEqual(report["shells"], 2)
         # A 40 mm cube around a 30 x 30 x 20 mm cavity.
         shells = sorted((s["kind"], s["signed_volume"]) for s in report["shell_list"])
-        self.assertEqual(shells, [("cavity", -18000.0), ("solid", 64000.0)])
+        self.assertEqual([kind for kind, _ in shells], ["cavity", "solid"])
+        # Each shell's volume is a sum over its faces, exact to rounding.
+        for (_, got), expected in zip(shells, (-18000.0, 64000.0)):
+            self.assertAlmostEqual(got, expected, delta=1e-12 * abs(expected))
         self.assertEqual(report["open_edges"]["count"], 0)
         self.assertEqual(report["open_edges"]["first_edges"], [])
 
@@ -732,7 +822,7 @@ class Check(Case):
         self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stdout)
         report = json.loads(result.stdout)
         self.assertEqual(report["category"], "inverted")
-        self.assertIn("shell 2", report["message"])
+        self.assertIn("shell 1 (6 faces, the first face 6", report["message"])
         self.assertIs(report["valid"], False)
         kinds = [s["kind"] for s in report["shell_list"]]
         self.assertEqual(kinds, ["solid", "inverted"])

@@ -258,9 +258,15 @@ static void check_properties(const polymass_mass_properties* p, uint32_t flags,
     const uint32_t known = POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES |
                            POLYMASS_WARNING_UNCHECKED | POLYMASS_WARNING_NON_MANIFOLD;
     CHECK(p->struct_size == sizeof *p, status, context);
-    /* Every double of the struct, from volume to principal_axes. */
-    CHECK(all_finite(&p->volume,
-                     (sizeof *p - offsetof(polymass_mass_properties, volume)) / sizeof(double)),
+    /* Every double of the struct, from volume to principal_axes; the error
+       bounds are numbers, infinite where rounding could be the whole mass. */
+    CHECK(all_finite(&p->volume, (offsetof(polymass_mass_properties, error_bound_volume) -
+                                  offsetof(polymass_mass_properties, volume)) /
+                                     sizeof(double)),
+          status, context);
+    CHECK(p->error_bound_volume >= 0.0 && p->error_bound_center_of_mass >= 0.0 &&
+              p->error_bound_inertia >= 0.0 && p->error_bound_principal_moments >= 0.0 &&
+              p->error_bound_principal_axes >= 0.0 && p->error_bound_principal_axes <= 1.5708,
           status, context);
     CHECK(p->volume > 0.0, status, context);
     CHECK(p->mass > 0.0 && p->density > 0.0, status, context);

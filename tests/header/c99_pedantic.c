@@ -37,6 +37,8 @@ void polymass_header_c99_uses(void) {
     (void)polymass_sizeof_mass_properties;
     (void)polymass_sizeof_diagnostics;
     (void)polymass_sizeof_polygon_properties;
+    (void)polymass_sizeof_shell;
+    (void)polymass_mesh_shell_list;
     (void)polymass_context_create;
     (void)polymass_context_destroy;
     (void)polymass_context_set_options;
@@ -66,6 +68,7 @@ void polymass_header_c99_uses(void) {
         POLYMASS_ERROR_NON_MANIFOLD,
         POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
         POLYMASS_ERROR_NON_PLANAR_FACE,
+        POLYMASS_ERROR_INTERSECTING,
         POLYMASS_ERROR_INVERTED,
         POLYMASS_ERROR_ZERO_VOLUME,
         POLYMASS_ERROR_ZERO_AREA,
@@ -76,10 +79,17 @@ void polymass_header_c99_uses(void) {
         POLYMASS_OPTION_ACCEPT_INVERTED,
         POLYMASS_OPTION_WELD_VERTICES,
         POLYMASS_OPTION_ACCEPT_NON_MANIFOLD,
+        POLYMASS_OPTION_CHECK_INTERSECTIONS,
         POLYMASS_WARNING_INVERTED,
         POLYMASS_WARNING_DEGENERATE_FACES,
         POLYMASS_WARNING_UNCHECKED,
         POLYMASS_WARNING_NON_MANIFOLD,
+        POLYMASS_WARNING_TOUCHING_FACES,
+        POLYMASS_SHELL_SOLID,
+        POLYMASS_SHELL_CAVITY,
+        POLYMASS_SHELL_INVERTED,
+        POLYMASS_SHELL_OVERLAPPING,
+        POLYMASS_SHELL_NO_VOLUME,
         POLYMASS_POSITION_FLOAT64,
         POLYMASS_POSITION_FLOAT32,
         POLYMASS_INDEX_UINT32,

@@ -387,7 +387,7 @@ static void check_properties_at(const char* file, int line, const char* call,
                                 const polymass_mass_properties* p, int genuine_solid) {
     static const uint32_t known_warnings =
         POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES | POLYMASS_WARNING_UNCHECKED |
-        POLYMASS_WARNING_NON_MANIFOLD;
+        POLYMASS_WARNING_NON_MANIFOLD | POLYMASS_WARNING_TOUCHING_FACES;
     char what[300];
     double rt_r[9], rt[9];
     const double moment_scale = max_abs(p->principal_moments, 3);
@@ -809,12 +809,12 @@ static void make_hostile_mesh(rng* r, hostile_mesh* h) {
 static int random_options(rng* r, polymass_options* o) {
     static const double tolerances[] = {0, 1e-12, 1e-6, 1e-3, 1.0, 1e300};
     int invalid = 0;
-    *o = pm_options(rng_below(r, 16), 0.0);
+    *o = pm_options(rng_below(r, 32), 0.0);
     if (rng_one_in(r, 3)) {
         o->planarity_tolerance = rng_one_in(r, 4) ? random_amount(r) : tolerances[rng_below(r, 6)];
     }
     if (rng_one_in(r, 10)) {
-        o->flags |= 1u << (4 + rng_below(r, 28)); /* unknown */
+        o->flags |= 1u << (5 + rng_below(r, 27)); /* unknown */
         invalid = 1;
     }
     if (rng_one_in(r, 20)) {

@@ -34,6 +34,39 @@ static void test_struct_sizes_match_c(void** state) {
     assert_int_equal(polymass_sizeof_polygon_properties(), sizeof(polymass_polygon_properties));
 }
 
+/* Each initialiser writes its struct's defaults up to the size given, accepts
+   only sizes of known versions, and agrees with its C macro. */
+static void test_initialisers(void** state) {
+    unsigned char buffer[4096];
+    polymass_options options = POLYMASS_OPTIONS_INIT;
+    polymass_mesh_desc desc = POLYMASS_MESH_DESC_INIT;
+    polymass_mass_desc body = POLYMASS_MASS_DESC_INIT;
+    polymass_mass_properties properties = POLYMASS_MASS_PROPERTIES_INIT;
+    polymass_diagnostics report = POLYMASS_DIAGNOSTICS_INIT;
+    polymass_polygon_properties polygon = POLYMASS_POLYGON_PROPERTIES_INIT;
+    (void)state;
+#define CHECK_INIT(init, value)                                                                    \
+    do {                                                                                           \
+        memset(buffer, 0xA5, sizeof buffer);                                                       \
+        assert_int_equal(init((void*)buffer, sizeof(value)), POLYMASS_OK);                         \
+        assert_memory_equal(buffer, &(value), sizeof(value));                                      \
+        assert_int_equal(buffer[sizeof(value)], 0xA5); /* nothing written past the size */         \
+        assert_int_equal(init((void*)buffer, sizeof(value) + 8), POLYMASS_ERROR_INVALID_ARGUMENT); \
+        assert_int_equal(init((void*)buffer, 4), POLYMASS_ERROR_INVALID_ARGUMENT);                 \
+        assert_int_equal(init(NULL, sizeof(value)), POLYMASS_ERROR_INVALID_ARGUMENT);              \
+    } while (0)
+    CHECK_INIT(polymass_options_init, options);
+    CHECK_INIT(polymass_mesh_desc_init, desc);
+    CHECK_INIT(polymass_mass_desc_init, body);
+    CHECK_INIT(polymass_mass_properties_init, properties);
+    CHECK_INIT(polymass_diagnostics_init, report);
+    CHECK_INIT(polymass_polygon_properties_init, polygon);
+#undef CHECK_INIT
+    assert_int_equal(body.struct_size, sizeof body);
+    assert_int_equal(body.mass_mode, POLYMASS_MASS_FROM_DENSITY);
+    assert_true(body.density == 1.0);
+}
+
 static void test_status_values_are_the_documented_ones(void** state) {
     (void)state;
     /* The ABI: explicit values, never reused. */
@@ -48,6 +81,7 @@ static void test_status_values_are_the_documented_ones(void** state) {
     assert_int_equal(POLYMASS_ERROR_NON_MANIFOLD, 21);
     assert_int_equal(POLYMASS_ERROR_INCONSISTENT_ORIENTATION, 22);
     assert_int_equal(POLYMASS_ERROR_NON_PLANAR_FACE, 23);
+    assert_int_equal(POLYMASS_ERROR_INTERSECTING, 24);
     assert_int_equal(POLYMASS_ERROR_INVERTED, 30);
     assert_int_equal(POLYMASS_ERROR_ZERO_VOLUME, 31);
     assert_int_equal(POLYMASS_ERROR_ZERO_AREA, 32);
@@ -156,6 +190,7 @@ int main(void) {
         cmocka_unit_test(test_version_number_matches_header),
         cmocka_unit_test(test_version_string_matches_header),
         cmocka_unit_test(test_struct_sizes_match_c),
+        cmocka_unit_test(test_initialisers),
         cmocka_unit_test(test_status_values_are_the_documented_ones),
         cmocka_unit_test(test_status_strings_distinct_and_non_empty),
         cmocka_unit_test(test_context_default_options),

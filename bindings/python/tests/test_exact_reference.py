@@ -101,3 +101,24 @@ def test_a_given_mass_sets_the_density():
         RELATIVE,
         "inertia",
     )
+
+
+@pytest.mark.parametrize("placement", PLACEMENTS)
+@pytest.mark.parametrize("shape", SHAPES)
+def test_error_bound_contains_the_error(shape, placement):
+    vertices, faces = _placed(shape, placement, 5, rotate=True)
+    p = polymass.mass_properties(vertices, faces)
+    exact = exact_solid(vertices, faces)
+
+    def error(actual, exact_values) -> float:
+        expected = np.vectorize(float)(np.array(exact_values, dtype=object)).astype(np.float64)
+        # The exact value is compared rounded: half an ulp of slack.
+        slack = 0.5 * np.finfo(np.float64).eps * np.abs(expected)
+        return float(np.max(np.abs(np.asarray(actual) - expected) - slack))
+
+    bound = p.error_bound
+    assert error(p.volume, exact.volume) <= bound.volume
+    assert error(p.center_of_mass, exact.center_of_mass) <= bound.center_of_mass
+    assert error(p.inertia, exact.inertia) <= bound.inertia
+    assert 0 < bound.volume <= 1e-9 * p.volume, "loose, but not vacuous"
+    assert 0 <= bound.principal_axes <= np.pi / 2

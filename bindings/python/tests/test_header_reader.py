@@ -76,6 +76,19 @@ def test_integer_constants_in_declarations_become_their_values(tmp_path):
     assert "first[8][2]" in header.cdef() and "x[9]" in header.cdef()
 
 
+def test_struct_initialisers_are_for_c_callers_not_constants(tmp_path):
+    header = _read(
+        tmp_path,
+        """
+        #define POLYMASS_S_INIT {.struct_size = sizeof(s), \\
+                                 .density = 1.0}
+        typedef struct s { uint32_t struct_size; double density; } s;
+        """,
+    )
+    assert "POLYMASS_S_INIT" not in header.constants
+    assert "POLYMASS_S_INIT" not in header.cdef()
+
+
 @pytest.mark.parametrize(
     ("text", "message"),
     [

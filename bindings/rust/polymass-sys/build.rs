@@ -9,7 +9,8 @@
 //!    where a CMake build tree (`build/<preset>/src`) and an install prefix keep
 //!    them.
 //! 2. `pkg-config polymass` (an installed library: `cmake --install`, or the
-//!    `libpolymass-dev` package), version 1.x.
+//!    `libpolymass-dev` package), version 1.1 or a later 1.x (the version of
+//!    the header these bindings are written for).
 //! 3. The `release` build tree of the checkout this crate lives in
 //!    (`build/release/src`, made by `cmake --preset release && cmake --build
 //!    --preset release`).
@@ -125,7 +126,7 @@ fn from_environment(static_link: bool) -> Result<Option<Library>, String> {
 fn from_pkg_config(static_link: bool) -> Result<Library, String> {
     // The link lines are emitted by emit_link_lines, alike for every source.
     let found = pkg_config::Config::new()
-        .range_version("1".."2")
+        .range_version("1.1".."2")
         .statik(static_link)
         .cargo_metadata(false)
         .env_metadata(true)
@@ -203,8 +204,8 @@ fn check_none_definition(header: &Path) {
 }
 
 /// Gives each POLYMASS_* constant the type of the C field or return value it
-/// is compared with, so Rust code needs no casts: statuses and orientations are
-/// int32_t, everything else (flags,
+/// is compared with, so Rust code needs no casts: statuses, orientations and
+/// shell kinds are int32_t, everything else (flags,
 /// warnings, type and mode codes, version numbers) is uint32_t.
 #[derive(Debug)]
 struct ConstantTypes;
@@ -213,6 +214,7 @@ impl ParseCallbacks for ConstantTypes {
     fn int_macro(&self, name: &str, _value: i64) -> Option<IntKind> {
         let kind = if name == "POLYMASS_OK"
             || name.starts_with("POLYMASS_ERROR_")
+            || name.starts_with("POLYMASS_SHELL_")
             || name.ends_with("CLOCKWISE")
         {
             IntKind::I32

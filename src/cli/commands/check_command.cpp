@@ -1,7 +1,8 @@
 // polymass check: every finding of polymass_mesh_check with its count and
 // first few locations (vertex numbers are 0-based positions in the file's
-// vertex list, shown with their coordinates), and the shells: each one's
-// signed volume says whether it is a solid, a cavity, or inside out.
+// vertex list, shown with their coordinates; face pairs with the shells the
+// faces are in), and the shells as the library judges them: a solid, a
+// cavity, inside out, overlapping another, or without volume.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,7 +13,6 @@
 
 #include "commands/commands.hpp"
 #include "library/categories.hpp"
-#include "library/shells.hpp"
 #include "library/solid.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/json_output.hpp"
@@ -21,14 +21,14 @@
 namespace polymass_cli {
 namespace {
 
-enum class Where { kEdge, kFace, kVertex };
+enum class Where { kEdge, kFace, kVertex, kFacePair, kShell };
 
 struct Finding {
     const char* key;    // JSON key
     const char* label;  // table label
     uint64_t count;
     Where where;
-    std::vector<std::array<uint64_t, 2>> locations;  // the first few; [1] only for edges
+    std::vector<std::array<uint64_t, 2>> locations;  // the first few; [1] for edges and pairs
 };
 
 Finding face_finding(const char* key, const char* label, uint64_t count,
@@ -40,9 +40,10 @@ Finding face_finding(const char* key, const char* label, uint64_t count,
     return finding;
 }
 
-Finding edge_finding(const char* key, const char* label, uint64_t count,
-                     const uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
-    Finding finding{key, label, count, Where::kEdge, {}};
+Finding pair_finding(const char* key, const char* label, uint64_t count,
+                     const uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2],
+                     Where where = Where::kEdge) {
+    Finding finding{key, label, count, where, {}};
     for (const auto& edge : first) {
         if (edge[0] != POLYMASS_NONE) finding.locations.push_back({edge[0], edge[1]});
     }
@@ -51,10 +52,10 @@ Finding edge_finding(const char* key, const char* label, uint64_t count,
 
 std::vector<Finding> findings_of(const polymass_diagnostics& d) {
     return {
-        edge_finding("open_edges", "open edges", d.open_edges, d.first_open_edges),
-        edge_finding("non_manifold_edges", "non-manifold edges", d.non_manifold_edges,
+        pair_finding("open_edges", "open edges", d.open_edges, d.first_open_edges),
+        pair_finding("non_manifold_edges", "non-manifold edges", d.non_manifold_edges,
                      d.first_non_manifold_edges),
-        edge_finding("misoriented_edges", "misoriented edges", d.misoriented_edges,
+        pair_finding("misoriented_edges", "misoriented edges", d.misoriented_edges,
                      d.first_misoriented_edges),
         face_finding("non_planar_faces", "non-planar faces", d.non_planar_faces,
                      d.first_non_planar_faces, Where::kFace),
@@ -66,7 +67,29 @@ std::vector<Finding> findings_of(const polymass_diagnostics& d) {
                      d.first_out_of_range_faces, Where::kFace),
         face_finding("non_finite_vertices", "non-finite vertices", d.non_finite_vertices,
                      d.first_non_finite_vertices, Where::kVertex),
+        pair_finding("intersecting_face_pairs", "crossing face pairs", d.intersecting_face_pairs,
+                     d.first_intersecting_face_pairs, Where::kFacePair),
+        pair_finding("touching_face_pairs", "touching face pairs", d.touching_face_pairs,
+                     d.first_touching_face_pairs, Where::kFacePair),
+        face_finding("inverted_shells", "inside-out shells", d.inverted_shells,
+                     d.first_inverted_shells, Where::kShell),
+        face_finding("overlapping_shells", "overlapping shells", d.overlapping_shells,
+                     d.first_overlapping_shells, Where::kShell),
     };
+}
+
+// What check needs besides the library's report: each face's shell (to say
+// which shells a pair of faces belongs to) and the shells' descriptions.
+struct ShellView {
+    std::vector<uint32_t> of_face;
+    std::vector<polymass_shell> list;
+};
+
+std::string face_text(const ShellView& shells, uint64_t face) {
+    std::string text = "face " + std::to_string(face);
+    if (face < shells.of_face.size())
+        text += " (shell " + std::to_string(shells.of_face[face]) + ")";
+    return text;
 }
 
 std::string vertex_text(const Model& model, uint64_t v) {
@@ -76,7 +99,7 @@ std::string vertex_text(const Model& model, uint64_t v) {
            readable_number(p[1]) + ", " + readable_number(p[2]) + ")";
 }
 
-std::string location_text(const Model& model, const Finding& finding,
+std::string location_text(const Model& model, const ShellView& shells, const Finding& finding,
                           const std::array<uint64_t, 2>& location) {
     switch (finding.where) {
         case Where::kEdge:
@@ -84,26 +107,33 @@ std::string location_text(const Model& model, const Finding& finding,
                    vertex_text(model, location[1]);
         case Where::kVertex:
             return vertex_text(model, location[0]);
+        case Where::kFacePair:
+            return face_text(shells, location[0]) + " and " + face_text(shells, location[1]);
+        case Where::kShell:
+            return "shell " + std::to_string(location[0]);
         case Where::kFace:
             break;
     }
     return "face " + std::to_string(location[0]);
 }
 
-std::string shells_summary(const std::vector<Shell>& shells) {
-    std::string text = std::to_string(shells.size());
+std::string shells_summary(const polymass_diagnostics& d, const ShellView& shells) {
+    std::string text = std::to_string(shells.list.empty() ? d.shell_count : shells.list.size());
     std::string kinds;
-    for (const char* kind : {"solid", "cavity", "inverted", "no volume"}) {
-        const auto count = std::count_if(shells.begin(), shells.end(), [&](const Shell& shell) {
-            return std::string(shell.kind) == kind;
-        });
-        if (count > 0) kinds += (kinds.empty() ? "" : ", ") + std::to_string(count) + " " + kind;
+    for (const int32_t kind : {POLYMASS_SHELL_SOLID, POLYMASS_SHELL_CAVITY, POLYMASS_SHELL_INVERTED,
+                               POLYMASS_SHELL_OVERLAPPING, POLYMASS_SHELL_NO_VOLUME}) {
+        const auto count =
+            std::count_if(shells.list.begin(), shells.list.end(),
+                          [&](const polymass_shell& shell) { return shell.kind == kind; });
+        if (count > 0)
+            kinds +=
+                (kinds.empty() ? "" : ", ") + std::to_string(count) + " " + shell_kind_name(kind);
     }
     return kinds.empty() ? text : text + " (" + kinds + ")";
 }
 
 void write_text(std::ostream& out, const std::string& path, const Model& model,
-                const CheckResult& check, const std::vector<Shell>& shells) {
+                const CheckResult& check, const ShellView& shells) {
     const polymass_diagnostics& d = check.diagnostics;
     out << path << " (" << model.format << "): ";
     if (d.status == POLYMASS_OK) {
@@ -112,7 +142,7 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
         out << "NOT A VALID SOLID: " << category_of(d.status) << ": " << check.message << '\n';
     }
     out << "  faces " << d.face_count << ", vertices used " << d.used_vertex_count << ", edges "
-        << d.edge_count << ", shells " << shells_summary(shells) << '\n';
+        << d.edge_count << ", shells " << shells_summary(d, shells) << '\n';
     for (const Finding& finding : findings_of(d)) {
         char line[64];
         std::snprintf(line, sizeof line, "  %-22s%8llu  ", finding.label,
@@ -120,7 +150,7 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
         out << line;
         for (size_t i = 0; i < finding.locations.size(); ++i) {
             out << (i == 0 ? "" : "                                  ")
-                << location_text(model, finding, finding.locations[i]) << '\n';
+                << location_text(model, shells, finding, finding.locations[i]) << '\n';
         }
         if (finding.locations.empty()) out << '\n';
         if (finding.count > finding.locations.size()) {
@@ -128,9 +158,11 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
                 << finding.count - finding.locations.size() << " more\n";
         }
     }
-    for (size_t i = 0; i < shells.size() && shells.size() > 1; ++i) {
-        out << "  shell " << i + 1 << ": " << shells[i].faces << " faces, signed volume "
-            << readable_number(shells[i].signed_volume) << " (" << shells[i].kind << ")\n";
+    for (size_t i = 0; i < shells.list.size() && shells.list.size() > 1; ++i) {
+        const polymass_shell& shell = shells.list[i];
+        out << "  shell " << i << ": " << shell.face_count << " faces from face "
+            << shell.first_face << ", signed volume " << readable_number(shell.signed_volume)
+            << " (" << shell_kind_name(shell.kind) << ")\n";
     }
     out << "  max non-planarity     " << readable_number(d.max_non_planarity) << '\n';
     out << "  signed volume         " << readable_number(d.signed_volume)
@@ -138,7 +170,7 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
 }
 
 Json json_report(const std::string& path, const Model& model, const CheckResult& check,
-                 const std::vector<Shell>& shells) {
+                 const ShellView& shells) {
     const polymass_diagnostics& d = check.diagnostics;
     Json report;
     report["file"] = path;
@@ -149,30 +181,41 @@ Json json_report(const std::string& path, const Model& model, const CheckResult&
     report["faces"] = d.face_count;
     report["used_vertices"] = d.used_vertex_count;
     report["edges"] = d.edge_count;
-    report["shells"] = static_cast<uint64_t>(shells.size());
+    report["shells"] = shells.list.empty() ? d.shell_count : uint64_t(shells.list.size());
     Json shell_list = Json::array();
-    for (const Shell& shell : shells) {
+    for (const polymass_shell& shell : shells.list) {
         Json entry;
-        entry["faces"] = shell.faces;
-        if (!std::isnan(shell.signed_volume))
-            entry["signed_volume"] = json_number(shell.signed_volume);
-        entry["kind"] = shell.kind;
+        entry["faces"] = shell.face_count;
+        entry["first_face"] = shell.first_face;
+        entry["signed_volume"] = json_number(shell.signed_volume);
+        entry["kind"] = shell_kind_name(shell.kind);
         shell_list.push_back(entry);
     }
     report["shell_list"] = shell_list;
     for (const Finding& finding : findings_of(d)) {
         Json locations = Json::array();
         for (const auto& location : finding.locations) {
-            if (finding.where == Where::kEdge) {
+            if (finding.where == Where::kEdge || finding.where == Where::kFacePair) {
                 locations.push_back({location[0], location[1]});
             } else {
                 locations.push_back(location[0]);
             }
         }
-        const char* list = finding.where == Where::kEdge     ? "first_edges"
-                           : finding.where == Where::kVertex ? "first_vertices"
-                                                             : "first_faces";
+        const char* list = finding.where == Where::kEdge       ? "first_edges"
+                           : finding.where == Where::kVertex   ? "first_vertices"
+                           : finding.where == Where::kFacePair ? "first_pairs"
+                           : finding.where == Where::kShell    ? "first_shells"
+                                                               : "first_faces";
         report[finding.key] = {{"count", finding.count}, {list, locations}};
+        if (finding.where == Where::kFacePair) {
+            Json pair_shells = Json::array();
+            for (const auto& location : finding.locations) {
+                if (location[1] < shells.of_face.size())
+                    pair_shells.push_back(
+                        {shells.of_face[location[0]], shells.of_face[location[1]]});
+            }
+            report[finding.key]["first_pair_shells"] = pair_shells;
+        }
     }
     report["max_non_planarity"] = json_number(d.max_non_planarity);
     if (!std::isnan(d.signed_volume)) report["signed_volume"] = json_number(d.signed_volume);
@@ -205,14 +248,9 @@ ExitCode run_check(const Arguments& arguments) {
         }
         prepare_model(model, arguments);
         const Part all = combined_part(model);
-        CheckResult check = check_solid(library, model, all);
-        const std::vector<Shell> shells =
-            classify_shells(library, model, all, check.diagnostics.signed_volume);
-        const std::string inverted = inverted_shell_message(shells);
-        if (check.diagnostics.status == POLYMASS_OK && !inverted.empty()) {
-            check.diagnostics.status = POLYMASS_ERROR_INVERTED;
-            check.message = inverted;
-        }
+        const CheckResult check = check_solid(library, model, all);
+        const ShellView shells{shell_of_each_face(library, model, all),
+                               shell_list(library, model, all)};
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json) {
             reports.push_back(json_report(path, model, check, shells));

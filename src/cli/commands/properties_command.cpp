@@ -4,7 +4,6 @@
 
 #include "commands/commands.hpp"
 #include "library/categories.hpp"
-#include "library/shells.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/report.hpp"
 
@@ -35,20 +34,6 @@ PartReport solid_report(const Library& library, const Model& model, const Part& 
     report.faces = part.face_sizes.size();
     report.computed = true;
     report.result = compute_solid(library, model, part, mass);
-    // A disjoint shell inside out passes the library's checks (the surface as
-    // a whole is closed and oriented) and only lowers the total: refuse it as
-    // polymass check does, rather than print a body that is not the part.
-    SolidResult& result = report.result;
-    if (result.status == POLYMASS_OK) {
-        const bool turned = result.properties.warnings & POLYMASS_WARNING_INVERTED;
-        const double signed_volume = turned ? -result.properties.volume : result.properties.volume;
-        const std::string inverted =
-            inverted_shell_message(classify_shells(library, model, part, signed_volume));
-        if (!inverted.empty()) {
-            result.status = POLYMASS_ERROR_INVERTED;
-            result.message = inverted;
-        }
-    }
     return report;
 }
 
@@ -113,6 +98,10 @@ polymass_options options_for(const Arguments& arguments) {
     options.flags = POLYMASS_OPTION_WELD_VERTICES;
     if (arguments.accept_inverted) options.flags |= POLYMASS_OPTION_ACCEPT_INVERTED;
     if (arguments.no_check) options.flags |= POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    // Overlapping parts are the commonest silent error of exported
+    // assemblies: checked unless the user trusts the file.
+    if (!arguments.no_check && !arguments.no_intersection_check)
+        options.flags |= POLYMASS_OPTION_CHECK_INTERSECTIONS;
     options.weld_tolerance = arguments.weld_tolerance;
     options.planarity_tolerance = arguments.planarity_tolerance;
     return options;

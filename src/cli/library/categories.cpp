@@ -14,6 +14,8 @@ const char* category_of(int32_t status) {
             return "non_manifold";
         case POLYMASS_ERROR_INCONSISTENT_ORIENTATION:
             return "inconsistent_orientation";
+        case POLYMASS_ERROR_INTERSECTING:
+            return "intersecting";
         case POLYMASS_ERROR_INVERTED:
             return "inverted";
         case POLYMASS_ERROR_NON_FINITE:

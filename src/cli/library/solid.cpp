@@ -61,20 +61,43 @@ CheckResult check_solid(const Library& library, const Model& model, const Part& 
 }
 
 std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
-                                         const Part& part, bool weld, uint64_t& shell_count) {
+                                         const Part& part) {
     const polymass_mesh_desc desc = describe(model, part);
-    polymass_options options{};
-    options.struct_size = sizeof options;
-    polymass_context_get_options(&options, library.context());
-    polymass_options unwelded = options;
-    if (!weld) unwelded.flags &= ~POLYMASS_OPTION_WELD_VERTICES;
-    polymass_context_set_options(library.context(), &unwelded);
     std::vector<uint32_t> shells(part.face_sizes.size());
-    shell_count = 0;
-    if (polymass_mesh_shells(shells.data(), &shell_count, library.context(), &desc) != POLYMASS_OK)
+    uint64_t count = 0;
+    if (polymass_mesh_shells(shells.data(), &count, library.context(), &desc) != POLYMASS_OK)
         shells.clear();
-    polymass_context_set_options(library.context(), &options);
     return shells;
+}
+
+std::vector<polymass_shell> shell_list(const Library& library, const Model& model,
+                                       const Part& part) {
+    const polymass_mesh_desc desc = describe(model, part);
+    uint64_t count = 0;
+    if (polymass_mesh_shell_list(nullptr, 0, &count, library.context(), &desc) != POLYMASS_OK)
+        return {};
+    polymass_shell blank{};
+    blank.struct_size = sizeof blank;
+    std::vector<polymass_shell> shells(count, blank);
+    if (polymass_mesh_shell_list(shells.data(), count, &count, library.context(), &desc) !=
+        POLYMASS_OK)
+        return {};
+    return shells;
+}
+
+const char* shell_kind_name(int32_t kind) {
+    switch (kind) {
+        case POLYMASS_SHELL_SOLID:
+            return "solid";
+        case POLYMASS_SHELL_CAVITY:
+            return "cavity";
+        case POLYMASS_SHELL_INVERTED:
+            return "inverted";
+        case POLYMASS_SHELL_OVERLAPPING:
+            return "overlapping";
+        default:
+            return "no volume";
+    }
 }
 
 }  // namespace polymass_cli

@@ -43,11 +43,19 @@ struct CheckResult {
 
 CheckResult check_solid(const Library& library, const Model& model, const Part& part);
 
-// The shell (connected piece of surface) of each face, numbered from 0, with
-// the library's welding or (weld false) of the vertices as given; empty when
-// the library cannot tell (indices out of range, non-finite coordinates: the
-// check says which).
+// The shell (connected piece of surface, as the library welds it) of each
+// face, numbered from 0; empty when the library cannot tell (indices out of
+// range, non-finite coordinates: the check says which).
 std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
-                                         const Part& part, bool weld, uint64_t& shell_count);
+                                         const Part& part);
+
+// Each shell of a part as the library judges it (a solid, a cavity, inside
+// out, overlapping, no volume); empty when the surface fails the checks that
+// come before the shells (open, non-manifold, ...: the check says which).
+std::vector<polymass_shell> shell_list(const Library& library, const Model& model,
+                                       const Part& part);
+
+// The name of a polymass_shell.kind in the tool's reports.
+const char* shell_kind_name(int32_t kind);
 
 }  // namespace polymass_cli

@@ -37,7 +37,9 @@ const struct {
     {POLYMASS_WARNING_INVERTED, "inverted", "the mesh was inside out: its faces were reversed"},
     {POLYMASS_WARNING_DEGENERATE_FACES, "degenerate_faces", "faces of zero area, harmless"},
     {POLYMASS_WARNING_UNCHECKED, "unchecked", "the topology checks were skipped"},
-    {POLYMASS_WARNING_NON_MANIFOLD, "non_manifold", "edges with more than two faces, accepted"}};
+    {POLYMASS_WARNING_NON_MANIFOLD, "non_manifold", "edges with more than two faces, accepted"},
+    {POLYMASS_WARNING_TOUCHING_FACES, "touching_faces",
+     "faces touch without crossing (parts resting on each other)"}};
 
 }  // namespace
 

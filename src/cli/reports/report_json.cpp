@@ -2,6 +2,9 @@
 // several files are given). The keys are documented in the README.
 #include <polymass/polymass.h>
 
+#include <cmath>
+#include <utility>
+
 #include "library/categories.hpp"
 #include "reports/json_output.hpp"
 #include "reports/report.hpp"
@@ -40,6 +43,17 @@ void add_solid_members(Json& solid, const PartReport& part, const OutputSettings
     solid["principal_axes"] = axes;
     solid["surface_area"] = json_number(p.surface_area);
     solid["warnings"] = warning_names(p.warnings);
+    // An infinite bound (rounding could be the whole mass) is left out.
+    const std::pair<const char*, double> bounds[] = {
+        {"volume", p.error_bound_volume},
+        {"center_of_mass", p.error_bound_center_of_mass},
+        {"inertia", p.error_bound_inertia},
+        {"principal_moments", p.error_bound_principal_moments},
+        {"principal_axes", p.error_bound_principal_axes}};
+    Json error_bound = Json::object();
+    for (const auto& [name, bound] : bounds)
+        if (std::isfinite(bound)) error_bound[name] = json_number(bound);
+    solid["error_bound"] = error_bound;
 }
 
 Json file_object(const FileReport& file, const OutputSettings& settings) {

@@ -15,13 +15,15 @@ at the path in the environment variable POLYMASS_LIBRARY.
 from . import _header
 from ._library import ffi as _ffi
 from ._library import lib as _lib
-from .diagnostics import Diagnostics, check, shells
+from .batch import batch
+from .diagnostics import Diagnostics, Shell, check, shell_list, shells
 from .errors import (
     Error,
     FaceTooSmallError,
     InconsistentOrientationError,
     IndexOutOfRangeError,
     InternalError,
+    IntersectingSurfaceError,
     InvalidArgumentError,
     InvertedError,
     NonFiniteError,
@@ -34,8 +36,9 @@ from .errors import (
     ZeroAreaError,
     ZeroVolumeError,
 )
+from .moments import Moments, moments
 from .polygons import PolygonProperties, polygon_properties
-from .solids import MassProperties, Mesh, Warnings, mass_properties
+from .solids import ErrorBound, MassProperties, Mesh, Warnings, mass_properties
 
 __version__: str = _header.POLYMASS_VERSION_STRING
 """The version of the header this binding was built from (the package's version)."""
@@ -49,14 +52,17 @@ def library_version() -> str:
 __all__ = [
     "Diagnostics",
     "Error",
+    "ErrorBound",
     "FaceTooSmallError",
     "InconsistentOrientationError",
     "IndexOutOfRangeError",
     "InternalError",
+    "IntersectingSurfaceError",
     "InvalidArgumentError",
     "InvertedError",
     "MassProperties",
     "Mesh",
+    "Moments",
     "NonFiniteError",
     "NonManifoldError",
     "NonPlanarFaceError",
@@ -64,14 +70,18 @@ __all__ = [
     "OutOfMemoryError",
     "PolygonProperties",
     "ResultOutOfRangeError",
+    "Shell",
     "TopologyError",
     "Warnings",
     "ZeroAreaError",
     "ZeroVolumeError",
     "__version__",
+    "batch",
     "check",
     "library_version",
     "mass_properties",
+    "moments",
     "polygon_properties",
+    "shell_list",
     "shells",
 ]

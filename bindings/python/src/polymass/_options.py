@@ -1,4 +1,4 @@
-"""The keyword options shared by `Mesh`, `mass_properties` and `check`, as polymass_options."""
+"""The keyword options of `Mesh`, `mass_properties`, `moments` and `check`: polymass_options."""
 
 from __future__ import annotations
 
@@ -31,16 +31,21 @@ def _weld_tolerance(weld: Weld) -> float | None:
     )
 
 
-def apply_options(
-    context,
+def apply_options(context, **keywords) -> None:
+    """Sets the options of this thread's context for the next call through it."""
+    raise_for_status(lib.polymass_context_set_options(context, call_options(**keywords)), context)
+
+
+def call_options(
     *,
     weld: Weld = False,
     skip_checks: bool = False,
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
-) -> None:
-    """Sets the options of this thread's context for the next call through it."""
+    check_intersections: bool = False,
+):
+    """The keywords as a polymass_options, for a call that takes its own options."""
     options = new_struct("polymass_options")
     flags = 0
     if skip_checks:
@@ -49,9 +54,11 @@ def apply_options(
         flags |= _header.POLYMASS_OPTION_ACCEPT_INVERTED
     if accept_non_manifold:
         flags |= _header.POLYMASS_OPTION_ACCEPT_NON_MANIFOLD
+    if check_intersections:
+        flags |= _header.POLYMASS_OPTION_CHECK_INTERSECTIONS
     if _weld_tolerance(weld) is not None:
         flags |= _header.POLYMASS_OPTION_WELD_VERTICES
         options.weld_tolerance = _weld_tolerance(weld)
     options.flags = flags
     options.planarity_tolerance = 0.0 if planarity_tolerance is None else planarity_tolerance
-    raise_for_status(lib.polymass_context_set_options(context, options), context)
+    return options

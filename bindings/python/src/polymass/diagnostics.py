@@ -22,13 +22,16 @@ _CALL_FAILURES = (
 )
 
 Edge = tuple[int, int]
+# Two face numbers, the lower first.
+FacePair = tuple[int, int]
 
 
 @dataclass(frozen=True)
 class Diagnostics:
     """What `check` found. Vertex numbers are the caller's indices (after welding:
-    the lowest index at that position). Each ``first_*`` tuple holds the first
-    (lowest) locations of the finding counted beside it, ascending: up to
+    the lowest index at that position); shells are numbered as `shells` numbers
+    them. Each ``first_*`` tuple holds the first (lowest) locations of the
+    finding counted beside it, ascending: up to
     ``POLYMASS_DIAGNOSTIC_LOCATIONS`` (8) of them, none when the count is 0."""
 
     status: int
@@ -59,6 +62,22 @@ class Diagnostics:
     """The largest off-plane distance of a polygon face's vertex, relative to its diameter."""
     signed_volume: float
     """Negative when every face is reversed; NaN when the faces could not be integrated."""
+    shell_count: int
+    """Shells (connected pieces) of the surface, counted once it is closed and oriented."""
+    inverted_shells: int
+    """Shells inside out (negative volume) that lie inside no solid shell."""
+    first_inverted_shells: tuple[int, ...]
+    overlapping_shells: int
+    """Shells inside a solid of the same sense, whose volume would count twice
+    (with check_intersections=True)."""
+    first_overlapping_shells: tuple[int, ...]
+    intersecting_face_pairs: int
+    """Pairs of faces that cross each other (with check_intersections=True)."""
+    first_intersecting_face_pairs: tuple[FacePair, ...]
+    touching_face_pairs: int
+    """Pairs of faces that touch without crossing nor sharing a vertex, such as
+    parts resting on each other: legal (with check_intersections=True)."""
+    first_touching_face_pairs: tuple[FacePair, ...]
 
     @property
     def ok(self) -> bool:
@@ -76,7 +95,7 @@ class Diagnostics:
             raise error_class(self.status)(self.message, self.status)
 
 
-def _locations(values) -> tuple[int, ...] | tuple[Edge, ...]:
+def _locations(values) -> tuple[int, ...] | tuple[Edge, ...] | tuple[FacePair, ...]:
     """The set entries of a ``first_*`` array: those before the first POLYMASS_NONE."""
     found = []
     for value in values:
@@ -100,12 +119,19 @@ def check(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
+    check_intersections: bool = False,
 ) -> Diagnostics:
     """Runs every check on a surface without stopping at the first finding.
 
     Takes the arguments of `mass_properties` (the topology checks always run).
     Problems with the mesh are reported in the result, not raised; problems with
     the call itself (InvalidArgumentError, OutOfMemoryError) are raised.
+
+    Call it with ``check_intersections=True`` unless you know the surface does
+    not overlap itself: only then are crossing and touching faces and shells
+    nested twice found (IntersectingSurfaceError, with the face pairs). It costs
+    about as much again as the topology checks. It is off by default so that
+    the report matches what `mass_properties` with its defaults would do.
     """
     mesh = mesh_description(vertices, faces, face_sizes)
     ctx = context()
@@ -115,6 +141,7 @@ def check(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
+        check_intersections=check_intersections,
     )
     report = new_struct("polymass_diagnostics")
     status = lib.polymass_mesh_check(report, ctx, mesh.desc)
@@ -146,7 +173,8 @@ def shells(
     tolerance) vertices at the same position are one first, so a triangle soup
     splits as its solid does. Indices out of range and non-finite coordinates
     raise, as in `mass_properties`; the topology is not checked. Each shell can
-    then be checked or computed on its own (a cavity has a negative volume).
+    then be checked or computed on its own (a cavity has a negative volume);
+    `shell_list` says what each one is.
     """
     mesh = mesh_description(vertices, faces, face_sizes)
     ctx = context()
@@ -159,3 +187,87 @@ def shells(
     )
     raise_for_status(status, ctx)
     return of_face
+
+
+# POLYMASS_SHELL_* as the names `Shell.kind` takes.
+_SHELL_KINDS = {
+    _header.POLYMASS_SHELL_SOLID: "solid",
+    _header.POLYMASS_SHELL_CAVITY: "cavity",
+    _header.POLYMASS_SHELL_INVERTED: "inverted",
+    _header.POLYMASS_SHELL_OVERLAPPING: "overlapping",
+    _header.POLYMASS_SHELL_NO_VOLUME: "no_volume",
+}
+# Room for this many shells in the first call: most surfaces need no second one.
+_SHELLS_FIRST_GUESS = 16
+
+
+@dataclass(frozen=True)
+class Shell:
+    """One shell of a closed surface, as `shell_list` describes it."""
+
+    kind: str
+    """"solid" (positive volume, in no other solid), "cavity" (negative, inside a
+    solid), "inverted" (negative, inside no solid: inside out), "overlapping"
+    (inside a solid of the same sense: counted twice), "no_volume" (encloses no
+    volume, to rounding), or "unknown" for a kind this binding predates."""
+    face_count: int
+    first_face: int
+    """The lowest face number of the shell."""
+    signed_volume: float
+    """Signed so that the whole surface's volume is positive (a surface accepted
+    inside out with accept_inverted counts turned): a cavity's is negative."""
+
+
+def shell_list(
+    vertices: npt.ArrayLike,
+    faces: FacesLike,
+    *,
+    face_sizes: npt.ArrayLike | None = None,
+    weld: Weld = False,
+    accept_inverted: bool = False,
+    accept_non_manifold: bool = False,
+    planarity_tolerance: float | None = None,
+    check_intersections: bool = False,
+) -> list[Shell]:
+    """What each shell of a closed surface is: a list of `Shell`, shell i being
+    the one `shells` numbers i.
+
+    Takes the arguments of `mass_properties`. The surface must pass the checks
+    that come before the shells (closed, manifold, oriented, planar, with a
+    volume): otherwise their exception is raised. The shells are described
+    whether or not they pass themselves, so an inside-out or overlapping shell
+    is listed rather than raised. With ``check_intersections=True`` the nesting
+    of the shells is counted exactly; without, it is judged by bounding boxes,
+    which can show a shell to be inside out but take any negative shell within a
+    solid's box for a cavity.
+    """
+    mesh = mesh_description(vertices, faces, face_sizes)
+    ctx = context()
+    apply_options(
+        ctx,
+        weld=weld,
+        accept_inverted=accept_inverted,
+        accept_non_manifold=accept_non_manifold,
+        planarity_tolerance=planarity_tolerance,
+        check_intersections=check_intersections,
+    )
+    count = ffi.new("uint64_t *")
+    capacity = _SHELLS_FIRST_GUESS
+    while True:
+        described = ffi.new("polymass_shell[]", capacity)
+        for shell in described:
+            shell.struct_size = ffi.sizeof("polymass_shell")
+        status = lib.polymass_mesh_shell_list(described, capacity, count, ctx, mesh.desc)
+        raise_for_status(status, ctx)
+        if count[0] <= capacity:
+            break
+        capacity = count[0]
+    return [
+        Shell(
+            kind=_SHELL_KINDS.get(shell.kind, "unknown"),
+            face_count=shell.face_count,
+            first_face=shell.first_face,
+            signed_volume=shell.signed_volume,
+        )
+        for shell in described[0 : count[0]]
+    ]

@@ -88,8 +88,17 @@ class NonPlanarFaceError(TopologyError):
     status = _header.POLYMASS_ERROR_NON_PLANAR_FACE
 
 
+class IntersectingSurfaceError(Error, ValueError):
+    """Faces cross each other, or a shell lies inside a solid of the same sense: some region
+    would be counted twice (overlapping parts, a surface folded through itself). Found when
+    ``check_intersections=True``; the message names a pair of faces (or the shell)."""
+
+    status = _header.POLYMASS_ERROR_INTERSECTING
+
+
 class InvertedError(Error, ValueError):
-    """Every face is reversed (negative volume); see ``accept_inverted``."""
+    """Every face is reversed (negative volume), or one shell is inside out while lying inside
+    no solid shell; see ``accept_inverted``."""
 
     status = _header.POLYMASS_ERROR_INVERTED
 
@@ -125,6 +134,7 @@ _BY_STATUS: dict[int, type[Error]] = {
         NonManifoldError,
         InconsistentOrientationError,
         NonPlanarFaceError,
+        IntersectingSurfaceError,
         InvertedError,
         ZeroVolumeError,
         ZeroAreaError,

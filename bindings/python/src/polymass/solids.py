@@ -43,12 +43,34 @@ class Warnings(enum.IntFlag):
     """The topology checks were skipped (skip_checks=True)."""
     NON_MANIFOLD = _header.POLYMASS_WARNING_NON_MANIFOLD
     """Non-manifold edges were accepted (accept_non_manifold=True)."""
+    TOUCHING_FACES = _header.POLYMASS_WARNING_TOUCHING_FACES
+    """Faces touch without crossing, such as parts resting on each other: found by
+    check_intersections=True, where `check` lists the face pairs."""
 
 
 def _frozen(values, shape: tuple[int, ...]) -> np.ndarray:
     array = np.array(ffi.unpack(values, int(np.prod(shape))), dtype=np.float64).reshape(shape)
     array.setflags(write=False)
     return array
+
+
+@dataclass(frozen=True)
+class ErrorBound:
+    """Bounds on the rounding errors of a result, absolute, in its units (docs/error_bound.md).
+
+    They hold for the surface as given (its coordinates taken as exact).
+    volume: L^3. center_of_mass: L, of each coordinate. inertia: M*L^2, of each
+    entry of the tensor about the centre of mass. principal_moments: of each.
+    principal_axes: radians, of each axis the moments determine: it grows as
+    two moments approach each other, and is pi/2 when they are closer than
+    their bounds tell apart.
+    """
+
+    volume: float
+    center_of_mass: float
+    inertia: float
+    principal_moments: float
+    principal_axes: float
 
 
 # eq=False: arrays have no single truth value, so a field-wise == would raise.
@@ -67,6 +89,7 @@ class MassProperties:
     principal_axes: (3, 3) rotation R (det R = +1) whose columns are the
         principal axes: inertia = R @ diag(principal_moments) @ R.T.
     warnings: what was accepted (see `Warnings`).
+    error_bound: bounds on the rounding errors (see `ErrorBound`).
     """
 
     volume: float
@@ -81,6 +104,7 @@ class MassProperties:
     principal_moments: np.ndarray
     principal_axes: np.ndarray
     warnings: Warnings
+    error_bound: ErrorBound
 
     @classmethod
     def _from_c(cls, result, point: np.ndarray | None) -> MassProperties:
@@ -100,6 +124,13 @@ class MassProperties:
             principal_moments=_frozen(result.principal_moments, (3,)),
             principal_axes=_frozen(result.principal_axes, (3, 3)),
             warnings=Warnings(result.warnings),
+            error_bound=ErrorBound(
+                volume=result.error_bound_volume,
+                center_of_mass=result.error_bound_center_of_mass,
+                inertia=result.error_bound_inertia,
+                principal_moments=result.error_bound_principal_moments,
+                principal_axes=result.error_bound_principal_axes,
+            ),
         )
 
 
@@ -150,6 +181,7 @@ def mass_properties(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
+    check_intersections: bool = False,
 ) -> MassProperties:
     """Volume, mass, centre of mass, inertia and principal axes of a closed surface.
 
@@ -180,6 +212,14 @@ def mass_properties(
         are traversed as often one way as the other (solids touching at an edge).
     planarity_tolerance: how far a polygon face's vertex may be off its plane,
         relative to the face's diameter (None or 0: 1e-6).
+    check_intersections: also refuse, with IntersectingSurfaceError, faces that
+        cross each other and shells inside a solid of the same sense (whose
+        volume would be counted twice: overlapping parts exported as one file),
+        judging how shells nest exactly; faces that only touch give
+        Warnings.TOUCHING_FACES. It costs about as much again as the topology
+        checks, so it is off by default (a load path of trusted meshes need not
+        pay it); turn it on for meshes from the outside world. It never changes
+        a result it accepts.
 
     Returns a `MassProperties`; raises a subclass of `polymass.Error` saying what
     is wrong and where. The GIL is released while the library computes.
@@ -192,6 +232,7 @@ def mass_properties(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
+        check_intersections=check_intersections,
     )
     return _properties(
         lib.polymass_mass_properties_compute, mesh.desc, density=density, mass=mass, about=about
@@ -217,6 +258,7 @@ class Mesh:
         accept_inverted: bool = False,
         accept_non_manifold: bool = False,
         planarity_tolerance: float | None = None,
+        check_intersections: bool = False,
     ) -> None:
         mesh = mesh_description(vertices, faces, face_sizes)
         ctx = context()
@@ -227,6 +269,7 @@ class Mesh:
             accept_inverted=accept_inverted,
             accept_non_manifold=accept_non_manifold,
             planarity_tolerance=planarity_tolerance,
+            check_intersections=check_intersections,
         )
         out = ffi.new("polymass_mesh**")
         raise_for_status(lib.polymass_mesh_create(out, ctx, mesh.desc), ctx)

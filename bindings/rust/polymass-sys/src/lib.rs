@@ -4,10 +4,10 @@
 //! Every `polymass_*` function, `polymass_*` struct and `POLYMASS_*` constant
 //! of the header is here under its C name; the header's comments are the
 //! documentation. The constants are typed like the C values they are compared
-//! with: statuses and orientations `i32`, `POLYMASS_NONE` `u64`, the rest
-//! `u32`. There are no Rust enums: a value the bindings do not know (a status
-//! added by a newer library) stays a plain integer instead of being undefined
-//! behaviour.
+//! with: statuses, orientations and shell kinds `i32`, `POLYMASS_NONE` `u64`,
+//! the rest `u32`. There are no Rust enums: a value the bindings do not know (a
+//! status added by a newer library) stays a plain integer instead of being
+//! undefined behaviour.
 //!
 //! Use the safe `polymass` crate unless you need the C API itself. How the
 //! library is found (`POLYMASS_LIB_DIR`, pkg-config, the project's build tree)

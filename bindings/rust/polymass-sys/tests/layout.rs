@@ -35,6 +35,11 @@ fn struct_sizes_match_the_library() {
                 sys::polymass_sizeof_mass_desc(),
             ),
             (
+                "polymass_moments",
+                size_of_u32::<sys::polymass_moments>(),
+                sys::polymass_sizeof_moments(),
+            ),
+            (
                 "polymass_mass_properties",
                 size_of_u32::<sys::polymass_mass_properties>(),
                 sys::polymass_sizeof_mass_properties(),
@@ -48,6 +53,11 @@ fn struct_sizes_match_the_library() {
                 "polymass_polygon_properties",
                 size_of_u32::<sys::polymass_polygon_properties>(),
                 sys::polymass_sizeof_polygon_properties(),
+            ),
+            (
+                "polymass_shell",
+                size_of_u32::<sys::polymass_shell>(),
+                sys::polymass_sizeof_shell(),
             ),
         ]
     };
@@ -85,6 +95,7 @@ fn every_status_has_a_name_and_unknown_codes_say_so() {
         sys::POLYMASS_ERROR_NON_MANIFOLD,
         sys::POLYMASS_ERROR_INCONSISTENT_ORIENTATION,
         sys::POLYMASS_ERROR_NON_PLANAR_FACE,
+        sys::POLYMASS_ERROR_INTERSECTING,
         sys::POLYMASS_ERROR_INVERTED,
         sys::POLYMASS_ERROR_ZERO_VOLUME,
         sys::POLYMASS_ERROR_ZERO_AREA,

@@ -11,9 +11,11 @@ use crate::body::Body;
 use crate::diagnostics::Diagnostics;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
+use crate::moments::Moments;
 use crate::options::Options;
 use crate::polygon::PolygonProperties;
 use crate::properties::MassProperties;
+use crate::shell::Shell;
 use crate::surface::{struct_size, Surface};
 
 /// A context: the [`Options`] calls use and the message of the last failure.
@@ -226,6 +228,11 @@ impl Context {
     /// tolerances apply). A bad surface is not an `Err`: its failure is in
     /// [`Diagnostics::error`]. `Err` means no report could be made.
     ///
+    /// Check with [`Options::check_intersections`] on unless the surface is
+    /// known not to overlap itself: only then are crossing faces, shells
+    /// nested twice and touching faces found. It costs about as much again as
+    /// the topology checks.
+    ///
     /// ```
     /// use polymass::{Context, Surface};
     ///
@@ -312,6 +319,71 @@ impl Context {
         Ok(of_face)
     }
 
+    /// What each shell of a closed surface is: shell `i` of the list is the
+    /// one [`shells`](Context::shells) numbers `i`. The surface must pass the
+    /// checks that come before the shells (closed, manifold, oriented,
+    /// planar, with a volume), otherwise their error; the shells are
+    /// described whether or not they pass themselves, so an inside-out or
+    /// overlapping shell is listed, not an `Err`. With
+    /// [`Options::check_intersections`] the nesting of the shells is counted
+    /// exactly; without, it is judged by bounding boxes, which can show a
+    /// shell to be inside out but take any negative shell within a solid's
+    /// box for a cavity. Fails with
+    /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) when
+    /// the options skip the topology checks.
+    ///
+    /// ```
+    /// use polymass::{Context, Options, ShellKind, Surface};
+    ///
+    /// // A tetrahedron with legs 4 and, inside it, a cavity: a unit tetrahedron
+    /// // moved by (0.5, 0.5, 0.5), its faces reversed.
+    /// let positions = [
+    ///     [0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0],
+    ///     [0.5, 0.5, 0.5], [1.5, 0.5, 0.5], [0.5, 1.5, 0.5], [0.5, 0.5, 1.5],
+    /// ];
+    /// let triangles = [
+    ///     [0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3],
+    ///     [4, 5, 6], [4, 7, 5], [4, 6, 7], [5, 7, 6],
+    /// ];
+    /// let mut context = Context::with_options(&Options::new().check_intersections(true))?;
+    /// let shells = context.shell_list(&Surface::triangles(&positions, &triangles))?;
+    /// let kinds: Vec<ShellKind> = shells.iter().map(|shell| shell.kind).collect();
+    /// assert_eq!(kinds, [ShellKind::Solid, ShellKind::Cavity]);
+    /// assert!((shells[1].signed_volume + 1.0 / 6.0).abs() < 1e-15);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn shell_list(&mut self, surface: &Surface<'_>) -> Result<Vec<Shell>> {
+        // Room for this many in the first call: most surfaces need no second.
+        const FIRST_GUESS: usize = 16;
+        let desc = surface.desc();
+        let blank = sys::polymass_shell {
+            struct_size: struct_size::<sys::polymass_shell>(),
+            ..Default::default()
+        };
+        let mut described = vec![blank; FIRST_GUESS];
+        loop {
+            let mut count = 0u64;
+            // SAFETY: live context, this thread only; desc points into slices
+            // borrowed by `surface`; `described` holds as many shells, each
+            // with struct_size set, as the capacity passed.
+            let status = unsafe {
+                sys::polymass_mesh_shell_list(
+                    described.as_mut_ptr(),
+                    described.len() as u64,
+                    &mut count,
+                    self.raw.as_ptr(),
+                    &desc,
+                )
+            };
+            self.result(status)?;
+            let count = usize::try_from(count).expect("shells fit in memory as faces do");
+            if count <= described.len() {
+                return Ok(described[..count].iter().map(Shell::from_raw).collect());
+            }
+            described.resize(count, blank);
+        }
+    }
+
     /// Area, centroid and second moments of area of a simple polygon in the
     /// xy plane, convex or not, either orientation. The polygon closes itself:
     /// do not repeat the first point. Self-intersections are not detected.
@@ -346,6 +418,183 @@ impl Context {
         Ok(PolygonProperties::from_raw(unsafe {
             out.assume_init_ref()
         }))
+    }
+
+    /// The moments (unit density) of a closed surface, checked with this
+    /// context's options.
+    ///
+    /// ```
+    /// use polymass::{Context, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let moments = Context::new()?.moments(&Surface::triangles(&positions, &triangles))?;
+    /// assert!((moments.volume() - 1.0 / 6.0).abs() < 1e-16);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn moments(&mut self, surface: &Surface<'_>) -> Result<Moments> {
+        let desc = surface.desc();
+        self.moments_call(|out, context| unsafe {
+            // SAFETY: desc points into slices borrowed by `surface`; NULL
+            // options: the context's. See moments_call.
+            sys::polymass_moments_compute(out, context, &desc, ptr::null())
+        })
+    }
+
+    /// The moments of the faces `faces` of a surface about `reference` (the
+    /// same point for every range of one surface), for a caller's own
+    /// threads: the ranges added up, then
+    /// [`completed`](Moments::completed), are the surface's moments.
+    ///
+    /// ```
+    /// use polymass::{Context, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let surface = Surface::triangles(&positions, &triangles);
+    /// let mut context = Context::new()?;
+    /// let at = [0.25, 0.25, 0.25];
+    /// let sum = (context.moments_of_faces(&surface, 0..1, at)?
+    ///     + context.moments_of_faces(&surface, 1..4, at)?)?;
+    /// assert!(sum.is_partial());
+    /// assert!((sum.completed().volume() - 1.0 / 6.0).abs() < 1e-16);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn moments_of_faces(
+        &mut self,
+        surface: &Surface<'_>,
+        faces: std::ops::Range<usize>,
+        reference: [f64; 3],
+    ) -> Result<Moments> {
+        let desc = surface.desc();
+        let count = faces.end.saturating_sub(faces.start);
+        self.moments_call(|out, context| unsafe {
+            // SAFETY: desc points into slices borrowed by `surface`;
+            // reference has 3 elements. See moments_call.
+            sys::polymass_moments_compute_faces(
+                out,
+                context,
+                &desc,
+                faces.start as u64,
+                count as u64,
+                reference.as_ptr(),
+                ptr::null(),
+            )
+        })
+    }
+
+    /// See [`Moments::mass_properties`].
+    pub fn moments_mass_properties(
+        &mut self,
+        moments: &Moments,
+        body: Option<&Body>,
+    ) -> Result<MassProperties> {
+        let mass = body.map(|body| body.to_raw());
+        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
+        // SAFETY: as in mesh_mass_properties.
+        unsafe { (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>() };
+        // SAFETY: live context, this thread only; moments, mass and out
+        // outlive the call; NULL mass: as the moments are weighted.
+        let status = unsafe {
+            sys::polymass_moments_mass_properties(
+                out.as_mut_ptr(),
+                self.raw.as_ptr(),
+                moments.as_raw(),
+                mass.as_ref().map_or(ptr::null(), |mass| mass as *const _),
+            )
+        };
+        self.result(status)?;
+        // SAFETY: zero-initialised, and filled on success.
+        Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
+    }
+
+    /// The mass properties of many surfaces in one call, in order: each item
+    /// its own result, bit for bit [`mass_properties`](Context::mass_properties)'s,
+    /// or its own error, which does not stop the others. The outer `Err` is a
+    /// failure of the call itself.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, ErrorKind, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let closed = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
+    /// let items = [
+    ///     (Surface::triangles(&positions, &closed), Body::density(2.0)),
+    ///     (Surface::triangles(&positions, &open), Body::default()),
+    /// ];
+    /// let results = Context::new()?.batch(&items)?;
+    /// assert!((results[0].as_ref().unwrap().mass - 2.0 / 6.0).abs() < 1e-15);
+    /// assert_eq!(results[1].as_ref().unwrap_err().kind(), ErrorKind::Open);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn batch(&mut self, items: &[(Surface<'_>, Body)]) -> Result<Vec<Result<MassProperties>>> {
+        let descs: Vec<sys::polymass_mesh_desc> =
+            items.iter().map(|(surface, _)| surface.desc()).collect();
+        let masses: Vec<sys::polymass_mass_desc> =
+            items.iter().map(|(_, body)| body.to_raw()).collect();
+        let mut results = vec![
+            sys::polymass_mass_properties {
+                struct_size: struct_size::<sys::polymass_mass_properties>(),
+                ..Default::default()
+            };
+            items.len()
+        ];
+        let mut raw: Vec<sys::polymass_batch_item> = descs
+            .iter()
+            .zip(&masses)
+            .zip(results.iter_mut())
+            .map(|((desc, mass), result)| sys::polymass_batch_item {
+                struct_size: struct_size::<sys::polymass_batch_item>(),
+                status: 0,
+                desc,
+                mass,
+                options: ptr::null(),
+                properties: result,
+                message: [0; sys::POLYMASS_BATCH_MESSAGE_SIZE as usize],
+            })
+            .collect();
+        let mut failed = 0u64;
+        // SAFETY: live context, this thread only; every item points into
+        // descs, masses and results (alive and not moved during the call),
+        // and the descs into slices borrowed by `items`.
+        let status = unsafe {
+            sys::polymass_batch_compute(
+                raw.as_mut_ptr(),
+                raw.len() as u64,
+                &mut failed,
+                self.raw.as_ptr(),
+            )
+        };
+        self.result(status)?;
+        Ok(raw
+            .iter()
+            .zip(&results)
+            .map(|(item, result)| {
+                if item.status == sys::POLYMASS_OK {
+                    return Ok(MassProperties::from_raw(result));
+                }
+                // SAFETY: the library NUL-terminates the message within the array.
+                let message = unsafe { CStr::from_ptr(item.message.as_ptr()) };
+                Err(Error::new(
+                    item.status,
+                    message.to_string_lossy().into_owned(),
+                ))
+            })
+            .collect())
+    }
+
+    /// Runs a `polymass_moments_*` call writing to a fresh output struct
+    /// through this context. `call` must pass the pointers it gets and
+    /// arguments that outlive it.
+    pub(crate) fn moments_call(
+        &mut self,
+        call: impl FnOnce(*mut sys::polymass_moments, *mut sys::polymass_context) -> i32,
+    ) -> Result<Moments> {
+        let mut out = Moments::empty();
+        let status = call(&mut out, self.raw.as_ptr());
+        self.result(status)?;
+        Ok(Moments::from_raw(out))
     }
 
     /// `Ok` for POLYMASS_OK, otherwise the error with this context's message

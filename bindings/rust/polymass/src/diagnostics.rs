@@ -15,9 +15,9 @@ use crate::error::Error;
 pub struct Occurrences<L> {
     /// How many there are.
     pub count: u64,
-    /// The first (lowest) of them, ascending: faces, vertices or edges as the
-    /// caller's indices, at most [`LOCATIONS`](crate::LOCATIONS); empty when
-    /// there is none.
+    /// The first (lowest) of them, ascending: faces, vertices, shells, edges
+    /// or face pairs as the caller's indices, at most
+    /// [`LOCATIONS`](crate::LOCATIONS); empty when there is none.
     pub first: Vec<L>,
 }
 
@@ -49,7 +49,9 @@ impl Occurrences<[u64; 2]> {
 
 /// The report of [`check`](crate::check): every check run to the end, with
 /// counts and first few locations. Vertex numbers are the caller's indices
-/// (after welding: the lowest index at that position); edges are vertex pairs.
+/// (after welding: the lowest index at that position); edges are vertex pairs,
+/// face pairs `[lower, higher]`; shells are numbered as
+/// [`Context::shells`](crate::Context::shells) numbers them.
 ///
 /// ```
 /// use polymass::{ErrorKind, Surface};
@@ -96,6 +98,21 @@ pub struct Diagnostics {
     /// Signed enclosed volume (negative for an inverted solid); `None` when
     /// the faces could not be integrated.
     pub signed_volume: Option<f64>,
+    /// Shells (connected pieces) of the surface, counted once it is closed
+    /// and oriented; 0 before.
+    pub shell_count: u64,
+    /// Shells inside out (negative volume) that lie inside no solid shell.
+    pub inverted_shells: Occurrences<u64>,
+    /// Shells inside a solid of the same sense, whose volume would count
+    /// twice (with [`Options::check_intersections`](crate::Options::check_intersections)).
+    pub overlapping_shells: Occurrences<u64>,
+    /// Pairs of faces that cross each other (with
+    /// [`Options::check_intersections`](crate::Options::check_intersections)).
+    pub intersecting_face_pairs: Occurrences<[u64; 2]>,
+    /// Pairs of faces that touch without crossing nor sharing a vertex, such
+    /// as parts resting on each other: legal (with
+    /// [`Options::check_intersections`](crate::Options::check_intersections)).
+    pub touching_face_pairs: Occurrences<[u64; 2]>,
 }
 
 impl Diagnostics {
@@ -133,6 +150,23 @@ impl Diagnostics {
             ),
             max_non_planarity: raw.max_non_planarity,
             signed_volume: (!raw.signed_volume.is_nan()).then_some(raw.signed_volume),
+            shell_count: raw.shell_count,
+            inverted_shells: Occurrences::<u64>::new(
+                raw.inverted_shells,
+                &raw.first_inverted_shells,
+            ),
+            overlapping_shells: Occurrences::<u64>::new(
+                raw.overlapping_shells,
+                &raw.first_overlapping_shells,
+            ),
+            intersecting_face_pairs: Occurrences::<[u64; 2]>::new(
+                raw.intersecting_face_pairs,
+                &raw.first_intersecting_face_pairs,
+            ),
+            touching_face_pairs: Occurrences::<[u64; 2]>::new(
+                raw.touching_face_pairs,
+                &raw.first_touching_face_pairs,
+            ),
         }
     }
 

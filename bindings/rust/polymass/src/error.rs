@@ -5,6 +5,8 @@ use std::fmt;
 
 use polymass_sys as sys;
 
+use crate::codes::{known_code, known_kind};
+
 /// A `Result` whose error is a [`polymass::Error`](Error).
 pub type Result<T> = std::result::Result<T, Error>;
 
@@ -47,7 +49,14 @@ pub enum ErrorKind {
     InconsistentOrientation,
     /// A polygon face's vertices are off its plane by more than the tolerance.
     NonPlanarFace,
-    /// The enclosed volume is negative: every face is reversed.
+    /// Faces cross each other, or a shell lies inside a solid of the same
+    /// sense: some region would be counted twice (overlapping parts exported
+    /// as one file, a surface folded through itself). Found with
+    /// [`Options::check_intersections`](crate::Options::check_intersections);
+    /// the message names a pair of faces, or the shell.
+    Intersecting,
+    /// The enclosed volume is negative: every face is reversed, or one shell
+    /// is inside out while lying inside no solid shell.
     Inverted,
     /// The surface encloses no volume, e.g. a flat double-sided sheet.
     ZeroVolume,
@@ -61,7 +70,7 @@ pub enum ErrorKind {
 }
 
 /// Each known kind with its status code: the one table both directions use.
-const KNOWN_KINDS: [(ErrorKind, i32); 14] = [
+const KNOWN_KINDS: [(ErrorKind, i32); 15] = [
     (
         ErrorKind::InvalidArgument,
         sys::POLYMASS_ERROR_INVALID_ARGUMENT,
@@ -84,6 +93,7 @@ const KNOWN_KINDS: [(ErrorKind, i32); 14] = [
         ErrorKind::NonPlanarFace,
         sys::POLYMASS_ERROR_NON_PLANAR_FACE,
     ),
+    (ErrorKind::Intersecting, sys::POLYMASS_ERROR_INTERSECTING),
     (ErrorKind::Inverted, sys::POLYMASS_ERROR_INVERTED),
     (ErrorKind::ZeroVolume, sys::POLYMASS_ERROR_ZERO_VOLUME),
     (ErrorKind::ZeroArea, sys::POLYMASS_ERROR_ZERO_AREA),
@@ -102,8 +112,7 @@ impl ErrorKind {
         if code == sys::POLYMASS_OK {
             return None;
         }
-        let known = KNOWN_KINDS.iter().find(|(_, known)| *known == code);
-        Some(known.map_or(ErrorKind::Unknown(code), |(kind, _)| *kind))
+        Some(known_kind(&KNOWN_KINDS, code).unwrap_or(ErrorKind::Unknown(code)))
     }
 
     /// The C status code (`POLYMASS_ERROR_*`).
@@ -116,11 +125,7 @@ impl ErrorKind {
     pub fn code(self) -> i32 {
         match self {
             ErrorKind::Unknown(code) => code,
-            known => KNOWN_KINDS
-                .iter()
-                .find(|(kind, _)| *kind == known)
-                .map(|(_, code)| *code)
-                .expect("every known kind is in KNOWN_KINDS"),
+            known => known_code(&KNOWN_KINDS, known),
         }
     }
 

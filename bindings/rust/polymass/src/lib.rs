@@ -29,8 +29,10 @@
 //! outside. The library checks everything (indices, finiteness, closed,
 //! manifold, consistently oriented, planar polygons, not inverted): bad input
 //! gives an [`Error`], never a crash. [`Options`] relax the checks (welding
-//! for STL triangle soups, trusted input, inverted solids); [`check`] reports
-//! every problem of a surface at once.
+//! for STL triangle soups, trusted input, inverted solids) or add one: faces
+//! crossing each other and shells nested twice, whose volume would count
+//! twice ([`Options::check_intersections`]); [`check`] reports every problem
+//! of a surface at once, [`shell_list`] what each shell is.
 //!
 //! # Conventions
 //! No units of its own: lengths in L, density in M/L³ ([`Body`]), mass in M,
@@ -41,9 +43,9 @@
 //! # Contexts and threads
 //! The C library keeps options and the last error message in a context that
 //! one thread uses at a time. Here:
-//! - the free functions [`mass_properties`], [`check`] and [`polygon`], and
-//!   [`Mesh::new`]/[`Mesh::mass_properties`], make a context for the call:
-//!   nothing to manage, and any thread may call them;
+//! - the free functions [`mass_properties`], [`check`], [`shell_list`] and
+//!   [`polygon`], and [`Mesh::new`]/[`Mesh::mass_properties`], make a
+//!   context for the call: nothing to manage, and any thread may call them;
 //! - a [`Context`] (`Send`, not `Sync`) holds [`Options`] and is reused
 //!   across calls, one thread at a time;
 //! - a [`Mesh`] (`Send + Sync`) is a surface validated and integrated once,
@@ -56,13 +58,16 @@
 #![warn(missing_docs)]
 
 mod body;
+mod codes;
 mod context;
 mod diagnostics;
 mod error;
 mod mesh;
+mod moments;
 mod options;
 mod polygon;
 mod properties;
+mod shell;
 mod surface;
 
 use std::ffi::CStr;
@@ -72,9 +77,11 @@ pub use context::Context;
 pub use diagnostics::{Diagnostics, Occurrences};
 pub use error::{Error, ErrorKind, Result};
 pub use mesh::Mesh;
+pub use moments::Moments;
 pub use options::Options;
 pub use polygon::{Orientation, PolygonProperties, SecondMoments};
-pub use properties::{MassProperties, Warnings};
+pub use properties::{ErrorBound, MassProperties, Warnings};
+pub use shell::{Shell, ShellKind};
 pub use surface::{Index, Surface, Vertex};
 
 /// How many locations [`Occurrences::first`] lists at most: the C library's
@@ -109,8 +116,26 @@ pub fn mass_properties(surface: &Surface<'_>, body: &Body) -> Result<MassPropert
     Context::new()?.mass_properties(surface, body)
 }
 
+/// The mass properties of many surfaces in one call, with the default
+/// options; see [`Context::batch`].
+///
+/// ```
+/// use polymass::{Body, Surface};
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let surface = Surface::triangles(&positions, &triangles);
+/// let results = polymass::batch(&[(surface, Body::default()), (surface, Body::mass(1.0))])?;
+/// assert_eq!(results.len(), 2);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+pub fn batch(items: &[(Surface<'_>, Body)]) -> Result<Vec<Result<MassProperties>>> {
+    Context::new()?.batch(items)
+}
+
 /// Every check of a surface, run to the end, with the default options; see
-/// [`Context::check`].
+/// [`Context::check`]. The default options do not look for crossing faces:
+/// for that, use a [`Context`] with [`Options::check_intersections`].
 ///
 /// ```
 /// use polymass::Surface;
@@ -123,6 +148,35 @@ pub fn mass_properties(surface: &Surface<'_>, body: &Body) -> Result<MassPropert
 /// ```
 pub fn check(surface: &Surface<'_>) -> Result<Diagnostics> {
     Context::new()?.check(surface)
+}
+
+/// What each shell of a closed surface is, with the default options; see
+/// [`Context::shell_list`]. The default options do not count how shells
+/// nest: for that, use a [`Context`] with [`Options::check_intersections`].
+///
+/// ```
+/// use polymass::{ErrorKind, Surface};
+///
+/// // A unit tetrahedron and, apart, a smaller one inside out.
+/// let positions = [
+///     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0],
+///     [3.0, 0.0, 0.0], [3.5, 0.0, 0.0], [3.0, 0.5, 0.0], [3.0, 0.0, 0.5],
+/// ];
+/// let triangles = [
+///     [0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3],
+///     [4, 5, 6], [4, 7, 5], [4, 6, 7], [5, 7, 6],
+/// ];
+/// let surface = Surface::triangles(&positions, &triangles);
+/// let shells = polymass::shell_list(&surface)?;
+/// assert_eq!(shells[1].kind, polymass::ShellKind::Inverted);
+/// assert!((shells[1].signed_volume + 1.0 / 48.0).abs() < 1e-16);
+/// // Which is why the surface is refused.
+/// let error = polymass::mass_properties(&surface, &Default::default()).unwrap_err();
+/// assert_eq!(error.kind(), ErrorKind::Inverted);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+pub fn shell_list(surface: &Surface<'_>) -> Result<Vec<Shell>> {
+    Context::new()?.shell_list(surface)
 }
 
 /// Area properties of a simple polygon in the xy plane; see

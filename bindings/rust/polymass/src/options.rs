@@ -91,6 +91,43 @@ impl Options {
         self.with_flag(sys::POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, on)
     }
 
+    /// Also refuse, with [`ErrorKind::Intersecting`](crate::ErrorKind::Intersecting),
+    /// faces that cross each other and shells inside a solid of the same
+    /// sense (their volume would be counted twice: overlapping parts exported
+    /// as one file), judging how shells nest exactly; faces that only touch
+    /// give [`Warnings::TOUCHING_FACES`](crate::Warnings::TOUCHING_FACES). It
+    /// costs about as much again as the topology checks, so it is off by
+    /// default (an engine's load path of trusted meshes need not pay it); turn
+    /// it on for meshes from the outside world, and for
+    /// [`Context::check`](crate::Context::check). It never changes a result it
+    /// accepts.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, ErrorKind, Options, Surface};
+    ///
+    /// // Two unit tetrahedra, the second moved by (0.25, 0.25, 0.25) into the first.
+    /// let positions = [
+    ///     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0],
+    ///     [0.25, 0.25, 0.25], [1.25, 0.25, 0.25], [0.25, 1.25, 0.25], [0.25, 0.25, 1.25],
+    /// ];
+    /// let triangles = [
+    ///     [0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3],
+    ///     [4, 6, 5], [4, 5, 7], [4, 7, 6], [5, 6, 7],
+    /// ];
+    /// let surface = Surface::triangles(&positions, &triangles);
+    /// // Without the check the overlap is counted twice.
+    /// let twice = polymass::mass_properties(&surface, &Body::default())?;
+    /// assert!((twice.volume - 2.0 / 6.0).abs() < 1e-15);
+    /// let mut context = Context::with_options(&Options::new().check_intersections(true))?;
+    /// let error = context.mass_properties(&surface, &Body::default()).unwrap_err();
+    /// assert_eq!(error.kind(), ErrorKind::Intersecting);
+    /// assert!(error.message().contains("cross each other"));
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn check_intersections(self, on: bool) -> Options {
+        self.with_flag(sys::POLYMASS_OPTION_CHECK_INTERSECTIONS, on)
+    }
+
     /// The largest distance of a polygon face's vertex from the face's plane,
     /// relative to the face's diameter; 0 means the library's default
     /// (`POLYMASS_DEFAULT_PLANARITY_TOLERANCE`, 1e-6).
@@ -152,6 +189,16 @@ impl Options {
     /// ```
     pub fn accepts_non_manifold(&self) -> bool {
         self.flags & sys::POLYMASS_OPTION_ACCEPT_NON_MANIFOLD != 0
+    }
+
+    /// Whether crossing faces and shells nested twice are looked for.
+    ///
+    /// ```
+    /// assert!(!polymass::Options::new().checks_intersections());
+    /// assert!(polymass::Options::new().check_intersections(true).checks_intersections());
+    /// ```
+    pub fn checks_intersections(&self) -> bool {
+        self.flags & sys::POLYMASS_OPTION_CHECK_INTERSECTIONS != 0
     }
 
     /// The planarity tolerance (0: the library's default; options read back

@@ -47,6 +47,40 @@ pub struct MassProperties {
     pub principal_axes: [[f64; 3]; 3],
     /// What was accepted on the way (all clear for a checked, proper solid).
     pub warnings: Warnings,
+    /// Bounds on the rounding errors of the results above.
+    pub error_bound: ErrorBound,
+}
+
+/// Bounds on the rounding errors of [`MassProperties`]: absolute, in the
+/// results' units, carried from the integration through the move to the
+/// centre of mass and the principal-axes step. They hold for the surface as
+/// given (its coordinates taken as exact).
+///
+/// ```
+/// use polymass::{Body, Surface};
+///
+/// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+/// let p = polymass::mass_properties(&Surface::triangles(&positions, &triangles), &Body::default())?;
+/// assert!((p.volume - 1.0 / 6.0).abs() <= p.error_bound.volume);
+/// assert!(p.error_bound.volume < 1e-12);
+/// # Ok::<(), polymass::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct ErrorBound {
+    /// Of the volume (L³).
+    pub volume: f64,
+    /// Of each coordinate of the centre of mass (L).
+    pub center_of_mass: f64,
+    /// Of each entry of the inertia tensor about the centre of mass (M·L²).
+    pub inertia: f64,
+    /// Of each principal moment.
+    pub principal_moments: f64,
+    /// Of the angle of each principal axis the moments determine (radians):
+    /// it grows as two moments approach each other, and is π/2 when they are
+    /// closer than their bounds tell apart.
+    pub principal_axes: f64,
 }
 
 impl MassProperties {
@@ -63,6 +97,13 @@ impl MassProperties {
             principal_moments: raw.principal_moments,
             principal_axes: matrix(&raw.principal_axes),
             warnings: Warnings(raw.warnings),
+            error_bound: ErrorBound {
+                volume: raw.error_bound_volume,
+                center_of_mass: raw.error_bound_center_of_mass,
+                inertia: raw.error_bound_inertia,
+                principal_moments: raw.error_bound_principal_moments,
+                principal_axes: raw.error_bound_principal_axes,
+            },
         }
     }
 }
@@ -98,6 +139,11 @@ impl Warnings {
     /// Balanced non-manifold edges were accepted
     /// ([`Options::accept_non_manifold`](crate::Options::accept_non_manifold)).
     pub const NON_MANIFOLD: Warnings = Warnings(sys::POLYMASS_WARNING_NON_MANIFOLD);
+    /// Faces touch without crossing, such as parts resting on each other;
+    /// found with
+    /// [`Options::check_intersections`](crate::Options::check_intersections),
+    /// and listed by [`Diagnostics::touching_face_pairs`](crate::Diagnostics::touching_face_pairs).
+    pub const TOUCHING_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_TOUCHING_FACES);
 
     /// Whether every bit of `other` is set.
     ///

@@ -227,6 +227,7 @@ fn every_status_code_maps_to_its_kind_and_back() {
         (21, ErrorKind::NonManifold),
         (22, ErrorKind::InconsistentOrientation),
         (23, ErrorKind::NonPlanarFace),
+        (24, ErrorKind::Intersecting),
         (30, ErrorKind::Inverted),
         (31, ErrorKind::ZeroVolume),
         (32, ErrorKind::ZeroArea),

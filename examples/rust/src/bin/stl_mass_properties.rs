@@ -41,8 +41,10 @@ fn run(path: &str, density: f64) -> Result<(), String> {
     let soup = binary_stl::parse(&bytes).map_err(|error| error.to_string())?;
     let surface = Surface::triangles(&soup.positions, &soup.triangles);
 
-    let mut context = Context::with_options(&Options::new().weld_vertices(true))
-        .map_err(|error| error.to_string())?;
+    // A file from elsewhere may hold parts that overlap: look for crossing
+    // faces too, so that their common volume is not counted twice.
+    let options = Options::new().weld_vertices(true).check_intersections(true);
+    let mut context = Context::with_options(&options).map_err(|error| error.to_string())?;
     // On failure, the full report says everything that is wrong, not just the
     // first problem.
     let properties = match context.mass_properties(&surface, &Body::density(density)) {

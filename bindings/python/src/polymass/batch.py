@@ -1,0 +1,91 @@
+"""Many meshes in one call: `batch`.
+
+Each item gets its own result or its own error; one item's failure does not
+stop the others. Results are bit for bit those of `mass_properties`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from ._arrays import mesh_description
+from ._library import context, ffi, lib, new_struct
+from ._options import Weld, call_options
+from .errors import Error, error_class, raise_for_status
+from .solids import About, MassProperties, _mass_desc
+
+
+def _per_item(value, count: int, name: str) -> list:
+    """A value for every item: one for all, or a sequence of ``count``."""
+    if value is None or np.ndim(value) == 0:
+        return [value] * count
+    values = list(value)
+    if len(values) != count:
+        raise ValueError(f"{name} has {len(values)} values for {count} meshes")
+    return values
+
+
+def batch(
+    meshes: Sequence[tuple[Any, ...]],
+    *,
+    density: float | Sequence[float] | None = None,
+    mass: float | Sequence[float] | None = None,
+    about: About = "com",
+    weld: Weld = False,
+    skip_checks: bool = False,
+    accept_inverted: bool = False,
+    accept_non_manifold: bool = False,
+    planarity_tolerance: float | None = None,
+) -> list[MassProperties | Error]:
+    """The mass properties of many meshes in one call, in order.
+
+    meshes: ``(vertices, faces)`` or ``(vertices, faces, face_sizes)`` tuples, as
+        `mass_properties` takes them.
+    density, mass: one for every mesh, or a sequence with one per mesh (not both).
+    The other keywords are `mass_properties`'s and apply to every mesh.
+
+    Returns a list with, for each mesh, its `MassProperties` or the `polymass.Error`
+    (an instance of the subclass for its status, not raised) that says what is
+    wrong with it. Arguments that cannot describe a mesh at all (a ragged array)
+    raise at once. The GIL is released while the library computes.
+    """
+    count = len(meshes)
+    densities = _per_item(density, count, "density")
+    masses = _per_item(mass, count, "mass")
+    options = call_options(
+        weld=weld,
+        skip_checks=skip_checks,
+        accept_inverted=accept_inverted,
+        accept_non_manifold=accept_non_manifold,
+        planarity_tolerance=planarity_tolerance,
+    )
+    results: list[MassProperties | Error | None] = [None] * count
+    pending = []  # (position, description, mass_desc, point, result): what the items point into
+    for i, mesh in enumerate(meshes):
+        try:  # an index the binding itself checks fails this mesh alone
+            description = mesh_description(mesh[0], mesh[1], mesh[2] if len(mesh) > 2 else None)
+        except Error as error:
+            results[i] = error
+            continue
+        mass_desc, point = _mass_desc(densities[i], masses[i], about)
+        pending.append((i, description, mass_desc, point, new_struct("polymass_mass_properties")))
+    items = ffi.new("polymass_batch_item[]", max(len(pending), 1))
+    for item, (_, description, mass_desc, _, result) in zip(items, pending):
+        item.struct_size = ffi.sizeof("polymass_batch_item")
+        item.desc = description.desc
+        item.mass = mass_desc
+        item.options = options
+        item.properties = result
+    ctx = context()
+    failed = ffi.new("uint64_t*")
+    raise_for_status(lib.polymass_batch_compute(items, len(pending), failed, ctx), ctx)
+    for item, (i, _, _, point, result) in zip(items, pending):
+        if item.status == 0:
+            results[i] = MassProperties._from_c(result, point)
+        else:
+            message = ffi.string(item.message).decode("utf-8", "replace")
+            results[i] = error_class(item.status)(message, item.status)
+    return results  # type: ignore[return-value]

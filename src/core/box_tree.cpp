@@ -1,0 +1,99 @@
+#include "box_tree.hpp"
+
+#include "radix_sort.hpp"
+
+namespace polymass::core {
+namespace {
+
+// Spreads the low 10 bits of v so that two zero bits follow each one.
+std::uint32_t spread_bits(std::uint32_t v) {
+    v &= 0x3ffu;
+    v = (v | (v << 16)) & 0x030000ffu;
+    v = (v | (v << 8)) & 0x0300f00fu;
+    v = (v | (v << 4)) & 0x030c30c3u;
+    v = (v | (v << 2)) & 0x09249249u;
+    return v;
+}
+
+}  // namespace
+
+bool FloatBox::may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                double pad) const {
+    double enter = 0.0, leave = 1.0;
+    for (int k = 0; k < 3; ++k) {
+        const double low = double(lo[k]) - pad, high = double(hi[k]) + pad;
+        const double from = a[k], step = b[k] - a[k];
+        if (step == 0) {
+            if (from < low || from > high) return false;
+            continue;
+        }
+        double t0 = (low - from) / step, t1 = (high - from) / step;
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+        if (!(enter <= leave)) return false;  // also when the box is empty (NaN)
+    }
+    return true;
+}
+
+BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory)
+    : items_(boxes), order_(memory), nodes_(memory), level_begin_(memory), memory_(memory) {
+    FloatBox all;
+    for (const FloatBox& box : boxes) all.extend(box);
+    // Morton codes of the centres on a 1024^3 grid over all boxes, each with
+    // its item below it, sorted together.
+    std::pmr::vector<std::uint64_t> keys(memory);
+    keys.reserve(boxes.size());
+    double scale[3], extent = 0;
+    for (int k = 0; k < 3; ++k) {
+        const double width = double(all.hi[k]) - double(all.lo[k]);
+        scale[k] = width > 0 ? 1023.0 / width : 0.0;
+        extent = std::max(extent, width);
+    }
+    for (std::size_t item = 0; item < boxes.size(); ++item) {
+        const FloatBox& box = boxes[item];
+        std::uint32_t code = 0;
+        if (box.lo[0] <= box.hi[0]) {  // empty boxes anywhere: they meet nothing
+            for (int k = 0; k < 3; ++k) {
+                const double centre = 0.5 * (double(box.lo[k]) + double(box.hi[k]));
+                const double cell =
+                    std::clamp((centre - double(all.lo[k])) * scale[k], 0.0, 1023.0);
+                code |= spread_bits(std::uint32_t(cell)) << k;
+            }
+        }
+        keys.push_back(std::uint64_t{code} << 32 | item);
+    }
+    radix_sort(keys.data(), keys.data() + keys.size(), memory);
+    order_.reserve(keys.size());
+    for (const std::uint64_t key : keys) order_.push_back(std::uint32_t(key));
+    keys = {};
+
+    // Leaves, then each level from the one below, up to a single root.
+    std::size_t count = (order_.size() + kLeafSize - 1) / kLeafSize;
+    nodes_.reserve(2 * count + 1);
+    level_begin_.push_back(0);
+    for (std::size_t leaf = 0; leaf < count; ++leaf) {
+        FloatBox box;
+        for (std::size_t i = kLeafSize * leaf; i < std::min(order_.size(), kLeafSize * (leaf + 1));
+             ++i)
+            box.extend(boxes[order_[i]]);
+        nodes_.push_back(box);
+    }
+    level_begin_.push_back(nodes_.size());
+    while (count > 1) {
+        const std::size_t below = level_begin_[level_begin_.size() - 2];
+        const std::size_t upper = (count + 1) / 2;
+        for (std::size_t i = 0; i < upper; ++i) {
+            FloatBox box = nodes_[below + 2 * i];
+            if (2 * i + 1 < count) box.extend(nodes_[below + 2 * i + 1]);
+            nodes_.push_back(box);
+        }
+        level_begin_.push_back(nodes_.size());
+        count = upper;
+    }
+    // Segment tests in double against float boxes: a margin far above the
+    // rounding of either, far below any feature the boxes separate.
+    pad_ = std::isfinite(extent) ? 1e-6 * extent : 0.0;
+}
+
+}  // namespace polymass::core

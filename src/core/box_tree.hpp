@@ -1,0 +1,167 @@
+// A bounding-volume hierarchy over boxes, for finding which of many items
+// (a surface's triangles) can touch each other, or a segment, without
+// comparing every pair.
+//
+// Items are ordered along a Morton (Z-order) curve of their boxes' centres,
+// grouped by four into leaves, and the tree above them is implicit: node i of
+// a level holds nodes 2i and 2i + 1 of the level below. Building it is a radix
+// sort and one pass per level; no pointers, no per-node allocation.
+//
+// Boxes are single precision, taken about a point near the items (a surface
+// far from the origin keeps small relative coordinates) and rounded outward,
+// so a box always contains its item: the tree may report a pair that does not
+// touch, never miss one that does.
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+namespace polymass::core {
+
+struct FloatBox {
+    std::array<float, 3> lo{INFINITY, INFINITY, INFINITY};
+    std::array<float, 3> hi{-INFINITY, -INFINITY, -INFINITY};  // empty: meets nothing
+
+    // Grows to contain p (given about the tree's reference point).
+    void extend(const Eigen::Vector3d& p) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], below(p[k]));
+            hi[k] = std::max(hi[k], above(p[k]));
+        }
+    }
+    void extend(const FloatBox& box) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], box.lo[k]);
+            hi[k] = std::max(hi[k], box.hi[k]);
+        }
+    }
+    bool overlaps(const FloatBox& other) const {
+        return lo[0] <= other.hi[0] && other.lo[0] <= hi[0] && lo[1] <= other.hi[1] &&
+               other.lo[1] <= hi[1] && lo[2] <= other.hi[2] && other.lo[2] <= hi[2];
+    }
+    // Whether the segment from a to b (about the reference point) may meet the
+    // box, by the slab method, the box grown by `pad` against rounding.
+    bool may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double pad) const;
+
+private:
+    // x rounded down (up) to a float. Rounding to nearest is off by at most
+    // half a step, so one step of relative size 2^-23, or the smallest
+    // subnormal near zero, always covers it; cheaper than nextafter.
+    static float below(double x) {
+        const float f = float(x);
+        return double(f) > x ? f - std::max(std::abs(f) * 0x1p-23f, 0x1p-149f) : f;
+    }
+    static float above(double x) {
+        const float f = float(x);
+        return double(f) < x ? f + std::max(std::abs(f) * 0x1p-23f, 0x1p-149f) : f;
+    }
+};
+
+class BoxTree {
+public:
+    // The items are the boxes' indices; `boxes` must outlive the tree.
+    BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory);
+
+    // visit(i, j) once for each pair of distinct items whose boxes overlap.
+    template <class Visit>
+    void for_each_overlapping_pair(Visit&& visit) const;
+
+    // visit(i) for each item whose box may meet the segment from a to b.
+    template <class Visit>
+    void for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                    Visit&& visit) const;
+
+private:
+    static constexpr std::size_t kLeafSize = 4;
+    struct Node {
+        std::uint32_t level, index;
+    };
+
+    std::size_t level_size(std::uint32_t level) const {
+        return level_begin_[level + 1] - level_begin_[level];
+    }
+    const FloatBox& box(Node node) const { return nodes_[level_begin_[node.level] + node.index]; }
+    std::size_t child_count(Node node) const {
+        return std::min<std::size_t>(2, level_size(node.level - 1) - 2 * node.index);
+    }
+    Node child(Node node, std::size_t which) const {
+        return {node.level - 1, std::uint32_t(2 * node.index + which)};
+    }
+    // The items of a leaf: order_[first, last).
+    std::size_t leaf_first(Node leaf) const { return kLeafSize * leaf.index; }
+    std::size_t leaf_last(Node leaf) const {
+        return std::min(order_.size(), kLeafSize * (leaf.index + 1));
+    }
+    Node root() const { return {std::uint32_t(level_begin_.size() - 2), 0}; }
+
+    const std::pmr::vector<FloatBox>& items_;
+    std::pmr::vector<std::uint32_t> order_;      // items along the curve
+    std::pmr::vector<FloatBox> nodes_;           // every level, leaves first
+    std::pmr::vector<std::size_t> level_begin_;  // level k is nodes_[begin[k], begin[k + 1])
+    double pad_ = 0;                             // slack of segment tests
+    std::pmr::memory_resource* memory_;
+};
+
+template <class Visit>
+void BoxTree::for_each_overlapping_pair(Visit&& visit) const {
+    if (order_.empty()) return;
+    // A task is a node with itself (pairs inside it) or two distinct nodes
+    // whose boxes overlap. Depth first: a task adds at most three, each one
+    // level lower in one of its nodes, so the stack holds fewer than three
+    // per level of the two nodes together.
+    constexpr std::size_t kMaxTasks = 3 * 2 * 64;
+    std::array<std::pair<Node, Node>, kMaxTasks> tasks;
+    std::size_t pending = 0;
+    tasks[pending++] = {root(), root()};
+    while (pending > 0) {
+        const auto [a, b] = tasks[--pending];
+        const bool same = a.level == b.level && a.index == b.index;
+        if (a.level == 0 && b.level == 0) {
+            for (std::size_t i = leaf_first(a); i < leaf_last(a); ++i) {
+                const FloatBox& first = items_[order_[i]];
+                for (std::size_t j = same ? i + 1 : leaf_first(b); j < leaf_last(b); ++j)
+                    if (first.overlaps(items_[order_[j]])) visit(order_[i], order_[j]);
+            }
+        } else if (same) {
+            tasks[pending++] = {child(a, 0), child(a, 0)};
+            if (child_count(a) == 2) {
+                tasks[pending++] = {child(a, 1), child(a, 1)};
+                if (box(child(a, 0)).overlaps(box(child(a, 1))))
+                    tasks[pending++] = {child(a, 0), child(a, 1)};
+            }
+        } else {
+            // Open the higher node (the larger box, most often).
+            const bool open_a = a.level >= b.level;
+            const Node open = open_a ? a : b, other = open_a ? b : a;
+            for (std::size_t i = 0; i < child_count(open); ++i)
+                if (box(child(open, i)).overlaps(box(other)))
+                    tasks[pending++] = {child(open, i), other};
+        }
+    }
+}
+
+template <class Visit>
+void BoxTree::for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                         Visit&& visit) const {
+    if (order_.empty()) return;
+    std::pmr::vector<Node> nodes(memory_);
+    nodes.push_back(root());
+    while (!nodes.empty()) {
+        const Node node = nodes.back();
+        nodes.pop_back();
+        if (!box(node).may_meet_segment(a, b, pad_)) continue;
+        if (node.level == 0) {
+            for (std::size_t i = leaf_first(node); i < leaf_last(node); ++i)
+                if (items_[order_[i]].may_meet_segment(a, b, pad_)) visit(order_[i]);
+        } else {
+            for (std::size_t i = 0; i < child_count(node); ++i) nodes.push_back(child(node, i));
+        }
+    }
+}
+
+}  // namespace polymass::core

@@ -1,0 +1,241 @@
+// Orientation predicates: a floating-point filter, and an exact evaluation
+// with floating-point expansions when the filter cannot decide. Derivations:
+// docs/exact-predicates.md.
+#include "core/exact_predicates.hpp"
+
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+
+namespace polymass::core {
+namespace {
+
+// Unit roundoff of double (round to nearest): |fl(x op y) - x op y| <= epsilon |x op y|.
+constexpr double epsilon = 0x1p-53;
+
+// Covers the absolute error of products that fall into the subnormal range
+// (at most 2^-1075 each): 2^15 of them, far more than any filter makes.
+constexpr double underflow_cover = 0x1p-1060;
+
+// Filter constants: the relative error bounds of docs/exact-predicates.md
+// (8 and 4 roundings in a monomial), rounded up to leave room for the
+// rounding of the permanent and of the bound itself.
+constexpr double orient3d_relative_bound = 9 * epsilon;
+constexpr double orient2d_relative_bound = 5 * epsilon;
+
+// A value held exactly as hi + lo with |lo| <= ulp(hi) / 2.
+struct TwoTerm {
+    double hi;
+    double lo;
+};
+
+// Exact sum (Knuth): a + b == hi + lo whenever a + b does not overflow.
+inline TwoTerm two_sum(double a, double b) {
+    const double sum = a + b;
+    const double b_part = sum - a;
+    const double a_part = sum - b_part;
+    return {sum, (a - a_part) + (b - b_part)};
+}
+
+// Exact product: a * b == hi + lo whenever the rounding error of a * b is
+// representable (no overflow, and the product's last bit not below 2^-1074).
+inline TwoTerm two_product(double a, double b) {
+    const double product = a * b;
+    return {product, std::fma(a, b, -product)};
+}
+
+// A nonoverlapping expansion: the sum of its terms, stored in increasing
+// magnitude with zeros removed, each term's lowest set bit above the highest
+// set bit of the terms before it. Its sign is the sign of its last term.
+template <std::size_t Capacity>
+class Expansion {
+public:
+    // Adds b exactly (grow-expansion with zero elimination): carries b up
+    // through the terms with two_sum, keeping every nonzero remainder.
+    void add(double b) {
+        assert(count_ < Capacity);
+        if (b == 0.0) return;
+        double carry = b;
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < count_; ++i) {
+            const TwoTerm s = two_sum(carry, terms_[i]);
+            carry = s.hi;
+            if (s.lo != 0.0) terms_[kept++] = s.lo;
+        }
+        if (carry != 0.0) terms_[kept++] = carry;
+        count_ = kept;
+    }
+
+    int sign() const {
+        if (count_ == 0) return 0;
+        return terms_[count_ - 1] > 0.0 ? 1 : -1;
+    }
+
+private:
+    std::array<double, Capacity> terms_{};
+    std::size_t count_ = 0;
+};
+
+// Adds sign * x * y exactly: four exact products of doubles. Zero parts (the
+// low part of a difference that was exact in double, usually) are skipped.
+template <std::size_t Capacity>
+void add_product(Expansion<Capacity>& sum, double sign, const TwoTerm& x, const TwoTerm& y) {
+    for (const double xi : {x.hi, x.lo}) {
+        if (xi == 0.0) continue;
+        for (const double yi : {y.hi, y.lo}) {
+            if (yi == 0.0) continue;
+            const TwoTerm p = two_product(xi, yi);
+            sum.add(sign * p.hi);
+            sum.add(sign * p.lo);
+        }
+    }
+}
+
+// Adds sign * x * y * z exactly: 8 products of three doubles, each split
+// into 4 exact terms (the two parts of x_i y_j, each times z_k).
+template <std::size_t Capacity>
+void add_product(Expansion<Capacity>& sum, double sign, const TwoTerm& x, const TwoTerm& y,
+                 const TwoTerm& z) {
+    for (const double xi : {x.hi, x.lo}) {
+        if (xi == 0.0) continue;
+        for (const double yi : {y.hi, y.lo}) {
+            if (yi == 0.0) continue;
+            const TwoTerm p = two_product(xi, yi);
+            for (const double zi : {z.hi, z.lo}) {
+                if (zi == 0.0) continue;
+                const TwoTerm hi = two_product(p.hi, zi);
+                const TwoTerm lo = two_product(p.lo, zi);
+                sum.add(sign * hi.hi);
+                sum.add(sign * hi.lo);
+                sum.add(sign * lo.hi);
+                sum.add(sign * lo.lo);
+            }
+        }
+    }
+}
+
+// One row of the determinant, b - a, as exact two-term components.
+template <int Dim>
+using Row = std::array<TwoTerm, Dim>;
+
+// b - a exactly; false when a component overflows.
+template <int Dim, class Vector>
+bool exact_difference(const Vector& b, const Vector& a, Row<Dim>& row) {
+    for (int i = 0; i < Dim; ++i) {
+        row[i] = two_sum(b[i], -a[i]);
+        if (!std::isfinite(row[i].hi)) return false;
+    }
+    return true;
+}
+
+// Multiplies the row by the power of two that brings its largest component
+// to [2^top, 2^(top+1)): the determinant is linear in each row, so its sign
+// does not change. False when the row is zero (then the determinant is zero).
+template <int Dim>
+bool normalize(Row<Dim>& row, int top) {
+    double largest = 0.0;
+    for (const TwoTerm& c : row) largest = std::fmax(largest, std::fabs(c.hi));
+    if (largest == 0.0) return false;
+    const int shift = top - std::ilogb(largest);
+    for (TwoTerm& c : row) {
+        c.hi = std::ldexp(c.hi, shift);
+        c.lo = std::ldexp(c.lo, shift);
+    }
+    return true;
+}
+
+// Rows scaled to [2^336, 2^337): a product of three components is below
+// 2^1011 and the 192 exact terms sum below 2^1019, so nothing overflows; the
+// products' last bits stay above 2^-1074 within the range stated in
+// docs/exact-predicates.md.
+constexpr int orient3d_row_top = 336;
+// 6 monomials x 8 products of three doubles x 4 exact terms.
+constexpr std::size_t orient3d_terms = 6 * 8 * 4;
+
+// Rows scaled to [2^508, 2^509): products below 2^1018, the 16 terms sum below 2^1022.
+constexpr int orient2d_row_top = 508;
+// 2 monomials x 4 products of two doubles x 2 exact terms.
+constexpr std::size_t orient2d_terms = 2 * 4 * 2;
+static_assert(2 * (orient2d_row_top + 1) + 4 <= 1023, "orient2d terms must not overflow");
+static_assert(3 * (orient3d_row_top + 1) + 8 <= 1023, "orient3d terms must not overflow");
+
+int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                   const Eigen::Vector3d& d) {
+    std::array<Row<3>, 3> rows;
+    if (!exact_difference<3>(b, a, rows[0]) || !exact_difference<3>(c, a, rows[1]) ||
+        !exact_difference<3>(d, a, rows[2])) {
+        // A difference beyond the double range (a coordinate above 2^1023):
+        // a quarter of every point, exact unless a coordinate is also below
+        // 2^-1020 (see the range in docs/exact-predicates.md). Non-finite
+        // input breaks the precondition: 0 rather than endless recursion.
+        if (!(a.allFinite() && b.allFinite() && c.allFinite() && d.allFinite())) return 0;
+        return orient3d_exact(a / 4, b / 4, c / 4, d / 4);
+    }
+    // Two of the points the same make the determinant zero: checked before
+    // any scaling, as it is the common case here (a corner shared by two
+    // triangles).
+    if (a == b || a == c || a == d || b == c || b == d || c == d) return 0;
+    for (Row<3>& row : rows) normalize<3>(row, orient3d_row_top);
+    const Row<3>& u = rows[0];
+    const Row<3>& v = rows[1];
+    const Row<3>& w = rows[2];
+    Expansion<orient3d_terms> det;
+    add_product(det, 1.0, u[0], v[1], w[2]);
+    add_product(det, -1.0, u[0], v[2], w[1]);
+    add_product(det, 1.0, u[1], v[2], w[0]);
+    add_product(det, -1.0, u[1], v[0], w[2]);
+    add_product(det, 1.0, u[2], v[0], w[1]);
+    add_product(det, -1.0, u[2], v[1], w[0]);
+    return det.sign();
+}
+
+int orient2d_exact(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    std::array<Row<2>, 2> rows;
+    if (!exact_difference<2>(b, a, rows[0]) || !exact_difference<2>(c, a, rows[1])) {
+        if (!(a.allFinite() && b.allFinite() && c.allFinite())) return 0;
+        return orient2d_exact(a / 4, b / 4, c / 4);
+    }
+    for (Row<2>& row : rows) {
+        if (!normalize<2>(row, orient2d_row_top)) return 0;
+    }
+    Expansion<orient2d_terms> det;
+    add_product(det, 1.0, rows[0][0], rows[1][1]);
+    add_product(det, -1.0, rows[0][1], rows[1][0]);
+    return det.sign();
+}
+
+}  // namespace
+
+int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+             const Eigen::Vector3d& d) {
+    const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+    const double vy_wz = vy * wz, vz_wy = vz * wy;
+    const double vz_wx = vz * wx, vx_wz = vx * wz;
+    const double vx_wy = vx * wy, vy_wx = vy * wx;
+    const double det = ux * (vy_wz - vz_wy) + uy * (vz_wx - vx_wz) + uz * (vx_wy - vy_wx);
+    const double aux = std::fabs(ux), auy = std::fabs(uy), auz = std::fabs(uz);
+    const double permanent = aux * (std::fabs(vy_wz) + std::fabs(vz_wy)) +
+                             auy * (std::fabs(vz_wx) + std::fabs(vx_wz)) +
+                             auz * (std::fabs(vx_wy) + std::fabs(vy_wx));
+    // NaN or infinity anywhere (overflow) makes the comparison false.
+    const double bound =
+        orient3d_relative_bound * permanent + underflow_cover * (aux + auy + auz + 1.0);
+    if (std::fabs(det) > bound) return det > 0.0 ? 1 : -1;
+    return orient3d_exact(a, b, c, d);
+}
+
+int orient2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    const double ux_vy = (b[0] - a[0]) * (c[1] - a[1]);
+    const double uy_vx = (b[1] - a[1]) * (c[0] - a[0]);
+    const double det = ux_vy - uy_vx;
+    const double bound =
+        orient2d_relative_bound * (std::fabs(ux_vy) + std::fabs(uy_vx)) + underflow_cover;
+    if (std::fabs(det) > bound) return det > 0.0 ? 1 : -1;
+    return orient2d_exact(a, b, c);
+}
+
+}  // namespace polymass::core

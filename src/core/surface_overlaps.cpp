@@ -1,0 +1,185 @@
+#include "surface_overlaps.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+
+#include "box_tree.hpp"
+#include "exact_predicates.hpp"
+#include "surface_triangles.hpp"
+#include "triangle_contact.hpp"
+#include "volume_integrals.hpp"
+
+namespace polymass::core {
+namespace {
+
+using FacePair = std::array<std::uint64_t, 2>;
+
+void sort_unique(std::pmr::vector<FacePair>& pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
+// Whether p, on the plane of t, lies on the closed triangle t: exact, in the
+// coordinate plane the triangle projects onto best.
+bool lies_on(const Triangle& t, const Eigen::Vector3d& p) {
+    int drop = 0;
+    (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs().maxCoeff(&drop);
+    const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+    auto flat = [&](const Eigen::Vector3d& x) { return Eigen::Vector2d(x[u], x[v]); };
+    const int turn = orient2d(flat(t[0]), flat(t[1]), flat(t[2]));
+    for (int k = 0; k < 3; ++k)
+        if (orient2d(flat(t[k]), flat(t[(k + 1) % 3]), flat(p)) == -turn) return false;
+    return true;
+}
+
+// Directions of the probing segments: far from every coordinate plane and
+// from each other, so that the next one avoids what grazed the last.
+const Eigen::Vector3d kProbeDirections[] = {
+    {0.4353, 0.5209, 0.7342}, {-0.6016, 0.3187, 0.7326}, {0.2679, -0.8535, 0.4472}};
+// Vertices of a shell tried as probes before its nesting is left unknown.
+constexpr std::size_t kProbeVertices = 4;
+
+}  // namespace
+
+template <class Scalar, class Index>
+SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
+                              const Eigen::Vector3d& reference, double size, const Shells* shells,
+                              std::pmr::memory_resource* memory) {
+    SurfaceOverlaps result(memory);
+    const SurfaceTriangles triangles = triangulate_faces(mesh, memory);
+    // Each corner's vertex identity (after welding), next to the others: the
+    // test of shared corners reads nothing else for most candidate pairs.
+    std::pmr::vector<std::array<std::uint32_t, 3>> ids(triangles.corners, memory);
+    if (vertex_ids)
+        for (auto& corners : ids)
+            for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
+    // The surface as the topology check saw it: a welded vertex at the
+    // position of the vertex it was welded to, so that corners the surface
+    // shares are the same point, not two points 1e-17 apart whose triangles
+    // would seem to cross.
+    auto triangle = [&](std::size_t t) {
+        return Triangle{mesh.positions[ids[t][0]], mesh.positions[ids[t][1]],
+                        mesh.positions[ids[t][2]]};
+    };
+    // The tree's boxes are in a power-of-two unit near the surface's size, so
+    // that single precision holds them for any size a double does.
+    const double per_unit = 1.0 / unit_length_near(size);
+    auto in_units = [&](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+        return (p - reference) * per_unit;
+    };
+
+    // Degenerate triangles keep an empty box: they bound nothing and meet nothing.
+    std::pmr::vector<FloatBox> boxes(triangles.size(), memory);
+    FloatBox everything;
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle corners = triangle(t);
+        if (is_degenerate(corners)) continue;
+        for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
+        everything.extend(boxes[t]);
+    }
+    const BoxTree tree(boxes, memory);
+
+    std::pmr::vector<FacePair> crossing(memory), touching(memory);
+    tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
+        const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
+        if (face_i == face_j) return;  // pieces of one polygon
+        int shared = 0, at_i = 0, at_j = 0;
+        for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+                if (ids[i][k] == ids[j][l]) {
+                    ++shared;
+                    at_i = k;
+                    at_j = l;
+                }
+        if (shared >= 2) return;  // neighbours across an edge
+        const Triangle p = triangle(i), q = triangle(j);
+        // The shared corner first, keeping each triangle's turn.
+        const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
+        const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
+        const Contact contact = triangle_contact(p_turned, q_turned, shared == 1);
+        if (contact == Contact::none) return;
+        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+        (contact == Contact::crossing ? crossing : touching).push_back(pair);
+    });
+    sort_unique(crossing);
+    sort_unique(touching);
+    // Faces that cross somewhere are listed as crossing only.
+    touching.erase(std::remove_if(touching.begin(), touching.end(),
+                                  [&](const FacePair& pair) {
+                                      return std::binary_search(crossing.begin(), crossing.end(),
+                                                                pair);
+                                  }),
+                   touching.end());
+    result.crossing = PairFinding::of(crossing);
+    result.touching = PairFinding::of(touching);
+    if (!shells || shells->count < 2 || !crossing.empty()) return result;
+
+    // Nesting. The probes' far ends lie outside every box.
+    double span = 0;
+    for (int k = 0; k < 3; ++k)
+        span = std::max(span, double(everything.hi[k]) - double(everything.lo[k]));
+    span /= per_unit;
+    result.winding_of_shell.assign(shells->count, kUnknownWinding);
+    if (!(span > 0) || !std::isfinite(4 * span)) return result;
+    const auto shell_of = [&](std::size_t t) { return shells->of_face[triangles.face[t]]; };
+
+    // The winding number of every shell but `shell` at p, or kUnknownWinding
+    // when the segment from p to p + 4 span direction grazes an edge or a
+    // vertex, or p lies on another shell.
+    auto winding_at = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& direction,
+                          std::uint32_t shell) {
+        const Eigen::Vector3d q = p + 4 * span * direction.normalized();
+        int winding = 0;
+        bool counted = true;
+        tree.for_each_item_near_segment(in_units(p), in_units(q), [&](std::uint32_t t) {
+            if (!counted || shell_of(t) == shell) return;
+            const Triangle c = triangle(t);
+            const int from = orient3d(c[0], c[1], c[2], p), to = orient3d(c[0], c[1], c[2], q);
+            if (to == 0 || (from == 0 && lies_on(c, p))) {
+                counted = false;
+                return;
+            }
+            if (from == 0 || from == to) return;
+            const int e0 = orient3d(p, q, c[0], c[1]), e1 = orient3d(p, q, c[1], c[2]),
+                      e2 = orient3d(p, q, c[2], c[0]);
+            const bool some_positive = e0 > 0 || e1 > 0 || e2 > 0;
+            const bool some_negative = e0 < 0 || e1 < 0 || e2 < 0;
+            if (some_positive && some_negative) return;  // passes beside the triangle
+            if (e0 == 0 || e1 == 0 || e2 == 0) {
+                counted = false;  // through an edge or a corner
+                return;
+            }
+            winding += from < 0 ? 1 : -1;  // leaving through the face's outer side
+        });
+        return counted ? winding : kUnknownWinding;
+    };
+
+    // A few triangles of each shell, in order, whose first corners are the probes.
+    std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells->count, memory);
+    std::pmr::vector<std::uint8_t> probe_count(shells->count, 0, memory);
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        const std::uint32_t shell = shell_of(t);
+        if (boxes[t].lo[0] <= boxes[t].hi[0] && probe_count[shell] < kProbeVertices)
+            probes[shell][probe_count[shell]++] = std::uint32_t(t);
+    }
+    for (std::uint32_t shell = 0; shell < shells->count; ++shell) {
+        int& winding = result.winding_of_shell[shell];
+        for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
+            const Eigen::Vector3d p = mesh.positions[ids[probes[shell][k]][0]];
+            for (const Eigen::Vector3d& direction : kProbeDirections) {
+                winding = winding_at(p, direction, shell);
+                if (winding != kUnknownWinding) break;
+            }
+        }
+    }
+    return result;
+}
+
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                   \
+    template SurfaceOverlaps find_overlaps<Scalar, Index>(                                    \
+        const MeshView<Scalar, Index>&, const std::uint32_t*, const Eigen::Vector3d&, double, \
+        const Shells*, std::pmr::memory_resource*);
+POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
+#undef POLYMASS_INSTANTIATE
+
+}  // namespace polymass::core

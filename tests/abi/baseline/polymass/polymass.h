@@ -1,0 +1,434 @@
+/*
+ * libpolymass — mass properties of solid polyhedra and planar polygons.
+ *
+ * WHAT IT COMPUTES
+ *   For a closed polyhedral surface (triangles and/or planar polygons, convex or
+ *   not, any number of shells): volume, mass, centre of mass, the inertia tensor
+ *   about the centre of mass, the origin or any point, principal moments and
+ *   axes, and surface area. For a simple planar polygon: area, centroid and
+ *   second moments of area. The method is Mirtich's (divergence theorem to face
+ *   integrals, Green's theorem to edge sums), integrated about a reference point
+ *   inside the mesh's bounding box so that a part far from the origin keeps its
+ *   digits.
+ *
+ * UNITS
+ *   The library has none of its own: lengths are in the caller's unit L,
+ *   density in M/L^3, mass in M, inertia in M*L^2. Without a density or a mass
+ *   the density is 1, so mass == volume.
+ *
+ * ORIENTATION
+ *   Faces are listed counter-clockwise seen from outside the solid (right-hand
+ *   rule: the face normal points out). Such a surface has positive volume. A
+ *   surface whose faces are all reversed is reported as POLYMASS_ERROR_INVERTED
+ *   unless POLYMASS_OPTION_ACCEPT_INVERTED is set.
+ *
+ * INERTIA SIGN CONVENTION
+ *   I = integral of rho * (|r|^2 * Identity - r r^T) dV, so the diagonal is
+ *   Ixx = integral rho (y^2 + z^2) dV and the off-diagonal terms are the NEGATED
+ *   products of inertia: Ixy = -integral rho x y dV. This is the tensor that
+ *   URDF (ixy), SDFormat, MuJoCo (fullinertia), PhysX and Bullet expect.
+ *   Matrices are 3x3, row-major, symmetric. The point-about rule is the
+ *   parallel-axis theorem I_P = I_C + m (|d|^2 Identity - d d^T), d = C - P.
+ *
+ * THREADING
+ *   The library has no global mutable state. A context is used by one thread at
+ *   a time (it holds the last error message); distinct contexts are
+ *   independent. A mesh is immutable once created: any number of threads may
+ *   read it at once, each through its own context.
+ *
+ * ERRORS
+ *   Every fallible function returns an int32_t status (POLYMASS_OK == 0) and
+ *   never throws, asserts or aborts on bad input. Output structs are written
+ *   only on success (polymass_mesh_check's report: whenever out_report itself
+ *   is valid). polymass_status_string() names a status;
+ *   polymass_context_message() says what and where ("face 17 has 2 vertices",
+ *   "edge (4, 9) is used by 3 faces").
+ *
+ * STABILITY
+ *   Within a major version the ABI only grows: functions and status codes are
+ *   added, never changed or removed, status values are never reused, and
+ *   public structs only gain fields at their end. Every struct passed in or out
+ *   starts with struct_size, which the caller sets to sizeof(the struct) it was
+ *   compiled with, so an older caller keeps working with a newer library.
+ */
+#ifndef POLYMASS_POLYMASS_H
+#define POLYMASS_POLYMASS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "polymass/polymass_version.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ========================================================================== */
+/* Export                                                                     */
+/* ========================================================================== */
+
+#if defined(POLYMASS_STATIC)
+#define POLYMASS_API
+#elif defined(_WIN32)
+#if defined(POLYMASS_BUILDING)
+#define POLYMASS_API __declspec(dllexport)
+#else
+#define POLYMASS_API __declspec(dllimport)
+#endif
+#elif defined(__GNUC__)
+#define POLYMASS_API __attribute__((visibility("default")))
+#else
+#define POLYMASS_API
+#endif
+
+/* ========================================================================== */
+/* Status codes (explicit values, never reused)                               */
+/* ========================================================================== */
+
+#define POLYMASS_OK 0
+/* Caller errors: NULL pointer, wrong struct_size, count that overflows, stride
+   smaller than a vertex, unknown type or flag, face sizes that do not add up. */
+#define POLYMASS_ERROR_INVALID_ARGUMENT 1
+/* The allocator returned NULL. */
+#define POLYMASS_ERROR_OUT_OF_MEMORY 2
+/* A bug in the library; please report it with the message. */
+#define POLYMASS_ERROR_INTERNAL 3
+/* A coordinate used by a face is NaN or infinite. */
+#define POLYMASS_ERROR_NON_FINITE 10
+/* A face refers to a vertex past the end of the vertex array. */
+#define POLYMASS_ERROR_INDEX_OUT_OF_RANGE 11
+/* A face (or a 2D polygon) has fewer than 3 vertices. */
+#define POLYMASS_ERROR_FACE_TOO_SMALL 12
+/* An edge is used by one face only: the surface has a hole. */
+#define POLYMASS_ERROR_OPEN 20
+/* An edge is used by more than two faces. */
+#define POLYMASS_ERROR_NON_MANIFOLD 21
+/* Two faces traverse an edge in the same direction: one of them is flipped. */
+#define POLYMASS_ERROR_INCONSISTENT_ORIENTATION 22
+/* A polygon face's vertices are off its plane by more than the tolerance. */
+#define POLYMASS_ERROR_NON_PLANAR_FACE 23
+/* The enclosed volume is negative: every face is reversed. */
+#define POLYMASS_ERROR_INVERTED 30
+/* The surface encloses no volume (to rounding), e.g. a flat double-sided sheet. */
+#define POLYMASS_ERROR_ZERO_VOLUME 31
+/* A 2D polygon encloses no area (to rounding). */
+#define POLYMASS_ERROR_ZERO_AREA 32
+/* A result does not fit in a double (the coordinates, density, mass or point
+   are so large or small that a moment overflows or the mass underflows). */
+#define POLYMASS_ERROR_OVERFLOW 40
+
+/* ========================================================================== */
+/* Version                                                                    */
+/* ========================================================================== */
+
+/* POLYMASS_VERSION_MAJOR/MINOR/PATCH and POLYMASS_VERSION_NUMBER (major * 10000
+   + minor * 100 + patch) come from polymass_version.h, generated by CMake. */
+
+/* The version of the library loaded at run time, as POLYMASS_VERSION_NUMBER.
+   Compare its major part with the header's before use. Thread-safe. */
+POLYMASS_API uint32_t polymass_version(void);
+
+/* "MAJOR.MINOR.PATCH" of the library loaded at run time. Static text. */
+POLYMASS_API const char* polymass_version_string(void);
+
+/* Static text naming a status ("open surface", ...); unknown codes give
+   "unknown status". Thread-safe. */
+POLYMASS_API const char* polymass_status_string(int32_t status);
+
+/* ========================================================================== */
+/* Types                                                                      */
+/* ========================================================================== */
+
+typedef struct polymass_context polymass_context;
+typedef struct polymass_mesh polymass_mesh;
+
+/* Memory for a context and everything made through it. allocate returns memory
+   aligned to at least `alignment` (a power of two) or NULL on failure;
+   deallocate accepts what allocate returned. A NULL allocator means malloc.
+   The functions and user_data must stay valid until the context and every
+   mesh made through it are destroyed (a mesh frees itself through them). */
+typedef struct polymass_allocator {
+    void* (*allocate)(void* user_data, size_t size, size_t alignment);
+    void (*deallocate)(void* user_data, void* pointer);
+    void* user_data;
+} polymass_allocator;
+
+/* polymass_options.flags */
+/* Trusted input (a game engine at load time): skip the open, non-manifold,
+   orientation and planarity checks. Index range and finiteness are always
+   checked, so bad input still cannot crash the library. */
+#define POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS (1u << 0)
+/* Accept an inverted solid: report it with POLYMASS_WARNING_INVERTED and the
+   properties of the solid with its faces turned the right way. */
+#define POLYMASS_OPTION_ACCEPT_INVERTED (1u << 1)
+/* Treat vertices at the same position as one (STL-style triangle soups) for
+   the topology checks: exactly equal positions, or within
+   polymass_options.weld_tolerance. The integrals do not depend on it. */
+#define POLYMASS_OPTION_WELD_VERTICES (1u << 2)
+/* Accept edges shared by more than two faces when they are traversed as often
+   in one direction as in the other (two solids touching along an edge). */
+#define POLYMASS_OPTION_ACCEPT_NON_MANIFOLD (1u << 3)
+
+/* Default of polymass_options.planarity_tolerance. */
+#define POLYMASS_DEFAULT_PLANARITY_TOLERANCE 1e-6
+/* Largest polymass_options.weld_tolerance: a coarser weld would merge
+   vertices of distinct features. */
+#define POLYMASS_MAX_WELD_TOLERANCE 1e-3
+
+typedef struct polymass_options {
+    uint32_t struct_size; /* sizeof(polymass_options) */
+    uint32_t flags;       /* POLYMASS_OPTION_* bits */
+    /* Largest distance of a polygon face's vertex from the face's plane,
+       relative to the face's diameter; 0 means the default. */
+    double planarity_tolerance;
+    /* With POLYMASS_OPTION_WELD_VERTICES: two vertices whose coordinates each
+       differ by at most weld_tolerance times the largest extent of the used
+       vertices' bounding box are one vertex (up to rounding), and so are
+       chains of such vertices. 0 (the default) welds exactly equal positions
+       only; CAD exports whose coordinates carry rounding noise want about
+       1e-9. A non-zero value below 2^-50 acts as 2^-50. In
+       [0, POLYMASS_MAX_WELD_TOLERANCE]. */
+    double weld_tolerance;
+} polymass_options;
+
+/* polymass_mesh_desc.position_type */
+#define POLYMASS_POSITION_FLOAT64 0
+#define POLYMASS_POSITION_FLOAT32 1
+/* polymass_mesh_desc.index_type */
+#define POLYMASS_INDEX_UINT32 0
+#define POLYMASS_INDEX_UINT16 1
+
+/* A surface as the caller's own arrays; nothing is copied. */
+typedef struct polymass_mesh_desc {
+    uint32_t struct_size;   /* sizeof(polymass_mesh_desc) */
+    uint32_t position_type; /* POLYMASS_POSITION_* */
+    /* x, y, z of vertex i start at (const char*)positions + i * position_stride.
+       Any alignment is accepted. */
+    const void* positions;
+    uint64_t vertex_count;
+    /* Bytes from one vertex to the next, at least 3 elements; 0 means packed
+       (3 elements), so an interleaved vertex buffer is read in place. */
+    uint64_t position_stride;
+    uint32_t index_type; /* POLYMASS_INDEX_* */
+    uint32_t reserved;   /* must be 0 */
+    const void* indices; /* the faces' vertex indices, one face after another */
+    uint64_t index_count;
+    /* Number of vertices of each face, face_count of them, adding up to
+       index_count. NULL (and face_count 0) means all faces are triangles. */
+    const uint32_t* face_sizes;
+    uint64_t face_count;
+} polymass_mesh_desc;
+
+/* polymass_mass_desc.mass_mode */
+#define POLYMASS_MASS_FROM_DENSITY 0 /* mass = density * volume */
+#define POLYMASS_MASS_FROM_TOTAL 1   /* density = mass / volume */
+
+/* How to turn a solid into a body. NULL where one is taken means unit density
+   and point = origin. */
+typedef struct polymass_mass_desc {
+    uint32_t struct_size; /* sizeof(polymass_mass_desc) */
+    uint32_t mass_mode;   /* POLYMASS_MASS_FROM_* */
+    double density;       /* > 0, finite; read when mass_mode is FROM_DENSITY */
+    double mass;          /* > 0, finite; read when mass_mode is FROM_TOTAL */
+    double point[3];      /* polymass_mass_properties.inertia_point is about it */
+} polymass_mass_desc;
+
+/* polymass_mass_properties.warnings */
+#define POLYMASS_WARNING_INVERTED (1u << 0)         /* accepted and turned */
+#define POLYMASS_WARNING_DEGENERATE_FACES (1u << 1) /* zero-area faces, harmless */
+#define POLYMASS_WARNING_UNCHECKED (1u << 2)        /* topology checks skipped */
+#define POLYMASS_WARNING_NON_MANIFOLD (1u << 3)     /* accepted non-manifold edges */
+
+typedef struct polymass_mass_properties {
+    uint32_t struct_size; /* set by the caller: sizeof(polymass_mass_properties) */
+    uint32_t warnings;    /* POLYMASS_WARNING_* bits */
+    double volume;
+    double mass;
+    double density;
+    double surface_area;
+    double center_of_mass[3];
+    double inertia[9];           /* about the centre of mass */
+    double inertia_origin[9];    /* about (0, 0, 0) */
+    double inertia_point[9];     /* about polymass_mass_desc.point */
+    double principal_moments[3]; /* eigenvalues of `inertia`, ascending */
+    /* Row-major rotation R (det R = +1) whose columns are the principal axes:
+       inertia = R diag(principal_moments) R^T. Where moments coincide the axes
+       are chosen deterministically (coordinate axes when all three do). */
+    double principal_axes[9];
+} polymass_mass_properties;
+
+/* How many locations of each finding polymass_diagnostics lists: the lowest
+   face or vertex indices, the edges with the lowest vertex pairs. */
+#define POLYMASS_DIAGNOSTIC_LOCATIONS 8
+
+/* No location: the value of the "first_*" entries past the count beside them
+   (all of them when it is 0). */
+#define POLYMASS_NONE UINT64_MAX
+
+/* What polymass_mesh_check finds: for each kind of finding its count and its
+   first (lowest) min(count, POLYMASS_DIAGNOSTIC_LOCATIONS) locations, in
+   ascending order. Vertex numbers are the caller's indices (after welding: the
+   lowest index at that position); an edge is a vertex pair in the direction
+   the faces traverse it (most often). */
+typedef struct polymass_diagnostics {
+    uint32_t struct_size; /* set by the caller: sizeof(polymass_diagnostics) */
+    int32_t status;       /* what polymass_mesh_create would return */
+    uint64_t face_count;
+    uint64_t used_vertex_count; /* distinct vertices the faces use */
+    uint64_t edge_count;        /* distinct undirected edges */
+    uint64_t non_finite_vertices;
+    uint64_t first_non_finite_vertices[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t out_of_range_indices;
+    uint64_t first_out_of_range_faces[POLYMASS_DIAGNOSTIC_LOCATIONS]; /* faces holding them */
+    uint64_t small_faces;                                             /* fewer than 3 vertices */
+    uint64_t first_small_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t degenerate_faces; /* zero area: legal, harmless */
+    uint64_t first_degenerate_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t open_edges; /* used by one face */
+    uint64_t first_open_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
+    uint64_t non_manifold_edges; /* used by more than two faces */
+    uint64_t first_non_manifold_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
+    uint64_t misoriented_edges; /* traversed twice the same way */
+    uint64_t first_misoriented_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
+    uint64_t non_planar_faces;
+    uint64_t first_non_planar_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    double max_non_planarity; /* largest relative off-plane distance seen */
+    double signed_volume;     /* NaN when the faces could not be integrated */
+} polymass_diagnostics;
+
+/* polymass_polygon_properties.orientation */
+#define POLYMASS_COUNTER_CLOCKWISE 1
+#define POLYMASS_CLOCKWISE (-1)
+
+/* A simple planar polygon in the xy plane. Second moments of AREA, with the
+   engineering sign: Ixx = integral y^2 dA, Iyy = integral x^2 dA,
+   Ixy = +integral x y dA (not negated, unlike the 3D inertia tensor). */
+typedef struct polymass_polygon_properties {
+    uint32_t struct_size; /* set by the caller */
+    int32_t orientation;  /* POLYMASS_COUNTER_CLOCKWISE or POLYMASS_CLOCKWISE */
+    double area;          /* > 0 whatever the orientation */
+    double centroid[2];
+    double second_moments[3];        /* Ixx, Iyy, Ixy about the centroid */
+    double second_moments_origin[3]; /* Ixx, Iyy, Ixy about (0, 0) */
+    double polar_moment;             /* Ixx + Iyy about the centroid */
+    double principal_moments[2];     /* about the centroid, ascending */
+    /* Angle in radians, counter-clockwise from +x, in (-pi/2, pi/2], of the
+       axis about which the second moment is principal_moments[0]. */
+    double principal_angle;
+} polymass_polygon_properties;
+
+/* Sizes of the public structs as this library was compiled: for bindings to
+   check their layouts. Thread-safe. */
+POLYMASS_API uint32_t polymass_sizeof_allocator(void);
+POLYMASS_API uint32_t polymass_sizeof_options(void);
+POLYMASS_API uint32_t polymass_sizeof_mesh_desc(void);
+POLYMASS_API uint32_t polymass_sizeof_mass_desc(void);
+POLYMASS_API uint32_t polymass_sizeof_mass_properties(void);
+POLYMASS_API uint32_t polymass_sizeof_diagnostics(void);
+POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void);
+
+/* ========================================================================== */
+/* Context                                                                    */
+/* ========================================================================== */
+
+/* Creates a context with default options (all flags off, default planarity
+   tolerance). allocator may be NULL (malloc); it is copied. Thread-safe. */
+POLYMASS_API int32_t polymass_context_create(polymass_context** out_context,
+                                             const polymass_allocator* allocator);
+
+/* Frees a context. NULL is accepted. Meshes made through it stay valid.
+   Not while another thread uses the context. */
+POLYMASS_API void polymass_context_destroy(polymass_context* context);
+
+/* Sets the options used by later calls through this context.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
+                                                  const polymass_options* options);
+
+/* Reads the context's options; out_options->struct_size must be set.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
+                                                  polymass_context* context);
+
+/* The detailed message of the last call through this context that failed
+   ("" after a success). Valid until the next call through the context, from
+   the thread that made that call. Never NULL. */
+POLYMASS_API const char* polymass_context_message(const polymass_context* context);
+
+/* ========================================================================== */
+/* Solids                                                                     */
+/* ========================================================================== */
+
+/* Validates the surface (arguments, indices, finiteness, then unless skipped:
+   closed, manifold, consistently oriented, planar polygon faces, then not
+   inverted and not of zero volume) and integrates it in one pass over the
+   faces (the checks make their own). The mesh keeps the integrals, not the caller's arrays: they
+   may be freed once this returns. On failure *out_mesh is NULL and the context holds the message.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_context* context,
+                                          const polymass_mesh_desc* desc);
+
+/* Frees a mesh. NULL is accepted. Not while another thread reads the mesh. */
+POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh);
+
+/* The mass properties of a mesh as a body of the given density or mass (NULL:
+   unit density, point = origin). Cheap: no pass over the faces. The mesh may
+   be read by several threads at once, each with its own context. */
+POLYMASS_API int32_t polymass_mesh_mass_properties(polymass_mass_properties* out_properties,
+                                                   polymass_context* context,
+                                                   const polymass_mesh* mesh,
+                                                   const polymass_mass_desc* mass);
+
+/* polymass_mesh_create followed by polymass_mesh_mass_properties, with no
+   mesh left to free. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* out_properties,
+                                                      polymass_context* context,
+                                                      const polymass_mesh_desc* desc,
+                                                      const polymass_mass_desc* mass);
+
+/* Runs every check without stopping at the first finding and fills the report.
+   The topology checks run even when the context's options skip them; the other
+   options (welding, tolerance, what is accepted) apply. Faces of fewer than 3
+   vertices, indices out of range and non-finite coordinates leave the faces
+   unreadable: the report then holds only those findings and the counts. The
+   report is written whenever out_report is non-NULL with the right
+   struct_size; the return value is then out_report->status: the status
+   polymass_mesh_create would return with the topology checks on, with the same
+   message. Otherwise nothing is written and the return value says why.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
+                                         polymass_context* context, const polymass_mesh_desc* desc);
+
+/* The shells of a surface: its connected pieces, faces sharing a vertex being
+   in one shell (after welding, when the context's options weld, so a triangle
+   soup splits as its solid does). Writes each face's shell, numbered from 0 in
+   the order of the shells' first faces, to out_shell_of_face (room for the
+   mesh's face count: face_count, or index_count / 3 for triangles), and the
+   number of shells to *out_shell_count. Indices out of range and non-finite
+   coordinates are errors, as for polymass_mesh_create; the topology is not
+   checked. A caller can then check or compute each shell on its own (a cavity
+   is a shell whose signed volume is negative). Context: one thread at a
+   time. */
+POLYMASS_API int32_t polymass_mesh_shells(uint32_t* out_shell_of_face, uint64_t* out_shell_count,
+                                          polymass_context* context,
+                                          const polymass_mesh_desc* desc);
+
+/* ========================================================================== */
+/* Planar polygons                                                            */
+/* ========================================================================== */
+
+/* Area, centroid and second moments of area of a simple polygon (convex or
+   not, either orientation) given as point_count (x, y) pairs of doubles, each
+   pair `stride` bytes after the previous (0: packed). The polygon closes
+   itself: do not repeat the first point. A self-intersecting polygon is not
+   detected: its result is the signed sum over its lobes.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_properties,
+                                              polymass_context* context, const double* points,
+                                              uint64_t point_count, uint64_t stride);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* POLYMASS_POLYMASS_H */

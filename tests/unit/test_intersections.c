@@ -1,0 +1,431 @@
+/* Surfaces that bound a region twice: faces crossing each other, shells
+ * nested in a solid of the same sense, shells inside out - and the surfaces
+ * that only look alike (touching parts, cavities, parts in hollows), which
+ * must stay valid. Every case also far from the origin and at tiny and huge
+ * scales: the verdicts come from exact predicates, so they must not change. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "reference/exact_reference.h"
+#include "test_support.h"
+
+#define CHECKED (POLYMASS_OPTION_CHECK_INTERSECTIONS)
+
+/* Where each case is also tried: x' = scale x + t. */
+typedef struct placement {
+    const char* name;
+    double scale;
+    double translation[3];
+} placement;
+
+static const placement placements[] = {
+    {"as given", 1.0, {0, 0, 0}},
+    {"at 1e6", 1.0, {1e6, -1e6, 1e6}},
+    {"at 1e8", 1.0, {1e8, 1e8, -1e8}},
+    {"scaled 1e-60", 1e-60, {0, 0, 0}},
+    {"scaled 1e60", 1e60, {0, 0, 0}},
+    {"scaled 2^-10 at 2^20", 0.0009765625, {1048576, 1048576, -1048576}},
+};
+#define PLACEMENTS (sizeof placements / sizeof placements[0])
+
+static void box(pm_mesh* m, double x0, double y0, double z0, double x1, double y1, double z1,
+                int triangulate, int inside_out) {
+    const double lo[3] = {x0, y0, z0}, hi[3] = {x1, y1, z1};
+    pm_mesh part;
+    pm_mesh_init(&part);
+    pm_mesh_add_box(&part, lo, hi, triangulate);
+    if (inside_out) {
+        pm_mesh_reverse_all(&part);
+    }
+    pm_mesh_append(m, &part);
+    pm_mesh_free(&part);
+}
+
+/* An octahedron of the given centre and radius (a cavity when inside_out). */
+static void octahedron(pm_mesh* m, const double c[3], double r, int inside_out) {
+    static const uint32_t faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                         {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    const uint32_t base = (uint32_t)m->vertex_count;
+    int k;
+    pm_mesh_add_vertex(m, c[0] + r, c[1], c[2]);
+    pm_mesh_add_vertex(m, c[0] - r, c[1], c[2]);
+    pm_mesh_add_vertex(m, c[0], c[1] + r, c[2]);
+    pm_mesh_add_vertex(m, c[0], c[1] - r, c[2]);
+    pm_mesh_add_vertex(m, c[0], c[1], c[2] + r);
+    pm_mesh_add_vertex(m, c[0], c[1], c[2] - r);
+    for (k = 0; k < 8; ++k) {
+        if (inside_out) {
+            pm_mesh_add_tri(m, base + faces[k][0], base + faces[k][2], base + faces[k][1]);
+        } else {
+            pm_mesh_add_tri(m, base + faces[k][0], base + faces[k][1], base + faces[k][2]);
+        }
+    }
+}
+
+/* A torus of ring radius R and tube radius r, n x n triangulated quads; with
+   R < r the tube passes through itself around the axis (R is chosen so that
+   no ring of vertices falls exactly on the axis: there the sheets would only
+   touch, see docs/validity.md). */
+static void torus(pm_mesh* m, double R, double r, int n) {
+    const double pi = 3.14159265358979323846;
+    const uint32_t base = (uint32_t)m->vertex_count;
+    int i, j;
+    for (i = 0; i < n; ++i) {
+        for (j = 0; j < n; ++j) {
+            const double u = 2 * pi * i / n, v = 2 * pi * j / n;
+            pm_mesh_add_vertex(m, (R + r * cos(v)) * cos(u), (R + r * cos(v)) * sin(u), r * sin(v));
+        }
+    }
+    for (i = 0; i < n; ++i) {
+        for (j = 0; j < n; ++j) {
+            const uint32_t a = base + (uint32_t)(i * n + j);
+            const uint32_t b = base + (uint32_t)(((i + 1) % n) * n + j);
+            const uint32_t c = base + (uint32_t)(((i + 1) % n) * n + (j + 1) % n);
+            const uint32_t d = base + (uint32_t)(i * n + (j + 1) % n);
+            pm_mesh_add_tri(m, a, b, c);
+            pm_mesh_add_tri(m, a, c, d);
+        }
+    }
+}
+
+/* Computes with and without the intersection check; returns the checked
+   status. The unchecked status is `unchecked`. */
+static int32_t verdicts(const pm_mesh* m, int32_t* unchecked, uint32_t* warnings, double* volume) {
+    polymass_context* plain = pm_context_new(0);
+    polymass_context* checked = pm_context_new(CHECKED);
+    polymass_mass_properties p, q;
+    int32_t status;
+    pm_props_init(&p);
+    pm_props_init(&q);
+    *unchecked = pm_compute(&p, plain, m, NULL);
+    status = pm_compute(&q, checked, m, NULL);
+    if (status == POLYMASS_OK) {
+        *warnings = q.warnings;
+        *volume = q.volume;
+        /* The check never changes a result it accepts. */
+        assert_int_equal(*unchecked, POLYMASS_OK);
+        PM_ASSERT_SAME("volume", p.volume, q.volume);
+        PM_ASSERT_SAME("Ixx", p.inertia[0], q.inertia[0]);
+        PM_ASSERT_SAME("Ixy", p.inertia[1], q.inertia[1]);
+    }
+    polymass_context_destroy(plain);
+    polymass_context_destroy(checked);
+    return status;
+}
+
+typedef struct expectation {
+    int32_t checked;   /* status with the intersection check */
+    int32_t unchecked; /* status without */
+    uint32_t warnings; /* with the check, when it passes */
+    double volume;     /* with the check, when it passes (before placement) */
+} expectation;
+
+static void expect_everywhere(const char* what, const pm_mesh* original, expectation e) {
+    size_t k;
+    for (k = 0; k < PLACEMENTS; ++k) {
+        const placement* at = &placements[k];
+        pm_mesh m;
+        int32_t unchecked = -1, status;
+        uint32_t warnings = 0;
+        double volume = 0;
+        pm_mesh_init(&m);
+        pm_mesh_copy(&m, original);
+        pm_mesh_transform(&m, NULL, at->scale, at->translation);
+        status = verdicts(&m, &unchecked, &warnings, &volume);
+        if (status != e.checked || unchecked != e.unchecked) {
+            fail_msg("%s, %s: checked %s (expected %s), unchecked %s (expected %s)", what, at->name,
+                     polymass_status_string(status), polymass_status_string(e.checked),
+                     polymass_status_string(unchecked), polymass_status_string(e.unchecked));
+        }
+        if (status == POLYMASS_OK) {
+            const double s3 = at->scale * at->scale * at->scale;
+            if (warnings != e.warnings) {
+                fail_msg("%s, %s: warnings %#x, expected %#x", what, at->name, warnings,
+                         e.warnings);
+            }
+            PM_ASSERT_REL("volume", e.volume * s3, volume, 1e-12);
+        }
+        pm_mesh_free(&m);
+    }
+    printf("  %-58s %s / unchecked %s\n", what, polymass_status_string(e.checked),
+           polymass_status_string(e.unchecked));
+}
+
+static const expectation overlap = {POLYMASS_ERROR_INTERSECTING, POLYMASS_OK, 0, 0};
+
+static void test_overlapping_cubes(void** state) {
+    pm_mesh m;
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    box(&m, 0.5, 0.5, 0.5, 1.5, 1.5, 1.5, 0, 0);
+    expect_everywhere("two unit cubes overlapping by 1/8 (quads)", &m, overlap);
+    pm_mesh_free(&m);
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    box(&m, 0.5, 0.5, 0.5, 1.5, 1.5, 1.5, 1, 0);
+    expect_everywhere("the same, triangulated", &m, overlap);
+    pm_mesh_free(&m);
+}
+
+static void test_cube_overlapping_a_rotated_cube(void** state) {
+    pm_mesh m, turned;
+    double rotation[9];
+    const double centre[3] = {0.9, 0.9, 0.9};
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_init(&turned);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    box(&turned, -0.5, -0.5, -0.5, 0.5, 0.5, 0.5, 1, 0);
+    pm_rotation_from_quaternion(rotation, 0.9, 0.3, -0.2, 0.25);
+    pm_mesh_transform(&turned, rotation, 1.0, centre);
+    pm_mesh_append(&m, &turned);
+    expect_everywhere("a cube overlapping a rotated cube", &m, overlap);
+    pm_mesh_free(&turned);
+    pm_mesh_free(&m);
+}
+
+static void test_vertex_pushed_through_the_opposite_face(void** state) {
+    pm_mesh m;
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_unit_cube(&m, 1);
+    /* Vertex 7 = (1, 1, 1) through the bottom face z = 0. */
+    m.positions[3 * 7 + 0] = 0.7;
+    m.positions[3 * 7 + 1] = 0.7;
+    m.positions[3 * 7 + 2] = -0.6;
+    expect_everywhere("a cube whose corner is pushed through its bottom", &m, overlap);
+    pm_mesh_free(&m);
+}
+
+static void test_torus_through_itself(void** state) {
+    pm_mesh m;
+    (void)state;
+    pm_mesh_init(&m);
+    torus(&m, 0.6, 1.0, 24);
+    expect_everywhere("a spindle torus (tube through itself)", &m, overlap);
+    pm_mesh_free(&m);
+    /* An ordinary torus is valid: no false positive on a curved surface. */
+    pm_mesh_init(&m);
+    torus(&m, 2.0, 1.0, 24);
+    {
+        polymass_context* ctx = pm_context_new(CHECKED);
+        polymass_mass_properties p;
+        pm_props_init(&p);
+        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        assert_int_equal(p.warnings, 0);
+        polymass_context_destroy(ctx);
+    }
+    pm_mesh_free(&m);
+}
+
+static void test_shells_touching_along_a_face(void** state) {
+    pm_mesh m;
+    const expectation touching = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES, 2.0};
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    box(&m, 1, 0, 0, 2, 1, 1, 0, 0);
+    expect_everywhere("two cubes resting against each other", &m, touching);
+    pm_mesh_free(&m);
+    /* Offset on the shared plane, triangulated: still touching only. */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    box(&m, 0.25, 0.5, 1, 1.25, 1.5, 2, 1, 0);
+    expect_everywhere("a cube resting half on another", &m, touching);
+    pm_mesh_free(&m);
+}
+
+static void test_cavities_and_parts_in_hollows(void** state) {
+    pm_mesh m;
+    const double centre[3] = {2, 2, 1};
+    const expectation cavity = {POLYMASS_OK, POLYMASS_OK, 0, 64.0 - 8.0};
+    const expectation nested = {POLYMASS_OK, POLYMASS_OK, 0, 216.0 - 64.0 + 8.0};
+    const expectation touching_cavity = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES,
+                                         64.0 - 4.0 / 3.0};
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
+    box(&m, 1, 1, 1, 3, 3, 3, 1, 1);
+    expect_everywhere("a cube with a cavity", &m, cavity);
+    pm_mesh_free(&m);
+
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 6, 6, 6, 0, 0);
+    box(&m, 1, 1, 1, 5, 5, 5, 0, 1);
+    box(&m, 2, 2, 2, 4, 4, 4, 1, 0);
+    expect_everywhere("a part inside a hollow part", &m, nested);
+    pm_mesh_free(&m);
+
+    /* The octahedron's lowest corner (2, 2, 0) lies on the outer bottom face. */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
+    octahedron(&m, centre, 1.0, 1);
+    expect_everywhere("a cavity touching its outer wall in one point", &m, touching_cavity);
+    pm_mesh_free(&m);
+}
+
+static void test_solid_inside_a_solid_counts_twice(void** state) {
+    pm_mesh m;
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
+    box(&m, 1, 1, 1, 2, 2, 2, 1, 0);
+    expect_everywhere("a solid cube inside a solid cube", &m, overlap);
+    pm_mesh_free(&m);
+}
+
+static void test_inside_out_shells(void** state) {
+    pm_mesh m;
+    static const double l_shape[] = {0, 0, 4, 0, 4, 1, 1, 1, 1, 4, 0, 4};
+    const expectation apart = {POLYMASS_ERROR_INVERTED, POLYMASS_ERROR_INVERTED, 0, 0};
+    const expectation in_the_notch = {POLYMASS_ERROR_INVERTED, POLYMASS_OK, 0, 0};
+    (void)state;
+    /* Apart from the solid: refused with or without the check (boxes tell). */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    box(&m, 3, 0, 0, 3.5, 0.5, 0.5, 0, 1);
+    expect_everywhere("a cube and, apart, a cube inside out", &m, apart);
+    pm_mesh_free(&m);
+    /* In the notch of an L: within its box, outside the solid. Only the
+       counted nesting can tell it from a cavity. */
+    pm_mesh_init(&m);
+    pm_mesh_add_prism(&m, l_shape, 6, 0, 1);
+    box(&m, 2.5, 2.5, 0.25, 3, 3, 0.75, 1, 1);
+    expect_everywhere("an inside-out cube in the notch of an L", &m, in_the_notch);
+    pm_mesh_free(&m);
+}
+
+static void test_report_lists_pairs_and_shells(void** state) {
+    pm_mesh m;
+    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_diagnostics d;
+    polymass_shell shells[3];
+    uint64_t count = 0, i;
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    box(&m, 0.5, 0.5, 0.5, 1.5, 1.5, 1.5, 0, 0);
+    pm_diagnostics_init(&d);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INTERSECTING, pm_check(&d, ctx, &m));
+    assert_non_null(strstr(polymass_context_message(ctx), "cross each other"));
+    assert_int_equal(d.status, POLYMASS_ERROR_INTERSECTING);
+    assert_int_equal(d.shell_count, 2);
+    /* Each cube has three faces through the other's interior, every one
+       crossing three of the other's: 3 x 3 pairs... at least one per face. */
+    assert_true(d.intersecting_face_pairs >= 3);
+    for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+        if (i < d.intersecting_face_pairs) {
+            assert_true(d.first_intersecting_face_pairs[i][0] < 6);  /* first cube */
+            assert_true(d.first_intersecting_face_pairs[i][1] >= 6); /* second cube */
+            assert_true(d.first_intersecting_face_pairs[i][1] < 12);
+            if (i > 0) { /* ascending */
+                assert_true(d.first_intersecting_face_pairs[i - 1][0] <
+                                d.first_intersecting_face_pairs[i][0] ||
+                            (d.first_intersecting_face_pairs[i - 1][0] ==
+                                 d.first_intersecting_face_pairs[i][0] &&
+                             d.first_intersecting_face_pairs[i - 1][1] <
+                                 d.first_intersecting_face_pairs[i][1]));
+            }
+        } else {
+            assert_true(d.first_intersecting_face_pairs[i][0] == POLYMASS_NONE);
+        }
+    }
+    assert_int_equal(d.touching_face_pairs, 0);
+    for (i = 0; i < 3; ++i) {
+        memset(&shells[i], 0, sizeof shells[i]);
+        shells[i].struct_size = sizeof shells[i];
+    }
+    {
+        polymass_mesh_desc desc = pm_mesh_desc(&m);
+        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 3, &count, ctx, &desc));
+    }
+    assert_int_equal(count, 2);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    assert_int_equal(shells[0].face_count, 6);
+    assert_int_equal(shells[1].first_face, 6);
+    PM_ASSERT_REL("shell volume", 1.0, shells[1].signed_volume, 1e-14);
+    pm_mesh_free(&m);
+
+    /* A cavity and an inside-out shell, described. */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
+    box(&m, 1, 1, 1, 3, 3, 3, 0, 1);
+    box(&m, 6, 0, 0, 7, 1, 1, 0, 1);
+    pm_diagnostics_init(&d);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_check(&d, ctx, &m));
+    PM_ASSERT_MENTIONS(ctx, "shell", 2);
+    assert_int_equal(d.shell_count, 3);
+    assert_int_equal(d.inverted_shells, 1);
+    assert_int_equal(d.first_inverted_shells[0], 2);
+    assert_true(d.first_inverted_shells[1] == POLYMASS_NONE);
+    {
+        polymass_mesh_desc desc = pm_mesh_desc(&m);
+        count = 0;
+        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(NULL, 0, &count, ctx, &desc));
+        assert_int_equal(count, 3);
+        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 3, &count, ctx, &desc));
+    }
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    assert_int_equal(shells[1].kind, POLYMASS_SHELL_CAVITY);
+    assert_int_equal(shells[2].kind, POLYMASS_SHELL_INVERTED);
+    PM_ASSERT_REL("cavity volume", -8.0, shells[1].signed_volume, 1e-14);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* Reference solids whose faces touch by construction: four boxes face to
+   face, and caps fanned into triangles that overlap outside the star. */
+static int touches_by_construction(const char* name) {
+    return strcmp(name, "ring_of_boxes") == 0 || strcmp(name, "prism_star_fan") == 0;
+}
+
+/* No false positive: every exact-reference solid passes the check, far from
+   the origin too, with bit-identical results. */
+static void test_reference_solids_do_not_intersect(void** state) {
+    size_t r, k;
+    (void)state;
+    for (r = 0; r < PM_REF_COUNT; ++r) {
+        for (k = 0; k < PLACEMENTS; ++k) {
+            pm_mesh m;
+            int32_t unchecked = -1, status;
+            uint32_t warnings = 0;
+            double volume = 0;
+            pm_mesh_init(&m);
+            pm_mesh_from_reference(&m, &pm_reference_solids[r]);
+            pm_mesh_transform(&m, NULL, placements[k].scale, placements[k].translation);
+            status = verdicts(&m, &unchecked, &warnings, &volume);
+            if (status != unchecked) {
+                fail_msg("%s, %s: %s with the check, %s without", pm_reference_solids[r].name,
+                         placements[k].name, polymass_status_string(status),
+                         polymass_status_string(unchecked));
+            }
+            if (!(warnings & POLYMASS_WARNING_TOUCHING_FACES) !=
+                !touches_by_construction(pm_reference_solids[r].name)) {
+                fail_msg("%s, %s: touching faces %s", pm_reference_solids[r].name,
+                         placements[k].name,
+                         warnings & POLYMASS_WARNING_TOUCHING_FACES ? "found" : "missed");
+            }
+            pm_mesh_free(&m);
+        }
+    }
+    printf("  %d reference solids x %d placements: no intersection\n", (int)PM_REF_COUNT,
+           (int)PLACEMENTS);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_overlapping_cubes),
+        cmocka_unit_test(test_cube_overlapping_a_rotated_cube),
+        cmocka_unit_test(test_vertex_pushed_through_the_opposite_face),
+        cmocka_unit_test(test_torus_through_itself),
+        cmocka_unit_test(test_shells_touching_along_a_face),
+        cmocka_unit_test(test_cavities_and_parts_in_hollows),
+        cmocka_unit_test(test_solid_inside_a_solid_counts_twice),
+        cmocka_unit_test(test_inside_out_shells),
+        cmocka_unit_test(test_report_lists_pairs_and_shells),
+        cmocka_unit_test(test_reference_solids_do_not_intersect),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
