@@ -13,11 +13,12 @@ packages=(
     clang-format                           # style check
     clang libclang-rt-14-dev               # fuzz preset: clang, libFuzzer + sanitizer runtimes
     abigail-tools binutils                 # ABI gate (abidw, abidiff), nm, readelf
-    dpkg-dev file                          # CPack DEB: dpkg-shlibdeps, shlibs
+    dpkg-dev file                          # dpkg-buildpackage, dpkg-shlibdeps
     python3 python3-venv                   # Python binding: a venv with cffi, pytest from PyPI
     libclang-dev                           # Rust binding: bindgen's libclang
     libcli11-dev nlohmann-json3-dev libpugixml-dev   # the polymass CLI: arguments, JSON, XML
     libtinygltf-dev lib3mf-dev             # the polymass CLI: glTF/GLB and 3MF readers
+    debhelper lintian help2man             # the Debian package (debian/): dh, lintian, its man page
     "$@"
 )
 

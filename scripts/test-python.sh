@@ -1,43 +1,73 @@
 #!/usr/bin/env bash
-# Tests the Python binding (bindings/python) the way a user installs it:
-#   1. builds the library (target polymass) with the release preset, incrementally,
-#      unless POLYMASS_LIBRARY already names a libpolymass.so.1 to test;
-#   2. creates build/python-venv once;
-#   3. pip-installs bindings/python into it, not editable, to prove it installs, with
-#      its [test] extra and ruff (pip rebuilds a local directory every time, and
-#      leaves the dependencies alone when they are satisfied);
+# Tests the Python binding (bindings/python) the way a user gets it:
+#   1. builds an sdist (python -m build --sdist: the package plus the library's
+#      C++ sources), then a wheel from that sdist, outside the repository (pip
+#      wheel: scikit-build-core builds libpolymass into it), in build/python-dist;
+#   2. installs the wheel into a second, fresh venv (build/python-venv-fresh, made
+#      anew each time) and computes a tetrahedron's volume there, exactly;
+#   3. installs the same wheel, with its [test] extra and ruff, into
+#      build/python-venv (made once; pip leaves satisfied dependencies alone);
 #   4. ruff format --check and ruff check over every Python file of the repository
 #      (ruff.toml; .gitignore'd build trees are skipped);
 #   5. pytest (bindings/python/tests), then runs the examples;
 #   6. the Dask example (examples/dask): dask[distributed] and pyarrow from PyPI,
 #      then its pytest on a distributed.LocalCluster.
+# The library under test is the wheel's own copy: POLYMASS_LIBRARY is unset.
 #
 #   scripts/test-python.sh            PYTHON=python3.12 scripts/test-python.sh
 #
-# Non-interactive; assumes scripts/install-deps.sh ran (python3-venv). Exits
-# non-zero at the first failure.
+# Non-interactive; assumes scripts/install-deps.sh ran (python3-venv, a C++
+# compiler, CMake, Eigen). Exits non-zero at the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 venv=$root/build/python-venv
+fresh_venv=$root/build/python-venv-fresh
+dist=$root/build/python-dist
 python=${PYTHON:-python3}
+pip_options=(--disable-pip-version-check --no-input --quiet)
+unset POLYMASS_LIBRARY
 
 step() { printf '\n==================== python: %s ====================\n' "$1"; }
 
-step library
-if [ -z "${POLYMASS_LIBRARY:-}" ]; then
-    [ -f build/release/CMakeCache.txt ] || cmake --preset release </dev/null
-    cmake --build --preset release --target polymass </dev/null  # the library alone
-    export POLYMASS_LIBRARY=$root/build/release/src/libpolymass.so.1
-fi
-[ -f "$POLYMASS_LIBRARY" ] || { echo "test-python: no library at $POLYMASS_LIBRARY" >&2; exit 1; }
-echo "POLYMASS_LIBRARY=$POLYMASS_LIBRARY"
+step sdist
+[ -x "$venv/bin/python" ] || "$python" -m venv "$venv"
+"$venv/bin/python" -m pip "${pip_options[@]}" install build ruff </dev/null
+rm -rf "$dist"
+"$venv/bin/python" -m build --sdist --outdir "$dist" bindings/python </dev/null
+sdist=$(ls "$dist"/polymass-*.tar.gz)
+case $(tar -tzf "$sdist") in
+*/libpolymass/src/core/*.cpp*) ;;
+*) echo "test-python: the sdist carries no C++ sources" >&2; exit 1 ;;
+esac
+echo "$sdist"
+
+step wheel
+"$venv/bin/python" -m pip "${pip_options[@]}" wheel --no-deps --wheel-dir "$dist" "$sdist" </dev/null
+wheel=$(ls "$dist"/polymass-*.whl)
+echo "$wheel"
+
+step fresh-venv
+rm -rf "$fresh_venv"
+"$python" -m venv "$fresh_venv"
+"$fresh_venv/bin/python" -m pip "${pip_options[@]}" install "$wheel" </dev/null
+# From / so that nothing of the repository is importable; 6 is exact in binary.
+(cd / && "$fresh_venv/bin/python" - <<'PYTHON'
+import numpy as np
+import polymass
+
+vertices = np.array([[0, 0, 0], [6, 0, 0], [0, 6, 0], [0, 0, 1]], dtype=float)
+faces = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+volume = polymass.mass_properties(vertices, faces).volume
+assert volume == 6.0, f"tetrahedron volume {volume!r}, expected exactly 6"
+print(f"fresh venv: polymass {polymass.__version__}, tetrahedron volume {volume!r}")
+PYTHON
+)
 
 step install
-[ -x "$venv/bin/python" ] || "$python" -m venv "$venv"
-"$venv/bin/python" -m pip --disable-pip-version-check --no-input --quiet \
-    install "./bindings/python[test]" ruff </dev/null
-"$venv/bin/python" -c 'import polymass; print("polymass", polymass.__version__, "C library", polymass.library_version())'
+"$venv/bin/python" -m pip "${pip_options[@]}" install --force-reinstall --no-deps "$wheel" </dev/null
+"$venv/bin/python" -m pip "${pip_options[@]}" install "$wheel[test]" </dev/null
+"$venv/bin/python" -c 'import polymass, polymass._library as l; print("polymass", polymass.__version__, "C library", polymass.library_version(), "from", l.source)'
 
 step ruff
 "$venv/bin/ruff" format --check .

@@ -17,10 +17,13 @@
 # library statically (feature `static`) and runs an example without it.
 #
 # Steps: fmt (cargo fmt --check), clippy (-D warnings), test (the workspace's
-# unit, integration and doc tests), doc (rustdoc, -D warnings), examples
-# (both, on the bundled bracket STL), static (an example linked with
-# libpolymass.a). Exits non-zero if any step fails; the later steps still
-# run. Non-interactive.
+# unit, integration and doc tests), bindgen (a fresh bindgen run over the
+# header matches the committed polymass-sys/src/bindings.rs), doc (rustdoc,
+# -D warnings), examples (both, on the bundled bracket STL), static (an example
+# linked with libpolymass.a), bundled (bundled-check, a crate outside the
+# workspace depending on polymass with the feature `bundled`, built in a fresh
+# target directory with no POLYMASS_* variable and run). Exits non-zero if any
+# step fails; the later steps still run. Non-interactive.
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -91,6 +94,11 @@ step_test() {
     cargo test --locked --workspace 2>&1 | tee "$TEST_LOG"
 }
 
+step_bindgen() {
+    cargo test --locked -p polymass-sys --features buildtime-bindgen \
+        --test bindings_up_to_date 2>&1 | tee -a "$TEST_LOG"
+}
+
 step_doc() {
     # Broken intra-doc links and undocumented public items fail.
     RUSTDOCFLAGS="-D warnings" cargo doc --locked --no-deps --workspace
@@ -111,6 +119,13 @@ step_static() {
         --bin mass_properties
 }
 
+step_bundled() {
+    local target=$ROOT/build/rust-bundled-check
+    rm -rf "$target"
+    env -u POLYMASS_LIB_DIR -u POLYMASS_INCLUDE_DIR -u LD_LIBRARY_PATH CARGO_TARGET_DIR="$target" \
+        cargo run --locked --manifest-path "$WORKSPACE/bundled-check/Cargo.toml"
+}
+
 # --------------------------------------------------------------------------
 
 need_toolchain || exit 1
@@ -121,7 +136,7 @@ find_library || {
 export LD_LIBRARY_PATH=$POLYMASS_LIB_DIR${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 cd "$WORKSPACE" || exit 1
 
-STEPS=(fmt clippy test doc examples static)
+STEPS=(fmt clippy test bindgen doc examples static bundled)
 declare -A RESULT
 failed=0
 for step in "${STEPS[@]}"; do

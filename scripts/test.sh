@@ -15,6 +15,9 @@
 #           ruff over every Python file, pytest, the Python examples
 #   rust    scripts/test-rust.sh: rustfmt, clippy, cargo test (with doc
 #           tests), rustdoc, the Rust examples
+#   debian  scripts/test-debian.sh: the Debian packages (debian/) built from a
+#           copy of the tree with dpkg-buildpackage, lintian (no error, no
+#           warning), the packaged tool run once
 #
 # Exits non-zero if any step fails; the later steps still run, so one run
 # shows every failure. Idempotent: build trees under build/ are reused.
@@ -27,7 +30,7 @@ mkdir -p "$LOG_DIR"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-2}
 
-STEPS=(deps format dev asan fuzz python rust)
+STEPS=(deps format dev asan fuzz python rust debian)
 
 # Counts of test cases (ctest) across the steps, for the closing line.
 TESTS_PASSED=0
@@ -141,6 +144,10 @@ step_rust() {
     bash scripts/test-rust.sh </dev/null 2>&1 | tee "$log" || rc=1
     count_rust "$log"
     return $rc
+}
+
+step_debian() {
+    bash scripts/test-debian.sh </dev/null 2>&1 | tee "$LOG_DIR/debian.log"
 }
 
 # --------------------------------------------------------------------------

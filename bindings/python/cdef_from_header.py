@@ -11,10 +11,17 @@ with nothing predefined (no C++, no compiler-specific branch), object-like
 macros, and constants evaluated with Python's own arithmetic. Anything it does
 not understand is an error naming the line, so the header cannot drift away
 from the binding unnoticed.
+
+Run as a script (by the package's CMake build), it writes the package's two
+generated modules: ``_polymass_cffi.py`` (cffi's out-of-line ABI-mode module:
+no compiler needed) and ``_header.py`` (the constants)::
+
+    python cdef_from_header.py OUTPUT_DIR HEADER INCLUDE_DIR...
 """
 
 from __future__ import annotations
 
+import argparse
 import ast
 import re
 from dataclasses import dataclass, field
@@ -213,3 +220,33 @@ def _evaluate(text: str, known: dict, where: str) -> int | float | str:
         raise HeaderError(f"{where}: unsupported constant expression {text!r}")
 
     return value(tree)
+
+
+def write_modules(header: Header, output_dir: Path) -> None:
+    """Writes ``_polymass_cffi.py`` and ``_header.py`` of the package into ``output_dir``."""
+    import cffi
+
+    output_dir.mkdir(parents=True, exist_ok=True)
+    builder = cffi.FFI()
+    builder.cdef(header.cdef())
+    builder.set_source("polymass._polymass_cffi", None)
+    builder.emit_python_code(str(output_dir / "_polymass_cffi.py"))
+    lines = [
+        '"""Constants of polymass.h, generated at build time by cdef_from_header.py."""',
+        "",
+        *(f"{name} = {value!r}" for name, value in sorted(header.constants.items())),
+    ]
+    (output_dir / "_header.py").write_text("\n".join(lines) + "\n")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n", 1)[0])
+    parser.add_argument("output_dir", type=Path, help="where the two modules are written")
+    parser.add_argument("header", type=Path, help="polymass/polymass.h")
+    parser.add_argument("include_dirs", type=Path, nargs="+", help="where its includes are")
+    arguments = parser.parse_args()
+    write_modules(read_header(arguments.header, arguments.include_dirs), arguments.output_dir)
+
+
+if __name__ == "__main__":
+    main()

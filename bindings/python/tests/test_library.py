@@ -1,5 +1,5 @@
-"""Loading: the library by SONAME or POLYMASS_LIBRARY, version and layout checks,
-and the declarations that come from the header."""
+"""Loading: the package's own copy of the library or the one POLYMASS_LIBRARY names,
+version and layout checks, and the declarations that come from the header."""
 
 from __future__ import annotations
 
@@ -85,23 +85,52 @@ def test_a_missing_library_is_an_import_error_naming_the_variable_and_soname():
     assert "libpolymass.so.1" in result.stderr.split("POLYMASS_LIBRARY=")[-1]
 
 
-def test_the_library_is_found_by_soname_on_the_loader_path():
-    library = Path(os.environ.get("POLYMASS_LIBRARY", ""))
-    if not library.is_file():
-        pytest.skip("POLYMASS_LIBRARY is not set to a file: the SONAME path is the default")
-    environment = {"LD_LIBRARY_PATH": str(library.parent), "POLYMASS_LIBRARY": ""}
-    result = _import_with(environment)
+_LOADED_LIBRARY = (
+    "import polymass, pathlib; "
+    "print(next(line.split()[-1] for line in pathlib.Path('/proc/self/maps').read_text()"
+    ".splitlines() if 'libpolymass' in line))"
+)
+
+
+def _loaded_library(environment: dict) -> Path:
+    """The file of libpolymass mapped by a fresh interpreter that imports polymass."""
+    if not Path("/proc/self/maps").is_file():
+        pytest.skip("needs /proc/self/maps")
+    result = subprocess.run(
+        [sys.executable, "-c", _LOADED_LIBRARY],
+        env={**os.environ, **environment},
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert result.returncode == 0, result.stderr
+    return Path(result.stdout.strip())
+
+
+def test_without_the_variable_the_package_s_own_copy_is_loaded():
+    loaded = _loaded_library({"POLYMASS_LIBRARY": ""})
+    assert loaded == Path(polymass.__file__).resolve().with_name("libpolymass.so.1")
+
+
+def test_the_variable_may_name_the_library_the_loader_finds(tmp_path):
+    """POLYMASS_LIBRARY=libpolymass.so.1 asks for the system's library (here: one on
+    LD_LIBRARY_PATH) rather than the package's copy."""
+    system = tmp_path / "libpolymass.so.1"
+    shutil.copyfile(_loaded_library({"POLYMASS_LIBRARY": ""}), system)
+    loaded = _loaded_library(
+        {"POLYMASS_LIBRARY": "libpolymass.so.1", "LD_LIBRARY_PATH": str(tmp_path)}
+    )
+    assert loaded == system
 
 
 def test_every_exported_function_is_declared():
     """The declarations come from the header: nothing the library exports is missing."""
-    library = os.environ.get("POLYMASS_LIBRARY")
     nm = shutil.which("nm")
-    if not (library and nm):
-        pytest.skip("needs POLYMASS_LIBRARY and nm")
+    if not nm:
+        pytest.skip("needs nm")
+    library = _loaded_library({})
     symbols = subprocess.run(
-        [nm, "-D", "--defined-only", library], capture_output=True, text=True, check=True
+        [nm, "-D", "--defined-only", str(library)], capture_output=True, text=True, check=True
     ).stdout.split()
     exported = {s.split("@")[0] for s in symbols if s.startswith("polymass_")}
     assert exported and exported <= set(dir(lib))

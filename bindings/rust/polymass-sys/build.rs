@@ -1,7 +1,11 @@
-//! Finds libpolymass, tells cargo how to link it, and generates the bindings
-//! from the library's own header with bindgen.
+//! Finds or builds libpolymass, tells cargo how to link it, and provides the
+//! bindings: the committed `src/bindings.rs`, or with the feature
+//! `buildtime-bindgen` a fresh bindgen run over the library's own header.
 //!
 //! Where the library comes from (the first that applies wins):
+//! 0. With the feature `bundled`: built here from the C++ sources of the
+//!    repository this crate is in, with CMake (the `cmake` crate; Release),
+//!    and linked statically. No other source is looked at.
 //! 1. `POLYMASS_LIB_DIR`: the directory holding `libpolymass.so` (or
 //!    `libpolymass.a` with the `static` feature). The headers are looked up in
 //!    `POLYMASS_INCLUDE_DIR` (a `PATH`-style list) if set, otherwise in
@@ -19,12 +23,16 @@
 //! crate's own binaries, not those of the crates that use it, and installed
 //! libraries need none. A library outside the loader's search path is found
 //! at run time through `LD_LIBRARY_PATH` (scripts/test-rust.sh sets it), or
-//! not needed at all with the `static` feature.
+//! not needed at all with the `static` or `bundled` feature.
+
+// With `bundled`, the search for an installed library (find_library and what it
+// calls) is not used.
+#![cfg_attr(feature = "bundled", allow(dead_code))]
 
 use std::env;
-use std::ffi::OsString;
 use std::path::{Path, PathBuf};
 
+#[cfg(feature = "buildtime-bindgen")]
 use bindgen::callbacks::{IntKind, ParseCallbacks};
 
 /// Where the library and its headers are.
@@ -38,15 +46,19 @@ struct Library {
 fn main() {
     println!("cargo:rerun-if-env-changed=POLYMASS_LIB_DIR");
     println!("cargo:rerun-if-env-changed=POLYMASS_INCLUDE_DIR");
-    let static_link = env::var_os("CARGO_FEATURE_STATIC").is_some();
+    let static_link = cfg!(feature = "bundled") || cfg!(feature = "static");
 
+    #[cfg(feature = "bundled")]
+    let library = build_bundled();
+    #[cfg(not(feature = "bundled"))]
     let library = find_library(static_link).unwrap_or_else(|reasons| {
         panic!(
             "libpolymass not found:\n{}\n\
-             Build it first (from the repository root: cmake --preset release && \
-             cmake --build --preset release), install it (cmake --install), or set \
-             POLYMASS_LIB_DIR to the directory holding {} (and POLYMASS_INCLUDE_DIR to the \
-             directories holding polymass/polymass.h and polymass/polymass_version.h).",
+                 Build it first (from the repository root: cmake --preset release && \
+                 cmake --build --preset release), install it (cmake --install), set \
+                 POLYMASS_LIB_DIR to the directory holding {} (and POLYMASS_INCLUDE_DIR to the \
+                 directories holding polymass/polymass.h and polymass/polymass_version.h), or \
+                 enable the feature `bundled` to build it from source.",
             reasons.join("\n"),
             library_file_name(static_link)
         )
@@ -67,7 +79,42 @@ fn main() {
     println!("cargo:include={}", include_path.to_string_lossy());
 
     check_none_definition(&header);
+    #[cfg(feature = "buildtime-bindgen")]
     generate_bindings(&header, &library.include_dirs, static_link);
+}
+
+/// Builds libpolymass.a from the repository's sources (feature `bundled`): the
+/// library alone, in Release whatever cargo's profile, under OUT_DIR.
+#[cfg(feature = "bundled")]
+fn build_bundled() -> Library {
+    let source = checkout_dir();
+    for input in [
+        "CMakeLists.txt",
+        "cmake",
+        "include",
+        "src/CMakeLists.txt",
+        "src/capi",
+        "src/core",
+    ] {
+        println!("cargo:rerun-if-changed={}", source.join(input).display());
+    }
+    let out = cmake::Config::new(&source)
+        .profile("Release")
+        .define("POLYMASS_BUILD_CLI", "OFF")
+        .define("POLYMASS_BUILD_TESTS", "OFF")
+        .define("POLYMASS_BUILD_EXAMPLES", "OFF")
+        .build_target("polymass_static")
+        .build();
+    let build = out.join("build");
+    Library {
+        source: format!(
+            "bundled: built from {} in {}",
+            source.display(),
+            build.display()
+        ),
+        link_dirs: vec![build.join("src")],
+        include_dirs: vec![source.join("include"), build.join("include")],
+    }
 }
 
 fn library_file_name(static_link: bool) -> &'static str {
@@ -207,9 +254,11 @@ fn check_none_definition(header: &Path) {
 /// is compared with, so Rust code needs no casts: statuses, orientations and
 /// shell kinds are int32_t, everything else (flags,
 /// warnings, type and mode codes, version numbers) is uint32_t.
+#[cfg(feature = "buildtime-bindgen")]
 #[derive(Debug)]
 struct ConstantTypes;
 
+#[cfg(feature = "buildtime-bindgen")]
 impl ParseCallbacks for ConstantTypes {
     fn int_macro(&self, name: &str, _value: i64) -> Option<IntKind> {
         let kind = if name == "POLYMASS_OK"
@@ -225,7 +274,12 @@ impl ParseCallbacks for ConstantTypes {
     }
 }
 
+/// Writes OUT_DIR/bindings.rs, which lib.rs includes instead of the committed
+/// src/bindings.rs (tests/bindings_up_to_date.rs compares the two).
+#[cfg(feature = "buildtime-bindgen")]
 fn generate_bindings(header: &Path, include_dirs: &[PathBuf], static_link: bool) {
+    use std::ffi::OsString;
+
     let mut clang_args: Vec<OsString> = include_dirs
         .iter()
         .map(|dir| {

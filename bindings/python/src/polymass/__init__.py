@@ -8,8 +8,9 @@ Units are the caller's (lengths L, density M/L^3, mass M, inertia M*L^2). The
 inertia tensor has the negated products of inertia off its diagonal
 (Ixy = -integral rho x y dV), as URDF, SDFormat, MuJoCo, PhysX and Bullet expect.
 Integration runs about a point inside the mesh, so parts far from the origin
-keep their digits. The C library is found by its SONAME (libpolymass.so.1) or
-at the path in the environment variable POLYMASS_LIBRARY.
+keep their digits. The C library is the copy the package carries, unless the
+environment variable POLYMASS_LIBRARY names another (a path, or libpolymass.so.1
+for the one the loader finds).
 """
 
 from . import _header

@@ -1,9 +1,15 @@
 """Opens libpolymass and checks that it is the library this binding was built for.
 
-The library is opened by its SONAME (``libpolymass.so.1``: the loader's search
-path, ``ldconfig``, ``LD_LIBRARY_PATH``), or from the path in the environment
-variable ``POLYMASS_LIBRARY``. cffi's ABI mode calls it with the GIL released,
-so threads compute in parallel.
+Which library (the first that applies):
+
+1. the environment variable ``POLYMASS_LIBRARY``: a path (an installed or locally
+   built ``libpolymass.so.1``), or a bare file name such as ``libpolymass.so.1``,
+   which the loader looks up in its search path (``ldconfig``, ``LD_LIBRARY_PATH``):
+   the system's library, e.g. from the ``libpolymass1`` package;
+2. the copy the wheel carries beside this module, built from the same sources as the
+   header the declarations come from.
+
+cffi's ABI mode calls it with the GIL released, so threads compute in parallel.
 """
 
 from __future__ import annotations
@@ -11,6 +17,7 @@ from __future__ import annotations
 import os
 import sys
 import threading
+from pathlib import Path
 
 from . import _header
 from ._polymass_cffi import ffi
@@ -28,16 +35,22 @@ def _soname() -> str:
 
 
 def _open():
+    """The library and where it came from (for messages)."""
     soname = _soname()
-    path = os.environ.get(LIBRARY_VARIABLE)
+    requested = os.environ.get(LIBRARY_VARIABLE)
+    if requested:
+        source = f"{LIBRARY_VARIABLE}={requested}"
+        target = requested
+    else:
+        target = str(Path(__file__).with_name(soname))
+        source = f"the copy in the package, {target}"
     try:
-        return ffi.dlopen(path or soname)
+        return ffi.dlopen(target), source
     except OSError as error:
-        tried = f"{LIBRARY_VARIABLE}={path}" if path else f"{soname} (by SONAME)"
         raise ImportError(
-            f"polymass: cannot load the C library from {tried}: {error}. Install libpolymass "
-            f"so that the loader finds {soname}, or set {LIBRARY_VARIABLE} to the path of "
-            f"{soname}."
+            f"polymass: cannot load the C library from {source}: {error}. Set "
+            f"{LIBRARY_VARIABLE} to the path of a {soname} (or to {soname} to use the one the "
+            "loader finds), or reinstall the package."
         ) from error
 
 
@@ -71,7 +84,7 @@ def _check_struct_sizes(library) -> None:
             )
 
 
-lib = _open()
+lib, source = _open()
 _check_version(lib)
 _check_struct_sizes(lib)
 
