@@ -16,6 +16,7 @@ pub const POLYMASS_ERROR_OPEN: i32 = 20;
 pub const POLYMASS_ERROR_NON_MANIFOLD: i32 = 21;
 pub const POLYMASS_ERROR_INCONSISTENT_ORIENTATION: i32 = 22;
 pub const POLYMASS_ERROR_NON_PLANAR_FACE: i32 = 23;
+pub const POLYMASS_ERROR_INTERSECTING: i32 = 24;
 pub const POLYMASS_ERROR_INVERTED: i32 = 30;
 pub const POLYMASS_ERROR_ZERO_VOLUME: i32 = 31;
 pub const POLYMASS_ERROR_ZERO_AREA: i32 = 32;
@@ -24,6 +25,7 @@ pub const POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS: u32 = 1;
 pub const POLYMASS_OPTION_ACCEPT_INVERTED: u32 = 2;
 pub const POLYMASS_OPTION_WELD_VERTICES: u32 = 4;
 pub const POLYMASS_OPTION_ACCEPT_NON_MANIFOLD: u32 = 8;
+pub const POLYMASS_OPTION_CHECK_INTERSECTIONS: u32 = 16;
 pub const POLYMASS_DEFAULT_PLANARITY_TOLERANCE: f64 = 0.000001;
 pub const POLYMASS_MAX_WELD_TOLERANCE: f64 = 0.001;
 pub const POLYMASS_POSITION_FLOAT64: u32 = 0;
@@ -36,9 +38,17 @@ pub const POLYMASS_WARNING_INVERTED: u32 = 1;
 pub const POLYMASS_WARNING_DEGENERATE_FACES: u32 = 2;
 pub const POLYMASS_WARNING_UNCHECKED: u32 = 4;
 pub const POLYMASS_WARNING_NON_MANIFOLD: u32 = 8;
+pub const POLYMASS_WARNING_TOUCHING_FACES: u32 = 16;
 pub const POLYMASS_DIAGNOSTIC_LOCATIONS: u32 = 8;
+pub const POLYMASS_SHELL_SOLID: i32 = 1;
+pub const POLYMASS_SHELL_CAVITY: i32 = 2;
+pub const POLYMASS_SHELL_INVERTED: i32 = 3;
+pub const POLYMASS_SHELL_OVERLAPPING: i32 = 4;
+pub const POLYMASS_SHELL_NO_VOLUME: i32 = 5;
 pub const POLYMASS_COUNTER_CLOCKWISE: i32 = 1;
 pub const POLYMASS_CLOCKWISE: i32 = -1;
+pub const POLYMASS_MOMENTS_PARTIAL: u32 = 1;
+pub const POLYMASS_BATCH_MESSAGE_SIZE: u32 = 256;
 unsafe extern "C" {
     pub fn polymass_version() -> u32;
 }
@@ -207,11 +217,16 @@ pub struct polymass_mass_properties {
     pub inertia_point: [f64; 9usize],
     pub principal_moments: [f64; 3usize],
     pub principal_axes: [f64; 9usize],
+    pub error_bound_volume: f64,
+    pub error_bound_center_of_mass: f64,
+    pub error_bound_inertia: f64,
+    pub error_bound_principal_moments: f64,
+    pub error_bound_principal_axes: f64,
 }
 #[allow(clippy::unnecessary_operation, clippy::identity_op)]
 const _: () = {
     ["Size of polymass_mass_properties"]
-        [::std::mem::size_of::<polymass_mass_properties>() - 376usize];
+        [::std::mem::size_of::<polymass_mass_properties>() - 416usize];
     ["Alignment of polymass_mass_properties"]
         [::std::mem::align_of::<polymass_mass_properties>() - 8usize];
     ["Offset of field: polymass_mass_properties::struct_size"]
@@ -238,6 +253,18 @@ const _: () = {
         [::std::mem::offset_of!(polymass_mass_properties, principal_moments) - 280usize];
     ["Offset of field: polymass_mass_properties::principal_axes"]
         [::std::mem::offset_of!(polymass_mass_properties, principal_axes) - 304usize];
+    ["Offset of field: polymass_mass_properties::error_bound_volume"]
+        [::std::mem::offset_of!(polymass_mass_properties, error_bound_volume) - 376usize];
+    ["Offset of field: polymass_mass_properties::error_bound_center_of_mass"]
+        [::std::mem::offset_of!(polymass_mass_properties, error_bound_center_of_mass) - 384usize];
+    ["Offset of field: polymass_mass_properties::error_bound_inertia"]
+        [::std::mem::offset_of!(polymass_mass_properties, error_bound_inertia) - 392usize];
+    ["Offset of field: polymass_mass_properties::error_bound_principal_moments"][::std::mem::offset_of!(
+        polymass_mass_properties,
+        error_bound_principal_moments
+    ) - 400usize];
+    ["Offset of field: polymass_mass_properties::error_bound_principal_axes"]
+        [::std::mem::offset_of!(polymass_mass_properties, error_bound_principal_axes) - 408usize];
 };
 #[repr(C)]
 #[derive(Debug, Default, Copy, Clone)]
@@ -265,10 +292,19 @@ pub struct polymass_diagnostics {
     pub first_non_planar_faces: [u64; 8usize],
     pub max_non_planarity: f64,
     pub signed_volume: f64,
+    pub shell_count: u64,
+    pub inverted_shells: u64,
+    pub first_inverted_shells: [u64; 8usize],
+    pub overlapping_shells: u64,
+    pub first_overlapping_shells: [u64; 8usize],
+    pub intersecting_face_pairs: u64,
+    pub first_intersecting_face_pairs: [[u64; 2usize]; 8usize],
+    pub touching_face_pairs: u64,
+    pub first_touching_face_pairs: [[u64; 2usize]; 8usize],
 }
 #[allow(clippy::unnecessary_operation, clippy::identity_op)]
 const _: () = {
-    ["Size of polymass_diagnostics"][::std::mem::size_of::<polymass_diagnostics>() - 816usize];
+    ["Size of polymass_diagnostics"][::std::mem::size_of::<polymass_diagnostics>() - 1240usize];
     ["Alignment of polymass_diagnostics"][::std::mem::align_of::<polymass_diagnostics>() - 8usize];
     ["Offset of field: polymass_diagnostics::struct_size"]
         [::std::mem::offset_of!(polymass_diagnostics, struct_size) - 0usize];
@@ -316,6 +352,48 @@ const _: () = {
         [::std::mem::offset_of!(polymass_diagnostics, max_non_planarity) - 800usize];
     ["Offset of field: polymass_diagnostics::signed_volume"]
         [::std::mem::offset_of!(polymass_diagnostics, signed_volume) - 808usize];
+    ["Offset of field: polymass_diagnostics::shell_count"]
+        [::std::mem::offset_of!(polymass_diagnostics, shell_count) - 816usize];
+    ["Offset of field: polymass_diagnostics::inverted_shells"]
+        [::std::mem::offset_of!(polymass_diagnostics, inverted_shells) - 824usize];
+    ["Offset of field: polymass_diagnostics::first_inverted_shells"]
+        [::std::mem::offset_of!(polymass_diagnostics, first_inverted_shells) - 832usize];
+    ["Offset of field: polymass_diagnostics::overlapping_shells"]
+        [::std::mem::offset_of!(polymass_diagnostics, overlapping_shells) - 896usize];
+    ["Offset of field: polymass_diagnostics::first_overlapping_shells"]
+        [::std::mem::offset_of!(polymass_diagnostics, first_overlapping_shells) - 904usize];
+    ["Offset of field: polymass_diagnostics::intersecting_face_pairs"]
+        [::std::mem::offset_of!(polymass_diagnostics, intersecting_face_pairs) - 968usize];
+    ["Offset of field: polymass_diagnostics::first_intersecting_face_pairs"]
+        [::std::mem::offset_of!(polymass_diagnostics, first_intersecting_face_pairs) - 976usize];
+    ["Offset of field: polymass_diagnostics::touching_face_pairs"]
+        [::std::mem::offset_of!(polymass_diagnostics, touching_face_pairs) - 1104usize];
+    ["Offset of field: polymass_diagnostics::first_touching_face_pairs"]
+        [::std::mem::offset_of!(polymass_diagnostics, first_touching_face_pairs) - 1112usize];
+};
+#[repr(C)]
+#[derive(Debug, Default, Copy, Clone)]
+pub struct polymass_shell {
+    pub struct_size: u32,
+    pub kind: i32,
+    pub face_count: u64,
+    pub first_face: u64,
+    pub signed_volume: f64,
+}
+#[allow(clippy::unnecessary_operation, clippy::identity_op)]
+const _: () = {
+    ["Size of polymass_shell"][::std::mem::size_of::<polymass_shell>() - 32usize];
+    ["Alignment of polymass_shell"][::std::mem::align_of::<polymass_shell>() - 8usize];
+    ["Offset of field: polymass_shell::struct_size"]
+        [::std::mem::offset_of!(polymass_shell, struct_size) - 0usize];
+    ["Offset of field: polymass_shell::kind"]
+        [::std::mem::offset_of!(polymass_shell, kind) - 4usize];
+    ["Offset of field: polymass_shell::face_count"]
+        [::std::mem::offset_of!(polymass_shell, face_count) - 8usize];
+    ["Offset of field: polymass_shell::first_face"]
+        [::std::mem::offset_of!(polymass_shell, first_face) - 16usize];
+    ["Offset of field: polymass_shell::signed_volume"]
+        [::std::mem::offset_of!(polymass_shell, signed_volume) - 24usize];
 };
 #[repr(C)]
 #[derive(Debug, Default, Copy, Clone)]
@@ -375,6 +453,33 @@ unsafe extern "C" {
 }
 unsafe extern "C" {
     pub fn polymass_sizeof_polygon_properties() -> u32;
+}
+unsafe extern "C" {
+    pub fn polymass_sizeof_shell() -> u32;
+}
+unsafe extern "C" {
+    pub fn polymass_options_init(options: *mut polymass_options, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mesh_desc_init(desc: *mut polymass_mesh_desc, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mass_desc_init(mass: *mut polymass_mass_desc, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mass_properties_init(
+        properties: *mut polymass_mass_properties,
+        struct_size: u32,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_diagnostics_init(report: *mut polymass_diagnostics, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_polygon_properties_init(
+        properties: *mut polymass_polygon_properties,
+        struct_size: u32,
+    ) -> i32;
 }
 unsafe extern "C" {
     pub fn polymass_context_create(
@@ -444,11 +549,233 @@ unsafe extern "C" {
     ) -> i32;
 }
 unsafe extern "C" {
+    pub fn polymass_mesh_shell_list(
+        out_shells: *mut polymass_shell,
+        capacity: u64,
+        out_shell_count: *mut u64,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+    ) -> i32;
+}
+unsafe extern "C" {
     pub fn polymass_polygon_compute(
         out_properties: *mut polymass_polygon_properties,
         context: *mut polymass_context,
         points: *const f64,
         point_count: u64,
         stride: u64,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mesh_create_with_options(
+        out_mesh: *mut *mut polymass_mesh,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+        options: *const polymass_options,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mass_properties_compute_with_options(
+        out_properties: *mut polymass_mass_properties,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+        mass: *const polymass_mass_desc,
+        options: *const polymass_options,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mesh_check_with_options(
+        out_report: *mut polymass_diagnostics,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+        options: *const polymass_options,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mesh_shells_with_options(
+        out_shell_of_face: *mut u32,
+        out_shell_count: *mut u64,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+        options: *const polymass_options,
+    ) -> i32;
+}
+#[repr(C)]
+#[derive(Debug, Default, Copy, Clone)]
+pub struct polymass_moments {
+    pub struct_size: u32,
+    pub flags: u32,
+    pub reference: [f64; 3usize],
+    pub volume: f64,
+    pub mass: f64,
+    pub first: [f64; 3usize],
+    pub second: [f64; 6usize],
+    pub reference_error_bound: f64,
+    pub volume_error_bound: f64,
+    pub mass_error_bound: f64,
+    pub first_error_bound: f64,
+    pub second_error_bound: f64,
+}
+#[allow(clippy::unnecessary_operation, clippy::identity_op)]
+const _: () = {
+    ["Size of polymass_moments"][::std::mem::size_of::<polymass_moments>() - 160usize];
+    ["Alignment of polymass_moments"][::std::mem::align_of::<polymass_moments>() - 8usize];
+    ["Offset of field: polymass_moments::struct_size"]
+        [::std::mem::offset_of!(polymass_moments, struct_size) - 0usize];
+    ["Offset of field: polymass_moments::flags"]
+        [::std::mem::offset_of!(polymass_moments, flags) - 4usize];
+    ["Offset of field: polymass_moments::reference"]
+        [::std::mem::offset_of!(polymass_moments, reference) - 8usize];
+    ["Offset of field: polymass_moments::volume"]
+        [::std::mem::offset_of!(polymass_moments, volume) - 32usize];
+    ["Offset of field: polymass_moments::mass"]
+        [::std::mem::offset_of!(polymass_moments, mass) - 40usize];
+    ["Offset of field: polymass_moments::first"]
+        [::std::mem::offset_of!(polymass_moments, first) - 48usize];
+    ["Offset of field: polymass_moments::second"]
+        [::std::mem::offset_of!(polymass_moments, second) - 72usize];
+    ["Offset of field: polymass_moments::reference_error_bound"]
+        [::std::mem::offset_of!(polymass_moments, reference_error_bound) - 120usize];
+    ["Offset of field: polymass_moments::volume_error_bound"]
+        [::std::mem::offset_of!(polymass_moments, volume_error_bound) - 128usize];
+    ["Offset of field: polymass_moments::mass_error_bound"]
+        [::std::mem::offset_of!(polymass_moments, mass_error_bound) - 136usize];
+    ["Offset of field: polymass_moments::first_error_bound"]
+        [::std::mem::offset_of!(polymass_moments, first_error_bound) - 144usize];
+    ["Offset of field: polymass_moments::second_error_bound"]
+        [::std::mem::offset_of!(polymass_moments, second_error_bound) - 152usize];
+};
+unsafe extern "C" {
+    pub fn polymass_sizeof_moments() -> u32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_init(moments: *mut polymass_moments, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_compute(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+        options: *const polymass_options,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_compute_faces(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+        first_face: u64,
+        face_count: u64,
+        reference: *const f64,
+        options: *const polymass_options,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_mesh_moments(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        mesh: *const polymass_mesh,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_add(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        a: *const polymass_moments,
+        b: *const polymass_moments,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_subtract(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        a: *const polymass_moments,
+        b: *const polymass_moments,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_transform(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        moments: *const polymass_moments,
+        rotation: *const f64,
+        translation: *const f64,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_scale(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        moments: *const polymass_moments,
+        factors: *const f64,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_weight(
+        out_moments: *mut polymass_moments,
+        context: *mut polymass_context,
+        moments: *const polymass_moments,
+        mass: *const polymass_mass_desc,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_moments_mass_properties(
+        out_properties: *mut polymass_mass_properties,
+        context: *mut polymass_context,
+        moments: *const polymass_moments,
+        mass: *const polymass_mass_desc,
+    ) -> i32;
+}
+#[repr(C)]
+#[derive(Debug, Copy, Clone)]
+pub struct polymass_batch_item {
+    pub struct_size: u32,
+    pub status: i32,
+    pub desc: *const polymass_mesh_desc,
+    pub mass: *const polymass_mass_desc,
+    pub options: *const polymass_options,
+    pub properties: *mut polymass_mass_properties,
+    pub message: [::std::os::raw::c_char; 256usize],
+}
+#[allow(clippy::unnecessary_operation, clippy::identity_op)]
+const _: () = {
+    ["Size of polymass_batch_item"][::std::mem::size_of::<polymass_batch_item>() - 296usize];
+    ["Alignment of polymass_batch_item"][::std::mem::align_of::<polymass_batch_item>() - 8usize];
+    ["Offset of field: polymass_batch_item::struct_size"]
+        [::std::mem::offset_of!(polymass_batch_item, struct_size) - 0usize];
+    ["Offset of field: polymass_batch_item::status"]
+        [::std::mem::offset_of!(polymass_batch_item, status) - 4usize];
+    ["Offset of field: polymass_batch_item::desc"]
+        [::std::mem::offset_of!(polymass_batch_item, desc) - 8usize];
+    ["Offset of field: polymass_batch_item::mass"]
+        [::std::mem::offset_of!(polymass_batch_item, mass) - 16usize];
+    ["Offset of field: polymass_batch_item::options"]
+        [::std::mem::offset_of!(polymass_batch_item, options) - 24usize];
+    ["Offset of field: polymass_batch_item::properties"]
+        [::std::mem::offset_of!(polymass_batch_item, properties) - 32usize];
+    ["Offset of field: polymass_batch_item::message"]
+        [::std::mem::offset_of!(polymass_batch_item, message) - 40usize];
+};
+impl Default for polymass_batch_item {
+    fn default() -> Self {
+        let mut s = ::std::mem::MaybeUninit::<Self>::uninit();
+        unsafe {
+            ::std::ptr::write_bytes(s.as_mut_ptr(), 0, 1);
+            s.assume_init()
+        }
+    }
+}
+unsafe extern "C" {
+    pub fn polymass_sizeof_batch_item() -> u32;
+}
+unsafe extern "C" {
+    pub fn polymass_batch_item_init(item: *mut polymass_batch_item, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_batch_compute(
+        items: *mut polymass_batch_item,
+        item_count: u64,
+        out_failed: *mut u64,
+        context: *mut polymass_context,
     ) -> i32;
 }
