@@ -161,6 +161,41 @@ constexpr std::size_t orient2d_terms = 2 * 4 * 2;
 static_assert(2 * (orient2d_row_top + 1) + 4 <= 1023, "orient2d terms must not overflow");
 static_assert(3 * (orient3d_row_top + 1) + 8 <= 1023, "orient3d terms must not overflow");
 
+// The common exact case, cheaply: every difference exact in one double (float
+// input, or coordinates within a factor of two of each other) and of a
+// magnitude whose products of three neither overflow nor lose their low
+// parts below 2^-1074. Then each 2x2 minor is an exact sum of two exact
+// products (four terms) and the determinant the sum of three minors each
+// times one double (24 terms): no scaling, a few hundred operations.
+bool rows_are_plain_doubles(const std::array<Row<3>, 3>& rows) {
+    for (const Row<3>& row : rows)
+        for (const TwoTerm& c : row) {
+            const double size = std::fabs(c.hi);
+            if (c.lo != 0.0 || (size != 0.0 && !(size >= 0x1p-300 && size <= 0x1p300)))
+                return false;
+        }
+    return true;
+}
+
+int orient3d_of_plain_rows(const std::array<Row<3>, 3>& rows) {
+    const Row<3>& u = rows[0];
+    const Row<3>& v = rows[1];
+    const Row<3>& w = rows[2];
+    Expansion<24> det;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        // u_i (v_j w_k - v_k w_j): the cofactor expansion along the first row.
+        const TwoTerm plus = two_product(v[j].hi, w[k].hi);
+        const TwoTerm minus = two_product(v[k].hi, w[j].hi);
+        for (const double term : {plus.lo, -minus.lo, plus.hi, -minus.hi}) {
+            const TwoTerm product = two_product(term, u[i].hi);
+            det.add(product.lo);
+            det.add(product.hi);
+        }
+    }
+    return det.sign();
+}
+
 int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                    const Eigen::Vector3d& d) {
     std::array<Row<3>, 3> rows;
@@ -177,6 +212,7 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
     // any scaling, as it is the common case here (a corner shared by two
     // triangles).
     if (a == b || a == c || a == d || b == c || b == d || c == d) return 0;
+    if (rows_are_plain_doubles(rows)) return orient3d_of_plain_rows(rows);
     for (Row<3>& row : rows) normalize<3>(row, orient3d_row_top);
     const Row<3>& u = rows[0];
     const Row<3>& v = rows[1];
