@@ -108,26 +108,30 @@ bool meets(const Triangle2d& p, const Triangle2d& q) {
     return true;
 }
 
+bool coplanar_overlap(const Triangle& p, const Triangle& q) {
+    Projection projection{};
+    const int orientation = plane_projection(q, projection);
+    return meets(Triangle2d(p, projection, projected_orientation(p, projection)),
+                 Triangle2d(q, projection, orientation));
+}
+
 // t lies on one side of the plane of `other` with one corner or one edge on
 // it (side of t's corners: `t_sides`): does that corner or edge meet `other`?
 bool touches_on_plane(const Triangle& t, const Signs& t_sides, const Triangle& other) {
     Projection projection{};
     const int orientation = plane_projection(other, projection);
     const Triangle2d face(other, projection, orientation);
-    int on_plane[2];
+    int on_plane[3];
     int count = 0;
     for (int i = 0; i < 3; ++i) {
         if (t_sides[i] == 0) on_plane[count++] = i;
     }
+    // One corner or one edge on the plane, as the caller found. (Outside
+    // the predicates' exact range - coordinates 2^640 apart in one call -
+    // signs can disagree; no index may then run past the corners.)
     if (count == 1) return contains(face, projection(t[on_plane[0]]));
-    return meets(face, projection(t[on_plane[0]]), projection(t[on_plane[1]]));
-}
-
-bool coplanar_overlap(const Triangle& p, const Triangle& q) {
-    Projection projection{};
-    const int orientation = plane_projection(q, projection);
-    return meets(Triangle2d(p, projection, projected_orientation(p, projection)),
-                 Triangle2d(q, projection, orientation));
+    if (count == 2) return meets(face, projection(t[on_plane[0]]), projection(t[on_plane[1]]));
+    return count == 3 && coplanar_overlap(t, other);
 }
 
 // Rotates t (keeping its orientation) so that t[0] is the corner alone on its
