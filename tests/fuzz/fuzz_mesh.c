@@ -17,7 +17,7 @@
  *                 6    polygon points: 0 x, y of each vertex (the position array
  *                      itself when FLOAT64); 1 every coordinate as packed pairs
  *                 7    positions and indices at an odd address
- *   1      1    option flags (low 4 bits: POLYMASS_OPTION_*)
+ *   1      1    option flags (low 5 bits: POLYMASS_OPTION_*)
  *   2      1    planarity tolerance: entry (byte % 8) of `tolerances` below;
  *               weld tolerance: entry (byte / 8 % 4) of `weld_tolerances`
  *   3      1    mass: bits 0-1: 0 NULL, 1 FROM_DENSITY, 2 FROM_TOTAL, 3 an
@@ -127,6 +127,7 @@ static int is_mesh_status(int32_t status) {
         case POLYMASS_ERROR_NON_MANIFOLD:
         case POLYMASS_ERROR_INCONSISTENT_ORIENTATION:
         case POLYMASS_ERROR_NON_PLANAR_FACE:
+        case POLYMASS_ERROR_INTERSECTING:
         case POLYMASS_ERROR_INVERTED:
         case POLYMASS_ERROR_ZERO_VOLUME:
         case POLYMASS_ERROR_OVERFLOW:
@@ -256,7 +257,8 @@ static void check_properties(const polymass_mass_properties* p, uint32_t flags,
                              const polymass_mass_desc* mass, int32_t status,
                              const polymass_context* context) {
     const uint32_t known = POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES |
-                           POLYMASS_WARNING_UNCHECKED | POLYMASS_WARNING_NON_MANIFOLD;
+                           POLYMASS_WARNING_UNCHECKED | POLYMASS_WARNING_NON_MANIFOLD |
+                           POLYMASS_WARNING_TOUCHING_FACES;
     CHECK(p->struct_size == sizeof *p, status, context);
     /* Every double of the struct, from volume to principal_axes; the error
        bounds are numbers, infinite where rounding could be the whole mass. */
@@ -447,7 +449,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     adjust_count = (header[0] >> 5) & 1;
     packed_pairs = (header[0] >> 6) & 1;
     odd = (header[0] >> 7) & 1;
-    flags = header[1] & 0x0Fu;
+    flags = header[1] & 0x1Fu;
     vertex_bytes = float32 ? 12 : 24;
     index_bytes = index16 ? 2 : 4;
     one_v = header[4];
