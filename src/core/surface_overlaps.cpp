@@ -46,10 +46,10 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                               const Eigen::Vector3d& reference, double size, const Shells* shells,
                               std::pmr::memory_resource* memory) {
     SurfaceOverlaps result(memory);
-    const SurfaceTriangles triangles = triangulate_faces(mesh, memory);
-    // Each corner's vertex identity (after welding), next to the others: the
-    // test of shared corners reads nothing else for most candidate pairs.
-    std::pmr::vector<std::array<std::uint32_t, 3>> ids(triangles.corners, memory);
+    SurfaceTriangles triangles = triangulate_faces(mesh, memory);
+    // Each corner as the vertex it is welded to, in place: the test of shared
+    // corners reads nothing else for most candidate pairs.
+    auto& ids = triangles.corners;
     if (vertex_ids)
         for (auto& corners : ids)
             for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];

@@ -9,13 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-typedef struct placement {
-    const char* name;
-    double scale;
-    double translation[3];
-} placement;
-
-static const placement placements[] = {
+static const pm_placement placements[] = {
     {"as given", 1.0, {0, 0, 0}},
     {"at (1e6, -1e6, 1e6)", 1.0, {1e6, -1e6, 1e6}},
     {"at (1e8, 1e8, -1e8)", 1.0, {1e8, 1e8, -1e8}},
@@ -86,7 +80,7 @@ static void test_bounds_contain_the_error(void** state) {
     int k, q;
     (void)state;
     for (t = 0; t < PLACEMENT_COUNT; ++t) {
-        const placement* pl = &placements[t];
+        const pm_placement* pl = &placements[t];
         for (k = 0; k < PM_REF_COUNT; ++k) {
             const pm_reference_solid* ref = &pm_reference_solids[k];
             const pm_expected e0 = pm_expected_from_reference(ref);

@@ -12,14 +12,8 @@
 
 #define CHECKED (POLYMASS_OPTION_CHECK_INTERSECTIONS)
 
-/* Where each case is also tried: x' = scale x + t. */
-typedef struct placement {
-    const char* name;
-    double scale;
-    double translation[3];
-} placement;
-
-static const placement placements[] = {
+/* Where each case is also tried. */
+static const pm_placement placements[] = {
     {"as given", 1.0, {0, 0, 0}},
     {"at 1e6", 1.0, {1e6, -1e6, 1e6}},
     {"at 1e8", 1.0, {1e8, 1e8, -1e8}},
@@ -124,14 +118,12 @@ typedef struct expectation {
 static void expect_everywhere(const char* what, const pm_mesh* original, expectation e) {
     size_t k;
     for (k = 0; k < PLACEMENTS; ++k) {
-        const placement* at = &placements[k];
+        const pm_placement* at = &placements[k];
         pm_mesh m;
         int32_t unchecked = -1, status;
         uint32_t warnings = 0;
         double volume = 0;
-        pm_mesh_init(&m);
-        pm_mesh_copy(&m, original);
-        pm_mesh_transform(&m, NULL, at->scale, at->translation);
+        pm_mesh_placed(&m, original, at);
         status = verdicts(&m, &unchecked, &warnings, &volume);
         if (status != e.checked || unchecked != e.unchecked) {
             fail_msg("%s, %s: checked %s (expected %s), unchecked %s (expected %s)", what, at->name,
@@ -387,14 +379,15 @@ static void test_reference_solids_do_not_intersect(void** state) {
     size_t r, k;
     (void)state;
     for (r = 0; r < PM_REF_COUNT; ++r) {
+        pm_mesh solid;
+        pm_mesh_init(&solid);
+        pm_mesh_from_reference(&solid, &pm_reference_solids[r]);
         for (k = 0; k < PLACEMENTS; ++k) {
             pm_mesh m;
             int32_t unchecked = -1, status;
             uint32_t warnings = 0;
             double volume = 0;
-            pm_mesh_init(&m);
-            pm_mesh_from_reference(&m, &pm_reference_solids[r]);
-            pm_mesh_transform(&m, NULL, placements[k].scale, placements[k].translation);
+            pm_mesh_placed(&m, &solid, &placements[k]);
             status = verdicts(&m, &unchecked, &warnings, &volume);
             if (status != unchecked) {
                 fail_msg("%s, %s: %s with the check, %s without", pm_reference_solids[r].name,
@@ -409,6 +402,7 @@ static void test_reference_solids_do_not_intersect(void** state) {
             }
             pm_mesh_free(&m);
         }
+        pm_mesh_free(&solid);
     }
     printf("  %d reference solids x %d placements: no intersection\n", (int)PM_REF_COUNT,
            (int)PLACEMENTS);

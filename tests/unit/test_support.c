@@ -263,6 +263,12 @@ void pm_mesh_transform(pm_mesh* m, const double rotation[9], double scale,
     }
 }
 
+void pm_mesh_placed(pm_mesh* dst, const pm_mesh* src, const pm_placement* at) {
+    pm_mesh_init(dst);
+    pm_mesh_copy(dst, src);
+    pm_mesh_transform(dst, NULL, at->scale, at->translation);
+}
+
 int pm_mesh_all_triangles(const pm_mesh* m) {
     size_t f;
     for (f = 0; f < m->face_count; ++f) {

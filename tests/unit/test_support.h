@@ -76,6 +76,14 @@ void pm_mesh_to_soup(pm_mesh* m);
 void pm_mesh_transform(pm_mesh* m, const double rotation[9], double scale,
                        const double translation[3]);
 int pm_mesh_all_triangles(const pm_mesh* m);
+/* Where a case is also tried: x' = scale x + translation. */
+typedef struct pm_placement {
+    const char* name;
+    double scale;
+    double translation[3];
+} pm_placement;
+/* A copy of src (dst initialised here) placed by `at`. */
+void pm_mesh_placed(pm_mesh* dst, const pm_mesh* src, const pm_placement* at);
 double pm_mesh_size(const pm_mesh* m); /* bounding-box diagonal */
 /* Describes the mesh (packed doubles, uint32 indices); face_sizes is NULL
    when every face is a triangle unless force_face_sizes. */
