@@ -140,9 +140,8 @@ private:
     // docs/approximations.md, "The sheet and a real wall".
     ApproximationBound wall_bound(double thickness, double area) const {
         const double h = thickness / 2.0;
-        const double joints = 3.0 * pi * h * h * perimeter_ + (4.0 + 8.0 * std::sqrt(2.0)) * pi /
-                                                                  3.0 * h * h * h *
-                                                                  double(corners_);
+        const double joints = 4.0 * pi * h * h * perimeter_ +
+                              16.0 * std::sqrt(2.0) / 3.0 * pi * h * h * h * double(corners_);
         ApproximationBound bound =
             bound_of_changed_volume(joints, thickness * area, size_ + thickness);
         bound.inertia += thickness * thickness * thickness * area / 12.0;
