@@ -56,9 +56,11 @@ public:
         return found == object_.end() ? nullptr : &*found;
     }
 
-    void finish(const char* known) const {
+    // Refuses the keys not taken, named from `place` (the object's, by default).
+    void finish(const char* known, const Place* place = nullptr) const {
         for (const auto& [key, value] : object_.items()) {
-            if (!taken_.count(key)) place_.member(key).fail(std::string("unknown key; ") + known);
+            if (!taken_.count(key))
+                (place ? *place : place_).member(key).fail(std::string("unknown key; ") + known);
         }
     }
 
@@ -176,7 +178,8 @@ AssemblyPart read_part(const Json& value, size_t index, const std::string& file,
     }
     members.finish(
         "a part has \"name\", \"mesh\", \"format\", \"units\", \"density\" or \"mass\", "
-        "\"translation\", \"rotation\" and \"mirror\"");
+        "\"translation\", \"rotation\" and \"mirror\"",
+        &place);
     return part;
 }
 

@@ -87,7 +87,7 @@ FileReport assembly_report(const Library& library, const std::string& path,
         try {
             model = read_mesh_file(part.mesh, part.format);
         } catch (const ReadError& error) {
-            report.read_error = part.where + ": " + error.what();
+            report.read_error = path + ": " + part.where + ": " + error.what();
             return report;
         }
         if (arguments.triangulate) triangulate_model(model);
