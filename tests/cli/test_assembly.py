@@ -13,9 +13,10 @@ import unittest
 from fractions import Fraction
 from xml.etree import ElementTree
 
-import fixtures
 import test_cli
 from test_cli import EXIT_INVALID_MESH, EXIT_OK, EXIT_UNREADABLE, EXIT_USAGE, SOURCE, WORK, run
+
+import fixtures
 
 ASSEMBLIES = WORK / "assemblies"
 SIDES = (1, 2, 3)  # the box [0, 1] x [0, 2] x [0, 3]
@@ -31,7 +32,11 @@ def box_body(mass, rotation, translation, sides=SIDES):
     by x -> R x + t."""
     a, b, c = (Fraction(s) for s in sides)
     centre = [a / 2, b / 2, c / 2]
-    diagonal = [mass * (b * b + c * c) / 12, mass * (a * a + c * c) / 12, mass * (a * a + b * b) / 12]
+    diagonal = [
+        mass * (b * b + c * c) / 12,
+        mass * (a * a + c * c) / 12,
+        mass * (a * a + b * b) / 12,
+    ]
     moved = [sum(rotation[i][k] * centre[k] for k in range(3)) + translation[i] for i in range(3)]
     inertia = [
         [sum(rotation[i][k] * diagonal[k] * rotation[j][k] for k in range(3)) for j in range(3)]
@@ -82,7 +87,9 @@ class Assembly(Case):
     def setUpClass(cls):
         ASSEMBLIES.mkdir(parents=True, exist_ok=True)
         (ASSEMBLIES / "meshes").mkdir(exist_ok=True)
-        fixtures.write_obj(ASSEMBLIES / "meshes" / "box.obj", box_vertices(SIDES), fixtures.cube()[1])
+        fixtures.write_obj(
+            ASSEMBLIES / "meshes" / "box.obj", box_vertices(SIDES), fixtures.cube()[1]
+        )
         fixtures.write_obj(ASSEMBLIES / "cube.obj", *fixtures.cube())
 
     def three_boxes(self):
@@ -181,7 +188,9 @@ class Assembly(Case):
     def test_a_mirror_only_when_stated(self):
         mirror = {"matrix": [[-1, 0, 0], [0, 1, 0], [0, 0, 1]]}
         part = {"mesh": "cube.obj", "density": 1, "rotation": mirror, "mirror": True}
-        result, out = test_cli.run_json("assembly", write_assembly("mirror.json", {"parts": [part]}))
+        result, out = test_cli.run_json(
+            "assembly", write_assembly("mirror.json", {"parts": [part]})
+        )
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
         self.assertEqual(out["volume"], 1.0)
         self.assertEqual(out["center_of_mass"], [-0.5, 0.5, 0.5])
@@ -209,138 +218,185 @@ class Assembly(Case):
         self.assertIn("edge", out["parts"][1]["error"]["message"])
 
 
+# (case, the assembly file, what its message says)
+BAD_FIELDS = [
+    ("not json", "{", "not valid JSON"),
+    ("not an object", "[]", "an object {...} is expected"),
+    (
+        "unknown top key",
+        {"parts": [], "part": []},
+        'part: unknown key; an assembly file has "parts"',
+    ),
+    ("no parts", {}, "parts: a non-empty array"),
+    ("empty parts", {"parts": []}, "parts: a non-empty array"),
+    ("part not an object", {"parts": [3]}, "parts[0]: an object"),
+    ("no mesh", {"parts": [{"density": 1}]}, 'parts[0]: the part has no "mesh"'),
+    ("mesh not text", {"parts": [{"mesh": 1, "density": 1}]}, "parts[0]: mesh: a string"),
+    (
+        "typo",
+        {"parts": [{"mesh": "cube.obj", "densty": 2}]},
+        'parts[0] "cube.obj": give exactly one of "density" and "mass"',
+    ),
+    (
+        "unknown key",
+        {"parts": [{"mesh": "cube.obj", "density": 2, "densty": 2}]},
+        'parts[0] "cube.obj": densty: unknown key',
+    ),
+    (
+        "both",
+        {"parts": [{"mesh": "cube.obj", "density": 2, "mass": 1}]},
+        'exactly one of "density" and "mass"',
+    ),
+    ("negative", {"parts": [{"mesh": "cube.obj", "mass": -1}]}, "mass: a positive number"),
+    ("text density", {"parts": [{"mesh": "cube.obj", "density": "2"}]}, "density: a number"),
+    ("units", {"parts": [{"mesh": "cube.obj", "density": 1, "units": "km"}]}, '"km" is not one'),
+    (
+        "mixed units",
+        {
+            "parts": [
+                {"mesh": "cube.obj", "density": 1, "units": "mm"},
+                {"name": "b", "mesh": "cube.obj", "density": 1},
+            ]
+        },
+        'parts[1] "b": no "units", where other parts give theirs',
+    ),
+    (
+        "short translation",
+        {"parts": [{"mesh": "cube.obj", "density": 1, "translation": [1, 2]}]},
+        "translation: an array of 3 numbers",
+    ),
+    (
+        "two rotations",
+        {
+            "parts": [
+                {
+                    "mesh": "cube.obj",
+                    "density": 1,
+                    "rotation": {"quaternion_wxyz": [1, 0, 0, 0], "quaternion_xyzw": [0, 0, 0, 1]},
+                }
+            ]
+        },
+        "rotation: give exactly one of",
+    ),
+    (
+        "quaternion without its order",
+        {"parts": [{"mesh": "cube.obj", "density": 1, "rotation": {"quaternion": [1, 0, 0, 0]}}]},
+        "rotation.quaternion: unknown key",
+    ),
+    (
+        "not a unit quaternion",
+        {
+            "parts": [
+                {"mesh": "cube.obj", "density": 1, "rotation": {"quaternion_xyzw": [0, 0, 1, 1]}}
+            ]
+        },
+        "rotation.quaternion_xyzw: not a unit quaternion: its length is 1.41",
+    ),
+    (
+        "quaternion element",
+        {
+            "parts": [
+                {"mesh": "cube.obj", "density": 1, "rotation": {"quaternion_wxyz": [1, 0, None, 0]}}
+            ]
+        },
+        "rotation.quaternion_wxyz[2]: a number is expected",
+    ),
+    (
+        "matrix shape",
+        {
+            "parts": [
+                {"mesh": "cube.obj", "density": 1, "rotation": {"matrix": [[1, 0, 0], [0, 1, 0]]}}
+            ]
+        },
+        "rotation.matrix: 3 rows of 3",
+    ),
+    (
+        "matrix row",
+        {
+            "parts": [
+                {
+                    "mesh": "cube.obj",
+                    "density": 1,
+                    "rotation": {"matrix": [[1, 0, 0], [0, 1], [0, 0, 1]]},
+                }
+            ]
+        },
+        "rotation.matrix[1]: an array of 3 numbers",
+    ),
+    (
+        "not orthonormal",
+        {
+            "parts": [
+                {
+                    "mesh": "cube.obj",
+                    "density": 1,
+                    "rotation": {"matrix": [[0.7071, -0.7071, 0], [0.7071, 0.7071, 0], [0, 0, 1]]},
+                }
+            ]
+        },
+        "rotation.matrix: not orthonormal",
+    ),
+    (
+        "unstated mirror",
+        {
+            "parts": [
+                {
+                    "mesh": "cube.obj",
+                    "density": 1,
+                    "rotation": {"matrix": [[1, 0, 0], [0, 1, 0], [0, 0, -1]]},
+                }
+            ]
+        },
+        'a mirror (determinant -1), not a rotation: add "mirror": true',
+    ),
+    (
+        "mirror of a rotation",
+        {
+            "parts": [
+                {"mesh": "cube.obj", "density": 1, "mirror": True, "rotation": {"matrix": IDENTITY}}
+            ]
+        },
+        'a rotation (determinant +1), but the part says "mirror": true',
+    ),
+    (
+        "mirrored quaternion",
+        {
+            "parts": [
+                {
+                    "mesh": "cube.obj",
+                    "density": 1,
+                    "mirror": True,
+                    "rotation": {"quaternion_wxyz": [1, 0, 0, 0]},
+                }
+            ]
+        },
+        "rotation: a quaternion cannot mirror",
+    ),
+    (
+        "mirror alone",
+        {"parts": [{"mesh": "cube.obj", "density": 1, "mirror": True}]},
+        "mirror: a mirror needs",
+    ),
+    (
+        "mirror text",
+        {"parts": [{"mesh": "cube.obj", "density": 1, "mirror": "yes"}]},
+        "mirror: true or false",
+    ),
+    (
+        "repeated key",
+        '{"parts": [{"mesh": "cube.obj", "density": 1, "density": 2}]}',
+        'the key "density" is given twice',
+    ),
+    ("missing mesh", {"parts": [{"mesh": "none.obj", "density": 1}]}, 'parts[0] "none.obj": '),
+    ("infinite", '{"parts": [{"mesh": "cube.obj", "density": 1e999}]}', "number overflow"),
+]
+
+
 class AssemblyErrors(test_cli.Case):
     """Every bad field: exit 3 with the part and the JSON path in the message."""
 
-    CASES = [
-        ("not json", "{", "not valid JSON"),
-        ("not an object", "[]", "an object {...} is expected"),
-        ("unknown top key", {"parts": [], "part": []}, 'part: unknown key; an assembly file has "parts"'),
-        ("no parts", {}, "parts: a non-empty array"),
-        ("empty parts", {"parts": []}, "parts: a non-empty array"),
-        ("part not an object", {"parts": [3]}, "parts[0]: an object"),
-        ("no mesh", {"parts": [{"density": 1}]}, 'parts[0]: the part has no "mesh"'),
-        ("mesh not text", {"parts": [{"mesh": 1, "density": 1}]}, "parts[0]: mesh: a string"),
-        (
-            "typo",
-            {"parts": [{"mesh": "cube.obj", "densty": 2}]},
-            'parts[0] "cube.obj": give exactly one of "density" and "mass"',
-        ),
-        (
-            "unknown key",
-            {"parts": [{"mesh": "cube.obj", "density": 2, "densty": 2}]},
-            'parts[0] "cube.obj": densty: unknown key',
-        ),
-        (
-            "both",
-            {"parts": [{"mesh": "cube.obj", "density": 2, "mass": 1}]},
-            'exactly one of "density" and "mass"',
-        ),
-        ("negative", {"parts": [{"mesh": "cube.obj", "mass": -1}]}, "mass: a positive number"),
-        ("text density", {"parts": [{"mesh": "cube.obj", "density": "2"}]}, "density: a number"),
-        ("units", {"parts": [{"mesh": "cube.obj", "density": 1, "units": "km"}]}, '"km" is not one'),
-        (
-            "mixed units",
-            {
-                "parts": [
-                    {"mesh": "cube.obj", "density": 1, "units": "mm"},
-                    {"name": "b", "mesh": "cube.obj", "density": 1},
-                ]
-            },
-            'parts[1] "b": no "units", where other parts give theirs',
-        ),
-        (
-            "short translation",
-            {"parts": [{"mesh": "cube.obj", "density": 1, "translation": [1, 2]}]},
-            "translation: an array of 3 numbers",
-        ),
-        (
-            "two rotations",
-            {
-                "parts": [
-                    {
-                        "mesh": "cube.obj",
-                        "density": 1,
-                        "rotation": {"quaternion_wxyz": [1, 0, 0, 0], "quaternion_xyzw": [0, 0, 0, 1]},
-                    }
-                ]
-            },
-            "rotation: give exactly one of",
-        ),
-        (
-            "quaternion without its order",
-            {"parts": [{"mesh": "cube.obj", "density": 1, "rotation": {"quaternion": [1, 0, 0, 0]}}]},
-            "rotation.quaternion: unknown key",
-        ),
-        (
-            "not a unit quaternion",
-            {"parts": [{"mesh": "cube.obj", "density": 1, "rotation": {"quaternion_xyzw": [0, 0, 1, 1]}}]},
-            "rotation.quaternion_xyzw: not a unit quaternion: its length is 1.41",
-        ),
-        (
-            "quaternion element",
-            {"parts": [{"mesh": "cube.obj", "density": 1, "rotation": {"quaternion_wxyz": [1, 0, None, 0]}}]},
-            "rotation.quaternion_wxyz[2]: a number is expected",
-        ),
-        (
-            "matrix shape",
-            {"parts": [{"mesh": "cube.obj", "density": 1, "rotation": {"matrix": [[1, 0, 0], [0, 1, 0]]}}]},
-            "rotation.matrix: 3 rows of 3",
-        ),
-        (
-            "matrix row",
-            {
-                "parts": [
-                    {"mesh": "cube.obj", "density": 1, "rotation": {"matrix": [[1, 0, 0], [0, 1], [0, 0, 1]]}}
-                ]
-            },
-            "rotation.matrix[1]: an array of 3 numbers",
-        ),
-        (
-            "not orthonormal",
-            {
-                "parts": [
-                    {
-                        "mesh": "cube.obj",
-                        "density": 1,
-                        "rotation": {"matrix": [[0.7071, -0.7071, 0], [0.7071, 0.7071, 0], [0, 0, 1]]},
-                    }
-                ]
-            },
-            "rotation.matrix: not orthonormal",
-        ),
-        (
-            "unstated mirror",
-            {
-                "parts": [
-                    {"mesh": "cube.obj", "density": 1, "rotation": {"matrix": [[1, 0, 0], [0, 1, 0], [0, 0, -1]]}}
-                ]
-            },
-            'a mirror (determinant -1), not a rotation: add "mirror": true',
-        ),
-        (
-            "mirror of a rotation",
-            {"parts": [{"mesh": "cube.obj", "density": 1, "mirror": True, "rotation": {"matrix": IDENTITY}}]},
-            'a rotation (determinant +1), but the part says "mirror": true',
-        ),
-        (
-            "mirrored quaternion",
-            {
-                "parts": [
-                    {"mesh": "cube.obj", "density": 1, "mirror": True, "rotation": {"quaternion_wxyz": [1, 0, 0, 0]}}
-                ]
-            },
-            "rotation: a quaternion cannot mirror",
-        ),
-        ("mirror alone", {"parts": [{"mesh": "cube.obj", "density": 1, "mirror": True}]}, "mirror: a mirror needs"),
-        ("mirror text", {"parts": [{"mesh": "cube.obj", "density": 1, "mirror": "yes"}]}, "mirror: true or false"),
-        ("repeated key", '{"parts": [{"mesh": "cube.obj", "density": 1, "density": 2}]}', 'the key "density" is given twice'),
-        ("missing mesh", {"parts": [{"mesh": "none.obj", "density": 1}]}, 'parts[0] "none.obj": '),
-        ("infinite", '{"parts": [{"mesh": "cube.obj", "density": 1e999}]}', "number overflow"),
-    ]
-
     def test_every_bad_field_is_named(self):
-        for name, document, message in self.CASES:
+        for name, document, message in BAD_FIELDS:
             with self.subTest(case=name):
                 path = write_assembly(name.replace(" ", "_") + ".json", document)
                 result, out = test_cli.run_json("assembly", path)
@@ -425,13 +481,19 @@ class PartMaterials(Case):
     def test_unknown_names_and_bad_values(self):
         self.assert_names_error(
             ("--density", "bolt=2", self.path),
-            "--density bolt=...: " + str(self.path) + " has no part named 'bolt'; its parts are 'cube', 'box'",
+            "--density bolt=...: "
+            + str(self.path)
+            + " has no part named 'bolt'; its parts are 'cube', 'box'",
         )
         self.assert_names_error(("--mass", "7", "--density", "box=2", self.path), "not both")
         self.assert_names_error(("--density", "box=2", "--mass", "box=2", self.path), "given twice")
-        self.assert_names_error(("--density", "box=heavy", self.path), "--density box= wants a positive")
+        self.assert_names_error(
+            ("--density", "box=heavy", self.path), "--density box= wants a positive"
+        )
         self.assert_names_error(("--density", "=2", self.path), "wants a part's name")
-        self.assert_names_error(("--density", "1", "--density", "2", self.path), "--density is given twice")
+        self.assert_names_error(
+            ("--density", "1", "--density", "2", self.path), "--density is given twice"
+        )
 
     def test_parts_that_close_only_together(self):
         # A cube split into two groups of faces: neither is a solid, the whole is.
