@@ -511,6 +511,29 @@ class PartMaterials(Case):
         self.assertEqual(result.returncode, EXIT_INVALID_MESH)
         self.assertIn("part 'lower' is not a solid by itself", out["error"]["message"])
 
+    def test_a_cavity_as_a_part_of_its_own(self):
+        # A box [0, 4]^3 and, as its own part, a unit cube inside it facing
+        # inward: the cavity, inside out by itself, even when inverted
+        # solids are accepted and turned.
+        vertices, faces = fixtures.cube()
+        outer = [(4 * x, 4 * y, 4 * z) for x, y, z in vertices]
+        inner = [(x + 1, y + 1, z + 1) for x, y, z in vertices]
+        lines = [f"v {x} {y} {z}" for x, y, z in outer + inner]
+        lines += ["o block"] + ["f " + " ".join(str(i + 1) for i in f) for f in faces]
+        lines += ["o cavity"] + ["f " + " ".join(str(i + 9) for i in reversed(f)) for f in faces]
+        path = WORK / "cavity_part.obj"
+        path.write_text("\n".join(lines) + "\n")
+        for arguments in ((), ("--accept-inverted",), ("--no-intersection-check",)):
+            with self.subTest(arguments=arguments):
+                result, out = test_cli.run_json(*arguments, path)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                self.assertEqual(out["volume"], 63.0)
+        _, out = test_cli.run_json("--accept-inverted", path)
+        self.assertEqual(out["parts"][1]["warnings"], ["inverted"])
+        result, out = test_cli.run_json("--accept-inverted", "--density", "block=2", path)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH)
+        self.assertIn("part 'cavity' is not a solid by itself", out["error"]["message"])
+
     def test_parts_crossing_each_other_are_still_refused(self):
         vertices, faces = fixtures.cube()
         moved = [(x + 0.5, y + 0.5, z + 0.5) for x, y, z in vertices]

@@ -40,19 +40,24 @@ polymass_mass_desc with_density(polymass_mass_desc mass, double density) {
 }
 
 // A part is not a solid by itself (a closed surface split into parts by
-// material, say): the whole is computed as one surface, and the parts that
-// are solids get its density, so that their masses add up to it. Parts of
-// their own materials cannot be told apart from such a whole: refused.
+// material, say), or only once turned (a cavity exported as a part): the
+// whole is computed as one surface, and the parts that are solids get its
+// density, so that their masses add up to it. Parts of their own materials
+// cannot be told apart from such a whole: refused.
 void report_as_one(const Library& library, const Model& model, const Arguments& arguments,
                    const std::vector<IntegratedSolid>& solids,
                    const std::vector<polymass_mass_desc>& masses,
                    const polymass_mass_desc& file_mass, FileReport& report) {
-    const size_t broken = std::find_if(solids.begin(), solids.end(),
-                                       [](const IntegratedSolid& s) { return !s.valid(); }) -
-                          solids.begin();
+    const size_t broken =
+        std::find_if(solids.begin(), solids.end(),
+                     [](const IntegratedSolid& s) { return !s.valid_as_given(); }) -
+        solids.begin();
     const bool own_materials = !arguments.part_materials.empty();
     if (own_materials) {
-        const SolidResult why = solids[broken].failure();
+        const SolidResult why = solids[broken].valid()
+                                    ? failure(POLYMASS_ERROR_INVERTED,
+                                              "inside out by itself, a cavity of another part?")
+                                    : solids[broken].failure();
         set_result(report.solid,
                    failure(why.status, "part '" + model.parts[broken].name +
                                            "' is not a solid by itself (" + why.message +
@@ -115,7 +120,7 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     const Part whole = combined_part(model);
     report.solid = counted(model, whole);
     if (!std::all_of(solids.begin(), solids.end(),
-                     [](const IntegratedSolid& s) { return s.valid(); })) {
+                     [](const IntegratedSolid& s) { return s.valid_as_given(); })) {
         report_as_one(library, model, arguments, solids, masses, file_mass, report);
         return;
     }

@@ -31,7 +31,14 @@ IntegratedSolid::IntegratedSolid(const Library& library, const Model& model, con
     const polymass_mesh_desc desc = describe(model, part);
     status_ = polymass_mesh_create_with_options(&mesh_, library.context(), &desc, &options);
     if (status_ == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
-    if (status_ != POLYMASS_OK) message_ = library.message();
+    if (status_ != POLYMASS_OK) {
+        message_ = library.message();
+        return;
+    }
+    polymass_mass_properties own{};
+    polymass_mass_properties_init(&own, sizeof own);
+    if (polymass_mesh_mass_properties(&own, library.context(), mesh_, nullptr) == POLYMASS_OK)
+        warnings_ = own.warnings;
 }
 
 IntegratedSolid::~IntegratedSolid() { polymass_mesh_destroy(mesh_); }
@@ -39,7 +46,8 @@ IntegratedSolid::~IntegratedSolid() { polymass_mesh_destroy(mesh_); }
 IntegratedSolid::IntegratedSolid(IntegratedSolid&& other) noexcept
     : mesh_(std::exchange(other.mesh_, nullptr)),
       status_(other.status_),
-      message_(std::move(other.message_)) {}
+      message_(std::move(other.message_)),
+      warnings_(other.warnings_) {}
 
 SolidResult IntegratedSolid::failure() const {
     SolidResult result;

@@ -29,6 +29,9 @@ public:
     IntegratedSolid& operator=(IntegratedSolid&&) = delete;
 
     bool valid() const { return status_ == POLYMASS_OK; }
+    // Valid as given: not inside out and turned by --accept-inverted (a
+    // cavity exported as a part of its own is inside out by itself).
+    bool valid_as_given() const { return valid() && !(warnings_ & POLYMASS_WARNING_INVERTED); }
     // Why the part is not a valid solid (status and the library's message).
     SolidResult failure() const;
     // Its mass properties with the given density or mass (valid() only).
@@ -40,6 +43,7 @@ private:
     polymass_mesh* mesh_ = nullptr;
     int32_t status_ = POLYMASS_OK;
     std::string message_;
+    uint32_t warnings_ = 0;
 };
 
 // A step of the composition: the moments, or the status and message of the
