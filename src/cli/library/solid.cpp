@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 namespace polymass_cli {
-namespace {
 
 polymass_mesh_desc describe(const Model& model, const Part& part) {
     polymass_mesh_desc desc{};
@@ -19,8 +18,6 @@ polymass_mesh_desc describe(const Model& model, const Part& part) {
     desc.face_count = part.face_sizes.size();
     return desc;
 }
-
-}  // namespace
 
 Library::Library(const polymass_options& options) {
     const int32_t created = polymass_context_create(&context_, nullptr);

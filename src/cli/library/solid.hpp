@@ -27,6 +27,9 @@ private:
     polymass_context* context_ = nullptr;
 };
 
+// A part of a model as the library reads it, in place (no copy).
+polymass_mesh_desc describe(const Model& model, const Part& part);
+
 struct SolidResult {
     int32_t status = POLYMASS_OK;
     std::string message;  // the context's message when status is an error
