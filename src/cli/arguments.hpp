@@ -9,9 +9,17 @@
 
 namespace polymass_cli {
 
-enum class Command { kProperties, kCheck, kHelp, kVersion };
+enum class Command { kProperties, kCheck, kHelp, kVersion, kAudit };
 enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf };
 enum class About { kCenterOfMass, kOrigin, kPoint };
+
+// polymass audit's own options.
+struct AuditArguments {
+    bool from_visual = false;         // --from visual (default: collision)
+    std::string fail_on = "error";    // --fail-on: info, warning or error
+    std::string fix;                  // --fix OUT: empty for none
+    bool mass_from_geometry = false;  // --mass-from geometry
+};
 
 struct Arguments {
     Command command = Command::kProperties;
@@ -35,6 +43,7 @@ struct Arguments {
     double weld_tolerance = 1e-9;
     double planarity_tolerance = 0.0;  // 0: the library's default
     bool triangulate = false;
+    AuditArguments audit;
 };
 
 // A command line the tool cannot run; the message says what is wrong.

@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
                 return run_check(arguments);
             case Command::kProperties:
                 return run_properties(arguments);
+            case Command::kAudit:
+                return run_audit(arguments);
         }
     } catch (const UsageError& error) {
         std::cerr << "polymass: " << error.what() << '\n';

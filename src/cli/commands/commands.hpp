@@ -1,4 +1,4 @@
-// The two things the tool does, each returning the exit status.
+// The things the tool does, each returning the exit status.
 #pragma once
 
 #include <polymass/polymass.h>
@@ -14,6 +14,10 @@ ExitCode run_properties(const Arguments& arguments);
 
 // polymass check FILE...: the diagnostics of each file.
 ExitCode run_check(const Arguments& arguments);
+
+// polymass audit FILE...: robot descriptions' inertials against their
+// geometry (exit 0, or 1 when a finding reaches --fail-on).
+ExitCode run_audit(const Arguments& arguments);
 
 // The library options the command line asks for.
 polymass_options options_for(const Arguments& arguments);
