@@ -62,6 +62,10 @@ LinkAudit audit_link(const Library& library, const Description& description, con
     for (const std::string& message : link.unsupported) {
         audit.findings.push_back({"unsupported", Severity::kInfo, message});
     }
+    if (!link.invalid_inertial.empty()) {
+        audit.findings.push_back({"invalid_element", Severity::kError,
+                                  link.invalid_inertial + " (the inertial is not checked)"});
+    }
     const std::vector<Geometry>& geometries = chosen_geometry(link, settings.from, audit);
     if (audit.declared) {
         for (Finding& finding : judge_declared(*audit.declared)) {
@@ -75,7 +79,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
         }
         return audit;
     }
-    if (!audit.declared) {
+    if (!audit.declared && link.invalid_inertial.empty()) {
         // MuJoCo computes a body's inertia from its geoms when it declares
         // none; URDF and SDFormat simulators substitute defaults.
         const bool inferred = description.format == Format::kMjcf;

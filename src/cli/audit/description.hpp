@@ -30,6 +30,9 @@ struct Geometry {
     Eigen::Vector3d size = Eigen::Vector3d::Zero();
     std::string uri;                                  // mesh: as written
     Eigen::Vector3d scale = Eigen::Vector3d::Ones();  // mesh: applied before pose
+    // Why the element cannot be read (a missing or malformed value), when it
+    // cannot: the link's geometry is then unknown.
+    std::string invalid;
 };
 
 // Where an element sits in the description's text, for --fix: the bytes
@@ -50,6 +53,7 @@ struct Inertial {
 struct Link {
     std::string name;
     std::optional<Inertial> inertial;
+    std::string invalid_inertial;  // why its <inertial> cannot be read, when it cannot
     std::vector<Geometry> collision;
     std::vector<Geometry> visual;
     // Geometries the description has but the audit cannot measure (an

@@ -30,6 +30,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kDeepestInclude = 20;
+constexpr int kDeepestBody = 1000;  // bodies in bodies, beyond any robot's chain
 
 using Attributes = std::map<std::string, std::string>;
 
@@ -211,8 +212,13 @@ private:
             if (std::string(node.name()) != "body") return;
             const std::string child_class =
                 node.attribute("childclass") ? node.attribute("childclass").value() : cls;
+            if (++body_depth_ > kDeepestBody) {
+                throw DescriptionError(main_.path + ": bodies nested more than " +
+                                       std::to_string(kDeepestBody) + " deep");
+            }
             read_body(node, in, child_class, depth);
             read_bodies(node, in, child_class, depth);
+            --body_depth_;
         });
     }
 
@@ -225,9 +231,19 @@ private:
         for_each_child(node, source, depth, [&](const pugi::xml_node& child, const XmlFile& in) {
             const std::string name = child.name();
             if (name == "inertial") {
-                link.inertial = read_inertial(child, in, what + " <inertial>");
+                try {
+                    link.inertial = read_inertial(child, in, what + " <inertial>");
+                } catch (const DescriptionError& error) {
+                    link.invalid_inertial = error.what();
+                }
             } else if (name == "geom") {
-                read_geom(child, cls, what + " " + describe(child), link);
+                try {
+                    read_geom(child, cls, what + " " + describe(child), link);
+                } catch (const DescriptionError& error) {
+                    Geometry geometry;
+                    geometry.invalid = error.what();
+                    link.collision.push_back(std::move(geometry));
+                }
             }
         });
         description_.links.push_back(std::move(link));
@@ -330,6 +346,7 @@ private:
     std::map<std::string, Mesh> meshes_;
     Description description_;
     int unnamed_ = 0;
+    int body_depth_ = 0;
 };
 
 }  // namespace

@@ -126,7 +126,11 @@ void parse_model(const XmlFile& file, const pugi::xml_node& model, const std::st
         link.name = prefix + name;
         const std::string what = "link '" + link.name + "'";
         if (const pugi::xml_node inertial = element.child("inertial")) {
-            link.inertial = inertial_of(file, inertial, name, what + " <inertial>");
+            try {
+                link.inertial = inertial_of(file, inertial, name, what + " <inertial>");
+            } catch (const DescriptionError& error) {
+                link.invalid_inertial = error.what();
+            }
         }
         for (const char* kind : {"collision", "visual"}) {
             std::vector<Geometry>& list =
@@ -135,9 +139,12 @@ void parse_model(const XmlFile& file, const pugi::xml_node& model, const std::st
                 const std::string where =
                     what + " <" + kind + "> '" + child.attribute("name").value() + "'";
                 Geometry geometry;
-                if (geometry_of(child, name, where, geometry, link.unsupported)) {
-                    list.push_back(std::move(geometry));
+                try {
+                    if (!geometry_of(child, name, where, geometry, link.unsupported)) continue;
+                } catch (const DescriptionError& error) {
+                    geometry.invalid = error.what();
                 }
+                list.push_back(std::move(geometry));
             }
         }
         description.links.push_back(std::move(link));

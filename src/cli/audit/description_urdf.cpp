@@ -111,16 +111,25 @@ Description parse_urdf(const XmlFile& file) {
         link.name = element.attribute("name").value();
         const std::string what = "link '" + link.name + "'";
         if (const pugi::xml_node inertial = element.child("inertial")) {
-            link.inertial = inertial_of(file, inertial, what + " <inertial>");
+            try {
+                link.inertial = inertial_of(file, inertial, what + " <inertial>");
+            } catch (const DescriptionError& error) {
+                link.invalid_inertial = error.what();
+            }
         }
         for (const char* kind : {"collision", "visual"}) {
             std::vector<Geometry>& list =
                 std::strcmp(kind, "collision") == 0 ? link.collision : link.visual;
             for (const pugi::xml_node child : element.children(kind)) {
                 Geometry geometry;
-                if (geometry_of(child, what + " <" + kind + ">", geometry, link.unsupported)) {
-                    list.push_back(std::move(geometry));
+                try {
+                    if (!geometry_of(child, what + " <" + kind + ">", geometry, link.unsupported)) {
+                        continue;
+                    }
+                } catch (const DescriptionError& error) {
+                    geometry.invalid = error.what();
                 }
+                list.push_back(std::move(geometry));
             }
         }
         description.links.push_back(std::move(link));

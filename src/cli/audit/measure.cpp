@@ -134,6 +134,7 @@ Measured measure_primitive(const Geometry& geometry) {
 Measured measure_geometry(const Library& library, const Geometry& geometry,
                           const std::string& description_path) {
     Measured measured;
+    if (!geometry.invalid.empty()) return failure("invalid_element", geometry.invalid);
     if (geometry.shape == Shape::kMesh) {
         const Resolved resolved = resolve_mesh(geometry.uri, description_path);
         if (resolved.path.empty()) return failure("unreadable_mesh", resolved.error);

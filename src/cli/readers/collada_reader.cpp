@@ -1,10 +1,11 @@
 // Collada (.dae), the usual mesh format of ROS robot descriptions, through
-// assimp. Assimp reads the scene in its own convention: lengths multiplied by
-// the asset's <unit meter> (so in metres) and the asset's <up_axis> turned to
-// +Y. Robot descriptions are Z-up, and the simulators that read Collada (RViz,
-// Gazebo) put the file's up axis along +Z: the scene is turned by +90 degrees
-// about X afterwards, which maps assimp's +Y to +Z (a Z_UP file ends where it
-// was written, a Y_UP one has its Y along Z).
+// assimp, which reads the geometry and node transforms in single precision.
+// The asset's <unit meter> and <up_axis> are applied here in double precision
+// (assimp's own unit scaling is a float factor, 0.001 off in its 8th digit):
+// lengths in metres, and the file's up axis along +Z, as robot descriptions
+// and the simulators reading Collada for them (RViz, Gazebo) have it: a Z_UP
+// file stays as written, a Y_UP one is turned by +90 degrees about X, an X_UP
+// one by -90 degrees about Y.
 //
 // Every node of the scene with meshes is a part, its vertices moved by the
 // node's transform accumulated from the root (in double precision); polygon
@@ -16,6 +17,7 @@
 #include <assimp/scene.h>
 
 #include <assimp/Importer.hpp>
+#include <pugixml.hpp>
 #include <string>
 
 #include "readers/format_readers.hpp"
@@ -26,8 +28,24 @@
 namespace polymass_cli {
 namespace {
 
-// Assimp's Y-up turned to Z-up: (x, y, z) -> (x, -z, y).
-constexpr Transform kYUpToZUp{1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0};
+// The file's <unit meter> and <up_axis> as one transform (Collada's
+// defaults: 1 metre, Y_UP); a value that is neither is a ReadError.
+Transform asset_transform(const std::string& path) {
+    pugi::xml_document document;
+    if (!document.load_file(path.c_str())) throw ReadError("not a readable Collada (XML) file");
+    const pugi::xml_node asset = document.child("COLLADA").child("asset");
+    const pugi::xml_attribute meter = asset.child("unit").attribute("meter");
+    const double unit = meter ? meter.as_double(0.0) : 1.0;
+    if (!(unit > 0.0 && unit < 1e300)) {
+        throw ReadError("<unit meter='" + valid_utf8(meter.value()) +
+                        "'> is not a positive length");
+    }
+    const std::string up = asset.child("up_axis") ? asset.child("up_axis").text().get() : "Y_UP";
+    if (up == "Z_UP") return {unit, 0, 0, 0, 0, unit, 0, 0, 0, 0, unit, 0};
+    if (up == "Y_UP") return {unit, 0, 0, 0, 0, 0, -unit, 0, 0, unit, 0, 0};
+    if (up == "X_UP") return {0, 0, -unit, 0, 0, unit, 0, 0, unit, 0, 0, 0};
+    throw ReadError("<up_axis> '" + valid_utf8(up) + "' is none of X_UP, Y_UP, Z_UP");
+}
 
 Transform node_transform(const aiMatrix4x4& m) {
     return {m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4};
@@ -59,7 +77,10 @@ void append_node(Model& model, const aiScene& scene, const aiNode& node, const T
                  int depth) {
     constexpr int kDeepest = 1000;
     if (depth > kDeepest) throw ReadError("the scene's node tree is too deep");
-    const Transform transform = compose(parent, node_transform(node.mTransformation));
+    // The root is the visual scene, which has no transform in Collada: its
+    // transform in assimp is the unit scaling, applied by the caller instead.
+    const Transform transform =
+        depth == 0 ? parent : compose(parent, node_transform(node.mTransformation));
     if (node.mNumMeshes > 0) {
         Part part;
         part.name = valid_utf8(node.mName.C_Str());
@@ -79,15 +100,19 @@ void append_node(Model& model, const aiScene& scene, const aiNode& node, const T
 }  // namespace
 
 Model read_collada(const std::string& path) {
+    const Transform placement = asset_transform(path);
     Assimp::Importer importer;
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     // Only the geometry: no post-processing that would change the faces.
     const aiScene* scene = importer.ReadFile(path, 0);
     if (scene == nullptr || scene->mRootNode == nullptr) {
         throw ReadError("not a readable Collada file: " + valid_utf8(importer.GetErrorString()));
     }
     Model model;
-    append_node(model, *scene, *scene->mRootNode, kYUpToZUp, 0);
-    model.notes.push_back("Collada: lengths in metres (the file's <unit>), its up axis along +Z");
+    append_node(model, *scene, *scene->mRootNode, placement, 0);
+    model.notes.push_back(
+        "Collada: lengths in metres (the file's <unit>), its up axis along +Z; coordinates "
+        "and transforms as assimp reads them, in single precision (7 significant digits)");
     return model;
 }
 
