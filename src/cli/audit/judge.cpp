@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "reports/number_format.hpp"
@@ -32,7 +33,12 @@ constexpr double kLightest = 100.0, kHeaviest = 25000.0;  // kg/m^3
 // rounding of a tensor on the boundary (a thin plate) stays above it.
 constexpr double kTriangleTolerance = 1e-9;
 
-std::string percent(double fraction) { return readable_number(100.0 * fraction) + " %"; }
+// Three significant digits: enough to read a difference by.
+std::string percent(double fraction) {
+    std::ostringstream text;
+    text << std::setprecision(3) << 100.0 * fraction << " %";
+    return text.str();
+}
 
 std::string triple(const Eigen::Vector3d& v) {
     return readable_number(v[0]) + " " + readable_number(v[1]) + " " + readable_number(v[2]);
@@ -117,7 +123,9 @@ std::string density_hint(double density) {
         {1e6, "the mesh looks like centimetres read as metres (a scale 0.01 missing)"},
         {1.0 / (inch * inch * inch), "the mesh looks like inches read as metres"},
         {1e-9, "the mesh looks like metres scaled as millimetres (a scale 0.001 too many)"},
-        {1e3, "the mass looks like kilograms written as tonnes, or grams read as kilograms"}};
+        {1e3,
+         "the mass looks 1000 times too small (tonnes written for kilograms), or the "
+         "lengths 10 times too large"}};
     const char* best = nullptr;
     double best_distance = 0.0;
     for (const Explanation& explanation : explanations) {
@@ -185,7 +193,7 @@ std::vector<Finding> judge_against_geometry(const Inertial& declared, const Comp
                     << triple(moments) << ", computed " << triple(computed.principal_moments)
                     << ")";
             if (angle > kAxisWarningDegrees) {
-                message << "; principal axes by " << readable_number(angle) << " degrees";
+                message << "; principal axes by " << std::setprecision(3) << angle << " degrees";
             }
             message << inertia_hint(declared, moments, computed);
             findings.push_back(
