@@ -58,7 +58,9 @@ def fresh(name):
 
 class AuditCase(unittest.TestCase):
     def assert_close(self, actual, expected, scale, what):
-        self.assertLessEqual(abs(actual - expected), RTOL * scale, f"{what}: {actual} != {expected}")
+        self.assertLessEqual(
+            abs(actual - expected), RTOL * scale, f"{what}: {actual} != {expected}"
+        )
 
     def assert_computed(self, computed, mass, com, inertia):
         self.assert_close(computed["mass"], mass, mass, "mass")
@@ -114,7 +116,9 @@ class Declared(AuditCase):
         # Positive definite, yet izz = (ixx + iyy) / 0.97: (a+b-c)/c = -0.03.
         a, b = 0.0625, 0.078125
         inertia = [[a, 0, 0], [0, b, 0], [0, 0, (a + b) / 0.97]]
-        result, out = audit(self.box_urdf("triangle", fx.urdf_inertial(fx.MASS, fx.centre(), inertia)))
+        result, out = audit(
+            self.box_urdf("triangle", fx.urdf_inertial(fx.MASS, fx.centre(), inertia))
+        )
         self.assertEqual(result.returncode, 1)
         finding = link(out, "base")["findings"][0]
         self.assertEqual(finding["kind"], "tensor_not_physical")
@@ -135,7 +139,9 @@ class Declared(AuditCase):
 
     def test_centre_of_mass_off_and_outside(self):
         com = fx.centre()
-        inertial = fx.urdf_inertial(fx.MASS, [com[0], com[1], com[2] + 0.25], fx.box_inertia(fx.MASS))
+        inertial = fx.urdf_inertial(
+            fx.MASS, [com[0], com[1], com[2] + 0.25], fx.box_inertia(fx.MASS)
+        )
         _, out = audit(self.box_urdf("com", inertial))
         entry = link(out, "base")
         self.assertIn("com_differs", kinds(entry))
@@ -280,8 +286,16 @@ class Geometry(AuditCase):
         path.write_text(
             fx.urdf(
                 [
-                    ("missing", self.correct_inertial(), '<geometry><mesh filename="no.stl"/></geometry>'),
-                    ("open", self.correct_inertial(), '<geometry><mesh filename="open.obj"/></geometry>'),
+                    (
+                        "missing",
+                        self.correct_inertial(),
+                        '<geometry><mesh filename="no.stl"/></geometry>',
+                    ),
+                    (
+                        "open",
+                        self.correct_inertial(),
+                        '<geometry><mesh filename="open.obj"/></geometry>',
+                    ),
                     ("bare", "", '<geometry><box size="1 1 1"/></geometry>'),
                     ("massonly", self.correct_inertial(), ""),
                 ]
@@ -356,7 +370,11 @@ class Sdf(AuditCase):
         ellipsoid = [m * (b * b + c * c) / 5, m * (a * a + c * c) / 5, m * (a * a + b * b) / 5]
         links = ""
         for name, shape, moments in [
-            ("capsule", f"<capsule><radius>{r}</radius><length>{h}</length></capsule>", [ixx, ixx, izz]),
+            (
+                "capsule",
+                f"<capsule><radius>{r}</radius><length>{h}</length></capsule>",
+                [ixx, ixx, izz],
+            ),
             ("ellipsoid", f"<ellipsoid><radii>{a} {b} {c}</radii></ellipsoid>", ellipsoid),
         ]:
             links += f"""
@@ -375,46 +393,48 @@ class Sdf(AuditCase):
             self.assert_computed(entry["computed"], m, [0, 0, 0], diagonal)
 
 
-class Mjcf(AuditCase):
-    def write_model(self, directory, declared_quat):
-        """A body with a mesh geom whose class (nested default, childclass)
-        gives its scale-free placement: euler 90 0 0 in degrees turns the box's
-        y onto z; meshdir holds the mesh, its asset class its scale."""
-        fx.write_obj(directory / "assets" / "box.obj", fx.box_corners(unit=2.0))
-        i = fx.box_inertia(fx.MASS)
-        # The box turned by +90 degrees about x: y -> z, z -> -y.
-        c = fx.centre()
-        com = [c[0] + 0.125, -c[2], c[1]]
-        diag = f"{i[0][0]!r} {i[2][2]!r} {i[1][1]!r}"
-        path = directory / "robot.xml"
-        path.write_text(f"""<mujoco model="test">
+def write_mjcf_model(directory, declared_quat):
+    """A body with a mesh geom placed by its class (a nested default chosen by
+    the body's childclass): euler 90 0 0 in degrees turns the box's y onto z,
+    pos moves it 0.125 along x. The mesh is under meshdir at half size, and
+    its asset's class scales it by 2."""
+    fx.write_obj(directory / "assets" / "box.obj", fx.box_corners(unit=2.0))
+    i = fx.box_inertia(fx.MASS)
+    # The box turned by +90 degrees about x: y -> z, z -> -y.
+    c = fx.centre()
+    com = [c[0] + 0.125, -c[2], c[1]]
+    diag = f"{i[0][0]!r} {i[2][2]!r} {i[1][1]!r}"
+    path = directory / "robot.xml"
+    path.write_text(f"""<mujoco model="test">
   <compiler meshdir="assets" angle="degree"/>
   <default>
-    <default class="robot">
-      <mesh scale="2 2 2"/>
-      <default class="part">
-        <geom type="mesh" euler="90 0 0" pos="0.125 0 0"/>
-      </default>
-    </default>
+<default class="robot">
+  <mesh scale="2 2 2"/>
+  <default class="part">
+    <geom type="mesh" euler="90 0 0" pos="0.125 0 0"/>
+  </default>
+</default>
   </default>
   <asset>
-    <mesh class="robot" file="box.obj"/>
+<mesh class="robot" file="box.obj"/>
   </asset>
   <worldbody>
-    <body name="arm" childclass="part">
-      <!-- the inertial the test plants an error in -->
-      <inertial pos="{com[0]!r} {com[1]!r} {com[2]!r}" mass="{fx.MASS}" diaginertia="{diag}"
-                quat="{declared_quat}"/>
-      <geom mesh="box"/>
-    </body>
+<body name="arm" childclass="part">
+  <!-- the inertial the test plants an error in -->
+  <inertial pos="{com[0]!r} {com[1]!r} {com[2]!r}" mass="{fx.MASS}" diaginertia="{diag}"
+            quat="{declared_quat}"/>
+  <geom mesh="box"/>
+</body>
   </worldbody>
 </mujoco>
 """)
-        return path, com
+    return path, com
 
+
+class Mjcf(AuditCase):
     def test_default_classes_meshdir_and_scale(self):
         directory = fresh("mjcf")
-        path, com = self.write_model(directory, "1 0 0 0")
+        path, com = write_mjcf_model(directory, "1 0 0 0")
         result, out = audit(path)
         entry = link(out, "arm")
         self.assertEqual(out["format"], "mjcf")
@@ -426,7 +446,7 @@ class Mjcf(AuditCase):
     def test_inertial_quat_turning_the_axes(self):
         directory = fresh("mjcf_quat")
         # 45 degrees about z: the x and y principal axes are off by 45.
-        path, _ = self.write_model(directory, "0.9238795325112867 0 0 0.3826834323650898")
+        path, _ = write_mjcf_model(directory, "0.9238795325112867 0 0 0.3826834323650898")
         _, out = audit(path)
         finding = link(out, "arm")["findings"][0]
         self.assertEqual(finding["kind"], "inertia_differs")
@@ -444,7 +464,11 @@ class Fix(AuditCase):
             self.assertEqual(before.count(keep), text.count(keep))
         self.assertEqual(before[: before.index("<inertial")], text[: text.index("<inertial")])
         start = before.index("<inertial")
-        end = before.index("</inertial>", start) + 11 if "</inertial>" in before else before.index("/>", start) + 2
+        end = (
+            before.index("</inertial>", start) + 11
+            if "</inertial>" in before
+            else before.index("/>", start) + 2
+        )
         tail = before[end:]
         self.assertTrue(text.endswith(tail))
         result, out = audit(fixed)
@@ -471,7 +495,7 @@ class Fix(AuditCase):
 
     def test_fix_mjcf(self):
         directory = fresh("fix_mjcf")
-        path, com = Mjcf.write_model(self, directory, "0.5 0.5 0.5 0.5")
+        path, _ = write_mjcf_model(directory, "0.5 0.5 0.5 0.5")
         out = self.check_fixed(path, directory / "fixed.xml")
         self.assertEqual(link(out, "arm")["findings"], [])
 
