@@ -145,6 +145,12 @@ std::string density_hint(double density) {
 
 std::vector<Finding> judge_declared(const Inertial& declared) {
     std::vector<Finding> findings;
+    if (declared.mass == 0.0 && declared.inertia.isZero(0.0)) {
+        findings.push_back({"massless", Severity::kInfo,
+                            "mass and inertia zero: a static (fixed) or massless link, as Bullet "
+                            "and Gazebo read it; not compared with its geometry"});
+        return findings;
+    }
     if (!(std::isfinite(declared.mass) && declared.mass > 0.0)) {
         findings.push_back(
             {"tensor_not_physical", Severity::kError,

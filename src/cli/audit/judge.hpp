@@ -9,7 +9,8 @@
 namespace polymass_cli::audit {
 
 // Findings about the declared inertial alone: a mass that is not positive, a
-// tensor that is not positive definite or breaks a triangle inequality.
+// tensor that is not positive definite or breaks a triangle inequality; or
+// that it is all zero (a static link), which is said and not judged further.
 std::vector<Finding> judge_declared(const Inertial& declared);
 
 // Findings from comparing the declared inertial with the computed one (at
