@@ -118,3 +118,27 @@ def urdf(links):
             body.append(f"    <collision>\n      {geometry}\n    </collision>")
         body.append("  </link>")
     return '<?xml version="1.0"?>\n<robot name="test">\n' + "\n".join(body) + "\n</robot>\n"
+
+
+def mjcf(compiler, geom_defaults, worldbody):
+    """An MJCF model whose mesh asset box.obj (under meshdir "assets", at half
+    size) is scaled by 2 through its class "robot", and whose class "part",
+    nested in it, gives geoms geom_defaults (bodies choose it by childclass)."""
+    return f"""<mujoco model="test">
+  <compiler meshdir="assets" {compiler}/>
+  <default>
+    <default class="robot">
+      <mesh scale="2 2 2"/>
+      <default class="part">
+        <geom type="mesh" {geom_defaults}/>
+      </default>
+    </default>
+  </default>
+  <asset>
+    <mesh class="robot" file="box.obj"/>
+  </asset>
+  <worldbody>
+{worldbody}
+  </worldbody>
+</mujoco>
+"""

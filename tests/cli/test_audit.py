@@ -404,30 +404,14 @@ def write_mjcf_model(directory, declared_quat):
     c = fx.centre()
     com = [c[0] + 0.125, -c[2], c[1]]
     diag = f"{i[0][0]!r} {i[2][2]!r} {i[1][1]!r}"
+    body = f"""    <body name="arm" childclass="part">
+      <!-- the inertial the test plants an error in -->
+      <inertial pos="{com[0]!r} {com[1]!r} {com[2]!r}" mass="{fx.MASS}" diaginertia="{diag}"
+                quat="{declared_quat}"/>
+      <geom mesh="box"/>
+    </body>"""
     path = directory / "robot.xml"
-    path.write_text(f"""<mujoco model="test">
-  <compiler meshdir="assets" angle="degree"/>
-  <default>
-<default class="robot">
-  <mesh scale="2 2 2"/>
-  <default class="part">
-    <geom type="mesh" euler="90 0 0" pos="0.125 0 0"/>
-  </default>
-</default>
-  </default>
-  <asset>
-<mesh class="robot" file="box.obj"/>
-  </asset>
-  <worldbody>
-<body name="arm" childclass="part">
-  <!-- the inertial the test plants an error in -->
-  <inertial pos="{com[0]!r} {com[1]!r} {com[2]!r}" mass="{fx.MASS}" diaginertia="{diag}"
-            quat="{declared_quat}"/>
-  <geom mesh="box"/>
-</body>
-  </worldbody>
-</mujoco>
-""")
+    path.write_text(fx.mjcf('angle="degree"', 'euler="90 0 0" pos="0.125 0 0"', body))
     return path, com
 
 

@@ -62,21 +62,13 @@ def test_yourdfpy_reads_the_fixed_urdf(tmp_path):
     np.testing.assert_allclose(computed["inertia"], fx.box_inertia(fx.MASS), rtol=1e-12)
 
 
-MJCF = """<mujoco model="test">
-  <compiler meshdir="assets" angle="degree" eulerseq="zyx"/>
-  <default>
-    <default class="robot">
-      <mesh scale="2 2 2"/>
-      <default class="part">
-        <geom type="mesh" euler="30 90 0" pos="0.125 0 0.5" density="1000"/>
-      </default>
-    </default>
-  </default>
-  <asset>
-    <mesh class="robot" file="box.obj"/>
-  </asset>
-  <worldbody>
-    <body name="declared" childclass="part">
+# Bodies of the class "part": the mesh turned by euler 30 90 0 (degrees, in
+# the sequence zyx of the moving frame) and moved; a box turned by a
+# quaternion, a capsule along a fromto segment.
+MJCF = fx.mjcf(
+    'angle="degree" eulerseq="zyx"',
+    'euler="30 90 0" pos="0.125 0 0.5" density="1000"',
+    """    <body name="declared" childclass="part">
       <inertial pos="0 0 0" mass="3" diaginertia="1 1 1"/>
       <geom mesh="box"/>
       <geom type="box" size="0.125 0.25 0.5" pos="1 0 0" quat="0 0 0 1"/>
@@ -84,10 +76,8 @@ MJCF = """<mujoco model="test">
     <body name="inferred" pos="5 0 0" childclass="part">
       <geom mesh="box"/>
       <geom class="robot" type="capsule" fromto="1 0 0 1 0.5 0.5" size="0.125"/>
-    </body>
-  </worldbody>
-</mujoco>
-"""
+    </body>""",
+)
 
 
 def body_inertial(model, name):

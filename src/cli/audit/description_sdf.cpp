@@ -124,29 +124,16 @@ void parse_model(const XmlFile& file, const pugi::xml_node& model, const std::st
         Link link;
         const std::string name = element.attribute("name").value();
         link.name = prefix + name;
-        const std::string what = "link '" + link.name + "'";
-        if (const pugi::xml_node inertial = element.child("inertial")) {
-            try {
-                link.inertial = inertial_of(file, inertial, name, what + " <inertial>");
-            } catch (const DescriptionError& error) {
-                link.invalid_inertial = error.what();
-            }
-        }
-        for (const char* kind : {"collision", "visual"}) {
-            std::vector<Geometry>& list =
-                std::strcmp(kind, "collision") == 0 ? link.collision : link.visual;
-            for (const pugi::xml_node child : element.children(kind)) {
-                const std::string where =
-                    what + " <" + kind + "> '" + child.attribute("name").value() + "'";
-                Geometry geometry;
-                try {
-                    if (!geometry_of(child, name, where, geometry, link.unsupported)) continue;
-                } catch (const DescriptionError& error) {
-                    geometry.invalid = error.what();
-                }
-                list.push_back(std::move(geometry));
-            }
-        }
+        read_link_children(
+            element,
+            [&](const pugi::xml_node& inertial, const std::string& what) {
+                return inertial_of(file, inertial, name, what);
+            },
+            [&](const pugi::xml_node& child, const std::string& what, Geometry& geometry,
+                std::vector<std::string>& unsupported) {
+                return geometry_of(child, name, what, geometry, unsupported);
+            },
+            link);
         description.links.push_back(std::move(link));
     }
     for (const pugi::xml_node nested : model.children("model")) {

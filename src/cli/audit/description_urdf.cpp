@@ -4,8 +4,6 @@
 // elements (<origin>, <geometry> with one <mesh filename scale>, <box size>,
 // <cylinder radius length>, <sphere radius>, or <capsule radius length>,
 // which some simulators read).
-#include <cstring>
-
 #include "audit/description_parsers.hpp"
 #include "audit/frames.hpp"
 
@@ -109,29 +107,12 @@ Description parse_urdf(const XmlFile& file) {
     for (const pugi::xml_node element : file.document.document_element().children("link")) {
         Link link;
         link.name = element.attribute("name").value();
-        const std::string what = "link '" + link.name + "'";
-        if (const pugi::xml_node inertial = element.child("inertial")) {
-            try {
-                link.inertial = inertial_of(file, inertial, what + " <inertial>");
-            } catch (const DescriptionError& error) {
-                link.invalid_inertial = error.what();
-            }
-        }
-        for (const char* kind : {"collision", "visual"}) {
-            std::vector<Geometry>& list =
-                std::strcmp(kind, "collision") == 0 ? link.collision : link.visual;
-            for (const pugi::xml_node child : element.children(kind)) {
-                Geometry geometry;
-                try {
-                    if (!geometry_of(child, what + " <" + kind + ">", geometry, link.unsupported)) {
-                        continue;
-                    }
-                } catch (const DescriptionError& error) {
-                    geometry.invalid = error.what();
-                }
-                list.push_back(std::move(geometry));
-            }
-        }
+        read_link_children(
+            element,
+            [&](const pugi::xml_node& inertial, const std::string& what) {
+                return inertial_of(file, inertial, what);
+            },
+            geometry_of, link);
         description.links.push_back(std::move(link));
     }
     return description;
