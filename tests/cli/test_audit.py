@@ -124,6 +124,12 @@ class Declared(AuditCase):
         self.assertEqual(finding["kind"], "tensor_not_physical")
         self.assertIn("(a+b-c)/c = -0.03", finding["message"])
 
+    def test_massless_static_link(self):
+        zero = [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
+        result, out = audit(self.box_urdf("massless", fx.urdf_inertial(0.0, [0, 0, 0], zero)))
+        self.assertEqual(result.returncode, 0)
+        self.assertEqual(kinds(link(out, "base")), ["massless"])
+
     def test_not_positive_definite(self):
         inertia = [[1, 0, 0], [0, 1, 0], [0, 0, -1]]
         _, out = audit(self.box_urdf("indefinite", fx.urdf_inertial(fx.MASS, fx.centre(), inertia)))
@@ -436,6 +442,20 @@ class Mjcf(AuditCase):
         self.assertEqual(finding["kind"], "inertia_differs")
         self.assertIn("principal axes by 45", finding["message"])
 
+    def test_include_and_fix_leaves_an_included_inertial(self):
+        directory = fresh("mjcf_include")
+        path, _ = write_mjcf_model(directory, "1 0 0 0")
+        text = path.read_text()
+        start, end = text.index("    <body"), text.index("</body>") + len("</body>")
+        (directory / "arm.xml").write_text(f"<mujoco>\n{text[start:end]}\n</mujoco>\n")
+        path.write_text(text[:start] + '    <include file="arm.xml"/>' + text[end:])
+        _, out = audit(path)
+        self.assertEqual(link(out, "arm")["findings"], [])
+        result = run("audit", path, "--fix", directory / "fixed.xml")
+        self.assertIn("0 inertial(s) replaced", result.stderr)
+        self.assertIn("arm: its <inertial> is not in this file", result.stderr)
+        self.assertEqual((directory / "fixed.xml").read_text(), path.read_text())
+
 
 class Fix(AuditCase):
     def check_fixed(self, path, fixed, *args):
@@ -470,6 +490,13 @@ class Fix(AuditCase):
         self.assertEqual(entry["findings"], [])
         self.assertEqual(entry["declared"]["mass"], fx.MASS)
         self.assert_computed(entry["computed"], fx.MASS, fx.centre(), fx.box_inertia(fx.MASS))
+
+    def test_fix_after_a_byte_order_mark(self):
+        inertial = fx.urdf_inertial(fx.MASS, [0, 0, 0], fx.box_inertia(fx.MASS))
+        path = self.box_urdf("fix_bom", inertial)
+        path.write_bytes(b"\xef\xbb\xbf" + path.read_bytes())
+        self.check_fixed(path, path.with_name("fixed.urdf"))
+        self.assertTrue(path.with_name("fixed.urdf").read_bytes().startswith(b"\xef\xbb\xbf"))
 
     def test_fix_with_a_density(self):
         path = self.box_urdf("fix_density", self.correct_inertial())
