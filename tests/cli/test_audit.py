@@ -440,7 +440,7 @@ class Mjcf(AuditCase):
         _, out = audit(path)
         finding = link(out, "arm")["findings"][0]
         self.assertEqual(finding["kind"], "inertia_differs")
-        self.assertIn("principal axes by 45", finding["message"])
+        self.assertIn("principal axes differ by 45 degrees", finding["message"])
 
     def test_include_and_fix_leaves_an_included_inertial(self):
         directory = fresh("mjcf_include")

@@ -33,10 +33,16 @@ constexpr double kLightest = 100.0, kHeaviest = 25000.0;  // kg/m^3
 // rounding of a tensor on the boundary (a thin plate) stays above it.
 constexpr double kTriangleTolerance = 1e-9;
 
-// Three significant digits: enough to read a difference by.
+// Three significant digits (whole numbers from 100 %): enough to read a
+// difference by.
 std::string percent(double fraction) {
+    const double value = 100.0 * fraction;
     std::ostringstream text;
-    text << std::setprecision(3) << 100.0 * fraction << " %";
+    if (std::abs(value) >= 100.0)
+        text << std::fixed << std::setprecision(0);
+    else
+        text << std::setprecision(3);
+    text << value << " %";
     return text.str();
 }
 
@@ -195,12 +201,16 @@ std::vector<Finding> judge_against_geometry(const Inertial& declared, const Comp
         if (difference > kMomentWarning || angle > kAxisWarningDegrees) {
             const bool error = difference > kMomentError || angle > kAxisErrorDegrees;
             std::ostringstream message;
-            message << "principal moments differ by up to " << percent(difference) << " (declared "
-                    << triple(moments) << ", computed " << triple(computed.principal_moments)
-                    << ")";
-            if (angle > kAxisWarningDegrees) {
-                message << "; principal axes by " << std::setprecision(3) << angle << " degrees";
+            message << std::setprecision(3);
+            if (difference > kMomentWarning) {
+                message << "principal moments differ by up to " << percent(difference);
+                if (angle > kAxisWarningDegrees)
+                    message << ", principal axes by " << angle << " degrees";
+            } else {
+                message << "principal axes differ by " << angle << " degrees";
             }
+            message << " (principal moments declared " << triple(moments) << ", computed "
+                    << triple(computed.principal_moments) << ")";
             message << inertia_hint(declared, moments, computed);
             findings.push_back(
                 {"inertia_differs", error ? Severity::kError : Severity::kWarning, message.str()});

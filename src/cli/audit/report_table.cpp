@@ -29,7 +29,8 @@ void write_audit_table(std::ostream& out, const std::vector<FileAudit>& files) {
             out << ": cannot be read: " << file.error << "\n\n";
             continue;
         }
-        out << " (" << format_name(file.format) << ", " << file.links.size() << " links)\n";
+        out << " (" << format_name(file.format) << ", " << file.links.size()
+            << (file.links.size() == 1 ? " link)\n" : " links)\n");
         for (const LinkAudit& link : file.links) {
             out << "  " << link.name << " [" << link.geometry << "]\n";
             if (link.declared) {
