@@ -64,7 +64,7 @@ def test_yourdfpy_reads_the_fixed_urdf(tmp_path):
 
 # Bodies of the class "part": the mesh turned by euler 30 90 0 (degrees, in
 # the sequence zyx of the moving frame) and moved; a box turned by a
-# quaternion, a capsule along a fromto segment.
+# quaternion, a capsule along a fromto segment in a <frame>.
 MJCF = fx.mjcf(
     'angle="degree" eulerseq="zyx"',
     'euler="30 90 0" pos="0.125 0 0.5" density="1000"',
@@ -75,7 +75,9 @@ MJCF = fx.mjcf(
     </body>
     <body name="inferred" pos="5 0 0" childclass="part">
       <geom mesh="box"/>
-      <geom class="robot" type="capsule" fromto="1 0 0 1 0.5 0.5" size="0.125"/>
+      <frame pos="0 0.25 0" euler="0 0 30">
+        <geom class="robot" type="capsule" fromto="1 0 0 1 0.5 0.5" size="0.125"/>
+      </frame>
     </body>""",
 )
 

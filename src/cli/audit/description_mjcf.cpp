@@ -12,6 +12,7 @@
 //   (type, size, pos, orientation, fromto, mesh), in the body's frame;
 //   geoms with contype and conaffinity both 0 are visual, the others
 //   collision;
+// - <frame> elements (MuJoCo 3) placing the geoms and bodies in them;
 // - <include file> anywhere, its file's children taking its place
 //   (relative to the model file's directory); an inertial in an included file
 //   is audited but not written by --fix.
@@ -209,14 +210,15 @@ private:
     void read_bodies(const pugi::xml_node& parent, const XmlFile& source, const std::string& cls,
                      int depth) {
         for_each_child(parent, source, depth, [&](const pugi::xml_node& node, const XmlFile& in) {
-            if (std::string(node.name()) != "body") return;
+            const std::string name = node.name();
+            if (name != "body" && name != "frame") return;
             const std::string child_class =
                 node.attribute("childclass") ? node.attribute("childclass").value() : cls;
             if (++body_depth_ > kDeepestBody) {
-                throw DescriptionError(main_.path + ": bodies nested more than " +
+                throw DescriptionError(main_.path + ": bodies and frames nested more than " +
                                        std::to_string(kDeepestBody) + " deep");
             }
-            read_body(node, in, child_class, depth);
+            if (name == "body") read_body(node, in, child_class, depth);
             read_bodies(node, in, child_class, depth);
             --body_depth_;
         });
@@ -229,24 +231,57 @@ private:
         if (link.name.empty()) link.name = "body " + std::to_string(++unnamed_);
         const std::string what = "body '" + link.name + "'";
         for_each_child(node, source, depth, [&](const pugi::xml_node& child, const XmlFile& in) {
+            if (std::string(child.name()) != "inertial") return;
+            try {
+                link.inertial = read_inertial(child, in, what + " <inertial>");
+            } catch (const DescriptionError& error) {
+                link.invalid_inertial = error.what();
+            }
+        });
+        read_geoms(node, source, cls, depth, Pose{}, what, link);
+        description_.links.push_back(std::move(link));
+    }
+
+    // The geoms of a body, and of the <frame>s in it (MuJoCo 3: a frame
+    // places its children, and its childclass is theirs), each placed by
+    // frame in the body.
+    void read_geoms(const pugi::xml_node& node, const XmlFile& source, const std::string& cls,
+                    int depth, const Pose& frame, const std::string& what, Link& link) {
+        for_each_child(node, source, depth, [&](const pugi::xml_node& child, const XmlFile& in) {
             const std::string name = child.name();
-            if (name == "inertial") {
+            if (name == "geom") {
                 try {
-                    link.inertial = read_inertial(child, in, what + " <inertial>");
-                } catch (const DescriptionError& error) {
-                    link.invalid_inertial = error.what();
-                }
-            } else if (name == "geom") {
-                try {
-                    read_geom(child, cls, what + " " + describe(child), link);
+                    read_geom(child, cls, frame, what + " " + describe(child), link);
                 } catch (const DescriptionError& error) {
                     Geometry geometry;
                     geometry.invalid = error.what();
                     link.collision.push_back(std::move(geometry));
                 }
+            } else if (name == "frame") {
+                const std::string where = what + " " + describe(child);
+                const std::string child_class =
+                    child.attribute("childclass") ? child.attribute("childclass").value() : cls;
+                if (++body_depth_ > kDeepestBody) {
+                    throw DescriptionError(main_.path + ": frames nested more than " +
+                                           std::to_string(kDeepestBody) + " deep");
+                }
+                Pose inner;
+                try {
+                    inner.rotation = frame.rotation * orientation(child, cls, where);
+                    inner.position = frame.rotation * vector(lookup(child, "pos", cls),
+                                                             Eigen::Vector3d::Zero(), where) +
+                                     frame.position;
+                } catch (const DescriptionError& error) {
+                    Geometry geometry;
+                    geometry.invalid = error.what();
+                    link.collision.push_back(std::move(geometry));
+                    --body_depth_;
+                    return;
+                }
+                read_geoms(child, in, child_class, depth, inner, what, link);
+                --body_depth_;
             }
         });
-        description_.links.push_back(std::move(link));
     }
 
     Inertial read_inertial(const pugi::xml_node& node, const XmlFile& source,
@@ -273,8 +308,8 @@ private:
         return inertial;
     }
 
-    void read_geom(const pugi::xml_node& node, const std::string& cls, const std::string& what,
-                   Link& link) const {
+    void read_geom(const pugi::xml_node& node, const std::string& cls, const Pose& frame,
+                   const std::string& what, Link& link) const {
         const std::string mesh_name = lookup(node, "mesh", cls);
         std::string type = lookup(node, "type", cls);
         if (type.empty()) type = mesh_name.empty() ? "sphere" : "mesh";
@@ -326,6 +361,8 @@ private:
                                        "' is not a shape the audit measures");
             return;
         }
+        geometry.pose.position = frame.rotation * geometry.pose.position + frame.position;
+        geometry.pose.rotation = frame.rotation * geometry.pose.rotation;
         const bool visual =
             lookup(node, "contype", cls) == "0" && lookup(node, "conaffinity", cls) == "0";
         (visual ? link.visual : link.collision).push_back(std::move(geometry));
