@@ -128,10 +128,7 @@ std::string density_hint(double density) {
         {1e9, "the mesh looks like millimetres read as metres (a scale 0.001 missing)"},
         {1e6, "the mesh looks like centimetres read as metres (a scale 0.01 missing)"},
         {1.0 / (inch * inch * inch), "the mesh looks like inches read as metres"},
-        {1e-9, "the mesh looks like metres scaled as millimetres (a scale 0.001 too many)"},
-        {1e3,
-         "the mass looks 1000 times too small (tonnes written for kilograms), or the "
-         "lengths 10 times too large"}};
+        {1e-9, "the mesh looks like metres scaled as millimetres (a scale 0.001 too many)"}};
     const char* best = nullptr;
     double best_distance = 0.0;
     for (const Explanation& explanation : explanations) {
