@@ -184,6 +184,17 @@ class Geometry(AuditCase):
         message = next(f for f in entry["findings"] if f["kind"] == "inertia_differs")["message"]
         self.assertIn("lengths off by a factor 1000", message)
 
+    def test_scales_out_of_range_are_findings(self):
+        directory = fresh("scale_range")
+        fx.write_stl(directory / "box.stl", fx.box_corners())
+        for scale in ("1e-300 1e-300 1e-300", "1e300 1e300 1e300", "0 1 1"):
+            geometry = f'<geometry><mesh filename="box.stl" scale="{scale}"/></geometry>'
+            path = directory / "robot.urdf"
+            path.write_text(fx.urdf([("base", self.correct_inertial(), geometry)]))
+            result, out = audit(path)
+            self.assertEqual(result.returncode, 1, scale)
+            self.assertEqual(kinds(link(out, "base")), ["bad_geometry"], scale)
+
     def test_mesh_in_millimetres_read_as_metres(self):
         directory = fresh("mm")
         fx.write_stl(directory / "box_mm.stl", fx.box_corners(unit=0.001))

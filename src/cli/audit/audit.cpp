@@ -5,7 +5,9 @@
 #include "audit/audit.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "audit/judge.hpp"
 #include "audit/measure.hpp"
@@ -54,6 +56,38 @@ Computed computed_from(const Library& library, const polymass_moments& moments, 
     return computed;
 }
 
+// Whether the link declares a mass the geometry can be weighed to.
+bool has_mass(const std::optional<Inertial>& declared) {
+    return declared && std::isfinite(declared->mass) && declared->mass > 0.0;
+}
+
+// The link's bodies as one, at the declared mass (or the density), judged.
+void add_up(const Library& library, const std::vector<Measured>& bodies,
+            const AuditSettings& settings, LinkAudit& audit) {
+    try {
+        polymass_moments total = bodies.front().moments;
+        std::vector<Eigen::Vector3d> points = bodies.front().points;
+        for (std::size_t i = 1; i < bodies.size(); ++i) {
+            total = added_moments(library, total, bodies[i].moments);
+            points.insert(points.end(), bodies[i].points.begin(), bodies[i].points.end());
+        }
+        const double mass =
+            has_mass(audit.declared) ? audit.declared->mass : settings.density * total.volume;
+        audit.computed = computed_from(library, total, mass, points);
+    } catch (const std::runtime_error& error) {
+        // The library refused the sum (a result out of range).
+        audit.findings.push_back(
+            {"bad_geometry", Severity::kError,
+             std::string("the link's geometry cannot be added up: ") + error.what()});
+        return;
+    }
+    if (has_mass(audit.declared)) {
+        for (Finding& finding : judge_against_geometry(*audit.declared, *audit.computed)) {
+            audit.findings.push_back(std::move(finding));
+        }
+    }
+}
+
 LinkAudit audit_link(const Library& library, const Description& description, const Link& link,
                      const AuditSettings& settings) {
     LinkAudit audit;
@@ -88,31 +122,19 @@ LinkAudit audit_link(const Library& library, const Description& description, con
              inferred ? "no <inertial>: MuJoCo infers it from the geoms (their densities)"
                       : "geometry but no <inertial>: simulators substitute a default mass"});
     }
-    bool measured_all = true;
-    polymass_moments total{};
-    std::vector<Eigen::Vector3d> points;
+    std::vector<Measured> bodies;
     for (const Geometry& geometry : geometries) {
         Measured measured = measure_geometry(library, geometry, description.path);
         if (!measured.ok) {
-            audit.findings.push_back(
-                {measured.kind,
-                 measured.kind == "not_a_solid" ? Severity::kWarning : Severity::kError,
-                 measured.message + " (the link's inertia is not checked)"});
-            measured_all = false;
-            continue;
+            const Severity severity =
+                measured.kind == "not_a_solid" ? Severity::kWarning : Severity::kError;
+            audit.findings.push_back({measured.kind, severity,
+                                      measured.message + " (the link's inertia is not checked)"});
         }
-        total = points.empty() ? measured.moments : added_moments(library, total, measured.moments);
-        points.insert(points.end(), measured.points.begin(), measured.points.end());
+        bodies.push_back(std::move(measured));
     }
-    if (!measured_all) return audit;
-    const bool declared_mass =
-        audit.declared && std::isfinite(audit.declared->mass) && audit.declared->mass > 0.0;
-    const double mass = declared_mass ? audit.declared->mass : settings.density * total.volume;
-    audit.computed = computed_from(library, total, mass, points);
-    if (declared_mass) {
-        for (Finding& finding : judge_against_geometry(*audit.declared, *audit.computed)) {
-            audit.findings.push_back(std::move(finding));
-        }
+    if (std::all_of(bodies.begin(), bodies.end(), [](const Measured& m) { return m.ok; })) {
+        add_up(library, bodies, settings, audit);
     }
     return audit;
 }

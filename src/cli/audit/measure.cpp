@@ -1,6 +1,7 @@
 #include "audit/measure.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
@@ -131,26 +132,14 @@ Measured measure_primitive(const Geometry& geometry) {
     return measured;
 }
 
-Measured measure_geometry(const Library& library, const Geometry& geometry,
-                          const std::string& description_path) {
-    Measured measured;
-    if (!geometry.invalid.empty()) return failure("invalid_element", geometry.invalid);
+namespace {
+
+// The geometry's body scaled (a mesh) and placed by its pose.
+Measured placed(const Library& library, const Geometry& geometry, Measured measured) {
     if (geometry.shape == Shape::kMesh) {
-        const Resolved resolved = resolve_mesh(geometry.uri, description_path);
-        if (resolved.path.empty()) return failure("unreadable_mesh", resolved.error);
-        if (!(geometry.scale.array().isFinite().all() && (geometry.scale.array() != 0).all())) {
-            return failure("bad_geometry", geometry.uri +
-                                               ": a mesh scale with a zero or "
-                                               "non-finite factor");
-        }
-        measured = measure_mesh_file(library, resolved.path);
-        if (!measured.ok) return measured;
         measured.moments = scaled_moments(
             library, measured.moments, {geometry.scale[0], geometry.scale[1], geometry.scale[2]});
         for (Eigen::Vector3d& point : measured.points) point = point.cwiseProduct(geometry.scale);
-    } else {
-        measured = measure_primitive(geometry);
-        if (!measured.ok) return measured;
     }
     std::array<double, 9> rotation{};
     for (int row = 0; row < 3; ++row) {
@@ -164,6 +153,32 @@ Measured measure_geometry(const Library& library, const Geometry& geometry,
         point = geometry.pose.rotation * point + geometry.pose.position;
     }
     return measured;
+}
+
+}  // namespace
+
+Measured measure_geometry(const Library& library, const Geometry& geometry,
+                          const std::string& description_path) {
+    Measured measured;
+    if (!geometry.invalid.empty()) return failure("invalid_element", geometry.invalid);
+    if (geometry.shape == Shape::kMesh) {
+        const Resolved resolved = resolve_mesh(geometry.uri, description_path);
+        if (resolved.path.empty()) return failure("unreadable_mesh", resolved.error);
+        if (!(geometry.scale.array().isFinite().all() && (geometry.scale.array() != 0).all())) {
+            return failure("bad_geometry",
+                           geometry.uri + ": a mesh scale with a zero or non-finite factor");
+        }
+        measured = measure_mesh_file(library, resolved.path);
+    } else {
+        measured = measure_primitive(geometry);
+    }
+    if (!measured.ok) return measured;
+    try {
+        return placed(library, geometry, std::move(measured));
+    } catch (const std::runtime_error& error) {
+        // The library refused to scale or move it (a result out of range).
+        return failure("bad_geometry", std::string("cannot be scaled or placed: ") + error.what());
+    }
 }
 
 }  // namespace polymass_cli::audit
