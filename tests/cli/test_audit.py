@@ -453,6 +453,20 @@ class Mjcf(AuditCase):
         self.assertEqual(finding["kind"], "inertia_differs")
         self.assertIn("principal axes differ by 45 degrees", finding["message"])
 
+    def test_an_unreadable_inertial_is_a_finding_of_its_body(self):
+        directory = fresh("mjcf_invalid")
+        path, _ = write_mjcf_model(directory, "1 0 0 0")
+        text = path.read_text()
+        start = text.index('diaginertia="') + len('diaginertia="')
+        path.write_text(text[:start] + text[text.index('"', start) :])
+        result, out = audit(path)
+        self.assertEqual(result.returncode, 1)
+        entry = link(out, "arm")
+        self.assertEqual(kinds(entry), ["invalid_element"])
+        self.assertIn("diaginertia", entry["findings"][0]["message"])
+        self.assertIsNone(entry["declared"])
+        self.assertIsNotNone(entry["computed"])
+
     def test_include_and_fix_leaves_an_included_inertial(self):
         directory = fresh("mjcf_include")
         path, _ = write_mjcf_model(directory, "1 0 0 0")

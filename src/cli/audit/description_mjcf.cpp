@@ -153,11 +153,17 @@ private:
         return found == found_element->second.end() ? "" : found->second;
     }
 
-    Eigen::Vector3d vector(const std::string& text, const Eigen::Vector3d& fallback,
-                           const std::string& what) const {
-        if (text.empty()) return fallback;
+    // Three numbers (DescriptionError naming what otherwise, an empty text
+    // included).
+    static Eigen::Vector3d required_vector(const std::string& text, const std::string& what) {
         const std::vector<double> v = parse_numbers(text, 3, what);
         return {v[0], v[1], v[2]};
+    }
+
+    // Three numbers, or fallback for an empty text.
+    static Eigen::Vector3d vector(const std::string& text, const Eigen::Vector3d& fallback,
+                                  const std::string& what) {
+        return text.empty() ? fallback : required_vector(text, what);
     }
 
     double angle(double value) const { return degrees_ ? value * kPi / 180.0 : value; }
@@ -179,10 +185,10 @@ private:
             return rotation_from_xy_axes({v[0], v[1], v[2]}, {v[3], v[4], v[5]}, what + " xyaxes");
         }
         if (const std::string z = lookup(element, "zaxis", cls); !z.empty()) {
-            return rotation_from_z_axis(vector(z, {}, what + " zaxis"), what + " zaxis");
+            return rotation_from_z_axis(required_vector(z, what + " zaxis"), what + " zaxis");
         }
         if (const std::string e = lookup(element, "euler", cls); !e.empty()) {
-            const Eigen::Vector3d v = vector(e, {}, what + " euler");
+            const Eigen::Vector3d v = required_vector(e, what + " euler");
             return rotation_from_euler({angle(v[0]), angle(v[1]), angle(v[2])}, eulerseq_,
                                        what + " euler");
         }
@@ -289,7 +295,7 @@ private:
         Inertial inertial;
         const std::string pos = node.attribute("pos").value();
         if (pos.empty()) throw DescriptionError(what + ": no pos");
-        inertial.center_of_mass = vector(pos, {}, what + " pos");
+        inertial.center_of_mass = required_vector(pos, what + " pos");
         const std::string mass = node.attribute("mass").value();
         if (mass.empty()) throw DescriptionError(what + ": no mass");
         inertial.mass = parse_number(mass, what + " mass");
@@ -298,7 +304,7 @@ private:
             const std::vector<double> v = parse_numbers(full.value(), 6, what + " fullinertia");
             in_frame << v[0], v[3], v[4], v[3], v[1], v[5], v[4], v[5], v[2];
         } else if (const pugi::xml_attribute diagonal = node.attribute("diaginertia")) {
-            in_frame = vector(diagonal.value(), {}, what + " diaginertia").asDiagonal();
+            in_frame = required_vector(diagonal.value(), what + " diaginertia").asDiagonal();
         } else {
             throw DescriptionError(what + ": neither diaginertia nor fullinertia");
         }
