@@ -11,7 +11,10 @@
 #      (ruff.toml; .gitignore'd build trees are skipped);
 #   5. pytest (bindings/python/tests), then runs the examples;
 #   6. the Dask example (examples/dask): dask[distributed] and pyarrow from PyPI,
-#      then its pytest on a distributed.LocalCluster.
+#      then its pytest on a distributed.LocalCluster;
+#   7. polymass audit --fix read back by yourdfpy and MuJoCo (from PyPI):
+#      tests/cli/test_audit_consumers.py, with the tool of build/dev (or
+#      $POLYMASS_EXE; scripts/test.sh builds dev before this step).
 # The library under test is the wheel's own copy: POLYMASS_LIBRARY is unset.
 #
 #   scripts/test-python.sh            PYTHON=python3.12 scripts/test-python.sh
@@ -86,6 +89,16 @@ step dask
 "$venv/bin/python" -m pip --disable-pip-version-check --no-input --quiet \
     install "dask[distributed]" pyarrow </dev/null
 "$venv/bin/python" -m pytest -q -p no:cacheprovider examples/dask </dev/null
+
+step audit-consumers
+polymass_exe=${POLYMASS_EXE:-$root/build/dev/src/cli/polymass}
+if [ ! -x "$polymass_exe" ]; then
+    echo "test-python: no polymass tool at $polymass_exe (build the dev preset first)" >&2
+    exit 1
+fi
+"$venv/bin/python" -m pip "${pip_options[@]}" install yourdfpy mujoco </dev/null
+POLYMASS_EXE=$polymass_exe "$venv/bin/python" -m pytest -q -p no:cacheprovider \
+    tests/cli/test_audit_consumers.py </dev/null
 
 echo
 echo "test-python: all passed"

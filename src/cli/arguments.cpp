@@ -23,6 +23,7 @@ struct RawOptions {
     std::vector<std::string> densities, masses;  // D or NAME=D, repeatable
     std::string scale, units, about, origin, weld_tolerance, planarity_tolerance;
     bool json = false, urdf = false, sdf = false, mjcf = false;
+    std::string from, mass_from;  // polymass audit
 };
 
 double positive_number(std::string_view option, std::string_view text) {
@@ -227,6 +228,32 @@ void refuse_assembly_settings(const RawOptions& raw, const Arguments& arguments)
     }
 }
 
+// polymass audit's options: its own, and --json and --density shared with
+// the other commands' RawOptions.
+void add_audit_options(CLI::App& app, RawOptions& raw, AuditArguments& audit) {
+    app.add_option("FILE", raw.files, "URDF, SDFormat or MJCF files")->option_text(" ");
+    app.add_flag("--json", raw.json, "JSON (schema in the README)");
+    app.add_option("--from", raw.from, "the geometry measured (default collision)")
+        ->check(CLI::IsMember({"collision", "visual"}))
+        ->option_text("collision|visual");
+    app.add_option("--fail-on", audit.fail_on,
+                   "exit 1 when a finding is this severe or more (default error)")
+        ->check(CLI::IsMember({"info", "warning", "error"}))
+        ->option_text("info|warning|error");
+    app.add_option("--fix", audit.fix,
+                   "write the description with the computed inertials to OUT\n"
+                   "(one FILE; declared masses kept unless --density or --mass-from)")
+        ->option_text("OUT");
+    app.add_option("--density", raw.densities,
+                   "kg/m^3: links without a mass are computed at D (default 1000);\n"
+                   "with --fix, every mass becomes D * volume")
+        ->option_text("D");
+    app.add_option("--mass-from", raw.mass_from,
+                   "with --fix: geometry writes D * volume (D from --density, default 1000)")
+        ->check(CLI::IsMember({"declared", "geometry"}))
+        ->option_text("declared|geometry");
+}
+
 constexpr const char* kFooter =
     "Conventions: faces counter-clockwise seen from outside; inertia tensor\n"
     "I = integral rho (|r|^2 1 - r r^T) dV, so Ixy = -integral rho x y dV, as\n"
@@ -240,6 +267,19 @@ constexpr const char* kFooter =
     "  polymass link.obj --mass 1.5 --urdf\n"
     "  polymass arm.stl --units mm --mass 0.8 --urdf --origin 0,0,0.25\n"
     "  polymass check scan.ply\n";
+
+constexpr const char* kAuditFooter =
+    "Per link: the declared mass, centre of mass and inertia next to those of its\n"
+    "geometry (meshes and shapes) at the declared mass; findings with a kind, a\n"
+    "severity and a message (README: the kinds and their thresholds).\n"
+    "\n"
+    "Exit status: 0 no finding as severe as --fail-on, 1 some, 2 usage error,\n"
+    "3 a description cannot be read, 4 internal error.\n"
+    "\n"
+    "Examples:\n"
+    "  polymass audit robot.urdf\n"
+    "  polymass audit model.sdf --json --fail-on warning\n"
+    "  polymass audit arm.xml --fix arm.fixed.xml\n";
 
 std::string description() {
     return std::string(
@@ -261,6 +301,7 @@ struct CommandLine {
     CLI::App app{description(), "polymass"};
     CLI::App* check = nullptr;
     CLI::App* assembly = nullptr;
+    CLI::App* audit = nullptr;
     RawOptions raw;
     bool version = false;
 
@@ -277,6 +318,11 @@ struct CommandLine {
             "units and density or mass; the schema is in the README) and the whole");
         assembly->footer(kFooter);
         add_options(*assembly, raw, arguments);
+        audit = app.add_subcommand("audit",
+                                   "check (and --fix) the inertials of URDF, SDFormat and MJCF "
+                                   "robot descriptions against their geometry");
+        audit->footer(kAuditFooter);
+        add_audit_options(*audit, raw, arguments.audit);
     }
 };
 
@@ -299,9 +345,27 @@ Arguments parse_arguments(int argc, const char* const* argv) {
     }
     if (line.check->parsed()) arguments.command = Command::kCheck;
     if (line.assembly->parsed()) arguments.command = Command::kAssembly;
+    if (line.audit->parsed()) {
+        arguments.command = Command::kAudit;
+        arguments.audit.from_visual = line.raw.from == "visual";
+        arguments.audit.mass_from_geometry = line.raw.mass_from == "geometry";
+        if (arguments.audit.fix.empty() && !line.raw.mass_from.empty()) {
+            throw UsageError("--mass-from chooses the masses --fix writes");
+        }
+        if (!arguments.audit.fix.empty() && line.raw.files.size() != 1) {
+            throw UsageError("--fix writes one description: give one FILE");
+        }
+    }
     read_values(line.raw, arguments);
     if (arguments.command == Command::kAssembly) refuse_assembly_settings(line.raw, arguments);
-    if (arguments.files.empty()) throw UsageError("no mesh file given (see polymass --help)");
+    if (arguments.command == Command::kAudit && !arguments.part_materials.empty()) {
+        throw UsageError("polymass audit: --density takes one density D, not NAME=D");
+    }
+    if (arguments.files.empty()) {
+        throw UsageError(arguments.command == Command::kAudit
+                             ? "no description file given (see polymass audit --help)"
+                             : "no mesh file given (see polymass --help)");
+    }
     if (arguments.density && arguments.mass) {
         throw UsageError("give --density or --mass, not both");
     }

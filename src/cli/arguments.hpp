@@ -9,7 +9,7 @@
 
 namespace polymass_cli {
 
-enum class Command { kProperties, kCheck, kHelp, kVersion, kAssembly };
+enum class Command { kProperties, kCheck, kHelp, kVersion, kAssembly, kAudit };
 enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf };
 enum class About { kCenterOfMass, kOrigin, kPoint };
 
@@ -18,6 +18,14 @@ struct PartMaterial {
     std::string part;
     bool by_mass = false;  // value is the part's mass, not its density
     double value = 1.0;
+};
+
+// polymass audit's own options.
+struct AuditArguments {
+    bool from_visual = false;         // --from visual (default: collision)
+    std::string fail_on = "error";    // --fail-on: info, warning or error
+    std::string fix;                  // --fix OUT: empty for none
+    bool mass_from_geometry = false;  // --mass-from geometry
 };
 
 struct Arguments {
@@ -43,6 +51,7 @@ struct Arguments {
     double weld_tolerance = 1e-9;
     double planarity_tolerance = 0.0;  // 0: the library's default
     bool triangulate = false;
+    AuditArguments audit;
 };
 
 // A command line the tool cannot run; the message says what is wrong.

@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
                 return run_properties(arguments);
             case Command::kAssembly:
                 return run_assembly(arguments);
+            case Command::kAudit:
+                return run_audit(arguments);
         }
     } catch (const UsageError& error) {
         std::cerr << "polymass: " << error.what() << '\n';

@@ -55,7 +55,7 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
     }
     const double factor = part.metres_per_unit.value_or(1.0);
     MomentsResult step{POLYMASS_OK, {}, solid.moments(library)};
-    if (factor != 1.0) step = scaled(library, step.moments, factor);
+    if (factor != 1.0) step = scaled(library, step.moments, {factor, factor, factor});
     polymass_mass_desc material = unit;
     material.mass_mode = part.by_mass ? POLYMASS_MASS_FROM_TOTAL : POLYMASS_MASS_FROM_DENSITY;
     (part.by_mass ? material.mass : material.density) = part.value;

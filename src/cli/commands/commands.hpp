@@ -23,6 +23,10 @@ ExitCode run_assembly(const Arguments& arguments);
 // errors, warnings and notes on stderr; returns the highest exit status.
 ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& arguments);
 
+// polymass audit FILE...: robot descriptions' inertials against their
+// geometry (exit 0, or 1 when a finding reaches --fail-on).
+ExitCode run_audit(const Arguments& arguments);
+
 // The library options the command line asks for.
 polymass_options options_for(const Arguments& arguments);
 

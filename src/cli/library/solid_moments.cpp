@@ -81,10 +81,10 @@ MomentsResult weighted(const Library& library, const polymass_moments& moments,
     });
 }
 
-MomentsResult scaled(const Library& library, const polymass_moments& moments, double factor) {
-    const double factors[3] = {factor, factor, factor};
+MomentsResult scaled(const Library& library, const polymass_moments& moments,
+                     const std::array<double, 3>& factors) {
     return moments_step(library, [&](polymass_moments* out) {
-        return polymass_moments_scale(out, library.context(), &moments, factors);
+        return polymass_moments_scale(out, library.context(), &moments, factors.data());
     });
 }
 
@@ -106,6 +106,11 @@ MomentsResult sum(const Library& library, const std::vector<polymass_moments>& b
         });
     }
     return total;
+}
+
+polymass_moments value_of(const MomentsResult& result) {
+    if (result.status != POLYMASS_OK) throw std::runtime_error(result.message);
+    return result.moments;
 }
 
 SolidResult properties_of(const Library& library, const polymass_moments& moments,

@@ -17,5 +17,8 @@ Model read_ply(const std::string& bytes);
 Model read_gltf(const std::string& path);
 // 3MF through lib3mf: transforms applied, one part per build item.
 Model read_3mf(const std::string& path);
+// Collada through assimp: its <unit> and <up_axis> applied (metres, Z up),
+// node transforms applied, one part per node with meshes.
+Model read_collada(const std::string& path);
 
 }  // namespace polymass_cli

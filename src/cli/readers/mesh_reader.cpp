@@ -70,7 +70,7 @@ void check_faces_match_indices(const Model& model) {
 
 }  // namespace
 
-const char* supported_formats() { return "obj, stl, ply, off, gltf, glb, 3mf"; }
+const char* supported_formats() { return "obj, stl, ply, off, gltf, glb, 3mf, dae"; }
 
 Model read_mesh_file(const std::string& path, const std::string& format) {
     const std::string name = format.empty() ? format_from_extension(path) : lowercase(format);
@@ -89,6 +89,9 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     } else if (name == "3mf") {
         check_not_empty(path);
         model = read_isolated([&] { return read_3mf(path); });
+    } else if (name == "dae") {
+        check_not_empty(path);
+        model = read_isolated([&] { return read_collada(path); });
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
                                     "with one, or give --format (") +

@@ -1,0 +1,185 @@
+#include "audit/measure.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "audit/resolve.hpp"
+#include "library/categories.hpp"
+#include "library/solid_moments.hpp"
+#include "readers/mesh_reader.hpp"
+
+namespace polymass_cli::audit {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Measured failure(const std::string& kind, const std::string& message) {
+    Measured measured;
+    measured.kind = kind;
+    measured.message = message;
+    return measured;
+}
+
+// Moments about the centre of a body symmetric under x, y, z -> -x, -y, -z
+// per axis: no first moments, no products.
+polymass_moments centred_moments(double volume, const Eigen::Vector3d& second) {
+    polymass_moments moments{};
+    moments.struct_size = sizeof moments;
+    moments.volume = volume;
+    moments.mass = volume;
+    for (int i = 0; i < 3; ++i) moments.second[i] = second[i];
+    return moments;
+}
+
+std::vector<Eigen::Vector3d> box_corners(const Eigen::Vector3d& half) {
+    std::vector<Eigen::Vector3d> corners;
+    for (int k = 0; k < 8; ++k) {
+        corners.emplace_back((k & 1 ? 1 : -1) * half[0], (k & 2 ? 1 : -1) * half[1],
+                             (k & 4 ? 1 : -1) * half[2]);
+    }
+    return corners;
+}
+
+bool positive_finite(const Eigen::Vector3d& v, int count) {
+    for (int i = 0; i < count; ++i) {
+        if (!(std::isfinite(v[i]) && v[i] > 0.0)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+Measured measure_mesh_file(const Library& library, const std::string& path) {
+    Model model;
+    try {
+        model = read_mesh_file(path, "");
+    } catch (const ReadError& error) {
+        return failure("unreadable_mesh", path + ": " + error.what());
+    }
+    const MomentsResult result = compute_moments(library, model, combined_part(model));
+    if (result.status != POLYMASS_OK) {
+        return failure("not_a_solid",
+                       path + ": " + category_of(result.status) + ": " + result.message);
+    }
+    if (!(result.moments.volume > 0.0)) {
+        return failure("not_a_solid", path + ": no volume");
+    }
+    Measured measured;
+    measured.ok = true;
+    measured.moments = result.moments;
+    for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
+        measured.points.emplace_back(model.positions[v], model.positions[v + 1],
+                                     model.positions[v + 2]);
+    }
+    return measured;
+}
+
+Measured measure_primitive(const Geometry& geometry) {
+    const Eigen::Vector3d& s = geometry.size;
+    Measured measured;
+    switch (geometry.shape) {
+        case Shape::kBox: {
+            if (!positive_finite(s, 3)) break;
+            const double volume = s[0] * s[1] * s[2];
+            measured.moments = centred_moments(volume, volume * s.cwiseProduct(s) / 12.0);
+            measured.points = box_corners(s / 2);
+            measured.ok = true;
+            break;
+        }
+        case Shape::kSphere:
+        case Shape::kEllipsoid: {
+            const Eigen::Vector3d radii =
+                geometry.shape == Shape::kSphere ? Eigen::Vector3d::Constant(s[0]) : s;
+            if (!positive_finite(radii, 3)) break;
+            const double volume = 4.0 / 3.0 * kPi * radii.prod();
+            measured.moments = centred_moments(volume, volume * radii.cwiseProduct(radii) / 5.0);
+            measured.points = box_corners(radii);
+            measured.ok = true;
+            break;
+        }
+        case Shape::kCylinder:
+        case Shape::kCapsule: {
+            const double r = s[0], h = s[1];
+            if (!(std::isfinite(r) && r > 0.0 && std::isfinite(h) && h >= 0.0)) break;
+            if (geometry.shape == Shape::kCylinder && !(h > 0.0)) break;
+            const double cylinder = kPi * r * r * h;
+            Eigen::Vector3d second(cylinder * r * r / 4, cylinder * r * r / 4,
+                                   cylinder * h * h / 12);
+            double volume = cylinder;
+            double half_height = h / 2;
+            if (geometry.shape == Shape::kCapsule) {
+                // Two hemispheres, whole sphere about the axis; along it,
+                // each about its flat face moved to +-h/2 (docs/audit.md).
+                const double sphere = 4.0 / 3.0 * kPi * r * r * r;
+                volume += sphere;
+                second[0] += sphere * r * r / 5;
+                second[1] += sphere * r * r / 5;
+                second[2] += kPi * r * r * r * h * h / 3 + kPi * r * r * r * r * h / 2 +
+                             4.0 / 15.0 * kPi * r * r * r * r * r;
+                half_height += r;
+            }
+            measured.moments = centred_moments(volume, second);
+            measured.points = box_corners({r, r, half_height});
+            measured.ok = true;
+            break;
+        }
+        case Shape::kMesh:
+            break;
+    }
+    if (!measured.ok) {
+        return failure("bad_geometry", "a shape whose sizes are not positive and finite");
+    }
+    return measured;
+}
+
+namespace {
+
+// The geometry's body scaled (a mesh) and placed by its pose.
+Measured placed(const Library& library, const Geometry& geometry, Measured measured) {
+    if (geometry.shape == Shape::kMesh) {
+        measured.moments = value_of(scaled(
+            library, measured.moments, {geometry.scale[0], geometry.scale[1], geometry.scale[2]}));
+        for (Eigen::Vector3d& point : measured.points) point = point.cwiseProduct(geometry.scale);
+    }
+    std::array<double, 9> rotation{};
+    for (int row = 0; row < 3; ++row) {
+        for (int column = 0; column < 3; ++column) {
+            rotation[3 * row + column] = geometry.pose.rotation(row, column);
+        }
+    }
+    const Eigen::Vector3d& t = geometry.pose.position;
+    measured.moments =
+        value_of(transformed(library, measured.moments, rotation, {t[0], t[1], t[2]}));
+    for (Eigen::Vector3d& point : measured.points) {
+        point = geometry.pose.rotation * point + geometry.pose.position;
+    }
+    return measured;
+}
+
+}  // namespace
+
+Measured measure_geometry(const Library& library, const Geometry& geometry,
+                          const std::string& description_path) {
+    Measured measured;
+    if (!geometry.invalid.empty()) return failure("invalid_element", geometry.invalid);
+    if (geometry.shape == Shape::kMesh) {
+        const Resolved resolved = resolve_mesh(geometry.uri, description_path);
+        if (resolved.path.empty()) return failure("unreadable_mesh", resolved.error);
+        if (!(geometry.scale.array().isFinite().all() && (geometry.scale.array() != 0).all())) {
+            return failure("bad_geometry",
+                           geometry.uri + ": a mesh scale with a zero or non-finite factor");
+        }
+        measured = measure_mesh_file(library, resolved.path);
+    } else {
+        measured = measure_primitive(geometry);
+    }
+    if (!measured.ok) return measured;
+    try {
+        return placed(library, geometry, std::move(measured));
+    } catch (const std::runtime_error& error) {
+        // The library refused to scale or move it (a result out of range).
+        return failure("bad_geometry", std::string("cannot be scaled or placed: ") + error.what());
+    }
+}
+
+}  // namespace polymass_cli::audit

@@ -1,0 +1,41 @@
+// The body of each geometry of a link, as unit-density moments in the link
+// frame, with the points that bound it (for the link's size and whether the
+// declared centre of mass lies within it).
+#pragma once
+
+#include <polymass/polymass.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "audit/description.hpp"
+#include "library/solid.hpp"
+
+namespace polymass_cli::audit {
+
+struct Measured {
+    bool ok = false;
+    polymass_moments moments{};           // unit density
+    std::vector<Eigen::Vector3d> points;  // its vertices, or its bounding box's corners
+    // When not ok: the finding's kind ("unreadable_mesh", "not_a_solid",
+    // "bad_geometry") and what the reader or the library said.
+    std::string kind;
+    std::string message;
+};
+
+// A mesh file in its own frame and units. The one place where a mesh that is
+// not a valid solid could be given a second chance (repaired, its shells or
+// its hull measured) with the provenance said.
+Measured measure_mesh_file(const Library& library, const std::string& path);
+
+// A primitive shape in closed form (docs/audit.md), about its centre, its
+// axis along z: box, cylinder, sphere, capsule, ellipsoid.
+Measured measure_primitive(const Geometry& geometry);
+
+// The geometry in the link frame: its mesh resolved (from the description's
+// directory) and measured, or its shape, scaled then placed by its pose.
+Measured measure_geometry(const Library& library, const Geometry& geometry,
+                          const std::string& description_path);
+
+}  // namespace polymass_cli::audit
