@@ -1,0 +1,56 @@
+#include "approximation_bound.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace polymass::core {
+
+ApproximationBound approximation_bound(const std::pmr::vector<UncertainRegion>& regions,
+                                       const RigidBody& solid) {
+    // The true solid is the answer plus a signed measure δ inside the
+    // regions, |δ| ≤ ΔV; with s = r − c its points relative to the centroid:
+    //   c' − c = ∫δ s / V',   each coordinate at most Σ vᵢ rᵢ / (V − ΔV),
+    //   J'(c) − J(c) = ∫δ (|s|² 𝟙 − s sᵀ), each entry at most Σ vᵢ rᵢ²,
+    // and the move from c to c' takes V' (|d|² 𝟙 − d dᵀ), |d|² ≤ 3 Δc².
+    ApproximationBound bound;
+    double first = 0.0, second = 0.0;
+    for (const UncertainRegion& region : regions) {
+        const double reach = (region.centre - solid.center_of_mass).norm() + region.radius;
+        bound.volume += region.volume;
+        first += region.volume * reach;
+        second += region.volume * reach * reach;
+    }
+    const double volume = std::abs(solid.volume);
+    if (!(bound.volume < volume)) {
+        bound.center_of_mass = bound.inertia = std::numeric_limits<double>::infinity();
+        return bound;
+    }
+    bound.center_of_mass = first / (volume - bound.volume);
+    bound.inertia =
+        second + 3.0 * (volume + bound.volume) * bound.center_of_mass * bound.center_of_mass;
+    return bound;
+}
+
+double approximation_inertia(const ApproximationBound& approximation, const RigidBody& body,
+                             bool mass_given) {
+    if (!mass_given) return body.density * approximation.inertia;
+    // I = (M / V) J: the density M / V' of the true solid moves too.
+    const double volume = std::abs(body.volume), dv = approximation.volume;
+    if (!(dv < volume)) return std::numeric_limits<double>::infinity();
+    const double largest = body.inertia.cwiseAbs().maxCoeff();
+    return body.density * volume / (volume - dv) *
+           (approximation.inertia + largest / body.density * dv / volume);
+}
+
+ResultBounds widen(const ResultBounds& rounding, const ApproximationBound& approximation,
+                   const RigidBody& body, bool mass_given, const PrincipalAxes& principal) {
+    if (approximation.volume == 0.0) return rounding;  // exact: nothing to add
+    ResultBounds bounds = rounding;
+    bounds.volume += approximation.volume;
+    bounds.center_of_mass += approximation.center_of_mass;
+    bounds.inertia += approximation_inertia(approximation, body, mass_given);
+    bound_principal(bounds, principal);
+    return bounds;
+}
+
+}  // namespace polymass::core
