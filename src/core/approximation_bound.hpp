@@ -1,12 +1,12 @@
-// How far an approximate answer (a repaired surface, a convex hull) can be
-// from the solid the caller meant, derived from where the answer's surface may
-// differ from the true one (docs/repair.md, "From regions to results").
+// How far an approximate answer (a repaired surface, a thin sheet standing
+// for a wall, a convex hull standing for a solid) can be from the body it
+// stands for (docs/approximations.md, docs/repair.md).
 //
-// Each change that is not exact leaves a region of space between the surface
-// integrated and the true one: a cap over a hole, the wedge between two
-// triangulations of a bent polygon, the hull's excess. A region is known by a
-// bound on its volume and a ball containing it; nothing else is needed to
-// bound the volume, the centre of mass and the inertia of the true solid.
+// Repair knows where its surface may differ from the true one: each change
+// that is not exact (a cap over a hole, the wedge between two triangulations
+// of a bent polygon) leaves a region of space known by a bound on its volume
+// and a ball containing it; nothing else is needed to bound the volume, the
+// centre of mass and the inertia of the true solid.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,19 +19,26 @@
 
 namespace polymass::core {
 
+// Absolute bounds in the caller's units, for unit density (a density ρ
+// multiplies the volume's mass counterpart and the inertia bound by ρ; the
+// centre of mass is unchanged). Infinite when nothing useful can be said.
+struct ApproximationBound {
+    double volume = 0.0;
+    double center_of_mass = 0.0;  // of each coordinate
+    double inertia = 0.0;         // of each entry of the tensor about the centre of mass
+};
+
+// The bound for an answer computed from a body of volume `answer_volume`
+// when the true body differs from it by a region of total volume at most
+// `changed_volume` (added, removed, or counted twice), everything lying within
+// `span` of everything else (a diameter). docs/approximations.md derives it.
+ApproximationBound bound_of_changed_volume(double changed_volume, double answer_volume,
+                                           double span);
+
 struct UncertainRegion {
     double volume = 0.0;  // bound on the volume between the two surfaces there
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
     double radius = 0.0;  // the region lies in the ball (centre, radius)
-};
-
-// Absolute bounds on the geometry of the answer (unit density): its volume,
-// each coordinate of its centroid, each entry of its inertia about the
-// centroid. Infinite when the uncertain volume could be the whole volume.
-struct ApproximationBound {
-    double volume = 0.0;
-    double center_of_mass = 0.0;
-    double inertia = 0.0;  // at unit density
 };
 
 // `solid` is the answer at unit density (volume, centroid, inertia).
