@@ -1,11 +1,15 @@
 // The options' chain of modes: the first that answers gives the body, and the
 // provenance says which it was and what it did (docs/repair.md).
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
+#include "core/convex_hull.hpp"
 #include "core/mesh_repair.hpp"
 #include "core/rigid_body.hpp"
+#include "core/thin_shell.hpp"
 #include "mesh.hpp"
 #include "mesh_findings.hpp"
 #include "mesh_input.hpp"
@@ -141,9 +145,93 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
     });
 }
 
-int32_t unsupported(polymass_context* context, uint32_t mode) {
-    return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                         "the %s mode is not in this build of the library", mode_name(mode));
+// The scan shell and hull start from; a status when they cannot.
+template <class View>
+int32_t scan_for(polymass_context* context, const View& view, core::MeshScan& scan) {
+    scan = core::scan_mesh(view, &context->memory);
+    if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0 ||
+        !std::isfinite(scan.diagonal()))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "indices out of range and coordinates that are not finite or "
+                             "overflow give no body");
+    return POLYMASS_OK;
+}
+
+// The SHELL mode: the surface as a sheet of area density shell_thickness.
+int32_t build_shell(polymass_context* context, const MeshInput& input,
+                    const polymass_options& options, polymass_mesh& mesh,
+                    polymass_provenance& provenance) {
+    return visit_mesh(input, [&](const auto& view) -> int32_t {
+        core::MeshScan scan(&context->memory);
+        if (const int32_t status = scan_for(context, view, scan)) return status;
+        const core::ThinShell shell = core::thin_shell_moments(
+            view, options.shell_thickness, scan.reference_point(), scan.diagonal());
+        if (!(shell.moments.mass.volume >= DBL_MIN))
+            return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
+                                 "the surface has no area to make a wall of (area %g)", shell.area);
+        mesh.integrals = shell.moments.mass;
+        mesh.bounds = shell.moments.mass_bounds;
+        mesh.reference = shell.moments.reference;
+        mesh.surface_area = shell.area;
+        mesh.warnings = POLYMASS_WARNING_SHELL;
+        mesh.approximation = shell.wall_bound;
+        provenance.shell_thickness = options.shell_thickness;
+        provenance.shell_area = shell.area;
+        return POLYMASS_OK;
+    });
+}
+
+const char* hull_failure(core::HullStatus status) {
+    switch (status) {
+        case core::HullStatus::too_few_points:
+            return "the faces use fewer than 4 distinct vertices";
+        case core::HullStatus::collinear:
+            return "the vertices lie on one line";
+        case core::HullStatus::coplanar:
+            return "the vertices lie in one plane";
+        default:
+            return "a vertex is not finite";
+    }
+}
+
+// The HULL mode: the convex hull of the used vertices, integrated as a solid.
+// The true solid lies inside it (docs/repair.md, "Hull"): its volume is in
+// [0, V_H], its centre of mass in the hull's box, and, at a given density,
+// 0 <= I_true <= I_hull, so each entry is off by at most twice the hull's
+// largest moment.
+int32_t build_hull(polymass_context* context, const MeshInput& input,
+                   const polymass_options& options, polymass_mesh& mesh,
+                   polymass_provenance& provenance) {
+    return visit_mesh(input, [&](const auto& view) -> int32_t {
+        core::MeshScan scan(&context->memory);
+        if (const int32_t status = scan_for(context, view, scan)) return status;
+        const core::ConvexHull hull = core::convex_hull(view, scan, &context->memory);
+        if (hull.status != core::HullStatus::ok)
+            return context->fail(POLYMASS_ERROR_ZERO_VOLUME, "the convex hull has no volume: %s",
+                                 hull_failure(hull.status));
+        MeshInput solid;
+        solid.position_type = POLYMASS_POSITION_FLOAT64;
+        solid.positions = reinterpret_cast<const unsigned char*>(hull.coordinates.data());
+        solid.vertex_count = hull.coordinates.size() / 3;
+        solid.position_stride = 3 * sizeof(double);
+        solid.index_type = POLYMASS_INDEX_UINT32;
+        solid.indices = reinterpret_cast<const unsigned char*>(hull.indices.data());
+        solid.index_count = hull.indices.size();
+        solid.face_count = hull.triangle_count();
+        solid.sizes_add_up = true;
+        polymass_options judged = options;
+        judged.flags = 0;
+        if (const int32_t status = build_solid(context, solid, judged, mesh)) return status;
+        mesh.warnings |= POLYMASS_WARNING_HULL;
+        const core::RigidBody body = core::rigid_body(mesh.integrals, mesh.reference, 1.0);
+        mesh.approximation.volume = body.volume;
+        mesh.approximation.center_of_mass = scan.bounds.sizes().maxCoeff();
+        mesh.approximation.inertia = 2.0 * body.inertia.diagonal().maxCoeff();
+        provenance.hull_vertex_count = solid.vertex_count;
+        provenance.hull_triangle_count = solid.face_count;
+        provenance.hull_volume = body.volume;
+        return POLYMASS_OK;
+    });
 }
 
 }  // namespace
@@ -190,8 +278,10 @@ int32_t build_answer(polymass_context* context, const polymass_mesh_desc* desc,
             }
             if (mode == POLYMASS_MODE_SOLID) continue;
             status = build_repaired(context, input, options, mesh, provenance);
+        } else if (mode == POLYMASS_MODE_SHELL) {
+            status = build_shell(context, input, options, mesh, provenance);
         } else {
-            status = unsupported(context, mode);
+            status = build_hull(context, input, options, mesh, provenance);
         }
         if (status == POLYMASS_OK) {
             provenance.mode = int32_t(mode);

@@ -64,7 +64,9 @@ double approximation_inertia(const ApproximationBound& approximation, const Rigi
 
 ResultBounds widen(const ResultBounds& rounding, const ApproximationBound& approximation,
                    const RigidBody& body, bool mass_given, const PrincipalAxes& principal) {
-    if (approximation.volume == 0.0) return rounding;  // exact: nothing to add
+    if (approximation.volume == 0.0 && approximation.center_of_mass == 0.0 &&
+        approximation.inertia == 0.0)
+        return rounding;  // exact: nothing to add
     ResultBounds bounds = rounding;
     bounds.volume += approximation.volume;
     bounds.center_of_mass += approximation.center_of_mass;
