@@ -78,6 +78,23 @@ void record_repairs(const core::RepairReport& report, double surface_area,
     provenance.cap_area_fraction = surface_area > 0.0 ? report.cap_area / surface_area : 0.0;
 }
 
+// A surface of triangles over packed double positions, as the library's own
+// steps (repair, hull) make them.
+MeshInput triangles_input(const std::pmr::vector<double>& positions,
+                          const std::pmr::vector<uint32_t>& indices) {
+    MeshInput input;
+    input.position_type = POLYMASS_POSITION_FLOAT64;
+    input.positions = reinterpret_cast<const unsigned char*>(positions.data());
+    input.vertex_count = positions.size() / 3;
+    input.position_stride = 3 * sizeof(double);
+    input.index_type = POLYMASS_INDEX_UINT32;
+    input.indices = reinterpret_cast<const unsigned char*>(indices.data());
+    input.index_count = indices.size();
+    input.face_count = indices.size() / 3;
+    input.sizes_add_up = true;
+    return input;
+}
+
 int32_t fail_repair(polymass_context* context, const core::RepairReport& report) {
     switch (report.failure) {
         case core::RepairFailure::nothing_left:
@@ -117,18 +134,13 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
             core::repair_mesh(view, scan, settings, &context->memory);
         if (const int32_t status = fail_repair(context, repaired.report)) return status;
 
-        // The repaired triangles, over the same positions, judged as any surface is.
-        MeshInput fixed = input;
-        fixed.index_type = POLYMASS_INDEX_UINT32;
-        fixed.indices = reinterpret_cast<const unsigned char*>(repaired.triangles.data());
-        fixed.index_count = repaired.triangles.size();
-        fixed.face_sizes = nullptr;
-        fixed.face_count = repaired.triangles.size() / 3;
-        fixed.small_faces = {};
+        // The repaired triangles, judged as any surface is. Split edges and
+        // caps meeting at a vertex their loop passes twice leave edges used
+        // by pairs of faces, as often each way.
+        const MeshInput fixed = triangles_input(repaired.positions, repaired.triangles);
         polymass_options judged = options;
-        judged.flags =
-            (options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS) |
-            (repaired.report.split_edges.count ? POLYMASS_OPTION_ACCEPT_NON_MANIFOLD : 0);
+        judged.flags = (options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS) |
+                       POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
         if (const int32_t status = build_solid(context, fixed, judged, mesh)) {
             char reason[sizeof context->message];
             std::memcpy(reason, context->message, sizeof reason);
@@ -139,7 +151,8 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
         }
         mesh.warnings |= POLYMASS_WARNING_REPAIRED;
         mesh.approximation = core::approximation_bound(
-            repaired.uncertain, core::rigid_body(mesh.integrals, mesh.reference, 1.0));
+            repaired.uncertain, core::rigid_body(mesh.integrals, mesh.reference, 1.0),
+            repaired.bounds);
         record_repairs(repaired.report, mesh.surface_area, provenance);
         return POLYMASS_OK;
     });
@@ -209,16 +222,7 @@ int32_t build_hull(polymass_context* context, const MeshInput& input,
         if (hull.status != core::HullStatus::ok)
             return context->fail(POLYMASS_ERROR_ZERO_VOLUME, "the convex hull has no volume: %s",
                                  hull_failure(hull.status));
-        MeshInput solid;
-        solid.position_type = POLYMASS_POSITION_FLOAT64;
-        solid.positions = reinterpret_cast<const unsigned char*>(hull.coordinates.data());
-        solid.vertex_count = hull.coordinates.size() / 3;
-        solid.position_stride = 3 * sizeof(double);
-        solid.index_type = POLYMASS_INDEX_UINT32;
-        solid.indices = reinterpret_cast<const unsigned char*>(hull.indices.data());
-        solid.index_count = hull.indices.size();
-        solid.face_count = hull.triangle_count();
-        solid.sizes_add_up = true;
+        const MeshInput solid = triangles_input(hull.coordinates, hull.indices);
         polymass_options judged = options;
         judged.flags = 0;
         if (const int32_t status = build_solid(context, solid, judged, mesh)) return status;

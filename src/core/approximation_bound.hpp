@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <memory_resource>
 #include <vector>
 
@@ -41,9 +42,10 @@ struct UncertainRegion {
     double radius = 0.0;  // the region lies in the ball (centre, radius)
 };
 
-// `solid` is the answer at unit density (volume, centroid, inertia).
+// `solid` is the answer at unit density (volume, centroid, inertia), whose
+// surface lies in `box`.
 ApproximationBound approximation_bound(const std::pmr::vector<UncertainRegion>& regions,
-                                       const RigidBody& solid);
+                                       const RigidBody& solid, const Eigen::AlignedBox3d& box);
 
 // The bound on each entry of the inertia (about the centre of mass) of
 // `body`, the answer with its density or mass applied; mass_given says the

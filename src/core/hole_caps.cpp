@@ -1,4 +1,4 @@
-// Closing holes: each loop of rim edges capped by a fan of triangles, and the
+// Closing holes: each loop of rim edges capped by triangles from its centre, and the
 // region between the cap and the missing surface bounded (docs/repair.md,
 // "Holes").
 #include <Eigen/Geometry>
@@ -12,6 +12,9 @@
 namespace polymass::core {
 namespace {
 
+// Longer loops bound their diameter by their box, not pair by pair.
+constexpr std::size_t kLongLoop = 2048;
+
 struct RimStep {
     std::uint32_t from, to, triangle;
 };
@@ -19,24 +22,36 @@ struct RimStep {
 // The region between a cap and the surface it stands for, under the
 // assumption that the missing surface lies along the cap's normals within
 // the loop's diameter D of it: the prisms over the cap's triangles, A D, and
-// the wedges where neighbouring triangles' normals part, l θ D² / 2 each.
+// the wedges where neighbouring triangles' normals part, l θ D² / 2 at each
+// spoke of length l. `apex` is the cap's centre, the loop its rim.
 UncertainRegion cap_region(const RepairSurface& surface,
-                           const std::pmr::vector<std::uint32_t>& loop, double& cap_area) {
+                           const std::pmr::vector<std::uint32_t>& loop, const Eigen::Vector3d& apex,
+                           double& cap_area) {
     Eigen::AlignedBox3d box;
     for (std::uint32_t id : loop) box.extend(surface.point(id));
-    const double diameter = box.diagonal().norm();
-    const Eigen::Vector3d& apex = surface.point(loop[0]);
+    const std::size_t n = loop.size();
+    // The loop's diameter: pairwise for loops of usual sizes, the box's
+    // diagonal (at most √3 times larger) for long ones.
+    double diameter = box.diagonal().norm();
+    if (n <= kLongLoop) {
+        double squared = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+                squared = std::max(squared,
+                                   (surface.point(loop[i]) - surface.point(loop[j])).squaredNorm());
+        diameter = std::sqrt(squared);
+    }
+    auto normal = [&](std::size_t i) {  // of the cap triangle (apex, loop[i + 1], loop[i])
+        return (surface.point(loop[(i + 1) % n]) - apex).cross(surface.point(loop[i]) - apex);
+    };
     double area = 0.0, wedges = 0.0;
-    Eigen::Vector3d previous = Eigen::Vector3d::Zero();
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-        const Eigen::Vector3d spoke = surface.point(loop[i]) - apex;
-        const Eigen::Vector3d normal = (surface.point(loop[i + 1]) - apex).cross(spoke);
-        area += 0.5 * normal.norm();
-        if (i > 1 && normal.norm() > 0.0 && previous.norm() > 0.0) {
-            const double angle = std::atan2(normal.cross(previous).norm(), normal.dot(previous));
-            wedges += spoke.norm() * angle * diameter * diameter / 2.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d here = normal(i), before = normal((i + n - 1) % n);
+        area += 0.5 * here.norm();
+        if (here.norm() > 0.0 && before.norm() > 0.0) {
+            const double angle = std::atan2(here.cross(before).norm(), here.dot(before));
+            wedges += (surface.point(loop[i]) - apex).norm() * angle * diameter * diameter / 2.0;
         }
-        previous = normal;
     }
     cap_area = area;
     return {area * diameter + wedges, box.center(), box.diagonal().norm() / 2.0 + diameter};
@@ -92,12 +107,20 @@ void cap_holes(RepairSurface& surface, const std::pmr::vector<RimEdge>& rim,
         }
         if (!closed || loop.size() < 3) continue;  // the verdict finds the rim still open
         holes.push_back(*std::min_element(loop.begin(), loop.end()));
+        // The cap: triangles from the loop's centre, traversing the rim
+        // backwards as a closed surface must. For a planar loop it is the
+        // loop's polygon exactly, convex or not.
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        const Eigen::Vector3d& origin = surface.point(loop[0]);
+        for (std::uint32_t id : loop) centre += surface.point(id) - origin;
+        centre = origin + centre / double(loop.size());
         double area = 0.0;
-        uncertain.push_back(cap_region(surface, loop, area));
+        uncertain.push_back(cap_region(surface, loop, centre, area));
         report.cap_area += area;
-        // The cap traverses the rim backwards, as a closed surface must.
-        for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
-            surface.triangles.push_back({{loop[0], loop[i + 1], loop[i]}, kCapFace});
+        const auto apex = std::uint32_t(surface.points.size());
+        surface.points.push_back(centre);
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            surface.triangles.push_back({{apex, loop[(i + 1) % loop.size()], loop[i]}, kCapFace});
             component.push_back(piece);
             ++report.cap_triangles;
         }

@@ -79,35 +79,67 @@ void triangulate(RepairSurface& surface, const std::pmr::vector<std::uint32_t>& 
     }
 }
 
-// Keeps one triangle of each set of copies (the same three vertices in the
-// same cyclic order); a triangle and its reverse cancel (their integrals are
-// opposite), so both go. With more of one sense than of the other, one of
-// the majority stays.
-void drop_duplicates(RepairSurface& surface, RepairReport& report,
-                     std::pmr::memory_resource* memory) {
-    auto& triangles = surface.triangles;
-    auto sorted_key = [&](std::uint32_t t) {
-        std::array<std::uint32_t, 3> c = triangles[t].corners;
-        // A cyclic rotation putting the smallest first keeps the sense.
-        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-        const bool reversed = c[1] > c[2];
-        return std::make_tuple(c[0], std::min(c[1], c[2]), std::max(c[1], c[2]), reversed);
+// The welded faces of three or more distinct corners, before triangulation.
+struct Polygons {
+    std::pmr::vector<std::uint32_t> corners;  // every face's, one after another
+    std::pmr::vector<std::size_t> start;      // of face i's corners; one past the last at the end
+    std::pmr::vector<std::uint32_t> face;     // the input face
+
+    explicit Polygons(std::pmr::memory_resource* memory)
+        : corners(memory), start(1, 0, memory), face(memory) {}
+    std::size_t count() const { return face.size(); }
+    std::size_t size(std::size_t i) const { return start[i + 1] - start[i]; }
+    // Corner k (cyclically) of polygon i read from its smallest corner,
+    // forward or backward.
+    std::uint32_t canonical(std::size_t i, std::size_t k, std::size_t lowest, bool backward) const {
+        const std::size_t n = size(i);
+        return corners[start[i] + (backward ? lowest + n - k : lowest + k) % n];
+    }
+};
+
+// Keeps one face of each set of copies (the same corners in the same cyclic
+// order); a face and its reverse cancel (their integrals are opposite), so
+// both go. With more of one sense than of the other, one of the majority
+// stays. Returns which polygons stay.
+std::pmr::vector<char> drop_duplicates(const Polygons& polygons, RepairReport& report,
+                                       std::pmr::memory_resource* memory) {
+    const std::size_t count = polygons.count();
+    // Each polygon read from its smallest corner, towards the smaller neighbour.
+    std::pmr::vector<std::size_t> lowest(count, memory);
+    std::pmr::vector<char> backward(count, memory);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto first = polygons.corners.begin() + std::ptrdiff_t(polygons.start[i]);
+        const std::size_t n = polygons.size(i);
+        lowest[i] = std::size_t(std::min_element(first, first + std::ptrdiff_t(n)) - first);
+        backward[i] =
+            polygons.canonical(i, 1, lowest[i], false) > polygons.canonical(i, 1, lowest[i], true);
+    }
+    auto same_corners = [&](std::size_t a, std::size_t b) {
+        if (polygons.size(a) != polygons.size(b)) return false;
+        for (std::size_t k = 0; k < polygons.size(a); ++k)
+            if (polygons.canonical(a, k, lowest[a], backward[a]) !=
+                polygons.canonical(b, k, lowest[b], backward[b]))
+                return false;
+        return true;
     };
-    std::pmr::vector<std::uint32_t> order(triangles.size(), memory);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return std::make_pair(sorted_key(a), a) < std::make_pair(sorted_key(b), b);
-    });
-    std::pmr::vector<char> keep(triangles.size(), 1, memory);
-    std::pmr::vector<std::uint32_t> dropped(memory);
-    for (std::size_t begin = 0; begin < order.size();) {
-        const auto [a, b, c, r] = sorted_key(order[begin]);
-        std::size_t end = begin, reversed = 0;
-        for (; end < order.size(); ++end) {
-            const auto key = sorted_key(order[end]);
-            if (std::get<0>(key) != a || std::get<1>(key) != b || std::get<2>(key) != c) break;
-            reversed += std::get<3>(key);
+    auto before = [&](std::size_t a, std::size_t b) {
+        if (polygons.size(a) != polygons.size(b)) return polygons.size(a) < polygons.size(b);
+        for (std::size_t k = 0; k < polygons.size(a); ++k) {
+            const std::uint32_t x = polygons.canonical(a, k, lowest[a], backward[a]);
+            const std::uint32_t y = polygons.canonical(b, k, lowest[b], backward[b]);
+            if (x != y) return x < y;
         }
+        return std::make_pair(backward[a], a) < std::make_pair(backward[b], b);
+    };
+    std::pmr::vector<std::size_t> order(count, memory);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), before);
+    std::pmr::vector<char> keep(count, 1, memory);
+    std::pmr::vector<std::uint32_t> dropped(memory);
+    for (std::size_t begin = 0; begin < count;) {
+        std::size_t end = begin + 1, reversed = backward[order[begin]];
+        for (; end < count && same_corners(order[begin], order[end]); ++end)
+            reversed += backward[order[end]];
         const std::size_t forward = end - begin - reversed;
         if (end - begin > 1) {
             // The group is sorted forward first: keep the first of the majority, if any.
@@ -117,16 +149,13 @@ void drop_duplicates(RepairSurface& surface, RepairReport& report,
             for (std::size_t i = begin; i < end; ++i) {
                 if (i == kept) continue;
                 keep[order[i]] = 0;
-                dropped.push_back(triangles[order[i]].face);
+                dropped.push_back(polygons.face[order[i]]);
             }
         }
         begin = end;
     }
-    std::size_t out = 0;
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        if (keep[t]) triangles[out++] = triangles[t];
-    triangles.resize(out);
     record_faces(dropped, report.duplicate_faces);
+    return keep;
 }
 
 struct EdgeUse {
@@ -232,6 +261,7 @@ RepairedMesh repair_mesh(const MeshView<Scalar, Index>& mesh, const MeshScan& sc
     surface.points.resize(ids.size());
     for (std::size_t vertex = 0; vertex < ids.size(); ++vertex)
         if (scan.is_used(vertex)) surface.points[vertex] = mesh.positions[vertex];
+    Polygons polygons(memory);
     std::pmr::vector<std::uint32_t> corners(memory);
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
         welded_corners(mesh, ids, first, size, corners);
@@ -239,10 +269,18 @@ RepairedMesh repair_mesh(const MeshView<Scalar, Index>& mesh, const MeshScan& sc
             report.degenerate_faces.record(face);
             return;
         }
-        triangulate(surface, corners, std::uint32_t(face), settings.planarity_tolerance, report,
-                    repaired.uncertain);
+        polygons.corners.insert(polygons.corners.end(), corners.begin(), corners.end());
+        polygons.start.push_back(polygons.corners.size());
+        polygons.face.push_back(std::uint32_t(face));
     });
-    drop_duplicates(surface, report, memory);
+    const std::pmr::vector<char> keep = drop_duplicates(polygons, report, memory);
+    for (std::size_t i = 0; i < polygons.count(); ++i) {
+        if (!keep[i]) continue;
+        corners.assign(polygons.corners.begin() + std::ptrdiff_t(polygons.start[i]),
+                       polygons.corners.begin() + std::ptrdiff_t(polygons.start[i + 1]));
+        triangulate(surface, corners, polygons.face[i], settings.planarity_tolerance, report,
+                    repaired.uncertain);
+    }
     if (surface.triangles.empty()) {
         report.failure = RepairFailure::nothing_left;
         return repaired;
@@ -257,6 +295,11 @@ RepairedMesh repair_mesh(const MeshView<Scalar, Index>& mesh, const MeshScan& sc
     cap_holes(surface, rim, component, component_count, report, repaired.uncertain, memory);
     turn_shells(surface, component, component_count, report, memory);
 
+    repaired.positions.reserve(3 * surface.points.size());
+    for (const Eigen::Vector3d& point : surface.points)
+        repaired.positions.insert(repaired.positions.end(), point.data(), point.data() + 3);
+    for (const RepairTriangle& t : surface.triangles)
+        for (std::uint32_t id : t.corners) repaired.bounds.extend(surface.point(id));
     repaired.triangles.reserve(3 * surface.triangles.size());
     for (const RepairTriangle& t : surface.triangles)
         repaired.triangles.insert(repaired.triangles.end(), t.corners.begin(), t.corners.end());

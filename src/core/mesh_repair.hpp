@@ -7,14 +7,16 @@
 // reverse cancel: both dropped), non-planar polygons triangulated (the
 // volume between their possible triangulations bounded), non-manifold edges
 // used as often each way split into manifold pairs, every shell's faces
-// turned to agree across its edges, each hole capped by a fan over its
-// boundary loop (the volume between cap and missing surface bounded under
-// the assumption docs/repair.md states), and each shell turned to enclose
+// turned to agree across its edges, each hole capped by triangles from the
+// centre of its boundary loop to the loop's edges (the volume between cap and missing
+// surface bounded under the assumption docs/repair.md states), and each shell turned to enclose
 // positive volume unless it lies inside an odd number of other shells (a
-// cavity). The result is a list of triangles over the caller's positions:
-// the same verdict and integration as any surface judge it.
+// cavity). The result is a list of triangles over the caller's positions
+// and the caps' centres: the same verdict and integration as any surface
+// judge it.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -60,16 +62,18 @@ struct RepairReport {
 };
 
 struct RepairedMesh {
-    // Vertex indices into the caller's positions, three per triangle,
-    // outward-oriented.
+    // x, y, z of each vertex: the caller's (as doubles), then the caps' centres.
+    std::pmr::vector<double> positions;
+    // Vertex indices into `positions`, three per triangle, outward-oriented.
     std::pmr::vector<std::uint32_t> triangles;
     // Where the repaired surface may differ from the true one (caps, bent
     // polygons); empty when every fix was exact.
     std::pmr::vector<UncertainRegion> uncertain;
+    Eigen::AlignedBox3d bounds;  // of the repaired surface
     RepairReport report;
 
     explicit RepairedMesh(std::pmr::memory_resource* memory)
-        : triangles(memory), uncertain(memory) {}
+        : positions(memory), triangles(memory), uncertain(memory) {}
 };
 
 // scan must say the mesh is in range and finite. Faces of any size are
