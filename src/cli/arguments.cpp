@@ -6,6 +6,7 @@
 #include <polymass/polymass.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 
@@ -21,6 +22,9 @@ struct RawOptions {
     std::vector<std::string> files;
     std::string density, mass, scale, units, about, origin, weld_tolerance, planarity_tolerance;
     bool json = false, urdf = false, sdf = false, mjcf = false;
+    bool repair = false, hull = false;
+    std::string shell;
+    std::vector<std::string> fallback;
 };
 
 double positive_number(std::string_view option, std::string_view text) {
@@ -111,9 +115,59 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                  "split polygon faces into fans of triangles from their first\n"
                  "corner: a non-planar face then counts as that surface")
         ->group("Checks");
+    const std::string kModes = "When the mesh is not a valid solid (default: refuse it)";
+    app.add_flag("--repair", raw.repair,
+                 "repair what has one right fix (orientation, duplicate faces,\n"
+                 "holes, ...) and say what was done and how far off it can be")
+        ->group(kModes);
+    app.add_option("--shell", raw.shell,
+                   "the surface as a thin wall of thickness T (sheet metal, open\n"
+                   "visual meshes): mass = density * T * area")
+        ->group(kModes)
+        ->option_text("T");
+    app.add_flag("--hull", raw.hull, "the convex hull of the mesh's vertices (an upper bound)")
+        ->group(kModes);
+    app.add_option("--fallback", raw.fallback,
+                   "modes tried in order after the solid, from repair, shell\n"
+                   "(with --shell T), hull: e.g. --fallback repair,hull")
+        ->group(kModes)
+        ->delimiter(',')
+        ->option_text("LIST");
     app.add_flag("--timings", arguments.timings,
                  "print the time spent reading and computing to stderr")
         ->group("Checks");
+}
+
+// The chain of modes the mode options ask for.
+void read_modes(const RawOptions& raw, Arguments& arguments) {
+    if (!raw.shell.empty()) arguments.shell_thickness = positive_number("--shell", raw.shell);
+    if (raw.repair + raw.hull + !raw.shell.empty() + !raw.fallback.empty() > 1 &&
+        (raw.fallback.empty() || raw.repair || raw.hull)) {
+        throw UsageError(
+            "choose one of --repair, --shell, --hull, or --fallback with a list of them");
+    }
+    if (raw.repair) arguments.modes = {POLYMASS_MODE_REPAIR};
+    if (raw.hull) arguments.modes = {POLYMASS_MODE_HULL};
+    if (!raw.shell.empty()) arguments.modes = {POLYMASS_MODE_SHELL};
+    if (raw.fallback.empty()) return;
+    arguments.modes = {POLYMASS_MODE_SOLID};
+    for (const std::string& name : raw.fallback) {
+        const uint32_t mode = name == "repair"  ? POLYMASS_MODE_REPAIR
+                              : name == "shell" ? POLYMASS_MODE_SHELL
+                              : name == "hull"  ? POLYMASS_MODE_HULL
+                                                : POLYMASS_MODE_NONE;
+        if (mode == POLYMASS_MODE_NONE)
+            throw UsageError("--fallback wants a list of repair, shell and hull, not '" + name +
+                             "'");
+        if (std::find(arguments.modes.begin(), arguments.modes.end(), mode) ==
+            arguments.modes.end())
+            arguments.modes.push_back(mode);
+    }
+    const bool shell = std::find(arguments.modes.begin(), arguments.modes.end(),
+                                 POLYMASS_MODE_SHELL) != arguments.modes.end();
+    if (shell != !raw.shell.empty())
+        throw UsageError(shell ? "--fallback shell wants the wall's thickness: --shell T"
+                               : "--shell with --fallback: list shell in the fallback");
 }
 
 // Reads the option values CLI11 collected into arguments.
@@ -168,6 +222,7 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
         }
         arguments.planarity_tolerance = tolerance;
     }
+    read_modes(raw, arguments);
 }
 
 constexpr const char* kFooter =
@@ -182,7 +237,8 @@ constexpr const char* kFooter =
     "  polymass part.stl --units mm --density 2700\n"
     "  polymass link.obj --mass 1.5 --urdf\n"
     "  polymass arm.stl --units mm --mass 0.8 --urdf --origin 0,0,0.25\n"
-    "  polymass check scan.ply\n";
+    "  polymass check scan.ply\n"
+    "  polymass visual.stl --fallback repair,hull --json\n";
 
 std::string description() {
     return std::string(
