@@ -24,7 +24,7 @@ struct RawOptions {
     bool json = false, urdf = false, sdf = false, mjcf = false;
     bool repair = false, hull = false;
     std::string shell;
-    std::vector<std::string> fallback;
+    std::string fallback;  // comma-separated
 };
 
 double positive_number(std::string_view option, std::string_view text) {
@@ -131,11 +131,21 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                    "modes tried in order after the solid, from repair, shell\n"
                    "(with --shell T), hull: e.g. --fallback repair,hull")
         ->group(kModes)
-        ->delimiter(',')
         ->option_text("LIST");
     app.add_flag("--timings", arguments.timings,
                  "print the time spent reading and computing to stderr")
         ->group("Checks");
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+    std::vector<std::string> items;
+    std::string::size_type start = 0;
+    while (start <= text.size()) {
+        const std::string::size_type comma = std::min(text.find(',', start), text.size());
+        items.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
 }
 
 // The chain of modes the mode options ask for.
@@ -151,7 +161,7 @@ void read_modes(const RawOptions& raw, Arguments& arguments) {
     if (!raw.shell.empty()) arguments.modes = {POLYMASS_MODE_SHELL};
     if (raw.fallback.empty()) return;
     arguments.modes = {POLYMASS_MODE_SOLID};
-    for (const std::string& name : raw.fallback) {
+    for (const std::string& name : split_list(raw.fallback)) {
         const uint32_t mode = name == "repair"  ? POLYMASS_MODE_REPAIR
                               : name == "shell" ? POLYMASS_MODE_SHELL
                               : name == "hull"  ? POLYMASS_MODE_HULL
