@@ -7,8 +7,8 @@
 // reverse cancel: both dropped), non-planar polygons triangulated (the
 // volume between their possible triangulations bounded), non-manifold edges
 // used as often each way split into manifold pairs, every shell's faces
-// turned to agree across its edges, each hole capped by triangles from the
-// centre of its boundary loop to the loop's edges (the volume between cap and missing
+// turned to agree across its edges, each hole capped by triangles over its
+// boundary loop (the volume between cap and missing
 // surface bounded under the assumption docs/repair.md states), and each shell turned to enclose
 // positive volume unless it lies inside an odd number of other shells (a
 // cavity). The result is a list of triangles over the caller's positions

@@ -75,9 +75,9 @@ bool orient_pieces(RepairSurface& surface, const std::pmr::vector<EdgeLink>& lin
                    std::pmr::vector<std::uint32_t>& component, std::size_t& component_count,
                    RepairReport& report, std::pmr::memory_resource* memory);
 
-// Closes each loop of rim edges with triangles from the loop's centre (a
-// point appended to the surface's points, triangles to its triangles, their
-// component that of the rim, pieces a cap joins merged),
+// Closes each loop of rim edges with triangles (ears clipped from the loop,
+// or from its centre, a point appended to the surface's points), appended to
+// the surface, their component that of the rim, pieces a cap joins merged,
 // recording the holes and the uncertain region each cap leaves.
 void cap_holes(RepairSurface& surface, const std::pmr::vector<RimEdge>& rim,
                std::pmr::vector<std::uint32_t>& component, std::size_t& component_count,

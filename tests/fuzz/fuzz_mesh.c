@@ -765,10 +765,9 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         CHECK(is_mesh_status(status), status, context);
         check_status_and_message(status, context);
         if (verbose)
-            fprintf(stderr, "fuzz_mesh: modes %u,%u,%u,%u: %d mode %d (%s)\n",
-                    (unsigned)chain[0], (unsigned)chain[1], (unsigned)chain[2],
-                    (unsigned)chain[3], (int)status, (int)provenance.mode,
-                    polymass_context_message(context));
+            fprintf(stderr, "fuzz_mesh: modes %u,%u,%u,%u: %d mode %d (%s)\n", (unsigned)chain[0],
+                    (unsigned)chain[1], (unsigned)chain[2], (unsigned)chain[3], (int)status,
+                    (int)provenance.mode, polymass_context_message(context));
         if (status == POLYMASS_OK) {
             check_properties(&p_modes, flags, mass, status, context);
             CHECK(in_chain(chain, (uint32_t)provenance.mode) ||
@@ -788,8 +787,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         /* A mesh the solid accepts is the solid's answer, bit for bit. */
         if (status_compute == POLYMASS_OK &&
             (chain[0] == POLYMASS_MODE_SOLID || chain[0] == POLYMASS_MODE_REPAIR)) {
-            CHECK(status == POLYMASS_OK && provenance.mode == POLYMASS_MODE_SOLID, status,
-                  context);
+            CHECK(status == POLYMASS_OK && provenance.mode == POLYMASS_MODE_SOLID, status, context);
             CHECK(memcmp(&p_modes, &p_compute, sizeof p_modes) == 0, status, context);
         }
     }
