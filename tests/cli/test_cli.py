@@ -1019,7 +1019,9 @@ class Modes(Case):
         _, hull = run_json("--hull", self.open)
         self.assertEqual(hull["provenance"]["mode"], "hull")
         self.assertGreaterEqual(hull["volume"], self.expected["volume"])
-        self.assertGreaterEqual(hull["error_bound"]["volume"], hull["volume"] - self.expected["volume"])
+        self.assertGreaterEqual(
+            hull["error_bound"]["volume"], hull["volume"] - self.expected["volume"]
+        )
         _, shell = run_json("--shell", "0.01", "--density", "2", self.open)
         self.assertEqual(shell["provenance"]["mode"], "shell")
         area = shell["provenance"]["shell_area"]
@@ -1040,8 +1042,9 @@ class Modes(Case):
         self.assertEqual(
             json.loads(result.stdout)["answer"], {"mode": "repaired", "option": "--repair"}
         )
-        self.assertEqual(json.loads(run("check", "--json", self.valid).stdout)["answer"],
-                         {"mode": "solid"})
+        self.assertEqual(
+            json.loads(run("check", "--json", self.valid).stdout)["answer"], {"mode": "solid"}
+        )
         self.assertIn("--repair would give an answer", run("check", self.open).stdout)
 
     def test_mode_usage_errors(self):

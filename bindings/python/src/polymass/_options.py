@@ -53,7 +53,9 @@ def _modes(repair: bool, shell: float | None, hull: bool, fallback: Sequence[str
             raise ValueError("give repair, shell, hull, or fallback with a list of them")
         unknown = [name for name in fallback if name not in _MODES]
         if unknown:
-            raise ValueError(f'fallback lists modes from "repair", "shell", "hull"; got {unknown!r}')
+            raise ValueError(
+                f'fallback lists modes from "repair", "shell", "hull"; got {unknown!r}'
+            )
         if ("shell" in fallback) != (shell is not None):
             raise ValueError("a shell in the fallback wants its thickness: shell=T (and only then)")
         chain = [_header.POLYMASS_MODE_SOLID]
