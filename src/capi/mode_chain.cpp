@@ -289,6 +289,7 @@ int32_t build_answer(polymass_context* context, const polymass_mesh_desc* desc,
         }
         if (status == POLYMASS_OK) {
             provenance.mode = int32_t(mode);
+            context->clear_message();  // the modes before it failed: a success says nothing
             return POLYMASS_OK;
         }
         failed(mode, status);
