@@ -36,18 +36,23 @@ double loop_diameter(const RepairSurface& surface, const std::pmr::vector<std::u
     return std::sqrt(squared);
 }
 
-// The region between a cap and the surface it stands for, under the
-// assumption that the missing surface lies along the cap's normals within
-// the loop's diameter D of it: the prisms over the cap's triangles, A D, and
-// the wedges where neighbouring triangles' normals part, l θ D² / 2 at each
-// inner edge of length l.
+// The region between a cap and the surface it stands for (docs/repair.md,
+// "The bound of a cap"), under the assumption that the missing surface lies
+// within the loop's diameter D of the cap. A cap of ears clipped over the
+// loop's simple projection on its mean plane: the missing surface a height
+// field over that projection within D of the plane, the cap within h (the
+// loop's largest distance from the plane), so the region is at most the
+// projection's area times D + h. Otherwise the prisms of height D along the
+// cap's normals, A D, and the wedges where neighbouring triangles' normals
+// part, l θ D² / 2 at each inner edge of length l.
 UncertainRegion cap_region(const RepairSurface& surface,
                            const std::pmr::vector<std::uint32_t>& loop,
-                           const std::pmr::vector<Triangle>& cap, double& cap_area,
-                           std::pmr::memory_resource* memory) {
+                           const std::pmr::vector<Triangle>& cap, bool over_projection,
+                           double& cap_area, std::pmr::memory_resource* memory) {
     Eigen::AlignedBox3d box;
     for (std::uint32_t id : loop) box.extend(surface.point(id));
     const double diameter = loop_diameter(surface, loop, box);
+    const UncertainRegion ball{0.0, box.center(), box.diagonal().norm() / 2.0 + diameter};
     auto normal = [&](const Triangle& t) {
         const Eigen::Vector3d& a = surface.point(t[0]);
         return Eigen::Vector3d((surface.point(t[1]) - a).cross(surface.point(t[2]) - a));
@@ -80,7 +85,24 @@ UncertainRegion cap_region(const RepairSurface& surface,
         }
     }
     cap_area = area;
-    return {area * diameter + wedges, box.center(), box.diagonal().norm() / 2.0 + diameter};
+    UncertainRegion region = ball;
+    region.volume = area * diameter + wedges;
+    if (over_projection) {
+        const Eigen::Vector3d& origin = surface.point(loop[0]);
+        Eigen::Vector3d newell = Eigen::Vector3d::Zero(), centroid = Eigen::Vector3d::Zero();
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const Eigen::Vector3d p = surface.point(loop[i]) - origin;
+            newell += p.cross(surface.point(loop[(i + 1) % loop.size()]) - origin);
+            centroid += p / double(loop.size());
+        }
+        const Eigen::Vector3d normal = newell.normalized();
+        double off_plane = 0.0;
+        for (std::uint32_t id : loop)
+            off_plane =
+                std::max(off_plane, std::abs((surface.point(id) - origin - centroid).dot(normal)));
+        region.volume = newell.norm() / 2.0 * (diameter + off_plane);
+    }
+    return region;
 }
 
 // The polygon `corners` (the cap's order) cut into triangles by ear clipping
@@ -193,7 +215,8 @@ void cap_holes(RepairSurface& surface, const std::pmr::vector<RimEdge>& rim,
         // when the loop is planar.
         std::reverse(loop.begin(), loop.end());
         cap.clear();
-        if (!clip_ears(surface, loop, cap, memory)) {
+        const bool clipped = clip_ears(surface, loop, cap, memory);
+        if (!clipped) {
             cap.clear();
             Eigen::Vector3d centre = Eigen::Vector3d::Zero();
             const Eigen::Vector3d origin = surface.point(loop[0]);
@@ -204,7 +227,7 @@ void cap_holes(RepairSurface& surface, const std::pmr::vector<RimEdge>& rim,
                 cap.push_back({apex, loop[i], loop[(i + 1) % loop.size()]});
         }
         double area = 0.0;
-        uncertain.push_back(cap_region(surface, loop, cap, area, memory));
+        uncertain.push_back(cap_region(surface, loop, cap, clipped, area, memory));
         report.cap_area += area;
         for (const Triangle& t : cap) {
             surface.triangles.push_back({t, kCapFace});
