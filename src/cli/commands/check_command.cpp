@@ -236,6 +236,10 @@ SolidResult answer_of(const Library& library, const Model& model, const Part& pa
 std::string answer_text(const SolidResult& answer) {
     if (answer.status == POLYMASS_OK) return "answered as " + provenance_text(answer.provenance);
     if (answer.answering_option.empty()) return "no mode gives an answer";
+    // The probe's thickness is arbitrary: only the area is the surface's.
+    if (answer.answering_provenance.mode == POLYMASS_MODE_SHELL)
+        return answer.answering_option + " would give an answer: a thin wall over the surface's " +
+               "area " + readable_number(answer.answering_provenance.shell_area);
     return answer.answering_option +
            " would give an answer: " + provenance_text(answer.answering_provenance);
 }

@@ -24,7 +24,8 @@ polymass_mesh_desc describe(const Model& model, const Part& part) {
 }
 
 // Which option of the tool would answer a part its options' chain refused:
-// --repair, then --hull, among the modes the chain lacks. Writes
+// --repair, then --hull, then (for a flat surface, which neither answers)
+// --shell T, among the modes the chain lacks. Writes
 // result.answering_option (empty when none would) and what the mode did.
 void probe_modes(const Library& library, const polymass_mesh_desc& desc, SolidResult& result) {
     polymass_options options{};
@@ -33,11 +34,13 @@ void probe_modes(const Library& library, const polymass_mesh_desc& desc, SolidRe
     const uint32_t* chain = options.modes;
     const uint32_t* chain_end = chain + POLYMASS_MAX_MODES;
     for (const auto& [mode, option] : {std::pair{uint32_t(POLYMASS_MODE_REPAIR), "--repair"},
-                                       std::pair{uint32_t(POLYMASS_MODE_HULL), "--hull"}}) {
+                                       std::pair{uint32_t(POLYMASS_MODE_HULL), "--hull"},
+                                       std::pair{uint32_t(POLYMASS_MODE_SHELL), "--shell T"}}) {
         if (std::find(chain, chain_end, mode) != chain_end) continue;
         polymass_options single = options;
         std::fill(std::begin(single.modes), std::end(single.modes), uint32_t(POLYMASS_MODE_NONE));
         single.modes[0] = mode;
+        single.shell_thickness = 1.0;  // any: whether the surface has an area to make a wall of
         polymass_mass_properties properties{};
         properties.struct_size = sizeof properties;
         polymass_provenance& provenance = result.answering_provenance;

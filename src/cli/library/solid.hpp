@@ -34,8 +34,8 @@ struct SolidResult {
     std::string message;
     polymass_mass_properties properties{};
     polymass_provenance provenance{};  // which mode answered, and what it did
-    // On failure: the option that would give an answer ("--repair", "--hull"),
-    // if one would, and what that mode would do.
+    // On failure: the option that would give an answer ("--repair", "--hull",
+    // "--shell T"), if one would, and what that mode would do.
     std::string answering_option;
     polymass_provenance answering_provenance{};
 };
