@@ -96,7 +96,10 @@ void turn_shells(RepairSurface& surface, const std::pmr::vector<std::uint32_t>& 
     struct Piece {
         double volume = 0.0;
         Eigen::AlignedBox3d box;
-        Eigen::Vector3d sample = Eigen::Vector3d::Zero();  // the centroid of its largest triangle
+        // Just inside the piece, below the centroid of its largest triangle:
+        // a point on the piece itself could lie on a piece it touches.
+        Eigen::Vector3d sample = Eigen::Vector3d::Zero();
+        Eigen::Vector3d inward = Eigen::Vector3d::Zero();  // that triangle's normal, unit
     };
     std::pmr::vector<Piece> pieces(component_count, memory);
     for (std::size_t c = 0; c < component_count; ++c) {
@@ -113,8 +116,14 @@ void turn_shells(RepairSurface& surface, const std::pmr::vector<std::uint32_t>& 
             if (area > largest) {
                 largest = area;
                 piece.sample = surface.reference + (a + b + d) / 3.0;
+                piece.inward = -(b - a).cross(d - a) / area;
             }
         }
+        // The normal points out of the region the piece encloses when its
+        // volume is positive. A step of 1e-6 of the piece's size stays inside
+        // all but pieces thinner than that.
+        const double step = 1e-6 * piece.box.diagonal().norm();
+        piece.sample += (piece.volume < 0.0 ? -step : step) * piece.inward;
     }
     // A piece inside an odd number of others is a cavity: negative volume.
     for (std::size_t c = 0; c < component_count; ++c) {
