@@ -190,6 +190,27 @@ typedef struct polymass_allocator {
    shell's bounding box. Needs the topology checks for the shells' nesting. */
 #define POLYMASS_OPTION_CHECK_INTERSECTIONS (1u << 4)
 
+/* polymass_options.modes: how a surface is turned into a body. Since 1.2. */
+/* The chain's end (and an empty chain: solid only). */
+#define POLYMASS_MODE_NONE 0
+/* Exact for a valid closed solid; otherwise the solid's error (the default). */
+#define POLYMASS_MODE_SOLID 1
+/* A valid solid as it is; otherwise the surface repaired (orientation,
+   duplicate and two-vertex faces, non-planar polygons, holes, non-manifold
+   edges used as often each way), each fix recorded in polymass_provenance
+   and the error bounds widened by what the fixes that are not exact may have
+   changed (docs/repair.md). */
+#define POLYMASS_MODE_REPAIR 2
+/* The surface as a thin wall of thickness polymass_options.shell_thickness:
+   volume = thickness * area, exact for the sheet; needs neither closure nor
+   orientation. */
+#define POLYMASS_MODE_SHELL 3
+/* The convex hull of the vertices the faces use, integrated exactly; the
+   error bounds say how far it can be from the surface (docs/repair.md). */
+#define POLYMASS_MODE_HULL 4
+/* Room in polymass_options.modes. */
+#define POLYMASS_MAX_MODES 4
+
 /* Default of polymass_options.planarity_tolerance. */
 #define POLYMASS_DEFAULT_PLANARITY_TOLERANCE 1e-6
 /* Largest polymass_options.weld_tolerance: a coarser weld would merge
@@ -210,6 +231,19 @@ typedef struct polymass_options {
        1e-9. A non-zero value below 2^-50 acts as 2^-50. In
        [0, POLYMASS_MAX_WELD_TOLERANCE]. */
     double weld_tolerance;
+    /* Since 1.2. The modes to try, in order, up to the first
+       POLYMASS_MODE_NONE: the first that gives an answer answers (say SOLID,
+       REPAIR, HULL). All NONE (the default) means SOLID alone. A chain
+       without SOLID still answers a valid solid exactly as SOLID does, but
+       for SHELL and HULL, which describe another body. Followed by
+       polymass_mesh_create*, polymass_mass_properties_compute* and
+       polymass_batch_compute; polymass_mass_properties_with_provenance says
+       which mode answered and what it did. The checks, shells and moments
+       functions judge the surface as given (SOLID) whatever the chain. */
+    uint32_t modes[POLYMASS_MAX_MODES];
+    /* Since 1.2. The wall thickness of POLYMASS_MODE_SHELL, > 0 and finite
+       when the chain holds SHELL. */
+    double shell_thickness;
 } polymass_options;
 
 /* polymass_mesh_desc.position_type */
@@ -260,6 +294,10 @@ typedef struct polymass_mass_desc {
 #define POLYMASS_WARNING_UNCHECKED (1u << 2)        /* topology checks skipped */
 #define POLYMASS_WARNING_NON_MANIFOLD (1u << 3)     /* accepted non-manifold edges */
 #define POLYMASS_WARNING_TOUCHING_FACES (1u << 4)   /* faces touch without crossing */
+/* Since 1.2: the mode that answered, when not SOLID (see polymass_provenance). */
+#define POLYMASS_WARNING_REPAIRED (1u << 5) /* a repaired surface */
+#define POLYMASS_WARNING_SHELL (1u << 6)    /* a thin wall */
+#define POLYMASS_WARNING_HULL (1u << 7)     /* the convex hull */
 
 typedef struct polymass_mass_properties {
     uint32_t struct_size; /* set by the caller: sizeof(polymass_mass_properties) */
@@ -710,6 +748,80 @@ POLYMASS_API int32_t polymass_moments_mass_properties(polymass_mass_properties* 
                                                       polymass_context* context,
                                                       const polymass_moments* moments,
                                                       const polymass_mass_desc* mass);
+
+/* ========================================================================== */
+/* Provenance: which mode answered, and what it did                           */
+/* ========================================================================== */
+
+/* What polymass_mass_properties_with_provenance did to answer. Locations, as
+   in polymass_diagnostics, are the first (lowest) min(count,
+   POLYMASS_DIAGNOSTIC_LOCATIONS) of each kind, the rest POLYMASS_NONE; faces
+   are the caller's face numbers, vertices the caller's indices (after
+   welding: the lowest index at that position). Since 1.2. */
+typedef struct polymass_provenance {
+    uint32_t struct_size; /* set by the caller: sizeof(polymass_provenance) */
+    int32_t mode;         /* the POLYMASS_MODE_* that answered */
+    /* POLYMASS_MODE_REPAIR: the fixes (all 0 when the surface was a valid
+       solid). Faces turned to agree with the rest of their shell: */
+    uint64_t reoriented_faces;
+    uint64_t first_reoriented_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    /* Shells turned inside out (to enclose positive volume, or negative
+       inside another shell: a cavity), each located by its first face: */
+    uint64_t turned_shells;
+    uint64_t first_turned_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    /* Faces dropped as copies of another face (or of its reverse, which
+       cancels it): */
+    uint64_t duplicate_faces;
+    uint64_t first_duplicate_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    /* Faces of fewer than three distinct vertices, dropped: */
+    uint64_t degenerate_faces;
+    uint64_t first_degenerate_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    /* Non-planar polygon faces triangulated: */
+    uint64_t triangulated_faces;
+    uint64_t first_triangulated_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    /* Non-manifold edges (used as often each way) split into manifold pairs: */
+    uint64_t split_edges;
+    uint64_t first_split_edges[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
+    /* Holes (boundary loops) capped, each located by its lowest vertex: */
+    uint64_t holes;
+    uint64_t first_holes[POLYMASS_DIAGNOSTIC_LOCATIONS];
+    uint64_t cap_triangles;
+    double cap_area;          /* the caps' area */
+    double cap_area_fraction; /* over the repaired surface's area */
+    /* The approximation's share of the error_bound_* of the mass properties
+       (which add the rounding bound to it), in the same units: 0 for an
+       exact answer (a valid solid, exact repairs, a shell). */
+    double approximation_bound_volume;
+    double approximation_bound_center_of_mass;
+    double approximation_bound_inertia;
+    /* POLYMASS_MODE_SHELL: the wall's thickness and the surface's area. */
+    double shell_thickness;
+    double shell_area;
+    /* POLYMASS_MODE_HULL: the hull's vertices, triangles and volume. */
+    uint64_t hull_vertex_count;
+    uint64_t hull_triangle_count;
+    double hull_volume;
+} polymass_provenance;
+
+POLYMASS_API uint32_t polymass_sizeof_provenance(void);
+/* As the other initialisers: zeros, struct_size set. */
+POLYMASS_API int32_t polymass_provenance_init(polymass_provenance* provenance,
+                                              uint32_t struct_size);
+#ifndef __cplusplus
+#define POLYMASS_PROVENANCE_INIT \
+    { .struct_size = sizeof(polymass_provenance) }
+#endif
+
+/* polymass_mass_properties_compute_with_options, and what answered:
+   out_provenance (its struct_size set by the caller) says which mode of the
+   options' chain gave the answer and what it did; both are written on
+   success only. When no mode answers, the status is the first mode's (the
+   solid's, most often), and the message says why each mode failed.
+   Context: one thread at a time. Since 1.2. */
+POLYMASS_API int32_t polymass_mass_properties_with_provenance(
+    polymass_mass_properties* out_properties, polymass_provenance* out_provenance,
+    polymass_context* context, const polymass_mesh_desc* desc, const polymass_mass_desc* mass,
+    const polymass_options* options);
 
 /* ========================================================================== */
 /* Batch: many meshes in one call                                             */

@@ -1,5 +1,6 @@
 #include "context.hpp"
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -60,6 +61,23 @@ int32_t read_options(polymass_context* context, const polymass_options* options,
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "options->weld_tolerance is %g; it must be in [0, %g]", weld,
                              POLYMASS_MAX_WELD_TOLERANCE);
+    bool shell = false;
+    for (int i = 0; i < POLYMASS_MAX_MODES; ++i) {
+        const uint32_t mode = read.modes[i];
+        if (mode > POLYMASS_MODE_HULL)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "options->modes[%d] is %u; the modes are POLYMASS_MODE_SOLID (1), "
+                                 "REPAIR (2), SHELL (3) and HULL (4), ended by POLYMASS_MODE_NONE "
+                                 "(0)",
+                                 i, unsigned(mode));
+        shell |= mode == POLYMASS_MODE_SHELL;
+    }
+    const double thickness = read.shell_thickness;
+    if (!(thickness >= 0.0 && std::isfinite(thickness)) || (shell && thickness == 0.0))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "options->shell_thickness is %g; it must be finite, and positive "
+                             "when the modes hold POLYMASS_MODE_SHELL",
+                             thickness);
     out = read;
     if (tolerance == 0.0) out.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
     return POLYMASS_OK;

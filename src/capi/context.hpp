@@ -64,8 +64,8 @@ struct polymass_context {
 
     polymass_allocator allocator;
     polymass::capi::HookMemoryResource memory;
-    polymass_options options{sizeof(polymass_options), 0, POLYMASS_DEFAULT_PLANARITY_TOLERANCE,
-                             0.0};
+    polymass_options options{
+        sizeof(polymass_options), 0, POLYMASS_DEFAULT_PLANARITY_TOLERANCE, 0.0, {}, 0.0};
     char message[512] = "";
 
     void clear_message() { message[0] = '\0'; }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/approximation_bound.hpp"
 #include "core/principal_axes.hpp"
 #include "core/rigid_body.hpp"
 #include "struct_io.hpp"
@@ -67,9 +68,11 @@ bool result_in_range(const polymass_mass_properties& p) {
 // for the error bounds.
 int32_t write_body(polymass_mass_properties* out, polymass_context* context,
                    const core::RigidBody& body, const core::Moments& moments,
-                   const Eigen::Vector3d& point, double surface_area, uint32_t warnings) {
+                   const Eigen::Vector3d& point, double surface_area, uint32_t warnings,
+                   const core::ApproximationBound& approximation = {}, bool mass_given = false) {
     const core::PrincipalAxes principal = core::principal_axes(body.inertia);
-    const core::ResultBounds bounds = moments.result_bounds(body, principal);
+    const core::ResultBounds bounds = core::widen(moments.result_bounds(body, principal),
+                                                  approximation, body, mass_given, principal);
     polymass_mass_properties result{};
     result.struct_size = sizeof result;
     result.warnings = warnings;
@@ -103,7 +106,8 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
 }  // namespace
 
 int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
-                        const polymass_mesh& mesh, const polymass_mass_desc* mass) {
+                        const polymass_mesh& mesh, const polymass_mass_desc* mass,
+                        polymass_provenance* provenance) {
     polymass_mass_desc body_desc;
     if (const int32_t status = read_mass_desc(context, mass, body_desc)) return status;
     const double density = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL
@@ -112,9 +116,16 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
     const core::RigidBody body = core::rigid_body(mesh.integrals, mesh.reference, density);
     const core::Moments moments =
         core::Moments::of_solid(mesh.integrals, mesh.bounds, mesh.reference, density);
+    const bool mass_given = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL;
+    if (provenance) {
+        provenance->approximation_bound_volume = mesh.approximation.volume;
+        provenance->approximation_bound_center_of_mass = mesh.approximation.center_of_mass;
+        provenance->approximation_bound_inertia =
+            core::approximation_inertia(mesh.approximation, body, mass_given);
+    }
     return write_body(out, context, body, moments,
                       Eigen::Map<const Eigen::Vector3d>(body_desc.point), mesh.surface_area,
-                      mesh.warnings);
+                      mesh.warnings, mesh.approximation, mass_given);
 }
 
 int32_t weight_moments(polymass_context* context, const core::Moments& moments,

@@ -11,8 +11,11 @@ namespace polymass::capi {
 
 // Checks `mass` (NULL: unit density, point = origin) and writes the body's
 // properties to *out, or returns the status with the message in the context.
+// With a provenance, also its approximation_bound_* (the approximation's
+// share of the error bounds).
 int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
-                        const polymass_mesh& mesh, const polymass_mass_desc* mass);
+                        const polymass_mesh& mesh, const polymass_mass_desc* mass,
+                        polymass_provenance* provenance = nullptr);
 
 // The moments with the density or mass of `mass` (NULL: as they are): the
 // whole mass distribution rescaled to that mean density or total mass. Writes

@@ -14,6 +14,11 @@ int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc,
                    const polymass_options& options, polymass_mesh& mesh) {
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
+    return build_solid(context, input, options, mesh);
+}
+
+int32_t build_solid(polymass_context* context, const MeshInput& input,
+                    const polymass_options& options, polymass_mesh& mesh) {
     const core::MeshAnalysis analysis = analyse(context, input, options, false);
     uint32_t warnings = 0;
     if (const int32_t status = report_verdict(context, input, options, analysis, warnings))
@@ -48,8 +53,10 @@ POLYMASS_API int32_t polymass_mesh_create_with_options(polymass_mesh** out_mesh,
         if (!out_mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_mesh is NULL");
         polymass_options call;
         if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0};
-        if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
+        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0, {}};
+        polymass_provenance provenance{};
+        if (const int32_t status = build_answer(context, desc, call, mesh, provenance))
+            return status;
         *out_mesh = create_object<polymass_mesh>(context->allocator, mesh);
         if (!*out_mesh)
             return context->fail(POLYMASS_ERROR_OUT_OF_MEMORY,
@@ -89,8 +96,10 @@ POLYMASS_API int32_t polymass_mass_properties_compute_with_options(
             return status;
         polymass_options call;
         if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0};
-        if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
+        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0, {}};
+        polymass_provenance provenance{};
+        if (const int32_t status = build_answer(context, desc, call, mesh, provenance))
+            return status;
         return mass_properties(out_properties, context, mesh, mass);
     });
 }

@@ -159,8 +159,6 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
     return context->fail(POLYMASS_ERROR_INTERNAL, "unknown verdict");
 }
 
-namespace {
-
 static_assert(core::kKeptLocations == POLYMASS_DIAGNOSTIC_LOCATIONS,
               "the core keeps as many locations as the report lists");
 
@@ -173,18 +171,6 @@ void copy_finding(const core::Finding& found, uint64_t& count,
     count = found.count;
     copy_locations(found, first);
 }
-
-template <class EdgeOrPairFinding>
-void copy_finding(const EdgeOrPairFinding& found, uint64_t& count,
-                  uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
-    count = found.count;
-    for (std::size_t i = 0; i < found.kept(); ++i) {
-        first[i][0] = found.lowest[i][0];
-        first[i][1] = found.lowest[i][1];
-    }
-}
-
-}  // namespace
 
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
                  const core::MeshAnalysis* analysis) {

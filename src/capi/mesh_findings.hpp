@@ -23,6 +23,19 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
                        const polymass_options& options, const core::MeshAnalysis& analysis,
                        uint32_t& warnings);
 
+// A finding's count and its first locations (the rest left as they are).
+void copy_finding(const core::Finding& found, uint64_t& count,
+                  uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS]);
+template <class EdgeOrPairFinding>
+void copy_finding(const EdgeOrPairFinding& found, uint64_t& count,
+                  uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS][2]) {
+    count = found.count;
+    for (std::size_t i = 0; i < found.kept(); ++i) {
+        first[i][0] = found.lowest[i][0];
+        first[i][1] = found.lowest[i][1];
+    }
+}
+
 // The report of what the arguments (and, when given, the analysis) show.
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
                  const core::MeshAnalysis* analysis);

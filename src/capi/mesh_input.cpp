@@ -35,6 +35,7 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
                                  "so every face is a triangle)",
                                  u64(desc.index_count));
         input.face_count = std::size_t(desc.index_count / 3);
+        input.sizes_add_up = true;
         return POLYMASS_OK;
     }
     if (!span_fits(desc.face_sizes, desc.face_count, sizeof(uint32_t), sizeof(uint32_t)))
@@ -52,6 +53,7 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
     }
     input.face_sizes = desc.face_sizes;
     input.face_count = std::size_t(desc.face_count);
+    input.sizes_add_up = total == desc.index_count;
     if (input.small_faces.count > 0)
         return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
                              "face %llu has %u vertices; a face needs at least 3 "

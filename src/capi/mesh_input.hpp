@@ -25,6 +25,9 @@ struct MeshInput {
     std::size_t face_count = 0;
     // Faces of fewer than 3 vertices (found while adding up face_sizes).
     core::Finding small_faces;
+    // face_sizes add up to index_count: with faces too small, the input is
+    // still readable (repair drops them).
+    bool sizes_add_up = false;
 };
 
 // Fills `input` and returns POLYMASS_OK, POLYMASS_ERROR_INVALID_ARGUMENT or

@@ -213,7 +213,7 @@ POLYMASS_API int32_t polymass_moments_compute(polymass_moments* out_moments,
         if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
         polymass_options call;
         if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0};
+        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0, {}};
         if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
         MomentsValue value;
         value.moments = core::Moments::of_solid(mesh.integrals, mesh.bounds, mesh.reference);

@@ -37,7 +37,8 @@ struct StructVersions;
 
 template <>
 struct StructVersions<polymass_options> {
-    static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_options, weld_tolerance)};
+    static constexpr uint32_t ends[] = {
+        POLYMASS_FIELD_END(polymass_options, weld_tolerance)};  // 1.0
     static polymass_options defaults() {
         return zeroed<polymass_options>();
     }  // 0: default tolerances
@@ -96,6 +97,12 @@ template <>
 struct StructVersions<polymass_shell> {  // new in 1.1.0
     static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_shell, signed_volume)};
     static polymass_shell defaults() { return zeroed<polymass_shell>(); }
+};
+
+template <>
+struct StructVersions<polymass_provenance> {  // new in 1.2.0
+    static constexpr uint32_t ends[] = {POLYMASS_FIELD_END(polymass_provenance, hull_volume)};
+    static polymass_provenance defaults() { return zeroed<polymass_provenance>(); }
 };
 
 }  // namespace polymass::capi

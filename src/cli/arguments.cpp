@@ -6,6 +6,7 @@
 #include <polymass/polymass.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <utility>
@@ -24,6 +25,9 @@ struct RawOptions {
     std::string scale, units, about, origin, weld_tolerance, planarity_tolerance;
     bool json = false, urdf = false, sdf = false, mjcf = false;
     std::string from, mass_from;  // polymass audit
+    bool repair = false, hull = false;
+    std::string shell;
+    std::string fallback;  // comma-separated
 };
 
 double positive_number(std::string_view option, std::string_view text) {
@@ -145,9 +149,69 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                  "split polygon faces into fans of triangles from their first\n"
                  "corner: a non-planar face then counts as that surface")
         ->group("Checks");
+    const std::string kModes = "When the mesh is not a valid solid (default: refuse it)";
+    app.add_flag("--repair", raw.repair,
+                 "repair what has one right fix (orientation, duplicate faces,\n"
+                 "holes, ...) and say what was done and how far off it can be")
+        ->group(kModes);
+    app.add_option("--shell", raw.shell,
+                   "the surface as a thin wall of thickness T (sheet metal, open\n"
+                   "visual meshes): mass = density * T * area")
+        ->group(kModes)
+        ->option_text("T");
+    app.add_flag("--hull", raw.hull, "the convex hull of the mesh's vertices (an upper bound)")
+        ->group(kModes);
+    app.add_option("--fallback", raw.fallback,
+                   "modes tried in order after the solid, from repair, shell\n"
+                   "(with --shell T), hull: e.g. --fallback repair,hull")
+        ->group(kModes)
+        ->option_text("LIST");
     app.add_flag("--timings", arguments.timings,
                  "print the time spent reading and computing to stderr")
         ->group("Checks");
+}
+
+std::vector<std::string> split_list(const std::string& text) {
+    std::vector<std::string> items;
+    std::string::size_type start = 0;
+    while (start <= text.size()) {
+        const std::string::size_type comma = std::min(text.find(',', start), text.size());
+        items.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
+}
+
+// The chain of modes the mode options ask for.
+void read_modes(const RawOptions& raw, Arguments& arguments) {
+    if (!raw.shell.empty()) arguments.shell_thickness = positive_number("--shell", raw.shell);
+    if (raw.repair + raw.hull + !raw.shell.empty() + !raw.fallback.empty() > 1 &&
+        (raw.fallback.empty() || raw.repair || raw.hull)) {
+        throw UsageError(
+            "choose one of --repair, --shell, --hull, or --fallback with a list of them");
+    }
+    if (raw.repair) arguments.modes = {POLYMASS_MODE_REPAIR};
+    if (raw.hull) arguments.modes = {POLYMASS_MODE_HULL};
+    if (!raw.shell.empty()) arguments.modes = {POLYMASS_MODE_SHELL};
+    if (raw.fallback.empty()) return;
+    arguments.modes = {POLYMASS_MODE_SOLID};
+    for (const std::string& name : split_list(raw.fallback)) {
+        const uint32_t mode = name == "repair"  ? POLYMASS_MODE_REPAIR
+                              : name == "shell" ? POLYMASS_MODE_SHELL
+                              : name == "hull"  ? POLYMASS_MODE_HULL
+                                                : POLYMASS_MODE_NONE;
+        if (mode == POLYMASS_MODE_NONE)
+            throw UsageError("--fallback wants a list of repair, shell and hull, not '" + name +
+                             "'");
+        if (std::find(arguments.modes.begin(), arguments.modes.end(), mode) ==
+            arguments.modes.end())
+            arguments.modes.push_back(mode);
+    }
+    const bool shell = std::find(arguments.modes.begin(), arguments.modes.end(),
+                                 POLYMASS_MODE_SHELL) != arguments.modes.end();
+    if (shell != !raw.shell.empty())
+        throw UsageError(shell ? "--fallback shell wants the wall's thickness: --shell T"
+                               : "--shell with --fallback: list shell in the fallback");
 }
 
 // Reads the option values CLI11 collected into arguments.
@@ -207,6 +271,7 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
         }
         arguments.planarity_tolerance = tolerance;
     }
+    read_modes(raw, arguments);
 }
 
 // An assembly file gives each part's mesh, units and material itself.
@@ -266,7 +331,8 @@ constexpr const char* kFooter =
     "  polymass part.stl --units mm --density 2700\n"
     "  polymass link.obj --mass 1.5 --urdf\n"
     "  polymass arm.stl --units mm --mass 0.8 --urdf --origin 0,0,0.25\n"
-    "  polymass check scan.ply\n";
+    "  polymass check scan.ply\n"
+    "  polymass visual.stl --fallback repair,hull --json\n";
 
 constexpr const char* kAuditFooter =
     "Per link: the declared mass, centre of mass and inertia next to those of its\n"

@@ -1,7 +1,10 @@
 // The command line: what to do, to which files, with which settings.
 #pragma once
 
+#include <polymass/polymass.h>
+
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -52,6 +55,10 @@ struct Arguments {
     double planarity_tolerance = 0.0;  // 0: the library's default
     bool triangulate = false;
     AuditArguments audit;
+    // The modes to try in order (POLYMASS_MODE_*): the solid alone by
+    // default; --repair, --shell, --hull or --fallback change it.
+    std::vector<uint32_t> modes{POLYMASS_MODE_SOLID};
+    double shell_thickness = 0.0;  // --shell T (output units)
 };
 
 // A command line the tool cannot run; the message says what is wrong.

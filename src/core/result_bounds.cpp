@@ -51,6 +51,11 @@ ResultBounds result_bounds(const VolumeIntegrals& mass, const IntegralBounds& ma
     const double largest_inertia = body.inertia.cwiseAbs().maxCoeff();
     bounds.inertia = 2.0 * central_error.maxCoeff() + 3.0 * u * largest_inertia;
 
+    bound_principal(bounds, principal);
+    return bounds;
+}
+
+void bound_principal(ResultBounds& bounds, const PrincipalAxes& principal) {
     // Weyl: each eigenvalue moves by at most the perturbation's 2-norm, at
     // most 3 times its largest entry; plus the eigensolver's backward error.
     const double largest_moment = principal.moments.cwiseAbs().maxCoeff();
@@ -71,7 +76,6 @@ ResultBounds result_bounds(const VolumeIntegrals& mass, const IntegralBounds& ma
         worst = std::max(worst, usable > 0.0 ? std::min(half_pi, perturbation / usable) : half_pi);
     }
     bounds.principal_axes = worst;
-    return bounds;
 }
 
 }  // namespace polymass::core

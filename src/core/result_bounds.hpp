@@ -30,4 +30,8 @@ ResultBounds result_bounds(const VolumeIntegrals& mass, const IntegralBounds& ma
                            double volume_bound, const Eigen::Vector3d& reference,
                            const RigidBody& body, const PrincipalAxes& principal);
 
+// The principal moments' and axes' bounds from bounds.inertia (Weyl, then
+// Davis–Kahan), written to bounds.
+void bound_principal(ResultBounds& bounds, const PrincipalAxes& principal);
+
 }  // namespace polymass::core

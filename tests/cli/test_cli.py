@@ -970,6 +970,95 @@ class Outputs(Case):
                 self.assertIn("--origin", result.stderr)
 
 
+class Modes(Case):
+    """--repair, --shell, --hull, --fallback: answers that say how they were reached."""
+
+    @classmethod
+    def setUpClass(cls):
+        WORK.mkdir(parents=True, exist_ok=True)
+        cls.vertices, cls.faces = fixtures.bracket()
+        cls.expected = generate.exact_properties(cls.vertices, cls.faces)
+        cls.valid = WORK / "modes_bracket.obj"
+        fixtures.write_obj(cls.valid, cls.vertices, cls.faces)
+        # Without its top cap (a planar face): open.
+        cls.open = WORK / "modes_open.obj"
+        fixtures.write_obj(cls.open, cls.vertices, cls.faces[:1] + cls.faces[2:])
+
+    def test_a_refusal_names_the_option_that_answers(self):
+        result, out = run_json(self.open)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH)
+        self.assertIn("--repair would give an answer", out["error"]["message"])
+
+    def test_repair_caps_the_hole_within_its_bound(self):
+        result, out = run_json("--repair", self.open)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        provenance = out["provenance"]
+        self.assertEqual(provenance["mode"], "repaired")
+        self.assertEqual(provenance["repairs"]["holes"]["count"], 1)
+        self.assertGreater(provenance["cap_area_fraction"], 0)
+        self.assertIn("repaired", out["warnings"])
+        # The cap of a planar hole is the missing face: within the bound, and exact.
+        self.assertLessEqual(
+            abs(out["volume"] - self.expected["volume"]), out["error_bound"]["volume"]
+        )
+        self.assert_properties(out, self.expected, what="repaired")
+        table = run("--repair", self.open).stdout
+        self.assertIn("repaired: 1 holes capped", table)
+        self.assertIn("error bound", table)
+
+    def test_a_valid_solid_is_answered_as_without_modes(self):
+        _, plain = run_json(self.valid)
+        for args in (["--repair"], ["--fallback", "repair,hull"]):
+            with self.subTest(args=args):
+                result, out = run_json(*args, self.valid)
+                self.assertEqual(result.returncode, EXIT_OK)
+                self.assertEqual(out["provenance"], {"mode": "solid"})
+                self.assertEqual(out, plain)
+
+    def test_hull_and_shell(self):
+        _, hull = run_json("--hull", self.open)
+        self.assertEqual(hull["provenance"]["mode"], "hull")
+        self.assertGreaterEqual(hull["volume"], self.expected["volume"])
+        self.assertGreaterEqual(
+            hull["error_bound"]["volume"], hull["volume"] - self.expected["volume"]
+        )
+        _, shell = run_json("--shell", "0.01", "--density", "2", self.open)
+        self.assertEqual(shell["provenance"]["mode"], "shell")
+        area = shell["provenance"]["shell_area"]
+        self.assert_close(shell["mass"], 2 * 0.01 * area, shell["mass"], "shell mass")
+        _, chain = run_json("--fallback", "repair,hull", self.open)
+        self.assertEqual(chain["provenance"]["mode"], "repaired")
+
+    def test_xml_says_how_the_answer_was_reached(self):
+        result = run("--repair", "--urdf", self.open)
+        self.assertEqual(result.returncode, EXIT_OK)
+        comments = Outputs.comments(Outputs.parse_xml(result.stdout))
+        self.assertTrue(any(c.startswith("provenance: repaired") for c in comments), comments)
+        self.assertTrue(any(c.startswith("error bound: volume") for c in comments), comments)
+
+    def test_check_says_which_mode_answers(self):
+        result = run("check", "--json", self.open)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH)
+        self.assertEqual(
+            json.loads(result.stdout)["answer"], {"mode": "repaired", "option": "--repair"}
+        )
+        self.assertEqual(
+            json.loads(run("check", "--json", self.valid).stdout)["answer"], {"mode": "solid"}
+        )
+        self.assertIn("--repair would give an answer", run("check", self.open).stdout)
+
+    def test_mode_usage_errors(self):
+        for args in (
+            ["--repair", "--hull"],
+            ["--fallback", "repair,bogus"],
+            ["--fallback", "shell"],
+            ["--shell", "0.1", "--fallback", "repair"],
+            ["--shell", "-1"],
+        ):
+            with self.subTest(args=args):
+                self.assertEqual(run(*args, self.valid).returncode, EXIT_USAGE)
+
+
 class BundledMeshes(Case):
     """Every mesh of examples/data gives the properties expected.json documents."""
 

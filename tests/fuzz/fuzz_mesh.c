@@ -17,7 +17,9 @@
  *                 6    polygon points: 0 x, y of each vertex (the position array
  *                      itself when FLOAT64); 1 every coordinate as packed pairs
  *                 7    positions and indices at an odd address
- *   1      1    option flags (low 5 bits: POLYMASS_OPTION_*)
+ *   1      1    option flags (low 5 bits: POLYMASS_OPTION_*); the high 3 bits
+ *               choose the chain of modes of a last call, entry (byte >> 5)
+ *               of `chains` below
  *   2      1    planarity tolerance: entry (byte % 8) of `tolerances` below;
  *               weld tolerance: entry (byte / 8 % 4) of `weld_tolerances`
  *   3      1    mass: bits 0-1: 0 NULL, 1 FROM_DENSITY, 2 FROM_TOTAL, 3 an
@@ -47,7 +49,11 @@
  * untouched and *out_mesh is NULL; polymass_mesh_check's report has its
  * status and consistent counts and first locations, and (topology checks on)
  * the status and message of polymass_mesh_create; polymass_mass_properties_compute
- * equals polymass_mesh_create + polymass_mesh_mass_properties, bit for bit.
+ * equals polymass_mesh_create + polymass_mesh_mass_properties, bit for bit;
+ * polymass_mass_properties_with_provenance with a chain of modes answers
+ * with a mode of the chain (or the solid, for repair), says so in its
+ * warnings, and answers a mesh the solid accepts bit for bit as the solid
+ * does when the chain starts with the solid or repair.
  *
  * POLYMASS_FUZZ_VERBOSE=1 in the environment prints the decoded input and the
  * statuses, for reproducing a finding by hand. */
@@ -253,12 +259,18 @@ static void check_rotation(const double* r, int32_t status, const polymass_conte
     CHECK(fabs(det - 1.0) <= 1e-9, status, context);
 }
 
+/* The warnings of an answer by another mode than the solid. */
+static const uint32_t mode_warnings =
+    POLYMASS_WARNING_REPAIRED | POLYMASS_WARNING_SHELL | POLYMASS_WARNING_HULL;
+
 static void check_properties(const polymass_mass_properties* p, uint32_t flags,
                              const polymass_mass_desc* mass, int32_t status,
                              const polymass_context* context) {
     const uint32_t known = POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES |
                            POLYMASS_WARNING_UNCHECKED | POLYMASS_WARNING_NON_MANIFOLD |
-                           POLYMASS_WARNING_TOUCHING_FACES;
+                           POLYMASS_WARNING_TOUCHING_FACES | mode_warnings;
+    /* A repaired surface, a wall and a hull are judged with options of their own. */
+    const int other_mode = (p->warnings & mode_warnings) != 0;
     CHECK(p->struct_size == sizeof *p, status, context);
     /* Every double of the struct, from volume to principal_axes; the error
        bounds are numbers, infinite where rounding could be the whole mass. */
@@ -279,13 +291,16 @@ static void check_properties(const polymass_mass_properties* p, uint32_t flags,
     check_rotation(p->principal_axes, status, context);
 
     CHECK((p->warnings & ~known) == 0, status, context);
-    CHECK(!!(p->warnings & POLYMASS_WARNING_UNCHECKED) ==
-              !!(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS),
-          status, context);
+    if (!other_mode)
+        CHECK(!!(p->warnings & POLYMASS_WARNING_UNCHECKED) ==
+                  !!(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS),
+              status, context);
     if (p->warnings & POLYMASS_WARNING_INVERTED)
         CHECK(flags & POLYMASS_OPTION_ACCEPT_INVERTED, status, context);
     if (p->warnings & POLYMASS_WARNING_NON_MANIFOLD)
-        CHECK(flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, status, context);
+        CHECK((flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD) ||
+                  (p->warnings & POLYMASS_WARNING_REPAIRED),
+              status, context);
 
     if (!mass)
         CHECK(p->density == 1.0, status, context);
@@ -409,6 +424,25 @@ static void put_index(uint8_t* indices, int index16, size_t position, uint64_t v
     }
 }
 
+/* The chains of modes the last call tries (header byte 1's high bits). */
+static const uint32_t chains[8][POLYMASS_MAX_MODES] = {
+    {POLYMASS_MODE_REPAIR},
+    {POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL},
+    {POLYMASS_MODE_HULL},
+    {POLYMASS_MODE_SHELL},
+    {POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_SHELL, POLYMASS_MODE_HULL},
+    {POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL},
+    {POLYMASS_MODE_SHELL, POLYMASS_MODE_HULL},
+    {POLYMASS_MODE_SOLID, POLYMASS_MODE_HULL},
+};
+
+static int in_chain(const uint32_t* modes, uint32_t mode) {
+    int i;
+    for (i = 0; i < POLYMASS_MAX_MODES; ++i)
+        if (modes[i] == mode) return 1;
+    return 0;
+}
+
 /* ------------------------------------------------------------------------ */
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
@@ -427,7 +461,10 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     polymass_mass_desc mass_desc, *mass = NULL;
     polymass_mesh_desc desc;
     polymass_diagnostics report;
-    polymass_mass_properties p_mesh, p_compute, untouched;
+    polymass_mass_properties p_mesh, p_compute, p_modes, untouched;
+    polymass_provenance provenance;
+    polymass_options chain_options;
+    const uint32_t* chain;
     polymass_polygon_properties q, q_untouched;
     polymass_mesh* mesh;
     buffer positions_buffer, indices_buffer;
@@ -450,6 +487,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     packed_pairs = (header[0] >> 6) & 1;
     odd = (header[0] >> 7) & 1;
     flags = header[1] & 0x1Fu;
+    chain = chains[header[1] >> 5];
     vertex_bytes = float32 ? 12 : 24;
     index_bytes = index16 ? 2 : 4;
     one_v = header[4];
@@ -709,6 +747,49 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         CHECK(memcmp(&p_compute, &p_mesh, sizeof p_compute) == 0, status_compute, context);
     } else {
         CHECK(memcmp(&p_compute, &untouched, sizeof p_compute) == 0, status_compute, context);
+    }
+
+    /* --- polymass_mass_properties_with_provenance with a chain of modes ---- */
+    current_call = "polymass_mass_properties_with_provenance";
+    chain_options = effective;
+    memcpy(chain_options.modes, chain, sizeof chain_options.modes);
+    chain_options.shell_thickness = 1e-3;
+    memset(&p_modes, 0xA5, sizeof p_modes);
+    p_modes.struct_size = sizeof p_modes;
+    untouched = p_modes;
+    memset(&provenance, 0, sizeof provenance);
+    provenance.struct_size = sizeof provenance;
+    {
+        const int32_t status = polymass_mass_properties_with_provenance(
+            &p_modes, &provenance, context, &desc, mass, &chain_options);
+        CHECK(is_mesh_status(status), status, context);
+        check_status_and_message(status, context);
+        if (verbose)
+            fprintf(stderr, "fuzz_mesh: modes %u,%u,%u,%u: %d mode %d (%s)\n", (unsigned)chain[0],
+                    (unsigned)chain[1], (unsigned)chain[2], (unsigned)chain[3], (int)status,
+                    (int)provenance.mode, polymass_context_message(context));
+        if (status == POLYMASS_OK) {
+            check_properties(&p_modes, flags, mass, status, context);
+            CHECK(in_chain(chain, (uint32_t)provenance.mode) ||
+                      (provenance.mode == POLYMASS_MODE_SOLID &&
+                       in_chain(chain, POLYMASS_MODE_REPAIR)),
+                  status, context);
+            CHECK(!!(p_modes.warnings & POLYMASS_WARNING_REPAIRED) ==
+                          (provenance.mode == POLYMASS_MODE_REPAIR) &&
+                      !!(p_modes.warnings & POLYMASS_WARNING_SHELL) ==
+                          (provenance.mode == POLYMASS_MODE_SHELL) &&
+                      !!(p_modes.warnings & POLYMASS_WARNING_HULL) ==
+                          (provenance.mode == POLYMASS_MODE_HULL),
+                  status, context);
+        } else {
+            CHECK(memcmp(&p_modes, &untouched, sizeof p_modes) == 0, status, context);
+        }
+        /* A mesh the solid accepts is the solid's answer, bit for bit. */
+        if (status_compute == POLYMASS_OK &&
+            (chain[0] == POLYMASS_MODE_SOLID || chain[0] == POLYMASS_MODE_REPAIR)) {
+            CHECK(status == POLYMASS_OK && provenance.mode == POLYMASS_MODE_SOLID, status, context);
+            CHECK(memcmp(&p_modes, &p_compute, sizeof p_modes) == 0, status, context);
+        }
     }
 
     /* --- polymass_polygon_compute on the coordinates as 2D points ---------- */

@@ -17,6 +17,7 @@
 #include "readers/mesh_reader.hpp"
 #include "reports/json_output.hpp"
 #include "reports/number_format.hpp"
+#include "reports/provenance.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -222,6 +223,34 @@ Json json_report(const std::string& path, const Model& model, const CheckResult&
     return report;
 }
 
+// Which mode answers the file: the options' chain (the solid alone by
+// default), or else the option that would.
+SolidResult answer_of(const Library& library, const Model& model, const Part& part) {
+    polymass_mass_desc unit{};
+    unit.struct_size = sizeof unit;
+    unit.mass_mode = POLYMASS_MASS_FROM_DENSITY;
+    unit.density = 1.0;
+    return compute_solid(library, model, part, unit);
+}
+
+std::string answer_text(const SolidResult& answer) {
+    if (answer.status == POLYMASS_OK) return "answered as " + provenance_text(answer.provenance);
+    if (answer.answering_option.empty()) return "no mode gives an answer";
+    // The probe's thickness is arbitrary: only the area is the surface's.
+    if (answer.answering_provenance.mode == POLYMASS_MODE_SHELL)
+        return answer.answering_option + " would give an answer: a thin wall over the surface's " +
+               "area " + readable_number(answer.answering_provenance.shell_area);
+    return answer.answering_option +
+           " would give an answer: " + provenance_text(answer.answering_provenance);
+}
+
+Json answer_json(const SolidResult& answer) {
+    if (answer.status == POLYMASS_OK) return {{"mode", answer_mode_name(answer.provenance.mode)}};
+    if (answer.answering_option.empty()) return {{"mode", nullptr}};
+    return {{"mode", answer_mode_name(answer.answering_provenance.mode)},
+            {"option", answer.answering_option}};
+}
+
 }  // namespace
 
 ExitCode run_check(const Arguments& arguments) {
@@ -251,11 +280,14 @@ ExitCode run_check(const Arguments& arguments) {
         const CheckResult check = check_solid(library, model, all);
         const ShellView shells{shell_of_each_face(library, model, all),
                                shell_list(library, model, all)};
+        const SolidResult answer = answer_of(library, model, all);
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json) {
             reports.push_back(json_report(path, model, check, shells));
+            reports.back()["answer"] = answer_json(answer);
         } else {
             write_text(body, path, model, check, shells);
+            body << "  " << answer_text(answer) << '\n';
         }
     }
     if (as_json) {

@@ -81,6 +81,8 @@ polymass_options options_for(const Arguments& arguments) {
         options.flags |= POLYMASS_OPTION_CHECK_INTERSECTIONS;
     options.weld_tolerance = arguments.weld_tolerance;
     options.planarity_tolerance = arguments.planarity_tolerance;
+    std::copy(arguments.modes.begin(), arguments.modes.end(), options.modes);
+    options.shell_thickness = arguments.shell_thickness;
     return options;
 }
 

@@ -1,7 +1,10 @@
 #include "library/solid.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <new>
 #include <stdexcept>
+#include <utility>
 
 namespace polymass_cli {
 
@@ -18,6 +21,41 @@ polymass_mesh_desc describe(const Model& model, const Part& part) {
     desc.face_count = part.face_sizes.size();
     return desc;
 }
+
+namespace {
+
+// Which option of the tool would answer a part its options' chain refused:
+// --repair, then --hull, then (for a flat surface, which neither answers)
+// --shell T, among the modes the chain lacks. Writes
+// result.answering_option (empty when none would) and what the mode did.
+void probe_modes(const Library& library, const polymass_mesh_desc& desc, SolidResult& result) {
+    polymass_options options{};
+    options.struct_size = sizeof options;
+    polymass_context_get_options(&options, library.context());
+    const uint32_t* chain = options.modes;
+    const uint32_t* chain_end = chain + POLYMASS_MAX_MODES;
+    for (const auto& [mode, option] : {std::pair{uint32_t(POLYMASS_MODE_REPAIR), "--repair"},
+                                       std::pair{uint32_t(POLYMASS_MODE_HULL), "--hull"},
+                                       std::pair{uint32_t(POLYMASS_MODE_SHELL), "--shell T"}}) {
+        if (std::find(chain, chain_end, mode) != chain_end) continue;
+        polymass_options single = options;
+        std::fill(std::begin(single.modes), std::end(single.modes), uint32_t(POLYMASS_MODE_NONE));
+        single.modes[0] = mode;
+        single.shell_thickness = 1.0;  // any: whether the surface has an area to make a wall of
+        polymass_mass_properties properties{};
+        properties.struct_size = sizeof properties;
+        polymass_provenance& provenance = result.answering_provenance;
+        provenance = polymass_provenance{};
+        provenance.struct_size = sizeof provenance;
+        if (polymass_mass_properties_with_provenance(&properties, &provenance, library.context(),
+                                                     &desc, nullptr, &single) == POLYMASS_OK) {
+            result.answering_option = option;
+            return;
+        }
+    }
+}
+
+}  // namespace
 
 Library::Library(const polymass_options& options) {
     const int32_t created = polymass_context_create(&context_, nullptr);
@@ -41,9 +79,14 @@ SolidResult compute_solid(const Library& library, const Model& model, const Part
     const polymass_mesh_desc desc = describe(model, part);
     SolidResult result;
     result.properties.struct_size = sizeof result.properties;
-    result.status =
-        polymass_mass_properties_compute(&result.properties, library.context(), &desc, &mass);
-    if (result.status != POLYMASS_OK) result.message = library.message();
+    result.provenance.struct_size = sizeof result.provenance;
+    result.status = polymass_mass_properties_with_provenance(
+        &result.properties, &result.provenance, library.context(), &desc, &mass, nullptr);
+    if (result.status == POLYMASS_OK) return result;
+    result.message = library.message();
+    probe_modes(library, desc, result);
+    if (!result.answering_option.empty())
+        result.message += " (" + result.answering_option + " would give an answer)";
     return result;
 }
 

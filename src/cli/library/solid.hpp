@@ -32,10 +32,18 @@ polymass_mesh_desc describe(const Model& model, const Part& part);
 
 struct SolidResult {
     int32_t status = POLYMASS_OK;
-    std::string message;  // the context's message when status is an error
+    // The context's message when status is an error, then which of the
+    // tool's options would give an answer, if one would.
+    std::string message;
     polymass_mass_properties properties{};
+    polymass_provenance provenance{};  // which mode answered, and what it did
+    // On failure: the option that would give an answer ("--repair", "--hull",
+    // "--shell T"), if one would, and what that mode would do.
+    std::string answering_option;
+    polymass_provenance answering_provenance{};
 };
 
+// The part's mass properties by the library's options' chain of modes.
 SolidResult compute_solid(const Library& library, const Model& model, const Part& part,
                           const polymass_mass_desc& mass);
 

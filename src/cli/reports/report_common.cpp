@@ -39,7 +39,10 @@ const struct {
     {POLYMASS_WARNING_UNCHECKED, "unchecked", "the topology checks were skipped"},
     {POLYMASS_WARNING_NON_MANIFOLD, "non_manifold", "edges with more than two faces, accepted"},
     {POLYMASS_WARNING_TOUCHING_FACES, "touching_faces",
-     "faces touch without crossing (parts resting on each other)"}};
+     "faces touch without crossing (parts resting on each other)"},
+    {POLYMASS_WARNING_REPAIRED, "repaired", "not a valid solid: the surface was repaired"},
+    {POLYMASS_WARNING_SHELL, "shell", "computed as a thin wall, not a solid"},
+    {POLYMASS_WARNING_HULL, "hull", "the convex hull, not the solid: an upper bound"}};
 
 }  // namespace
 

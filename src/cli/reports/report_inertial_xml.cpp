@@ -19,6 +19,7 @@
 
 #include "library/categories.hpp"
 #include "reports/number_format.hpp"
+#include "reports/provenance.hpp"
 #include "reports/report.hpp"
 #include "reports/utf8.hpp"
 
@@ -105,6 +106,8 @@ void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
         const polymass_mass_properties& p = file.solid.result.properties;
         if (several) add_comment(document, file.path);
         if (p.warnings) add_comment(document, "warning: " + warning_text(p.warnings));
+        add_comment(document, "provenance: " + provenance_text(file.solid.result.provenance));
+        add_comment(document, "error bound: " + error_bound_text(p));
         for (const std::string& note : file.notes) add_comment(document, "note: " + note);
         if (settings.length_unit.empty()) add_comment(document, kFileUnitsNote);
         std::array<double, 3> origin{};

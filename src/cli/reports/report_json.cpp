@@ -7,6 +7,7 @@
 
 #include "library/categories.hpp"
 #include "reports/json_output.hpp"
+#include "reports/provenance.hpp"
 #include "reports/report.hpp"
 
 namespace polymass_cli {
@@ -14,6 +15,36 @@ namespace {
 
 Json error_object(const char* category, const std::string& message) {
     return Json{{"category", category}, {"message", message}};
+}
+
+// How the answer was reached (the README's schema).
+Json provenance_object(const polymass_provenance& p) {
+    Json provenance = {{"mode", answer_mode_name(p.mode)}};
+    if (p.mode == POLYMASS_MODE_REPAIR) {
+        Json repairs = Json::object();
+        for (const RepairItem& item : repairs_of(p))
+            repairs[item.key] = {{"count", item.count}, {"first", item.first}};
+        provenance["repairs"] = repairs;
+        provenance["cap_area_fraction"] = json_number(p.cap_area_fraction);
+    } else if (p.mode == POLYMASS_MODE_SHELL) {
+        provenance["thickness"] = json_number(p.shell_thickness);
+        provenance["shell_area"] = json_number(p.shell_area);
+    } else if (p.mode == POLYMASS_MODE_HULL) {
+        provenance["hull_vertices"] = p.hull_vertex_count;
+        provenance["hull_triangles"] = p.hull_triangle_count;
+        provenance["hull_volume"] = json_number(p.hull_volume);
+    }
+    if (p.mode != POLYMASS_MODE_SOLID) {
+        // The approximation's share of error_bound; infinite parts left out.
+        Json share = Json::object();
+        for (const auto& [name, bound] :
+             {std::pair{"volume", p.approximation_bound_volume},
+              std::pair{"center_of_mass", p.approximation_bound_center_of_mass},
+              std::pair{"inertia", p.approximation_bound_inertia}})
+            if (std::isfinite(bound)) share[name] = json_number(bound);
+        provenance["approximation_bound"] = share;
+    }
+    return provenance;
 }
 
 // The members of a solid's object.
@@ -54,6 +85,7 @@ void add_solid_members(Json& solid, const PartReport& part, const OutputSettings
     for (const auto& [name, bound] : bounds)
         if (std::isfinite(bound)) error_bound[name] = json_number(bound);
     solid["error_bound"] = error_bound;
+    solid["provenance"] = provenance_object(part.result.provenance);
 }
 
 Json file_object(const FileReport& file, const OutputSettings& settings) {

@@ -7,6 +7,7 @@
 
 #include "library/categories.hpp"
 #include "reports/number_format.hpp"
+#include "reports/provenance.hpp"
 #include "reports/report.hpp"
 
 namespace polymass_cli {
@@ -81,6 +82,8 @@ void write_solid(std::ostream& out, const PartReport& part, const OutputSettings
         warnings += (warnings.empty() ? "" : ", ") + name;
     }
     write_row(out, "warnings", warnings.empty() ? "none" : warnings);
+    write_row(out, "provenance", provenance_text(part.result.provenance));
+    write_row(out, "error bound", error_bound_text(p));
 }
 
 }  // namespace

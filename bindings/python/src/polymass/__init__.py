@@ -39,7 +39,15 @@ from .errors import (
 )
 from .moments import Moments, moments
 from .polygons import PolygonProperties, polygon_properties
-from .solids import ErrorBound, MassProperties, Mesh, Warnings, mass_properties
+from .solids import (
+    ErrorBound,
+    MassProperties,
+    Mesh,
+    Provenance,
+    Repair,
+    Warnings,
+    mass_properties,
+)
 
 __version__: str = _header.POLYMASS_VERSION_STRING
 """The version of the header this binding was built from (the package's version)."""
@@ -70,6 +78,8 @@ __all__ = [
     "OpenSurfaceError",
     "OutOfMemoryError",
     "PolygonProperties",
+    "Provenance",
+    "Repair",
     "ResultOutOfRangeError",
     "Shell",
     "TopologyError",

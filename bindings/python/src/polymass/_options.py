@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numbers
+from collections.abc import Sequence
 from typing import Union
 
 import numpy as np
@@ -31,6 +32,48 @@ def _weld_tolerance(weld: Weld) -> float | None:
     )
 
 
+_MODES = {
+    "repair": _header.POLYMASS_MODE_REPAIR,
+    "shell": _header.POLYMASS_MODE_SHELL,
+    "hull": _header.POLYMASS_MODE_HULL,
+}
+
+
+def _modes(repair: bool, shell: float | None, hull: bool, fallback: Sequence[str]) -> list[int]:
+    """The chain of modes the keywords ask for (POLYMASS_MODE_* values).
+
+    repair, shell (a thickness) and hull each choose one mode; fallback is a
+    list of "repair", "shell" (with shell=thickness) and "hull" tried in order
+    after the solid."""
+    if isinstance(fallback, str):
+        fallback = [part for part in fallback.split(",") if part]
+    chosen = bool(repair) + (shell is not None) + bool(hull)
+    if fallback:
+        if repair or hull:
+            raise ValueError("give repair, shell, hull, or fallback with a list of them")
+        unknown = [name for name in fallback if name not in _MODES]
+        if unknown:
+            raise ValueError(
+                f'fallback lists modes from "repair", "shell", "hull"; got {unknown!r}'
+            )
+        if ("shell" in fallback) != (shell is not None):
+            raise ValueError("a shell in the fallback wants its thickness: shell=T (and only then)")
+        chain = [_header.POLYMASS_MODE_SOLID]
+        for name in fallback:
+            if _MODES[name] not in chain:
+                chain.append(_MODES[name])
+        return chain
+    if chosen > 1:
+        raise ValueError("give repair, shell, hull, or fallback with a list of them")
+    if repair:
+        return [_header.POLYMASS_MODE_REPAIR]
+    if shell is not None:
+        return [_header.POLYMASS_MODE_SHELL]
+    if hull:
+        return [_header.POLYMASS_MODE_HULL]
+    return [_header.POLYMASS_MODE_SOLID]
+
+
 def apply_options(context, **keywords) -> None:
     """Sets the options of this thread's context for the next call through it."""
     raise_for_status(lib.polymass_context_set_options(context, call_options(**keywords)), context)
@@ -44,9 +87,16 @@ def call_options(
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
     check_intersections: bool = False,
+    repair: bool = False,
+    shell: float | None = None,
+    hull: bool = False,
+    fallback: Sequence[str] = (),
 ):
     """The keywords as a polymass_options, for a call that takes its own options."""
     options = new_struct("polymass_options")
+    chain = _modes(repair, shell, hull, fallback)
+    options.modes = chain + [_header.POLYMASS_MODE_NONE] * (_header.POLYMASS_MAX_MODES - len(chain))
+    options.shell_thickness = 0.0 if shell is None else shell
     flags = 0
     if skip_checks:
         flags |= _header.POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS

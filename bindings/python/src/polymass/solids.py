@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import enum
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Literal, Union
 
 import numpy as np
@@ -46,6 +46,12 @@ class Warnings(enum.IntFlag):
     TOUCHING_FACES = _header.POLYMASS_WARNING_TOUCHING_FACES
     """Faces touch without crossing, such as parts resting on each other: found by
     check_intersections=True, where `check` lists the face pairs."""
+    REPAIRED = _header.POLYMASS_WARNING_REPAIRED
+    """Not a valid solid: the surface was repaired (see `Provenance`)."""
+    SHELL = _header.POLYMASS_WARNING_SHELL
+    """Computed as a thin wall (shell=thickness), not as a solid."""
+    HULL = _header.POLYMASS_WARNING_HULL
+    """The convex hull, not the solid (an upper bound)."""
 
 
 def _frozen(values, shape: tuple[int, ...]) -> np.ndarray:
@@ -73,6 +79,88 @@ class ErrorBound:
     principal_axes: float
 
 
+@dataclass(frozen=True)
+class Repair:
+    """One kind of repair: how many, and the first (lowest) locations: face
+    numbers, vertex numbers for holes (each hole's lowest vertex), vertex pairs
+    for split edges."""
+
+    count: int
+    first: tuple
+
+
+@dataclass(frozen=True)
+class Provenance:
+    """How the answer was reached (`mass_properties` with repair, shell, hull or fallback).
+
+    mode: "solid" (exact, as given), "repaired", "shell" or "hull".
+    repairs: for "repaired", each kind of fix made, by name: reoriented_faces,
+        turned_shells, duplicate_faces, degenerate_faces, triangulated_faces,
+        split_edges, holes (a `Repair` each).
+    cap_area, cap_area_fraction: the caps over holes, and their share of the
+        repaired surface.
+    approximation_bound: the approximation's share of `MassProperties.error_bound`
+        (volume, center_of_mass, inertia; 0 for an exact answer).
+    shell_thickness, shell_area: for "shell".
+    hull_vertex_count, hull_triangle_count, hull_volume: for "hull".
+    """
+
+    mode: str = "solid"
+    repairs: dict = field(default_factory=dict)
+    cap_area: float = 0.0
+    cap_area_fraction: float = 0.0
+    approximation_bound: dict = field(
+        default_factory=lambda: {"volume": 0.0, "center_of_mass": 0.0, "inertia": 0.0}
+    )
+    shell_thickness: float = 0.0
+    shell_area: float = 0.0
+    hull_vertex_count: int = 0
+    hull_triangle_count: int = 0
+    hull_volume: float = 0.0
+
+    @classmethod
+    def _from_c(cls, p) -> Provenance:
+        modes = {
+            _header.POLYMASS_MODE_REPAIR: "repaired",
+            _header.POLYMASS_MODE_SHELL: "shell",
+            _header.POLYMASS_MODE_HULL: "hull",
+        }
+        repairs = {}
+        for name in (
+            "reoriented_faces",
+            "turned_shells",
+            "duplicate_faces",
+            "degenerate_faces",
+            "triangulated_faces",
+            "split_edges",
+            "holes",
+        ):
+            count = getattr(p, name)
+            if count:
+                first = getattr(p, "first_" + name)
+                kept = min(count, _header.POLYMASS_DIAGNOSTIC_LOCATIONS)
+                locations = [
+                    tuple(first[i]) if name == "split_edges" else first[i] for i in range(kept)
+                ]
+                repairs[name] = Repair(count, tuple(locations))
+        return cls(
+            mode=modes.get(p.mode, "solid"),
+            repairs=repairs,
+            cap_area=p.cap_area,
+            cap_area_fraction=p.cap_area_fraction,
+            approximation_bound={
+                "volume": p.approximation_bound_volume,
+                "center_of_mass": p.approximation_bound_center_of_mass,
+                "inertia": p.approximation_bound_inertia,
+            },
+            shell_thickness=p.shell_thickness,
+            shell_area=p.shell_area,
+            hull_vertex_count=p.hull_vertex_count,
+            hull_triangle_count=p.hull_triangle_count,
+            hull_volume=p.hull_volume,
+        )
+
+
 # eq=False: arrays have no single truth value, so a field-wise == would raise.
 @dataclass(frozen=True, eq=False)
 class MassProperties:
@@ -89,7 +177,9 @@ class MassProperties:
     principal_axes: (3, 3) rotation R (det R = +1) whose columns are the
         principal axes: inertia = R @ diag(principal_moments) @ R.T.
     warnings: what was accepted (see `Warnings`).
-    error_bound: bounds on the rounding errors (see `ErrorBound`).
+    error_bound: bounds on the rounding errors (see `ErrorBound`), and on the
+        approximation when a mode other than the solid answered.
+    provenance: how the answer was reached (see `Provenance`).
     """
 
     volume: float
@@ -105,9 +195,10 @@ class MassProperties:
     principal_axes: np.ndarray
     warnings: Warnings
     error_bound: ErrorBound
+    provenance: Provenance = field(default_factory=Provenance)
 
     @classmethod
-    def _from_c(cls, result, point: np.ndarray | None) -> MassProperties:
+    def _from_c(cls, result, point: np.ndarray | None, provenance=None) -> MassProperties:
         """From a polymass_mass_properties; ``point`` None means about the centre of mass."""
         center = _frozen(result.center_of_mass, (3,))
         inertia = _frozen(result.inertia, (3, 3))
@@ -131,6 +222,7 @@ class MassProperties:
                 principal_moments=result.error_bound_principal_moments,
                 principal_axes=result.error_bound_principal_axes,
             ),
+            provenance=Provenance() if provenance is None else Provenance._from_c(provenance),
         )
 
 
@@ -182,6 +274,10 @@ def mass_properties(
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
     check_intersections: bool = False,
+    repair: bool = False,
+    shell: float | None = None,
+    hull: bool = False,
+    fallback: Sequence[str] = (),
 ) -> MassProperties:
     """Volume, mass, centre of mass, inertia and principal axes of a closed surface.
 
@@ -220,6 +316,17 @@ def mass_properties(
         checks, so it is off by default (a load path of trusted meshes need not
         pay it); turn it on for meshes from the outside world. It never changes
         a result it accepts.
+    repair: a surface that is not a valid solid is repaired where the fix is
+        unique (orientation, duplicate and two-vertex faces, non-planar
+        polygons, holes, balanced non-manifold edges); the result's
+        `provenance` says what was done and its error_bound how far off it
+        can be (docs/repair.md). A valid solid is answered exactly, as without.
+    shell: the surface as a thin wall of this thickness (L): mass =
+        density * thickness * area; open surfaces are fine.
+    hull: the convex hull of the vertices (an upper bound of the solid).
+    fallback: modes tried in order after the solid: a list (or a
+        comma-separated string) of "repair", "shell" (with shell=thickness)
+        and "hull", such as ["repair", "hull"].
 
     Returns a `MassProperties`; raises a subclass of `polymass.Error` saying what
     is wrong and where. The GIL is released while the library computes.
@@ -233,10 +340,22 @@ def mass_properties(
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
         check_intersections=check_intersections,
+        repair=repair,
+        shell=shell,
+        hull=hull,
+        fallback=fallback,
     )
-    return _properties(
-        lib.polymass_mass_properties_compute, mesh.desc, density=density, mass=mass, about=about
+    desc, point = _mass_desc(density, mass, about)
+    result = new_struct("polymass_mass_properties")
+    provenance = new_struct("polymass_provenance")
+    ctx = context()
+    raise_for_status(
+        lib.polymass_mass_properties_with_provenance(
+            result, provenance, ctx, mesh.desc, desc, ffi.NULL
+        ),
+        ctx,
     )
+    return MassProperties._from_c(result, point, provenance)
 
 
 class Mesh:

@@ -15,6 +15,7 @@ use crate::moments::Moments;
 use crate::options::Options;
 use crate::polygon::PolygonProperties;
 use crate::properties::MassProperties;
+use crate::provenance::Provenance;
 use crate::shell::Shell;
 use crate::surface::{struct_size, Surface};
 
@@ -221,6 +222,64 @@ impl Context {
         self.result(status)?;
         // SAFETY: zero-initialised, and filled on success.
         Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
+    }
+
+    /// [`mass_properties`](Context::mass_properties) by the options' chain of
+    /// modes ([`Options::repair`](crate::Options::repair),
+    /// [`Options::fallback`](crate::Options::fallback), ...), and which mode
+    /// answered, with what it did.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, Mode, Options, Surface};
+    ///
+    /// // A fin on an edge of a tetrahedron: no repair is the right one; the hull answers.
+    /// let positions = [
+    ///     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [2.0, 2.0, -1.0],
+    /// ];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 2, 4]];
+    /// let options = Options::new().fallback(&[Mode::Repair, Mode::Hull]);
+    /// let mut context = Context::with_options(&options)?;
+    /// let surface = Surface::triangles(&positions, &triangles);
+    /// let (p, provenance) = context.mass_properties_with_provenance(&surface, &Body::default())?;
+    /// assert_eq!(provenance.mode, Mode::Hull);
+    /// assert_eq!(provenance.hull_vertex_count, 5);
+    /// assert!(p.warnings.contains(polymass::Warnings::HULL));
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn mass_properties_with_provenance(
+        &mut self,
+        surface: &Surface<'_>,
+        body: &Body,
+    ) -> Result<(MassProperties, Provenance)> {
+        let desc = surface.desc();
+        let mass = body.to_raw();
+        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
+        let mut provenance = MaybeUninit::<sys::polymass_provenance>::zeroed();
+        // SAFETY: as in mesh_mass_properties (both outputs zeroed, sized).
+        unsafe {
+            (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>();
+            (*provenance.as_mut_ptr()).struct_size = struct_size::<sys::polymass_provenance>();
+        }
+        // SAFETY: live context, this thread only; desc points into slices
+        // borrowed by `surface`; the outputs, desc and mass outlive the call.
+        let status = unsafe {
+            sys::polymass_mass_properties_with_provenance(
+                out.as_mut_ptr(),
+                provenance.as_mut_ptr(),
+                self.raw.as_ptr(),
+                &desc,
+                &mass,
+                std::ptr::null(),
+            )
+        };
+        self.result(status)?;
+        // SAFETY: zero-initialised, and filled on success.
+        Ok(unsafe {
+            (
+                MassProperties::from_raw(out.assume_init_ref()),
+                Provenance::from_raw(provenance.assume_init_ref()),
+            )
+        })
     }
 
     /// Runs every check on a surface without stopping at the first finding

@@ -22,7 +22,7 @@ pub struct Occurrences<L> {
 }
 
 impl Occurrences<u64> {
-    fn new(count: u64, first: &[u64]) -> Self {
+    pub(crate) fn new(count: u64, first: &[u64]) -> Self {
         let first = first
             .iter()
             .copied()
@@ -35,7 +35,7 @@ impl Occurrences<u64> {
 }
 
 impl Occurrences<[u64; 2]> {
-    fn new(count: u64, first: &[[u64; 2]]) -> Self {
+    pub(crate) fn new(count: u64, first: &[[u64; 2]]) -> Self {
         let first = first
             .iter()
             .copied()

@@ -67,6 +67,7 @@ mod moments;
 mod options;
 mod polygon;
 mod properties;
+mod provenance;
 mod shell;
 mod surface;
 
@@ -78,9 +79,10 @@ pub use diagnostics::{Diagnostics, Occurrences};
 pub use error::{Error, ErrorKind, Result};
 pub use mesh::Mesh;
 pub use moments::Moments;
-pub use options::Options;
+pub use options::{Mode, Options};
 pub use polygon::{Orientation, PolygonProperties, SecondMoments};
 pub use properties::{ErrorBound, MassProperties, Warnings};
+pub use provenance::Provenance;
 pub use shell::{Shell, ShellKind};
 pub use surface::{Index, Surface, Vertex};
 

@@ -24,6 +24,46 @@ pub struct Options {
     flags: u32,
     planarity_tolerance: f64,
     weld_tolerance: f64,
+    modes: [u32; sys::POLYMASS_MAX_MODES as usize],
+    shell_thickness: f64,
+}
+
+/// How a surface becomes a body (`POLYMASS_MODE_*`): see
+/// [`Options::repair`], [`Options::shell`], [`Options::hull`] and
+/// [`Options::fallback`], and [`Provenance::mode`](crate::Provenance::mode)
+/// for the one that answered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Mode {
+    /// Exact for a valid closed solid; otherwise the solid's error.
+    Solid,
+    /// The surface repaired where the fix is unique, each fix recorded.
+    Repair,
+    /// The surface as a thin wall of the options' shell thickness.
+    Shell,
+    /// The convex hull of the vertices.
+    Hull,
+}
+
+impl Mode {
+    pub(crate) fn to_raw(self) -> u32 {
+        match self {
+            Mode::Solid => sys::POLYMASS_MODE_SOLID,
+            Mode::Repair => sys::POLYMASS_MODE_REPAIR,
+            Mode::Shell => sys::POLYMASS_MODE_SHELL,
+            Mode::Hull => sys::POLYMASS_MODE_HULL,
+        }
+    }
+
+    pub(crate) fn from_raw(raw: u32) -> Option<Mode> {
+        match raw {
+            sys::POLYMASS_MODE_SOLID => Some(Mode::Solid),
+            sys::POLYMASS_MODE_REPAIR => Some(Mode::Repair),
+            sys::POLYMASS_MODE_SHELL => Some(Mode::Shell),
+            sys::POLYMASS_MODE_HULL => Some(Mode::Hull),
+            _ => None,
+        }
+    }
 }
 
 impl Options {
@@ -155,6 +195,106 @@ impl Options {
         self
     }
 
+    fn with_modes(mut self, modes: &[Mode]) -> Options {
+        self.modes = [sys::POLYMASS_MODE_NONE; sys::POLYMASS_MAX_MODES as usize];
+        for (slot, mode) in self.modes.iter_mut().zip(modes) {
+            *slot = mode.to_raw();
+        }
+        self
+    }
+
+    /// Repair a surface that is not a valid solid where the fix is unique
+    /// (orientation, duplicate and two-vertex faces, non-planar polygons,
+    /// holes, balanced non-manifold edges); a valid solid is answered exactly
+    /// as without. [`Context::mass_properties_with_provenance`](crate::Context::mass_properties_with_provenance)
+    /// says what was done; the error bound says how far off it can be.
+    /// `false` goes back to the solid alone.
+    ///
+    /// ```
+    /// use polymass::{Body, Context, Mode, Options, Surface};
+    ///
+    /// // The unit corner tetrahedron without its slanted face: open.
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
+    /// let mut context = Context::with_options(&Options::new().repair(true))?;
+    /// let surface = Surface::triangles(&positions, &triangles);
+    /// let (p, provenance) = context.mass_properties_with_provenance(&surface, &Body::default())?;
+    /// assert_eq!(provenance.mode, Mode::Repair);
+    /// assert_eq!(provenance.holes.count, 1);
+    /// assert!((p.volume - 1.0 / 6.0).abs() <= p.error_bound.volume);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn repair(self, on: bool) -> Options {
+        self.with_modes(if on { &[Mode::Repair] } else { &[] })
+    }
+
+    /// The surface as a thin wall of this thickness (mass = density ·
+    /// thickness · area), open or not: sheet metal, visual meshes.
+    ///
+    /// ```
+    /// let options = polymass::Options::new().shell(0.002);
+    /// assert_eq!(options.modes(), vec![polymass::Mode::Shell]);
+    /// assert_eq!(options.shell_thickness_value(), 0.002);
+    /// ```
+    pub fn shell(mut self, thickness: f64) -> Options {
+        self.shell_thickness = thickness;
+        self.with_modes(&[Mode::Shell])
+    }
+
+    /// The convex hull of the vertices (an upper bound of the solid).
+    ///
+    /// ```
+    /// assert_eq!(polymass::Options::new().hull(true).modes(), vec![polymass::Mode::Hull]);
+    /// ```
+    pub fn hull(self, on: bool) -> Options {
+        self.with_modes(if on { &[Mode::Hull] } else { &[] })
+    }
+
+    /// Modes tried in order after the solid, the first that answers giving
+    /// the answer (at most three; a shell wants [`shell_thickness`](Options::shell_thickness)).
+    ///
+    /// ```
+    /// use polymass::{Mode, Options};
+    ///
+    /// let options = Options::new().fallback(&[Mode::Repair, Mode::Hull]);
+    /// assert_eq!(options.modes(), vec![Mode::Solid, Mode::Repair, Mode::Hull]);
+    /// ```
+    pub fn fallback(self, modes: &[Mode]) -> Options {
+        let chain: Vec<Mode> = std::iter::once(Mode::Solid)
+            .chain(modes.iter().copied())
+            .collect();
+        self.with_modes(&chain)
+    }
+
+    /// The wall thickness of [`Mode::Shell`] in a [`fallback`](Options::fallback).
+    pub fn shell_thickness(mut self, thickness: f64) -> Options {
+        self.shell_thickness = thickness;
+        self
+    }
+
+    /// The modes tried, in order (the solid alone by default).
+    ///
+    /// ```
+    /// assert_eq!(polymass::Options::new().modes(), vec![polymass::Mode::Solid]);
+    /// ```
+    pub fn modes(&self) -> Vec<Mode> {
+        let modes: Vec<Mode> = self
+            .modes
+            .iter()
+            .map_while(|&raw| Mode::from_raw(raw))
+            .collect();
+        if modes.is_empty() {
+            vec![Mode::Solid]
+        } else {
+            modes
+        }
+    }
+
+    /// The shell thickness (0: none given).
+    pub fn shell_thickness_value(&self) -> f64 {
+        self.shell_thickness
+    }
+
     /// Whether the topology checks are skipped.
     ///
     /// ```
@@ -226,6 +366,8 @@ impl Options {
             flags: self.flags,
             planarity_tolerance: self.planarity_tolerance,
             weld_tolerance: self.weld_tolerance,
+            modes: self.modes,
+            shell_thickness: self.shell_thickness,
         }
     }
 
@@ -236,6 +378,8 @@ impl Options {
             flags: raw.flags,
             planarity_tolerance: raw.planarity_tolerance,
             weld_tolerance: raw.weld_tolerance,
+            modes: raw.modes,
+            shell_thickness: raw.shell_thickness,
         }
     }
 }

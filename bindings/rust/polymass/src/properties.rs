@@ -144,6 +144,12 @@ impl Warnings {
     /// [`Options::check_intersections`](crate::Options::check_intersections),
     /// and listed by [`Diagnostics::touching_face_pairs`](crate::Diagnostics::touching_face_pairs).
     pub const TOUCHING_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_TOUCHING_FACES);
+    /// Not a valid solid: the surface was repaired ([`Options::repair`](crate::Options::repair)).
+    pub const REPAIRED: Warnings = Warnings(sys::POLYMASS_WARNING_REPAIRED);
+    /// Computed as a thin wall ([`Options::shell`](crate::Options::shell)).
+    pub const SHELL: Warnings = Warnings(sys::POLYMASS_WARNING_SHELL);
+    /// The convex hull, not the solid ([`Options::hull`](crate::Options::hull)).
+    pub const HULL: Warnings = Warnings(sys::POLYMASS_WARNING_HULL);
 
     /// Whether every bit of `other` is set.
     ///
