@@ -102,12 +102,39 @@ MomentsResult whole_moments(const Library& library, const std::vector<Integrated
     return total;
 }
 
+// With modes beyond the exact solid (--repair, --shell, --hull, --fallback),
+// each part and the whole are answered by the chain, each with its own
+// provenance: moments add up exactly only when every part is an exact solid,
+// and a whole the solid mode refuses (parts crossing each other) may still
+// have an approximate answer. Each face is then integrated twice.
+void report_by_chain(const Library& library, const Model& model,
+                     const std::vector<polymass_mass_desc>& masses,
+                     const polymass_mass_desc& file_mass, FileReport& report) {
+    report.solid = counted(model, combined_part(model));
+    set_result(report.solid, compute_solid(library, model, combined_part(model), file_mass));
+    const SolidResult& whole = report.solid.result;
+    const bool whole_mass = file_mass.mass_mode == POLYMASS_MASS_FROM_TOTAL;
+    for (size_t k = 0; k < model.parts.size(); ++k) {
+        PartReport part = counted(model, model.parts[k]);
+        if (!whole_mass || whole.status == POLYMASS_OK) {
+            const polymass_mass_desc mass =
+                whole_mass ? with_density(file_mass, whole.properties.density) : masses[k];
+            set_result(part, compute_solid(library, model, model.parts[k], mass));
+        }
+        report.parts.push_back(std::move(part));
+    }
+}
+
 }  // namespace
 
 void report_parts(const Library& library, const std::string& path, const Model& model,
                   const Arguments& arguments, const polymass_mass_desc& file_mass,
                   FileReport& report) {
     const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
+    if (arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID}) {
+        report_by_chain(library, model, masses, file_mass, report);
+        return;
+    }
     const polymass_options options = options_for(arguments);
     // The whole's intersection check (below) sees every part's faces, and
     // crossings between parts too: each part is checked without it.
