@@ -549,6 +549,16 @@ class PartMaterials(Case):
         result, out = test_cli.run_json("--no-intersection-check", path)
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
         self.assertEqual(out["volume"], 2.0)
+        # A chain beyond the solid mode answers the whole by itself: the two
+        # cubes' hull is the unit cube swept along v = (0.5, 0.5, 0.5), of
+        # volume 1 + |v| * (the cube's shadow along v, sqrt(3)) = 2.5; each
+        # part is still an exact solid.
+        result, out = test_cli.run_json("--fallback", "repair,hull", path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["provenance"]["mode"], "hull")
+        self.assertAlmostEqual(out["volume"], 2.5, places=12)
+        self.assertEqual([p["provenance"]["mode"] for p in out["parts"]], ["solid", "solid"])
+        self.assertEqual([p["volume"] for p in out["parts"]], [1.0, 1.0])
 
 
 if __name__ == "__main__":
