@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 #include "model/units.hpp"
 #include "readers/mesh_reader.hpp"
@@ -19,7 +20,8 @@ namespace {
 // The options as CLI11 hands them over: text, read into Arguments afterwards.
 struct RawOptions {
     std::vector<std::string> files;
-    std::string density, mass, scale, units, about, origin, weld_tolerance, planarity_tolerance;
+    std::vector<std::string> densities, masses;  // D or NAME=D, repeatable
+    std::string scale, units, about, origin, weld_tolerance, planarity_tolerance;
     bool json = false, urdf = false, sdf = false, mjcf = false;
     std::string from, mass_from;  // polymass audit
 };
@@ -50,15 +52,46 @@ std::array<double, 3> parse_point(std::string_view option, std::string_view what
     return point;
 }
 
+// --density or --mass: V gives the whole file's (once), NAME=V a part's.
+void read_mass_value(const std::string& option, const std::string& text, bool by_mass,
+                     std::optional<double>& whole, std::vector<PartMaterial>& parts) {
+    const std::string::size_type equals = text.rfind('=');
+    if (equals == std::string::npos) {
+        if (whole) {
+            throw UsageError(option + " is given twice (" + option +
+                             " NAME=V gives the parts named NAME theirs)");
+        }
+        whole = positive_number(option, text);
+        return;
+    }
+    const std::string name = text.substr(0, equals);
+    if (name.empty()) {
+        throw UsageError(option + " NAME=V wants a part's name before '=', not '" + text + "'");
+    }
+    for (const PartMaterial& given : parts) {
+        if (given.part == name) throw UsageError("the part '" + name + "' is given twice");
+    }
+    const std::string_view value = std::string_view(text).substr(equals + 1);
+    parts.push_back({name, by_mass, positive_number(option + " " + name + "=", value)});
+}
+
 // The options of both polymass and polymass check, bound to raw. Help is
 // grouped as the README's tool section is.
 void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
     const std::string kOutput = "Output (default: a table for people)";
     app.add_option("FILE", raw.files, "mesh files")->option_text(" ");
-    app.add_option("--density", raw.density, "mass = D * volume (default 1: mass equals volume)")
+    app.add_option("--density", raw.densities,
+                   "mass = D * volume (default 1: mass equals volume);\n"
+                   "NAME=D: the density of the parts named NAME (repeatable)")
         ->group("Mass")
-        ->option_text("D");
-    app.add_option("--mass", raw.mass, "density = M / volume")->group("Mass")->option_text("M");
+        ->option_text("D|NAME=D")
+        ->allow_extra_args(false);
+    app.add_option("--mass", raw.masses,
+                   "density = M / volume; NAME=M: the mass of the parts\n"
+                   "named NAME, the others keeping --density (repeatable)")
+        ->group("Mass")
+        ->option_text("M|NAME=M")
+        ->allow_extra_args(false);
     app.add_option("--units", raw.units,
                    std::string("the file's length unit, converted to metres: ") + known_units() +
                        "\n(e.g. a CAD STL in millimetres: --units mm --density 2700\n"
@@ -127,8 +160,13 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
     if (raw.urdf) arguments.output = OutputFormat::kUrdf;
     if (raw.sdf) arguments.output = OutputFormat::kSdf;
     if (raw.mjcf) arguments.output = OutputFormat::kMjcf;
-    if (!raw.density.empty()) arguments.density = positive_number("--density", raw.density);
-    if (!raw.mass.empty()) arguments.mass = positive_number("--mass", raw.mass);
+    for (const std::string& text : raw.densities)
+        read_mass_value("--density", text, false, arguments.density, arguments.part_materials);
+    for (const std::string& text : raw.masses)
+        read_mass_value("--mass", text, true, arguments.mass, arguments.part_materials);
+    if (arguments.mass && !arguments.part_materials.empty()) {
+        throw UsageError("give the whole's --mass M or parts' --density/--mass NAME=V, not both");
+    }
     if (!raw.scale.empty()) arguments.scale = positive_number("--scale", raw.scale);
     if (!raw.units.empty()) {
         double metres = 0.0;
@@ -171,6 +209,25 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
     }
 }
 
+// An assembly file gives each part's mesh, units and material itself.
+void refuse_assembly_settings(const RawOptions& raw, const Arguments& arguments) {
+    if (arguments.files.size() > 1) {
+        throw UsageError("polymass assembly reads one assembly file, not " +
+                         std::to_string(arguments.files.size()));
+    }
+    const std::pair<bool, const char*> per_part[] = {{!raw.densities.empty(), "--density"},
+                                                     {!raw.masses.empty(), "--mass"},
+                                                     {!raw.units.empty(), "--units"},
+                                                     {!raw.scale.empty(), "--scale"},
+                                                     {!arguments.format.empty(), "--format"}};
+    for (const auto& [given, option] : per_part) {
+        if (given) {
+            throw UsageError(std::string("polymass assembly: ") + option +
+                             " is given per part in the assembly file");
+        }
+    }
+}
+
 // polymass audit's options: its own, and --json and --density shared with
 // the other commands' RawOptions.
 void add_audit_options(CLI::App& app, RawOptions& raw, AuditArguments& audit) {
@@ -187,7 +244,7 @@ void add_audit_options(CLI::App& app, RawOptions& raw, AuditArguments& audit) {
                    "write the description with the computed inertials to OUT\n"
                    "(one FILE; declared masses kept unless --density or --mass-from)")
         ->option_text("OUT");
-    app.add_option("--density", raw.density,
+    app.add_option("--density", raw.densities,
                    "kg/m^3: links without a mass are computed at D (default 1000);\n"
                    "with --fix, every mass becomes D * volume")
         ->option_text("D");
@@ -228,7 +285,8 @@ std::string description() {
     return std::string(
                "polymass - mass properties of solid meshes: volume, mass, centre of mass,\n"
                "inertia tensor, principal moments and axes, surface area; polymass check\n"
-               "FILE... says whether each file is a valid closed solid, and why not.\n"
+               "FILE... says whether each file is a valid closed solid, and why not;\n"
+               "polymass assembly FILE.json gives each placed part and the whole.\n"
                "\n"
                "Formats (by extension, or --format NAME): ") +
            supported_formats() +
@@ -237,11 +295,13 @@ std::string description() {
            "A file with several objects/solids/nodes gives each part and the combined solid.";
 }
 
-// The command line's grammar: polymass [OPTIONS] FILE... and polymass check
-// [OPTIONS] FILE..., both with the same options.
+// The command line's grammar: polymass [OPTIONS] FILE..., polymass check
+// [OPTIONS] FILE... and polymass assembly [OPTIONS] FILE, with the same options;
+// polymass audit [OPTIONS] FILE... with its own.
 struct CommandLine {
     CLI::App app{description(), "polymass"};
     CLI::App* check = nullptr;
+    CLI::App* assembly = nullptr;
     CLI::App* audit = nullptr;
     RawOptions raw;
     bool version = false;
@@ -253,6 +313,12 @@ struct CommandLine {
         check->footer(kFooter);
         add_options(app, raw, arguments);
         add_options(*check, raw, arguments);
+        assembly = app.add_subcommand(
+            "assembly",
+            "each part of an assembly file (JSON: meshes placed, each with its\n"
+            "units and density or mass; the schema is in the README) and the whole");
+        assembly->footer(kFooter);
+        add_options(*assembly, raw, arguments);
         audit = app.add_subcommand("audit",
                                    "check (and --fix) the inertials of URDF, SDFormat and MJCF "
                                    "robot descriptions against their geometry");
@@ -279,6 +345,7 @@ Arguments parse_arguments(int argc, const char* const* argv) {
         return arguments;
     }
     if (line.check->parsed()) arguments.command = Command::kCheck;
+    if (line.assembly->parsed()) arguments.command = Command::kAssembly;
     if (line.audit->parsed()) {
         arguments.command = Command::kAudit;
         arguments.audit.from_visual = line.raw.from == "visual";
@@ -291,6 +358,10 @@ Arguments parse_arguments(int argc, const char* const* argv) {
         }
     }
     read_values(line.raw, arguments);
+    if (arguments.command == Command::kAssembly) refuse_assembly_settings(line.raw, arguments);
+    if (arguments.command == Command::kAudit && !arguments.part_materials.empty()) {
+        throw UsageError("polymass audit: --density takes one density in kg/m^3, not NAME=D");
+    }
     if (arguments.files.empty()) {
         throw UsageError(arguments.command == Command::kAudit
                              ? "no description file given (see polymass audit --help)"

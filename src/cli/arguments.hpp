@@ -9,9 +9,16 @@
 
 namespace polymass_cli {
 
-enum class Command { kProperties, kCheck, kHelp, kVersion, kAudit };
+enum class Command { kProperties, kCheck, kHelp, kVersion, kAssembly, kAudit };
 enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf };
 enum class About { kCenterOfMass, kOrigin, kPoint };
+
+// --density NAME=D or --mass NAME=M: the material of the parts named NAME.
+struct PartMaterial {
+    std::string part;
+    bool by_mass = false;  // value is the part's mass, not its density
+    double value = 1.0;
+};
 
 // polymass audit's own options.
 struct AuditArguments {
@@ -28,7 +35,8 @@ struct Arguments {
     std::string format;  // --format: empty means by extension
     std::optional<double> density;
     std::optional<double> mass;
-    double scale = 1.0;  // --scale alone
+    std::vector<PartMaterial> part_materials;  // in the order given
+    double scale = 1.0;                        // --scale alone
     // --units resolved: metres per file unit; empty: lengths are the file's.
     std::optional<double> metres_per_unit;
     About about = About::kCenterOfMass;

@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
                 return run_check(arguments);
             case Command::kProperties:
                 return run_properties(arguments);
+            case Command::kAssembly:
+                return run_assembly(arguments);
             case Command::kAudit:
                 return run_audit(arguments);
         }

@@ -44,20 +44,22 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
     // its item below it, sorted together.
     std::pmr::vector<std::uint64_t> keys(memory);
     keys.reserve(boxes.size());
-    double scale[3], extent = 0;
+    double width[3], extent = 0;
     for (int k = 0; k < 3; ++k) {
-        const double width = double(all.hi[k]) - double(all.lo[k]);
-        scale[k] = width > 0 ? 1023.0 / width : 0.0;
-        extent = std::max(extent, width);
+        width[k] = double(all.hi[k]) - double(all.lo[k]);
+        extent = std::max(extent, width[k]);
     }
     for (std::size_t item = 0; item < boxes.size(); ++item) {
         const FloatBox& box = boxes[item];
         std::uint32_t code = 0;
         if (box.lo[0] <= box.hi[0]) {  // empty boxes anywhere: they meet nothing
             for (int k = 0; k < 3; ++k) {
+                // The centre's place across the width, divided rather than
+                // scaled (1023 / width overflows for a subnormal width); a
+                // NaN from an infinite width goes to cell 0, not into a cast.
                 const double centre = 0.5 * (double(box.lo[k]) + double(box.hi[k]));
-                const double cell =
-                    std::clamp((centre - double(all.lo[k])) * scale[k], 0.0, 1023.0);
+                const double across = (centre - double(all.lo[k])) / width[k];
+                const double cell = across > 0 ? std::min(1023.0 * across, 1023.0) : 0.0;
                 code |= spread_bits(std::uint32_t(cell)) << k;
             }
         }

@@ -289,6 +289,25 @@ static void test_inside_out_shells(void** state) {
     pm_mesh_free(&m);
 }
 
+/* Overlapping cubes of subnormal size (2^-1050: every corner still exact) are
+   still found to cross; the search's grid over them must not overflow (it
+   once scaled by 1023 / width, infinite for a subnormal width). */
+static void test_subnormal_surfaces(void** state) {
+    const double scale = ldexp(1.0, -1050);
+    pm_mesh m;
+    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_diagnostics d;
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, scale, scale, scale, 1, 0);
+    box(&m, 0.5 * scale, 0.5 * scale, 0.5 * scale, 1.5 * scale, 1.5 * scale, 1.5 * scale, 1, 0);
+    pm_diagnostics_init(&d);
+    pm_check(&d, ctx, &m);
+    assert_true(d.intersecting_face_pairs >= 3);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
 static void test_report_lists_pairs_and_shells(void** state) {
     pm_mesh m;
     polymass_context* ctx = pm_context_new(CHECKED);
@@ -419,6 +438,7 @@ int main(void) {
         cmocka_unit_test(test_solid_inside_a_solid_counts_twice),
         cmocka_unit_test(test_inside_out_shells),
         cmocka_unit_test(test_report_lists_pairs_and_shells),
+        cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -47,3 +47,32 @@ def test_per_item_values_are_checked():
     with pytest.raises(ValueError, match="density has 1 values for 2 meshes"):
         polymass.batch(_meshes()[:2], density=[1.0])
     assert polymass.batch([]) == []
+
+
+def test_threads_give_the_results_of_one_thread():
+    rng = np.random.default_rng(12)
+    meshes = [SHAPES[name](rng) for name in sorted(SHAPES) for _ in range(6)]
+    vertices, faces = SHAPES["hull"](rng)
+    meshes[5] = (vertices, np.asarray(faces)[1:])  # open: its error stays at its place
+    densities = np.linspace(1.0, 3.0, len(meshes))
+    serial = polymass.batch(meshes, density=densities, about=(1.0, 2.0, 3.0))
+    for threads in (2, 3, 8):
+        threaded = polymass.batch(meshes, density=densities, about=(1.0, 2.0, 3.0), threads=threads)
+        assert len(threaded) == len(serial)
+        for one, many in zip(serial, threaded):
+            assert type(one) is type(many)
+            if isinstance(one, polymass.Error):
+                assert str(one) == str(many)
+                continue
+            assert one.mass == many.mass and one.volume == many.volume
+            assert np.array_equal(one.inertia_point, many.inertia_point)
+            assert np.array_equal(one.principal_axes, many.principal_axes)
+            assert one.error_bound == many.error_bound
+    assert isinstance(serial[5], polymass.OpenSurfaceError)
+
+
+def test_threads_must_be_a_positive_integer():
+    for threads in (0, -1, 1.5, True, "2"):
+        with pytest.raises(ValueError, match="threads must be a positive integer"):
+            polymass.batch(_meshes(), threads=threads)
+    assert polymass.batch([], threads=4) == []

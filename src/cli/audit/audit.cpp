@@ -7,11 +7,10 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "audit/judge.hpp"
 #include "audit/measure.hpp"
-#include "library/moments.hpp"
+#include "library/solid_moments.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -34,20 +33,18 @@ const std::vector<Geometry>& chosen_geometry(const Link& link, GeometrySource fr
     return second;
 }
 
-Computed computed_from(const Library& library, const polymass_moments& moments, double mass,
+Computed computed_from(const polymass_mass_properties& p,
                        const std::vector<Eigen::Vector3d>& points) {
-    const polymass_mass_properties p = properties_at_mass(library, moments, mass, {0, 0, 0});
+    using RowMajor = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>;
     Computed computed;
     computed.volume = p.volume;
     computed.mass = p.mass;
     computed.density = p.density;
     computed.center_of_mass = Eigen::Vector3d(p.center_of_mass);
-    computed.inertia = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.inertia);
-    computed.inertia_origin =
-        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.inertia_point);
+    computed.inertia = RowMajor(p.inertia);
+    computed.inertia_origin = RowMajor(p.inertia_point);
     computed.principal_moments = Eigen::Vector3d(p.principal_moments);
-    computed.principal_axes =
-        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.principal_axes);
+    computed.principal_axes = RowMajor(p.principal_axes);
     computed.box_min = computed.box_max = points.front();
     for (const Eigen::Vector3d& point : points) {
         computed.box_min = computed.box_min.cwiseMin(point);
@@ -64,23 +61,31 @@ bool has_mass(const std::optional<Inertial>& declared) {
 // The link's bodies as one, at the declared mass (or the density), judged.
 void add_up(const Library& library, const std::vector<Measured>& bodies,
             const AuditSettings& settings, LinkAudit& audit) {
-    try {
-        polymass_moments total = bodies.front().moments;
-        std::vector<Eigen::Vector3d> points = bodies.front().points;
-        for (std::size_t i = 1; i < bodies.size(); ++i) {
-            total = added_moments(library, total, bodies[i].moments);
-            points.insert(points.end(), bodies[i].points.begin(), bodies[i].points.end());
-        }
-        const double mass =
-            has_mass(audit.declared) ? audit.declared->mass : settings.density * total.volume;
-        audit.computed = computed_from(library, total, mass, points);
-    } catch (const std::runtime_error& error) {
-        // The library refused the sum (a result out of range).
-        audit.findings.push_back(
-            {"bad_geometry", Severity::kError,
-             std::string("the link's geometry cannot be added up: ") + error.what()});
+    std::vector<polymass_moments> moments;
+    std::vector<Eigen::Vector3d> points;
+    for (const Measured& body : bodies) {
+        moments.push_back(body.moments);
+        points.insert(points.end(), body.points.begin(), body.points.end());
+    }
+    MomentsResult total = sum(library, moments);
+    if (total.status == POLYMASS_OK) {
+        polymass_mass_desc mass{};
+        polymass_mass_desc_init(&mass, sizeof mass);
+        mass.mass_mode = POLYMASS_MASS_FROM_TOTAL;
+        mass.mass = has_mass(audit.declared) ? audit.declared->mass
+                                             : settings.density * total.moments.volume;
+        total = weighted(library, total.moments, mass);
+    }
+    // Weighted, the body's inertia_point is about the link origin.
+    const SolidResult result = total.status == POLYMASS_OK
+                                   ? properties_of(library, total.moments, {0, 0, 0}, NAN, 0)
+                                   : SolidResult{total.status, total.message, {}};
+    if (result.status != POLYMASS_OK) {
+        audit.findings.push_back({"bad_geometry", Severity::kError,
+                                  "the link's geometry cannot be added up: " + result.message});
         return;
     }
+    audit.computed = computed_from(result.properties, points);
     if (has_mass(audit.declared)) {
         for (Finding& finding : judge_against_geometry(*audit.declared, *audit.computed)) {
             audit.findings.push_back(std::move(finding));
@@ -124,7 +129,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
     }
     std::vector<Measured> bodies;
     for (const Geometry& geometry : geometries) {
-        Measured measured = measure_geometry(library, geometry, description.path);
+        Measured measured = measure_geometry(library, settings.options, geometry, description.path);
         if (!measured.ok) {
             const Severity severity =
                 measured.kind == "not_a_solid" ? Severity::kWarning : Severity::kError;

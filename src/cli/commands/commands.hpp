@@ -6,6 +6,7 @@
 #include "arguments.hpp"
 #include "exit_codes.hpp"
 #include "model/model.hpp"
+#include "reports/report.hpp"
 
 namespace polymass_cli {
 
@@ -14,6 +15,13 @@ ExitCode run_properties(const Arguments& arguments);
 
 // polymass check FILE...: the diagnostics of each file.
 ExitCode run_check(const Arguments& arguments);
+
+// polymass assembly FILE: each placed part of an assembly file and the whole.
+ExitCode run_assembly(const Arguments& arguments);
+
+// Writes the reports in the output format the command line chose, with
+// errors, warnings and notes on stderr; returns the highest exit status.
+ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& arguments);
 
 // polymass audit FILE...: robot descriptions' inertials against their
 // geometry (exit 0, or 1 when a finding reaches --fail-on).

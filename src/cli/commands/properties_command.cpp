@@ -3,6 +3,8 @@
 #include <iostream>
 
 #include "commands/commands.hpp"
+#include "commands/part_materials.hpp"
+#include "commands/parts_report.hpp"
 #include "library/categories.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/report.hpp"
@@ -12,18 +14,6 @@ namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-uint64_t used_vertices(const Model& model, const Part& part) {
-    std::vector<bool> used(model.vertex_count(), false);
-    uint64_t count = 0;
-    for (const uint32_t index : part.indices) {
-        if (index < used.size() && !used[index]) {
-            used[index] = true;
-            ++count;
-        }
-    }
-    return count;
 }
 
 PartReport solid_report(const Library& library, const Model& model, const Part& part,
@@ -38,7 +28,7 @@ PartReport solid_report(const Library& library, const Model& model, const Part& 
 }
 
 FileReport process_file(const Library& library, const std::string& path, const Arguments& arguments,
-                        polymass_mass_desc mass) {
+                        const polymass_mass_desc& mass) {
     FileReport report;
     report.path = path;
     const auto read_start = std::chrono::steady_clock::now();
@@ -59,25 +49,12 @@ FileReport process_file(const Library& library, const std::string& path, const A
     report.read_seconds = seconds_since(read_start);
 
     const auto compute_start = std::chrono::steady_clock::now();
-    report.solid = solid_report(library, model, combined_part(model), mass);
     if (model.parts.size() > 1) {
-        // Parts get the combined solid's density, so their masses add up to it.
-        const bool density_known = report.solid.result.status == POLYMASS_OK || !arguments.mass;
-        if (report.solid.result.status == POLYMASS_OK) {
-            mass.mass_mode = POLYMASS_MASS_FROM_DENSITY;
-            mass.density = report.solid.result.properties.density;
-        }
-        for (const Part& part : model.parts) {
-            if (density_known) {
-                report.parts.push_back(solid_report(library, model, part, mass));
-            } else {
-                PartReport counts;
-                counts.name = part.name;
-                counts.vertices = used_vertices(model, part);
-                counts.faces = part.face_sizes.size();
-                report.parts.push_back(counts);
-            }
-        }
+        report_parts(library, path, model, arguments, mass, report);
+    } else {
+        // One part: --density/--mass NAME=V may still name it.
+        report.solid = solid_report(library, model, model.parts.front(),
+                                    part_masses(arguments, path, model, mass).front());
     }
     report.compute_seconds = seconds_since(compute_start);
     return report;
@@ -119,15 +96,22 @@ ExitCode run_properties(const Arguments& arguments) {
     }
 
     std::vector<FileReport> files;
-    ExitCode worst = kExitOk;
     for (const std::string& path : arguments.files) {
         files.push_back(process_file(library, path, arguments, mass));
         const FileReport& file = files.back();
-        worst = std::max(worst, file.exit_code());
         if (arguments.timings && file.readable) {
             std::cerr << "polymass: " << path << ": read " << file.read_seconds << " s, compute "
                       << file.compute_seconds << " s\n";
         }
+    }
+    return write_reports(files, arguments);
+}
+
+ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& arguments) {
+    ExitCode worst = kExitOk;
+    for (const FileReport& file : files) {
+        worst = std::max(worst, file.exit_code());
+        const std::string& path = file.path;
         // The table shows errors itself; the machine formats keep stdout clean.
         if (arguments.output != OutputFormat::kTable && file.exit_code() != kExitOk) {
             std::cerr << "polymass: " << path << ": "

@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 namespace polymass_cli {
-namespace {
 
 polymass_mesh_desc describe(const Model& model, const Part& part) {
     polymass_mesh_desc desc{};
@@ -19,8 +18,6 @@ polymass_mesh_desc describe(const Model& model, const Part& part) {
     desc.face_count = part.face_sizes.size();
     return desc;
 }
-
-}  // namespace
 
 Library::Library(const polymass_options& options) {
     const int32_t created = polymass_context_create(&context_, nullptr);
@@ -46,15 +43,6 @@ SolidResult compute_solid(const Library& library, const Model& model, const Part
     result.properties.struct_size = sizeof result.properties;
     result.status =
         polymass_mass_properties_compute(&result.properties, library.context(), &desc, &mass);
-    if (result.status != POLYMASS_OK) result.message = library.message();
-    return result;
-}
-
-MomentsResult compute_moments(const Library& library, const Model& model, const Part& part) {
-    const polymass_mesh_desc desc = describe(model, part);
-    MomentsResult result;
-    result.moments.struct_size = sizeof result.moments;
-    result.status = polymass_moments_compute(&result.moments, library.context(), &desc, nullptr);
     if (result.status != POLYMASS_OK) result.message = library.message();
     return result;
 }

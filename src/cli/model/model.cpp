@@ -13,6 +13,18 @@ Part combined_part(const Model& model) {
     return all;
 }
 
+uint64_t used_vertices(const Model& model, const Part& part) {
+    std::vector<bool> used(model.vertex_count(), false);
+    uint64_t count = 0;
+    for (const uint32_t index : part.indices) {
+        if (index < used.size() && !used[index]) {
+            used[index] = true;
+            ++count;
+        }
+    }
+    return count;
+}
+
 void scale_model(Model& model, double factor) {
     if (factor == 1.0) return;
     for (double& coordinate : model.positions) coordinate *= factor;

@@ -36,6 +36,9 @@ struct Model {
 // All faces of all parts as one part: the file's solid.
 Part combined_part(const Model& model);
 
+// How many distinct vertices (as the file numbers them) the part's faces use.
+uint64_t used_vertices(const Model& model, const Part& part);
+
 // Multiplies every coordinate by factor (unit conversion and --scale).
 void scale_model(Model& model, double factor);
 

@@ -1,0 +1,150 @@
+// polymass assembly FILE: each part's mesh read, validated and integrated
+// once, its moments converted to metres, weighted with its density or mass
+// and moved into the assembly's frame (polymass_moments_scale, _weight,
+// _transform), reported from those moments; the whole is their exact sum.
+// The parts are not checked against each other: parts that overlap count
+// twice (the report's notes say so).
+#include <algorithm>
+#include <iostream>
+#include <utility>
+
+#include "assembly/assembly_file.hpp"
+#include "commands/commands.hpp"
+#include "library/solid_moments.hpp"
+#include "readers/mesh_reader.hpp"
+
+namespace polymass_cli {
+namespace {
+
+inline constexpr const char* kNotCheckedNote =
+    "the parts are not checked against each other: parts that overlap count twice";
+
+// A part placed, or the step at which it failed.
+struct PlacedPart {
+    PartReport report;
+    polymass_moments moments{};  // in the assembly's frame, weighted
+};
+
+SolidResult failure(int32_t status, std::string message) {
+    SolidResult result;
+    result.status = status;
+    result.message = std::move(message);
+    return result;
+}
+
+// The part's moments through each step, stopping at the first refusal.
+PlacedPart place_part(const Library& library, const Model& model, const AssemblyPart& part,
+                      const Arguments& arguments) {
+    PlacedPart placed;
+    const Part whole = combined_part(model);
+    placed.report.name = part.name;
+    placed.report.vertices = used_vertices(model, whole);
+    placed.report.faces = whole.face_sizes.size();
+    placed.report.computed = true;
+    const IntegratedSolid solid(library, model, whole, options_for(arguments));
+    if (!solid.valid()) {
+        placed.report.result = solid.failure();
+        return placed;
+    }
+    polymass_mass_desc unit{};
+    polymass_mass_desc_init(&unit, sizeof unit);
+    const SolidResult own = solid.properties(library, unit);  // its surface area and warnings
+    if (own.status != POLYMASS_OK) {
+        placed.report.result = own;
+        return placed;
+    }
+    const double factor = part.metres_per_unit.value_or(1.0);
+    MomentsResult step{POLYMASS_OK, {}, solid.moments(library)};
+    if (factor != 1.0) step = scaled(library, step.moments, factor);
+    polymass_mass_desc material = unit;
+    material.mass_mode = part.by_mass ? POLYMASS_MASS_FROM_TOTAL : POLYMASS_MASS_FROM_DENSITY;
+    (part.by_mass ? material.mass : material.density) = part.value;
+    if (step.status == POLYMASS_OK) step = weighted(library, step.moments, material);
+    if (step.status == POLYMASS_OK)
+        step = transformed(library, step.moments, part.rotation, part.translation);
+    if (step.status != POLYMASS_OK) {
+        placed.report.result = failure(step.status, step.message);
+        return placed;
+    }
+    placed.moments = step.moments;
+    placed.report.result =
+        properties_of(library, step.moments, arguments.point,
+                      own.properties.surface_area * factor * factor, own.properties.warnings);
+    return placed;
+}
+
+FileReport assembly_report(const Library& library, const std::string& path,
+                           const Assembly& assembly, const Arguments& arguments) {
+    FileReport report;
+    report.path = path;
+    report.format = "assembly";
+    std::vector<polymass_moments> bodies;
+    double surface_area = 0.0;
+    uint32_t warnings = 0;
+    SolidResult broken;  // the first part that is not a valid solid
+    for (const AssemblyPart& part : assembly.parts) {
+        Model model;
+        try {
+            model = read_mesh_file(part.mesh, part.format);
+        } catch (const ReadError& error) {
+            report.read_error = path + ": " + part.where + ": " + error.what();
+            return report;
+        }
+        if (arguments.triangulate) triangulate_model(model);
+        for (const std::string& note : model.notes)
+            report.notes.push_back(part.where + ": " + note);
+        PlacedPart placed = place_part(library, model, part, arguments);
+        const SolidResult& result = placed.report.result;
+        if (result.status == POLYMASS_OK) {
+            bodies.push_back(placed.moments);
+            surface_area += result.properties.surface_area;
+            warnings |= result.properties.warnings;
+        } else if (broken.status == POLYMASS_OK) {
+            broken = failure(result.status, part.where + ": " + result.message);
+        }
+        report.parts.push_back(std::move(placed.report));
+    }
+    report.readable = true;
+    if (assembly.parts.size() > 1) report.notes.push_back(kNotCheckedNote);
+    report.solid.name = "assembly";
+    for (const PartReport& part : report.parts) {
+        report.solid.vertices += part.vertices;
+        report.solid.faces += part.faces;
+    }
+    report.solid.computed = true;
+    if (broken.status != POLYMASS_OK) {
+        report.solid.result = broken;
+        return report;
+    }
+    const MomentsResult total = sum(library, bodies);
+    report.solid.result =
+        total.status == POLYMASS_OK
+            ? properties_of(library, total.moments, arguments.point, surface_area, warnings)
+            : failure(total.status, total.message);
+    // One part is the whole: listing it again says nothing.
+    if (report.parts.size() == 1) report.parts.clear();
+    return report;
+}
+
+}  // namespace
+
+ExitCode run_assembly(const Arguments& arguments) {
+    const Library library(options_for(arguments));
+    const std::string& path = arguments.files.front();
+    Arguments settings = arguments;
+    FileReport report;
+    try {
+        const Assembly assembly = read_assembly_file(path);
+        // The results are in metres when the parts give their units.
+        if (assembly.in_metres) settings.metres_per_unit = 1.0;
+        report = assembly_report(library, path, assembly, arguments);
+    } catch (const AssemblyError& error) {
+        report.path = path;
+        report.read_error = error.what();
+    }
+    for (const std::string& note : report.notes)
+        std::cerr << "polymass: " << path << ": note: " << note << '\n';
+    return write_reports({report}, settings);
+}
+
+}  // namespace polymass_cli

@@ -1,0 +1,26 @@
+// The report of a file with several parts (OBJ objects, STL solids, glTF
+// nodes, 3MF build items): each part validated and integrated once, reported
+// from its own mass properties with its own density or mass, and the whole
+// file the exact sum of the parts' moments (docs/moments.md).
+#pragma once
+
+#include <polymass/polymass.h>
+
+#include <string>
+
+#include "arguments.hpp"
+#include "library/solid.hpp"
+#include "model/model.hpp"
+#include "reports/report.hpp"
+
+namespace polymass_cli {
+
+// Fills report.solid (the whole) and report.parts. file_mass is the command
+// line's density or total mass, with the --about point; library holds
+// options_for(arguments). Throws UsageError for --density/--mass NAME=V
+// naming no part of the file.
+void report_parts(const Library& library, const std::string& path, const Model& model,
+                  const Arguments& arguments, const polymass_mass_desc& file_mass,
+                  FileReport& report);
+
+}  // namespace polymass_cli
