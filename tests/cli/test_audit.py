@@ -331,6 +331,7 @@ class Geometry(AuditCase):
         self.assertEqual(run("audit", path, "--fail-on", "warning").returncode, 1)
         self.assertEqual(run("audit", directory / "none.urdf").returncode, 3)
         self.assertEqual(run("audit", path, "--fail-on", "fatal").returncode, 2)
+        self.assertEqual(run("audit", path, "--density", "steel=7850").returncode, 2)
 
 
 class Sdf(AuditCase):

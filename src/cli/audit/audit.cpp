@@ -7,7 +7,6 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "audit/judge.hpp"
 #include "audit/measure.hpp"
@@ -34,27 +33,18 @@ const std::vector<Geometry>& chosen_geometry(const Link& link, GeometrySource fr
     return second;
 }
 
-Computed computed_from(const Library& library, const polymass_moments& moments, double mass,
+Computed computed_from(const polymass_mass_properties& p,
                        const std::vector<Eigen::Vector3d>& points) {
-    polymass_mass_desc at_mass{};
-    polymass_mass_desc_init(&at_mass, sizeof at_mass);
-    at_mass.mass_mode = POLYMASS_MASS_FROM_TOTAL;
-    at_mass.mass = mass;
-    const SolidResult result =
-        properties_of(library, value_of(weighted(library, moments, at_mass)), {0, 0, 0}, 0.0, 0);
-    if (result.status != POLYMASS_OK) throw std::runtime_error(result.message);
-    const polymass_mass_properties& p = result.properties;
+    using RowMajor = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>;
     Computed computed;
     computed.volume = p.volume;
     computed.mass = p.mass;
     computed.density = p.density;
     computed.center_of_mass = Eigen::Vector3d(p.center_of_mass);
-    computed.inertia = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.inertia);
-    computed.inertia_origin =
-        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.inertia_point);
+    computed.inertia = RowMajor(p.inertia);
+    computed.inertia_origin = RowMajor(p.inertia_point);
     computed.principal_moments = Eigen::Vector3d(p.principal_moments);
-    computed.principal_axes =
-        Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p.principal_axes);
+    computed.principal_axes = RowMajor(p.principal_axes);
     computed.box_min = computed.box_max = points.front();
     for (const Eigen::Vector3d& point : points) {
         computed.box_min = computed.box_min.cwiseMin(point);
@@ -71,24 +61,35 @@ bool has_mass(const std::optional<Inertial>& declared) {
 // The link's bodies as one, at the declared mass (or the density), judged.
 void add_up(const Library& library, const std::vector<Measured>& bodies,
             const AuditSettings& settings, LinkAudit& audit) {
-    try {
-        std::vector<polymass_moments> parts;
-        std::vector<Eigen::Vector3d> points;
-        for (const Measured& body : bodies) {
-            parts.push_back(body.moments);
-            points.insert(points.end(), body.points.begin(), body.points.end());
-        }
-        const polymass_moments total = value_of(sum(library, parts));
-        const double mass =
-            has_mass(audit.declared) ? audit.declared->mass : settings.density * total.volume;
-        audit.computed = computed_from(library, total, mass, points);
-    } catch (const std::runtime_error& error) {
-        // The library refused the sum (a result out of range).
-        audit.findings.push_back(
-            {"bad_geometry", Severity::kError,
-             std::string("the link's geometry cannot be added up: ") + error.what()});
+    std::vector<polymass_moments> moments;
+    std::vector<Eigen::Vector3d> points;
+    for (const Measured& body : bodies) {
+        moments.push_back(body.moments);
+        points.insert(points.end(), body.points.begin(), body.points.end());
+    }
+    MomentsResult total = sum(library, moments);
+    if (total.status == POLYMASS_OK) {
+        polymass_mass_desc mass{};
+        polymass_mass_desc_init(&mass, sizeof mass);
+        mass.mass_mode = POLYMASS_MASS_FROM_TOTAL;
+        mass.mass = has_mass(audit.declared) ? audit.declared->mass
+                                             : settings.density * total.moments.volume;
+        total = weighted(library, total.moments, mass);
+    }
+    // Weighted, the body's inertia_point is about the link origin.
+    SolidResult result;
+    if (total.status == POLYMASS_OK) {
+        result = properties_of(library, total.moments, {0, 0, 0}, NAN, 0);
+    } else {
+        result.status = total.status;
+        result.message = total.message;
+    }
+    if (result.status != POLYMASS_OK) {
+        audit.findings.push_back({"bad_geometry", Severity::kError,
+                                  "the link's geometry cannot be added up: " + result.message});
         return;
     }
+    audit.computed = computed_from(result.properties, points);
     if (has_mass(audit.declared)) {
         for (Finding& finding : judge_against_geometry(*audit.declared, *audit.computed)) {
             audit.findings.push_back(std::move(finding));
@@ -132,7 +133,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
     }
     std::vector<Measured> bodies;
     for (const Geometry& geometry : geometries) {
-        Measured measured = measure_geometry(library, geometry, description.path);
+        Measured measured = measure_geometry(library, settings.options, geometry, description.path);
         if (!measured.ok) {
             const Severity severity =
                 measured.kind == "not_a_solid" ? Severity::kWarning : Severity::kError;

@@ -60,6 +60,7 @@ struct AuditSettings {
     GeometrySource from = GeometrySource::kCollision;
     // Links without a declared mass are computed at this density (kg/m^3).
     double density = 1000.0;
+    polymass_options options{};  // how meshes are validated
 };
 
 // Reads, measures and judges one description file.

@@ -1,7 +1,6 @@
 #include "audit/measure.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
@@ -49,24 +48,22 @@ bool positive_finite(const Eigen::Vector3d& v, int count) {
 
 }  // namespace
 
-Measured measure_mesh_file(const Library& library, const std::string& path) {
+Measured measure_mesh_file(const Library& library, const polymass_options& options,
+                           const std::string& path) {
     Model model;
     try {
         model = read_mesh_file(path, "");
     } catch (const ReadError& error) {
         return failure("unreadable_mesh", path + ": " + error.what());
     }
-    const MomentsResult result = compute_moments(library, model, combined_part(model));
-    if (result.status != POLYMASS_OK) {
-        return failure("not_a_solid",
-                       path + ": " + category_of(result.status) + ": " + result.message);
-    }
-    if (!(result.moments.volume > 0.0)) {
-        return failure("not_a_solid", path + ": no volume");
+    const IntegratedSolid solid(library, model, combined_part(model), options);
+    if (!solid.valid()) {
+        const SolidResult why = solid.failure();
+        return failure("not_a_solid", path + ": " + category_of(why.status) + ": " + why.message);
     }
     Measured measured;
     measured.ok = true;
-    measured.moments = result.moments;
+    measured.moments = solid.moments(library);
     for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
         measured.points.emplace_back(model.positions[v], model.positions[v + 1],
                                      model.positions[v + 2]);
@@ -134,11 +131,13 @@ Measured measure_primitive(const Geometry& geometry) {
 
 namespace {
 
-// The geometry's body scaled (a mesh) and placed by its pose.
+// The geometry's body scaled (a mesh) and placed by its pose; a failure
+// when the library refuses a step (a result out of range).
 Measured placed(const Library& library, const Geometry& geometry, Measured measured) {
+    MomentsResult step{POLYMASS_OK, {}, measured.moments};
     if (geometry.shape == Shape::kMesh) {
-        measured.moments = value_of(scaled(
-            library, measured.moments, {geometry.scale[0], geometry.scale[1], geometry.scale[2]}));
+        step = scaled(library, step.moments,
+                      {geometry.scale[0], geometry.scale[1], geometry.scale[2]});
         for (Eigen::Vector3d& point : measured.points) point = point.cwiseProduct(geometry.scale);
     }
     std::array<double, 9> rotation{};
@@ -148,8 +147,13 @@ Measured placed(const Library& library, const Geometry& geometry, Measured measu
         }
     }
     const Eigen::Vector3d& t = geometry.pose.position;
-    measured.moments =
-        value_of(transformed(library, measured.moments, rotation, {t[0], t[1], t[2]}));
+    if (step.status == POLYMASS_OK) {
+        step = transformed(library, step.moments, rotation, {t[0], t[1], t[2]});
+    }
+    if (step.status != POLYMASS_OK) {
+        return failure("bad_geometry", "cannot be scaled or placed: " + step.message);
+    }
+    measured.moments = step.moments;
     for (Eigen::Vector3d& point : measured.points) {
         point = geometry.pose.rotation * point + geometry.pose.position;
     }
@@ -158,8 +162,8 @@ Measured placed(const Library& library, const Geometry& geometry, Measured measu
 
 }  // namespace
 
-Measured measure_geometry(const Library& library, const Geometry& geometry,
-                          const std::string& description_path) {
+Measured measure_geometry(const Library& library, const polymass_options& options,
+                          const Geometry& geometry, const std::string& description_path) {
     Measured measured;
     if (!geometry.invalid.empty()) return failure("invalid_element", geometry.invalid);
     if (geometry.shape == Shape::kMesh) {
@@ -169,17 +173,12 @@ Measured measure_geometry(const Library& library, const Geometry& geometry,
             return failure("bad_geometry",
                            geometry.uri + ": a mesh scale with a zero or non-finite factor");
         }
-        measured = measure_mesh_file(library, resolved.path);
+        measured = measure_mesh_file(library, options, resolved.path);
     } else {
         measured = measure_primitive(geometry);
     }
     if (!measured.ok) return measured;
-    try {
-        return placed(library, geometry, std::move(measured));
-    } catch (const std::runtime_error& error) {
-        // The library refused to scale or move it (a result out of range).
-        return failure("bad_geometry", std::string("cannot be scaled or placed: ") + error.what());
-    }
+    return placed(library, geometry, std::move(measured));
 }
 
 }  // namespace polymass_cli::audit

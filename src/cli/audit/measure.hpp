@@ -27,15 +27,17 @@ struct Measured {
 // A mesh file in its own frame and units. The one place where a mesh that is
 // not a valid solid could be given a second chance (repaired, its shells or
 // its hull measured) with the provenance said.
-Measured measure_mesh_file(const Library& library, const std::string& path);
+Measured measure_mesh_file(const Library& library, const polymass_options& options,
+                           const std::string& path);
 
 // A primitive shape in closed form (docs/audit.md), about its centre, its
 // axis along z: box, cylinder, sphere, capsule, ellipsoid.
 Measured measure_primitive(const Geometry& geometry);
 
 // The geometry in the link frame: its mesh resolved (from the description's
-// directory) and measured, or its shape, scaled then placed by its pose.
-Measured measure_geometry(const Library& library, const Geometry& geometry,
-                          const std::string& description_path);
+// directory) and measured (validated with options), or its shape, scaled
+// then placed by its pose.
+Measured measure_geometry(const Library& library, const polymass_options& options,
+                          const Geometry& geometry, const std::string& description_path);
 
 }  // namespace polymass_cli::audit

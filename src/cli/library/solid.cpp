@@ -90,15 +90,6 @@ SolidResult compute_solid(const Library& library, const Model& model, const Part
     return result;
 }
 
-MomentsResult compute_moments(const Library& library, const Model& model, const Part& part) {
-    const polymass_mesh_desc desc = describe(model, part);
-    MomentsResult result;
-    result.moments.struct_size = sizeof result.moments;
-    result.status = polymass_moments_compute(&result.moments, library.context(), &desc, nullptr);
-    if (result.status != POLYMASS_OK) result.message = library.message();
-    return result;
-}
-
 CheckResult check_solid(const Library& library, const Model& model, const Part& part) {
     const polymass_mesh_desc desc = describe(model, part);
     CheckResult result;

@@ -47,15 +47,6 @@ struct SolidResult {
 SolidResult compute_solid(const Library& library, const Model& model, const Part& part,
                           const polymass_mass_desc& mass);
 
-struct MomentsResult {
-    int32_t status = POLYMASS_OK;
-    std::string message;  // the context's message when status is an error
-    polymass_moments moments{};
-};
-
-// The moments (unit density) of a part: what bodies of several parts add up.
-MomentsResult compute_moments(const Library& library, const Model& model, const Part& part);
-
 struct CheckResult {
     polymass_diagnostics diagnostics{};
     std::string message;  // why the mesh is not a valid solid, if it is not

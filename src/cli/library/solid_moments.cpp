@@ -81,6 +81,10 @@ MomentsResult weighted(const Library& library, const polymass_moments& moments,
     });
 }
 
+MomentsResult scaled(const Library& library, const polymass_moments& moments, double factor) {
+    return scaled(library, moments, {factor, factor, factor});
+}
+
 MomentsResult scaled(const Library& library, const polymass_moments& moments,
                      const std::array<double, 3>& factors) {
     return moments_step(library, [&](polymass_moments* out) {
@@ -106,11 +110,6 @@ MomentsResult sum(const Library& library, const std::vector<polymass_moments>& b
         });
     }
     return total;
-}
-
-polymass_moments value_of(const MomentsResult& result) {
-    if (result.status != POLYMASS_OK) throw std::runtime_error(result.message);
-    return result.moments;
 }
 
 SolidResult properties_of(const Library& library, const polymass_moments& moments,

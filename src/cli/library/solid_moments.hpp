@@ -46,11 +46,20 @@ private:
     uint32_t warnings_ = 0;
 };
 
+// A step of the composition: the moments, or the status and message of the
+// library's refusal (an overflow, a body of no volume).
+struct MomentsResult {
+    int32_t status = POLYMASS_OK;
+    std::string message;
+    polymass_moments moments{};
+};
+
 // The moments with a density or a mass (mass.point is not used).
 MomentsResult weighted(const Library& library, const polymass_moments& moments,
                        const polymass_mass_desc& mass);
-// Lengths along axis k times factors[k] (a unit conversion, a mesh's scale),
-// about the origin.
+// Every length times factor (a unit conversion), about the origin.
+MomentsResult scaled(const Library& library, const polymass_moments& moments, double factor);
+// Stretched by factors[i] along axis i, about the origin (a mesh's scale).
 MomentsResult scaled(const Library& library, const polymass_moments& moments,
                      const std::array<double, 3>& factors);
 // Moved by x -> rotation x + translation (rotation row-major, orthonormal).
@@ -59,10 +68,6 @@ MomentsResult transformed(const Library& library, const polymass_moments& moment
                           const std::array<double, 3>& translation);
 // The bodies as one, added in order (at least one).
 MomentsResult sum(const Library& library, const std::vector<polymass_moments>& bodies);
-
-// The moments of a step the caller cannot go on without; the library's
-// refusal (a result out of range) as std::runtime_error with its message.
-polymass_moments value_of(const MomentsResult& result);
 
 // The mass properties of moments as weighted, inertia_point about `point`;
 // moments keep no surface, so the area and warnings are the caller's.
