@@ -299,6 +299,7 @@ class Geometry(AuditCase):
     def test_unreadable_and_open_meshes(self):
         directory = fresh("broken")
         fx.write_obj(directory / "open.obj", fx.box_corners(), fx.QUADS[:-1])
+        fx.write_obj(directory / "flat.obj", fx.box_corners(), fx.QUADS[:1])
         path = directory / "robot.urdf"
         path.write_text(
             fx.urdf(
@@ -313,6 +314,11 @@ class Geometry(AuditCase):
                         self.correct_inertial(),
                         '<geometry><mesh filename="open.obj"/></geometry>',
                     ),
+                    (
+                        "flat",
+                        self.correct_inertial(),
+                        '<geometry><mesh filename="flat.obj"/></geometry>',
+                    ),
                     ("bare", "", '<geometry><box size="1 1 1"/></geometry>'),
                     ("massonly", self.correct_inertial(), ""),
                 ]
@@ -321,10 +327,20 @@ class Geometry(AuditCase):
         result, out = audit(path)
         self.assertEqual(result.returncode, 1)
         self.assertEqual(kinds(link(out, "missing")), ["unreadable_mesh"])
-        open_finding = link(out, "open")["findings"][0]
-        self.assertEqual(open_finding["kind"], "not_a_solid")
-        self.assertIn("open", open_finding["message"])
-        self.assertIsNone(link(out, "open")["computed"])
+        # The open box (its last quad missing) is measured repaired, its hole
+        # capped by the missing quad exactly; the finding says so, with the
+        # bound, and the declared inertial (correct) matches.
+        open_link = link(out, "open")
+        self.assertEqual(kinds(open_link), ["approximated_geometry"])
+        self.assertIn("open", open_link["findings"][0]["message"])
+        self.assertIn("measured as repaired: 1 holes capped", open_link["findings"][0]["message"])
+        self.assertIn("off by at most", open_link["findings"][0]["message"])
+        self.assertEqual(open_link["findings"][0]["severity"], "warning")
+        self.assert_computed(open_link["computed"], fx.MASS, fx.centre(), fx.box_inertia(fx.MASS))
+        # A single quad has no volume to repair nor a hull: not a solid.
+        self.assertEqual(kinds(link(out, "flat")), ["not_a_solid"])
+        self.assertIn("neither repaired nor its hull", link(out, "flat")["findings"][0]["message"])
+        self.assertIsNone(link(out, "flat")["computed"])
         self.assertEqual(kinds(link(out, "bare")), ["no_inertial"])
         self.assertEqual(link(out, "bare")["computed"]["density"], 1000)
         self.assertEqual(kinds(link(out, "massonly")), ["no_geometry"])

@@ -134,7 +134,10 @@ LinkAudit audit_link(const Library& library, const Description& description, con
     std::vector<Measured> bodies;
     for (const Geometry& geometry : geometries) {
         Measured measured = measure_geometry(library, settings.options, geometry, description.path);
-        if (!measured.ok) {
+        if (measured.ok && !measured.kind.empty()) {
+            // Measured, but not exactly: the finding says how.
+            audit.findings.push_back({measured.kind, Severity::kWarning, measured.message});
+        } else if (!measured.ok) {
             const Severity severity =
                 measured.kind == "not_a_solid" ? Severity::kWarning : Severity::kError;
             audit.findings.push_back({measured.kind, severity,

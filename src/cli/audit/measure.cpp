@@ -1,11 +1,14 @@
 #include "audit/measure.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
 #include "library/solid_moments.hpp"
 #include "readers/mesh_reader.hpp"
+#include "reports/provenance.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -46,6 +49,47 @@ bool positive_finite(const Eigen::Vector3d& v, int count) {
     return true;
 }
 
+// A mesh that is not a valid solid, as the library's chain answers it:
+// repaired, else its convex hull (docs/repair.md), at unit density. Its
+// moments are written about its centre of mass from the mass properties:
+// there the first moments vanish and the second ones are
+// S = tr(I)/2 * 1 - I, since I = tr(S) * 1 - S. The message says what was
+// done and how far off it can be (or, when no mode answers, why).
+Measured measured_by_chain(const Library& library, polymass_options options, const Model& model) {
+    std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
+    options.modes[0] = POLYMASS_MODE_REPAIR;
+    options.modes[1] = POLYMASS_MODE_HULL;
+    const Part whole = combined_part(model);  // describe() points into it
+    const polymass_mesh_desc desc = describe(model, whole);
+    polymass_mass_properties p{};
+    polymass_mass_properties_init(&p, sizeof p);
+    polymass_provenance provenance{};
+    polymass_provenance_init(&provenance, sizeof provenance);
+    Measured measured;
+    const int32_t status = polymass_mass_properties_with_provenance(
+        &p, &provenance, library.context(), &desc, nullptr, &options);
+    if (status != POLYMASS_OK) {
+        measured.message = "neither repaired nor its hull measured: " + library.message();
+        return measured;
+    }
+    measured.ok = true;
+    polymass_moments_init(&measured.moments, sizeof measured.moments);
+    measured.moments.volume = p.volume;
+    measured.moments.mass = p.mass;
+    const double half_trace = (p.inertia[0] + p.inertia[4] + p.inertia[8]) / 2;
+    const double second[6] = {half_trace - p.inertia[0],
+                              half_trace - p.inertia[4],
+                              half_trace - p.inertia[8],
+                              -p.inertia[1],
+                              -p.inertia[5],
+                              -p.inertia[2]};
+    for (int k = 0; k < 3; ++k) measured.moments.reference[k] = p.center_of_mass[k];
+    for (int k = 0; k < 6; ++k) measured.moments.second[k] = second[k];
+    measured.message =
+        provenance_text(provenance) + " (off by at most " + error_bound_text(p) + ")";
+    return measured;
+}
+
 }  // namespace
 
 Measured measure_mesh_file(const Library& library, const polymass_options& options,
@@ -57,13 +101,20 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
         return failure("unreadable_mesh", path + ": " + error.what());
     }
     const IntegratedSolid solid(library, model, combined_part(model), options);
-    if (!solid.valid()) {
-        const SolidResult why = solid.failure();
-        return failure("not_a_solid", path + ": " + category_of(why.status) + ": " + why.message);
-    }
     Measured measured;
+    if (solid.valid()) {
+        measured.moments = solid.moments(library);
+    } else {
+        const SolidResult why = solid.failure();
+        const std::string not_a_solid = path + ": " + category_of(why.status) + ": " + why.message;
+        measured = measured_by_chain(library, options, model);
+        if (!measured.ok) {
+            return failure("not_a_solid", not_a_solid + "; " + measured.message);
+        }
+        measured.kind = "approximated_geometry";
+        measured.message = not_a_solid + "; measured as " + measured.message;
+    }
     measured.ok = true;
-    measured.moments = solid.moments(library);
     for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
         measured.points.emplace_back(model.positions[v], model.positions[v + 1],
                                      model.positions[v + 2]);

@@ -19,14 +19,16 @@ struct Measured {
     polymass_moments moments{};           // unit density
     std::vector<Eigen::Vector3d> points;  // its vertices, or its bounding box's corners
     // When not ok: the finding's kind ("unreadable_mesh", "not_a_solid",
-    // "bad_geometry") and what the reader or the library said.
+    // "bad_geometry") and what the reader or the library said. When ok but
+    // not exact ("approximated_geometry": a mesh that is not a solid,
+    // repaired or replaced by its hull): what was done and its bound.
     std::string kind;
     std::string message;
 };
 
-// A mesh file in its own frame and units. The one place where a mesh that is
-// not a valid solid could be given a second chance (repaired, its shells or
-// its hull measured) with the provenance said.
+// A mesh file in its own frame and units. A mesh that is not a valid solid
+// is measured as the library's modes answer it (repaired, else its convex
+// hull), the provenance and bound said.
 Measured measure_mesh_file(const Library& library, const polymass_options& options,
                            const std::string& path);
 
