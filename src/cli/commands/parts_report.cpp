@@ -44,8 +44,8 @@ polymass_mass_desc with_density(polymass_mass_desc mass, double density) {
 // whole is computed as one surface, and the parts that are solids get its
 // density, so that their masses add up to it. Parts of their own materials
 // cannot be told apart from such a whole: refused.
-void report_as_one(const Library& library, const Model& model, const Arguments& arguments,
-                   const std::vector<IntegratedSolid>& solids,
+void report_as_one(const Library& library, const Model& model, const Part& whole_part,
+                   const Arguments& arguments, const std::vector<IntegratedSolid>& solids,
                    const std::vector<polymass_mass_desc>& masses,
                    const polymass_mass_desc& file_mass, FileReport& report) {
     const size_t broken =
@@ -63,7 +63,7 @@ void report_as_one(const Library& library, const Model& model, const Arguments& 
                                            "' is not a solid by itself (" + why.message +
                                            "), so it cannot have a density or mass of its own"));
     } else {
-        set_result(report.solid, compute_solid(library, model, combined_part(model), file_mass));
+        set_result(report.solid, compute_solid(library, model, whole_part, file_mass));
     }
     const SolidResult& whole = report.solid.result;
     const bool density_known = whole.status == POLYMASS_OK || !arguments.mass;
@@ -107,11 +107,11 @@ MomentsResult whole_moments(const Library& library, const std::vector<Integrated
 // provenance: moments add up exactly only when every part is an exact solid,
 // and a whole the solid mode refuses (parts crossing each other) may still
 // have an approximate answer. Each face is then integrated twice.
-void report_by_chain(const Library& library, const Model& model,
+void report_by_chain(const Library& library, const Model& model, const Part& whole_part,
                      const std::vector<polymass_mass_desc>& masses,
                      const polymass_mass_desc& file_mass, FileReport& report) {
-    report.solid = counted(model, combined_part(model));
-    set_result(report.solid, compute_solid(library, model, combined_part(model), file_mass));
+    report.solid = counted(model, whole_part);
+    set_result(report.solid, compute_solid(library, model, whole_part, file_mass));
     const SolidResult& whole = report.solid.result;
     const bool whole_mass = file_mass.mass_mode == POLYMASS_MASS_FROM_TOTAL;
     for (size_t k = 0; k < model.parts.size(); ++k) {
@@ -131,8 +131,9 @@ void report_parts(const Library& library, const std::string& path, const Model& 
                   const Arguments& arguments, const polymass_mass_desc& file_mass,
                   FileReport& report) {
     const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
+    const Part whole = combined_part(model);  // every part's indices, copied once
     if (arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID}) {
-        report_by_chain(library, model, masses, file_mass, report);
+        report_by_chain(library, model, whole, masses, file_mass, report);
         return;
     }
     const polymass_options options = options_for(arguments);
@@ -144,11 +145,10 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     solids.reserve(model.parts.size());
     for (const Part& part : model.parts) solids.emplace_back(library, model, part, part_options);
 
-    const Part whole = combined_part(model);
     report.solid = counted(model, whole);
     if (!std::all_of(solids.begin(), solids.end(),
                      [](const IntegratedSolid& s) { return s.valid_as_given(); })) {
-        report_as_one(library, model, arguments, solids, masses, file_mass, report);
+        report_as_one(library, model, whole, arguments, solids, masses, file_mass, report);
         return;
     }
 
