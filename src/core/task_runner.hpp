@@ -1,0 +1,32 @@
+// How core/ runs independent pieces of work - the blocks of faces of one
+// mesh, the items of a batch - on the caller's thread or on the library's
+// workers, without knowing which. A pass that uses it splits its work into
+// pieces fixed by the input alone (never by the number of threads) and
+// combines their results in piece order, so that every thread count gives
+// the same bits.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace polymass::core {
+
+class TaskRunner {
+public:
+    virtual ~TaskRunner() = default;
+    // Calls task(i) once for each i in [0, count) and returns when all have
+    // returned. Tasks may run at the same time, in any order; each must write
+    // only its own results. An exception thrown by a task is rethrown here
+    // (the first one, after every started task has ended).
+    virtual void run(std::size_t count, const std::function<void(std::size_t)>& task) = 0;
+};
+
+// Runs the tasks one after another on the calling thread.
+class SerialTaskRunner final : public TaskRunner {
+public:
+    void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
+        for (std::size_t i = 0; i < count; ++i) task(i);
+    }
+};
+
+}  // namespace polymass::core
