@@ -8,6 +8,7 @@ set -euo pipefail
 
 packages=(
     cmake ninja-build g++ gcc pkg-config   # toolchain
+    ccache                                 # test command: compiles cached across runs and clones
     libeigen3-dev                          # the library's (private) dependency
     libcmocka-dev                          # unit tests
     clang-format                           # style check

@@ -46,7 +46,15 @@ esac
 echo "$sdist"
 
 step wheel
-"$venv/bin/python" -m pip "${pip_options[@]}" wheel --no-deps --wheel-dir "$dist" "$sdist" </dev/null
+# Built from the sdist's files alone, unpacked at a fixed place and built in a
+# fixed directory (pip's own would be random temporary ones), so that the test
+# command's compiler cache recognises the compiles of a previous run.
+unpacked=$root/build/python-sdist
+rm -rf "$unpacked" "$root/build/python-wheel-build"
+mkdir -p "$unpacked"
+tar -xzf "$sdist" -C "$unpacked" --strip-components=1
+"$venv/bin/python" -m pip "${pip_options[@]}" wheel --no-deps --wheel-dir "$dist" \
+    --config-settings=build-dir="$root/build/python-wheel-build" "$unpacked" </dev/null
 wheel=$(ls "$dist"/polymass-*.whl)
 echo "$wheel"
 

@@ -32,6 +32,19 @@ export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-2}
 
 STEPS=(deps format dev asan fuzz python rust debian)
 
+# Every C/C++ compile of every step - the presets, the CMake builds inside the
+# Python wheel and the Rust crates, the Debian package - goes through ccache
+# once it is installed (the deps step installs it), so a run after a small
+# change recompiles only what changed. Paths under the root are hashed as
+# relative ones, so a fresh clone in another directory hits the same cache.
+# POLYMASS_NO_CCACHE=1 compiles everything afresh.
+use_ccache() {
+    if [ -z "${POLYMASS_NO_CCACHE:-}" ] && command -v ccache >/dev/null 2>&1; then
+        export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
+        export CCACHE_BASEDIR=$ROOT CCACHE_NOHASHDIR=true
+    fi
+}
+
 # Counts of test cases (ctest) across the steps, for the closing line.
 TESTS_PASSED=0
 TESTS_FAILED=0
@@ -169,6 +182,7 @@ for step in "${selected[@]}"; do
     echo
     echo "==================== step: $step ===================="
     start=$SECONDS
+    use_ccache
     if "step_$step"; then
         RESULT[$step]=PASS
         [ "$step" = format ] && TESTS_PASSED=$((TESTS_PASSED + 1))
