@@ -28,6 +28,12 @@ set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 WORKSPACE=$ROOT/bindings/rust
+# Cargo's build artefacts live outside the checkout, shared by the clones on
+# this machine (set CARGO_TARGET_DIR to choose): a fresh clone compiles its own
+# crates, not bindgen and the other dependencies again. Cargo keys a crate by
+# its path and fingerprints its sources (and polymass-sys the library it
+# links), so clones never use each other's builds.
+export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/polymass/cargo-target}
 LOG_DIR=$ROOT/build/test-logs
 mkdir -p "$LOG_DIR"
 TEST_LOG=$LOG_DIR/rust-test.log
@@ -114,7 +120,7 @@ step_examples() {
 step_static() {
     # Built into its own target directory, so the dynamically linked builds
     # of the other steps are not rebuilt next time.
-    CARGO_TARGET_DIR=$WORKSPACE/target/static env -u LD_LIBRARY_PATH \
+    CARGO_TARGET_DIR=$CARGO_TARGET_DIR-static env -u LD_LIBRARY_PATH \
         cargo run --locked -q -p polymass-examples --features polymass/static \
         --bin mass_properties
 }
