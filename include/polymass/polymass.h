@@ -42,7 +42,8 @@
  *   asked for another count replaces its workers). Work is cut into pieces
  *   fixed by the input alone (blocks of faces, the items of a batch) and the
  *   pieces' results are combined in a fixed order, so every thread count gives
- *   the same bits.
+ *   the same bits. The context's allocator may then be called from the
+ *   workers, but from one thread at a time.
  *
  * ERRORS
  *   Every fallible function returns an int32_t status (POLYMASS_OK == 0) and

@@ -24,12 +24,14 @@ void default_deallocate(void*, void* pointer) { std::free(pointer); }
 }  // namespace
 
 void* HookMemoryResource::do_allocate(std::size_t bytes, std::size_t alignment) {
+    std::lock_guard<std::mutex> lock(mutex_);
     void* pointer = allocator_.allocate(allocator_.user_data, bytes, alignment);
     if (!pointer && bytes > 0) throw std::bad_alloc();
     return pointer;
 }
 
 void HookMemoryResource::do_deallocate(void* pointer, std::size_t, std::size_t) {
+    std::lock_guard<std::mutex> lock(mutex_);
     if (pointer) allocator_.deallocate(allocator_.user_data, pointer);
 }
 
@@ -124,7 +126,7 @@ polymass_context* polymass_context::batch_context(std::size_t thread) {
     batch_contexts.reserve(thread + 1);  // push_back below cannot throw
     while (batch_contexts.size() <= thread) {
         polymass_context* batch =
-            polymass::capi::create_object<polymass_context>(allocator, allocator);
+            polymass::capi::create_object<polymass_context>(allocator, allocator, &hook_memory);
         if (!batch) throw std::bad_alloc();
         batch->serial_only_ = true;
         batch->set_scratch_limit(scratch_limit_);

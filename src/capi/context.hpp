@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory_resource>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <utility>
@@ -18,7 +19,9 @@
 namespace polymass::capi {
 
 // Routes every allocation of core/ through the caller's polymass_allocator;
-// a NULL from it becomes std::bad_alloc, which the API guard reports.
+// a NULL from it becomes std::bad_alloc, which the API guard reports. The
+// library's threads may allocate at the same time: the caller's functions are
+// called from one thread at a time.
 class HookMemoryResource final : public std::pmr::memory_resource {
 public:
     explicit HookMemoryResource(const polymass_allocator& allocator) : allocator_(allocator) {}
@@ -31,6 +34,7 @@ private:
     }
 
     polymass_allocator allocator_;
+    std::mutex mutex_;
 };
 
 // The allocator to use: the caller's, or malloc-backed when NULL.
@@ -66,8 +70,14 @@ int32_t call_options(polymass_context* context, const polymass_options* options,
 }  // namespace polymass::capi
 
 struct polymass_context {
-    explicit polymass_context(const polymass_allocator& hook)
-        : allocator(hook), hook_memory(hook), memory(&hook_memory), batch_contexts(&hook_memory) {}
+    // A batch's context allocates through its parent's hook (`shared`), so
+    // that the caller's allocator sees one thread at a time.
+    explicit polymass_context(const polymass_allocator& hook,
+                              polymass::capi::HookMemoryResource* shared = nullptr)
+        : allocator(hook),
+          hook_memory(hook),
+          memory(shared ? shared : &hook_memory),
+          batch_contexts(&hook_memory) {}
     ~polymass_context();
 
     polymass_allocator allocator;
