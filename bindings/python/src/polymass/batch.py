@@ -29,7 +29,9 @@ def _per_item(value, count: int, name: str) -> list:
     return values
 
 
-def _compute(pending: list, options, threads: int | None) -> list[tuple[int, MassProperties | Error]]:
+def _compute(
+    pending: list, options, threads: int | None
+) -> list[tuple[int, MassProperties | Error]]:
     """One ``polymass_batch_compute`` call over pending items on this thread's
     context, spread over ``threads`` of the library's threads: each item's
     position and its result or error."""

@@ -14,23 +14,8 @@ use std::time::Instant;
 use polymass::{Body, Context, Surface};
 use polymass_sys as sys;
 
-fn torus(rings: u32, sides: u32) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let tau = std::f64::consts::TAU;
-    let mut positions = Vec::new();
-    let mut triangles = Vec::new();
-    for i in 0..rings {
-        for j in 0..sides {
-            let (u, v) = (tau * i as f64 / rings as f64, tau * j as f64 / sides as f64);
-            let radius = 3.0 + v.cos();
-            positions.push([1e3 + radius * u.cos(), 1e3 + radius * u.sin(), 1e3 + v.sin()]);
-            let (a, b) = (i * sides + j, (i + 1) % rings * sides + j);
-            let (c, d) = ((i + 1) % rings * sides + (j + 1) % sides, i * sides + (j + 1) % sides);
-            triangles.push([a, b, c]);
-            triangles.push([a, c, d]);
-        }
-    }
-    (positions, triangles)
-}
+#[path = "../tests/common/torus.rs"]
+mod torus;
 
 fn median(mut times: Vec<f64>) -> f64 {
     times.sort_by(f64::total_cmp);
@@ -42,11 +27,14 @@ fn main() {
     let wanted: f64 = arguments.get(1).map_or(1e6, |text| text.parse().unwrap());
     let repeats: usize = arguments.get(2).map_or(21, |text| text.parse().unwrap());
     let side = (wanted / 2.0).sqrt() as u32;
-    let (positions, triangles) = torus(side, side);
+    let (positions, triangles) = torus::torus(side, side, 1e3);
 
     let mut raw_context = std::ptr::null_mut();
     // SAFETY: a valid out pointer; NULL allocator selects malloc.
-    assert_eq!(unsafe { sys::polymass_context_create(&mut raw_context, std::ptr::null()) }, 0);
+    assert_eq!(
+        unsafe { sys::polymass_context_create(&mut raw_context, std::ptr::null()) },
+        0
+    );
     let desc = sys::polymass_mesh_desc {
         struct_size: std::mem::size_of::<sys::polymass_mesh_desc>() as u32,
         position_type: sys::POLYMASS_POSITION_FLOAT64,
@@ -83,8 +71,15 @@ fn main() {
     // SAFETY: created above, no longer used.
     unsafe { sys::polymass_context_destroy(raw_context) };
     let (c, rust) = (median(c_times), median(rust_times));
-    println!("{} triangles, median of {repeats} interleaved runs", triangles.len());
+    println!(
+        "{} triangles, median of {repeats} interleaved runs",
+        triangles.len()
+    );
     println!("  C call:        {:8.3} ms", c * 1e3);
     println!("  Rust binding:  {:8.3} ms", rust * 1e3);
-    println!("  overhead:      {:8.3} ms = {:.2} %", (rust - c) * 1e3, 100.0 * (rust - c) / c);
+    println!(
+        "  overhead:      {:8.3} ms = {:.2} %",
+        (rust - c) * 1e3,
+        100.0 * (rust - c) / c
+    );
 }

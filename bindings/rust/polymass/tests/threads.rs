@@ -95,35 +95,10 @@ fn free_functions_from_many_threads_with_shared_slices() {
     });
 }
 
-/// A torus of `2 * rings * sides` triangles around (1e5, 1e5, 1e5), outward.
-fn torus(rings: u32, sides: u32) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let tau = std::f64::consts::TAU;
-    let mut positions = Vec::new();
-    let mut triangles = Vec::new();
-    for i in 0..rings {
-        for j in 0..sides {
-            let (u, v) = (tau * i as f64 / rings as f64, tau * j as f64 / sides as f64);
-            let radius = 3.0 + v.cos();
-            positions.push([
-                1e5 + radius * u.cos(),
-                1e5 + radius * u.sin(),
-                1e5 + v.sin(),
-            ]);
-            let a = i * sides + j;
-            let b = (i + 1) % rings * sides + j;
-            let c = (i + 1) % rings * sides + (j + 1) % sides;
-            let d = i * sides + (j + 1) % sides;
-            triangles.push([a, b, c]);
-            triangles.push([a, c, d]);
-        }
-    }
-    (positions, triangles)
-}
-
 #[test]
 fn every_thread_count_gives_the_same_bits() {
     // Several blocks of faces.
-    let (positions, triangles) = torus(300, 250);
+    let (positions, triangles) = torus(300, 250, 1e5);
     let surface = Surface::triangles(&positions, &triangles);
     let body = Body::density(7.5);
     let mut context = Context::new().unwrap();

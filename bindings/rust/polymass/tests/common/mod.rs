@@ -5,6 +5,9 @@
 
 use polymass::Surface;
 
+mod torus;
+pub use torus::torus;
+
 /// Relative tolerance of every comparison with an exact value: volume, mass,
 /// area; matrices relative to their largest entry; the centre of mass
 /// relative to the larger of its distance from the origin and the shape's
