@@ -123,62 +123,35 @@ static polymass_options options_with_threads(uint32_t flags, uint32_t threads) {
     return o;
 }
 
-/* Two tori far from the origin, one inside the other's hole: ~300k
-   triangles, several blocks of faces, two shells. */
-static void make_large_mesh(pm_mesh* m) {
-    static const double centre[3] = {3e6, -2e6, 1e6};
-    pm_mesh_init(m);
-    pm_mesh_add_torus(m, 420, 360, 10.0, 3.0, centre);
-    pm_mesh_add_torus(m, 60, 40, 4.0, 1.0, centre);
-}
-
-/* The checked and trusted paths and the shells, bit for bit, for every
-   count (the trusted path, which differs from the checked one only by the
-   passes it skips, at the extremes alone: Debug builds are slow). */
+/* The checked path (scan, topology, integration, the shell) bit for bit for
+   every count, on a torus far from the origin: 302,400 triangles, several
+   blocks of faces. */
 static void test_thread_counts_give_the_same_bits(void** state) {
+    static const double centre[3] = {3e6, -2e6, 1e6};
     polymass_context* ctx = pm_context_new(0);
     pm_mesh m;
     polymass_mesh_desc desc;
-    polymass_mass_properties first[2], p;
-    uint32_t *first_shells, *shells;
-    uint64_t first_shell_count = 0, shell_count = 0;
-    int k, trusted;
+    polymass_mass_properties first, p;
+    int k;
     (void)state;
-    make_large_mesh(&m);
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 420, 360, 10.0, 3.0, centre);
     desc = pm_mesh_desc(&m);
     assert_true(m.face_count >= 300000);
-    first_shells = calloc(m.face_count, sizeof *first_shells);
-    shells = calloc(m.face_count, sizeof *shells);
-    assert_non_null(first_shells);
-    assert_non_null(shells);
     for (k = 0; k < THREAD_COUNTS; ++k) {
         const polymass_options o = options_with_threads(0, thread_counts[k]);
-        for (trusted = 0; trusted < (k == 0 || k == THREAD_COUNTS - 1 ? 2 : 1); ++trusted) {
-            const polymass_options call = options_with_threads(
-                trusted ? POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS : 0, thread_counts[k]);
-            polymass_mass_properties* out = k == 0 ? &first[trusted] : &p;
-            pm_props_init(out);
-            PM_ASSERT_OK(
-                ctx, polymass_mass_properties_compute_with_options(out, ctx, &desc, NULL, &call));
-            if (k > 0) assert_memory_equal(&first[trusted], &p, sizeof p);
-        }
-        PM_ASSERT_OK(ctx, polymass_mesh_shells_with_options(
-                              k == 0 ? first_shells : shells,
-                              k == 0 ? &first_shell_count : &shell_count, ctx, &desc, &o));
-        if (k > 0) {
-            assert_int_equal(first_shell_count, shell_count);
-            assert_memory_equal(first_shells, shells, m.face_count * sizeof *shells);
-        }
+        pm_props_init(k == 0 ? &first : &p);
+        PM_ASSERT_OK(ctx, polymass_mass_properties_compute_with_options(k == 0 ? &first : &p, ctx,
+                                                                        &desc, NULL, &o));
+        if (k > 0) assert_memory_equal(&first, &p, sizeof p);
     }
-    assert_int_equal(first_shell_count, 2);
-    free(first_shells);
-    free(shells);
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }
 
 /* A defective mesh of several blocks of faces and of vertices: the same
-   findings, first locations and message for every count. */
+   findings, first locations and message, and the same shells, for every
+   count. */
 static void test_thread_counts_give_the_same_findings(void** state) {
     static const double centre[3] = {0, 0, 0};
     polymass_context* ctx = pm_context_new(0);
@@ -186,13 +159,20 @@ static void test_thread_counts_give_the_same_findings(void** state) {
     polymass_mesh_desc desc;
     polymass_diagnostics first, report;
     char first_message[512];
+    uint32_t *first_shells, *shells;
+    uint64_t first_shell_count = 0, shell_count = 0;
     int k, face;
     (void)state;
     pm_mesh_init(&m);
-    pm_mesh_add_torus(&m, 400, 100, 10.0, 3.0, centre);
-    for (face = 79000; face > 0; face -= 7900) pm_mesh_remove_face(&m, (size_t)face);
+    pm_mesh_add_torus(&m, 350, 100, 10.0, 3.0, centre); /* 2 blocks of faces, of vertices */
+    for (face = 69000; face > 0; face -= 6900) pm_mesh_remove_face(&m, (size_t)face);
     pm_mesh_reverse_face(&m, 123);
+    pm_mesh_add_torus(&m, 20, 10, 4.0, 1.0, centre); /* a second shell */
     desc = pm_mesh_desc(&m);
+    first_shells = calloc(m.face_count, sizeof *first_shells);
+    shells = calloc(m.face_count, sizeof *shells);
+    assert_non_null(first_shells);
+    assert_non_null(shells);
     for (k = 0; k < THREAD_COUNTS; ++k) {
         const polymass_options o = options_with_threads(0, thread_counts[k]);
         polymass_mass_properties p;
@@ -209,7 +189,17 @@ static void test_thread_counts_give_the_same_findings(void** state) {
             assert_memory_equal(&first, &report, sizeof report);
             assert_string_equal(first_message, polymass_context_message(ctx));
         }
+        PM_ASSERT_OK(ctx, polymass_mesh_shells_with_options(
+                              k == 0 ? first_shells : shells,
+                              k == 0 ? &first_shell_count : &shell_count, ctx, &desc, &o));
+        if (k > 0) {
+            assert_int_equal(first_shell_count, shell_count);
+            assert_memory_equal(first_shells, shells, m.face_count * sizeof *shells);
+        }
     }
+    assert_int_equal(first_shell_count, 2);
+    free(first_shells);
+    free(shells);
     assert_true(first.open_edges > 0 && first.misoriented_edges > 0);
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
