@@ -39,15 +39,14 @@ void* ScratchMemoryResource::do_allocate(std::size_t bytes, std::size_t alignmen
     if (!keepable(bytes, alignment)) return upstream_->allocate(bytes, alignment);
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        // The smallest kept block that fits, if it is not more than twice the
-        // size: a small request should not take the block a large one needs.
+        // The smallest kept block that fits: a call makes the same requests
+        // as the one before it on the same mesh, so they find the blocks they
+        // had, and what is kept stays what the largest call had at once.
         Block* const kept = kept_.data();
         Block* const end = kept + kept_count_;
         Block* best = end;
         for (Block* block = kept; block != end; ++block)
-            if (block->size >= bytes && block->size / 2 <= bytes &&
-                (best == end || block->size < best->size))
-                best = block;
+            if (block->size >= bytes && (best == end || block->size < best->size)) best = block;
         if (best != end) {
             void* pointer = best->pointer;
             kept_bytes_ -= best->size;
