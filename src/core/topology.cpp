@@ -80,6 +80,13 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
         begin = end_of[low];
         sort_bucket(first, last);  // by higher vertex, ups (bit 0) before downs
         for (Entry* at = first; at != last;) {
+            // The common edge, once each way and by no other face, first.
+            if (last - at >= 2 && at[1] == (at[0] | 1) && !(at[0] & 1) &&
+                (last - at == 2 || (at[2] >> 1) != (at[0] >> 1))) {
+                ++report.edge_count;
+                at += 2;
+                continue;
+            }
             const Entry high = *at >> 1;
             std::size_t ups = 0, downs = 0;
             for (; at != last && (*at >> 1) == high; ++at) (*at & 1 ? downs : ups) += 1;
