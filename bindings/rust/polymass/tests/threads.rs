@@ -98,7 +98,7 @@ fn free_functions_from_many_threads_with_shared_slices() {
 #[test]
 fn every_thread_count_gives_the_same_bits() {
     // Several blocks of faces.
-    let (positions, triangles) = torus(300, 250, 1e5);
+    let (positions, triangles) = torus::torus(300, 250, 1e5);
     let surface = Surface::triangles(&positions, &triangles);
     let body = Body::density(7.5);
     let mut context = Context::new().unwrap();

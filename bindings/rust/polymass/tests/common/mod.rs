@@ -5,8 +5,7 @@
 
 use polymass::Surface;
 
-mod torus;
-pub use torus::torus;
+pub mod torus;
 
 /// Relative tolerance of every comparison with an exact value: volume, mass,
 /// area; matrices relative to their largest entry; the centre of mass
