@@ -35,6 +35,15 @@
  *   a time (it holds the last error message); distinct contexts are
  *   independent. A mesh is immutable once created: any number of threads may
  *   read it at once, each through its own context.
+ *   The library starts threads only when polymass_options.threads asks for
+ *   more than one: a context then starts that many workers, less one (the
+ *   calling thread works too), on the first call that needs them, reuses them
+ *   for later calls and joins them in polymass_context_destroy (a context
+ *   asked for another count replaces its workers). Work is cut into pieces
+ *   fixed by the input alone (blocks of faces, the items of a batch) and the
+ *   pieces' results are combined in a fixed order, so every thread count gives
+ *   the same bits. The context's allocator may then be called from the
+ *   workers, but from one thread at a time.
  *
  * ERRORS
  *   Every fallible function returns an int32_t status (POLYMASS_OK == 0) and
@@ -216,6 +225,8 @@ typedef struct polymass_allocator {
 /* Largest polymass_options.weld_tolerance: a coarser weld would merge
    vertices of distinct features. */
 #define POLYMASS_MAX_WELD_TOLERANCE 1e-3
+/* Largest polymass_options.threads. */
+#define POLYMASS_MAX_THREADS 256
 
 typedef struct polymass_options {
     uint32_t struct_size; /* sizeof(polymass_options) */
@@ -244,6 +255,15 @@ typedef struct polymass_options {
     /* Since 1.2. The wall thickness of POLYMASS_MODE_SHELL, > 0 and finite
        when the chain holds SHELL. */
     double shell_thickness;
+    /* Since 1.3. How many threads one call may use: the calling thread and
+       threads - 1 of the context's workers (see THREADING), at most
+       POLYMASS_MAX_THREADS. 0 (the default) means 1: the library starts no
+       thread unless asked (a host with its own scheduler can spread meshes
+       or face ranges itself, see polymass_moments). Followed by
+       polymass_batch_compute (items spread over the threads) and by the
+       passes over one mesh's faces. Results are bit for bit the same for
+       every value. */
+    uint32_t threads;
 } polymass_options;
 
 /* polymass_mesh_desc.position_type */
@@ -496,6 +516,17 @@ POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
    Context: one thread at a time. */
 POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
                                                   polymass_context* context);
+
+/* Since 1.3. A context keeps the large scratch blocks of its calls (the
+   topology check's edge lists, the shells' tables: up to about 16 bytes per
+   triangle, from the context's allocator) for its next calls, so that a call
+   on a large mesh does not map fresh memory from the system and fault on
+   every page of it each time; polymass_context_destroy frees them. This
+   bounds what it keeps between calls (and frees what is beyond now): 0 keeps
+   nothing. The default, UINT64_MAX, keeps what the largest recent call used.
+   Context: one thread at a time. */
+POLYMASS_API int32_t polymass_context_set_scratch_limit(polymass_context* context,
+                                                        uint64_t max_kept_bytes);
 
 /* The detailed message of the last call through this context that failed
    ("" after a success). Valid until the next call through the context, from
@@ -860,9 +891,10 @@ POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_
    stop the others. *out_failed (may be NULL) counts the items that failed.
    Returns POLYMASS_OK once every item has its status, or the status of what
    kept the batch from running (items NULL with item_count > 0, an unknown
-   struct_size), with the context's message. Items are independent: they are
-   computed one after another today, and a later version may spread them over
-   the library's threads without changing any result.
+   struct_size), with the context's message. Items are independent: with the
+   context's polymass_options.threads above 1 they are spread over that many
+   threads (each item on one thread, its own passes serial), without changing
+   any result.
    Context: one thread at a time. */
 POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t item_count,
                                             uint64_t* out_failed, polymass_context* context);

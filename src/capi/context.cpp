@@ -1,5 +1,6 @@
 #include "context.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -23,12 +24,14 @@ void default_deallocate(void*, void* pointer) { std::free(pointer); }
 }  // namespace
 
 void* HookMemoryResource::do_allocate(std::size_t bytes, std::size_t alignment) {
+    std::lock_guard<std::mutex> lock(mutex_);
     void* pointer = allocator_.allocate(allocator_.user_data, bytes, alignment);
     if (!pointer && bytes > 0) throw std::bad_alloc();
     return pointer;
 }
 
 void HookMemoryResource::do_deallocate(void* pointer, std::size_t, std::size_t) {
+    std::lock_guard<std::mutex> lock(mutex_);
     if (pointer) allocator_.deallocate(allocator_.user_data, pointer);
 }
 
@@ -78,6 +81,11 @@ int32_t read_options(polymass_context* context, const polymass_options* options,
                              "options->shell_thickness is %g; it must be finite, and positive "
                              "when the modes hold POLYMASS_MODE_SHELL",
                              thickness);
+    if (read.threads > POLYMASS_MAX_THREADS)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "options->threads is %u; it must be at most %u (0 selects the "
+                             "default, 1)",
+                             unsigned(read.threads), unsigned(POLYMASS_MAX_THREADS));
     out = read;
     if (tolerance == 0.0) out.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
     return POLYMASS_OK;
@@ -93,6 +101,41 @@ int32_t call_options(polymass_context* context, const polymass_options* options,
 }
 
 }  // namespace polymass::capi
+
+polymass_context::~polymass_context() {
+    for (polymass_context* batch : batch_contexts) polymass::capi::destroy_object(batch);
+}
+
+polymass::core::TaskRunner& polymass_context::tasks(const polymass_options& call_options) {
+    const std::size_t threads = serial_only_ ? 1 : std::max<uint32_t>(call_options.threads, 1);
+    if (threads == 1) return serial_;
+    if (!workers_ || workers_->thread_count() != threads) {
+        workers_.reset();
+        workers_.emplace(threads, &hook_memory);
+    }
+    return *workers_;
+}
+
+void polymass_context::set_scratch_limit(uint64_t bytes) {
+    scratch_limit_ = bytes;
+    memory.set_limit(bytes);
+    for (polymass_context* batch : batch_contexts) batch->set_scratch_limit(bytes);
+}
+
+polymass_context* polymass_context::batch_context(std::size_t thread) {
+    batch_contexts.reserve(thread + 1);  // push_back below cannot throw
+    while (batch_contexts.size() <= thread) {
+        polymass_context* batch =
+            polymass::capi::create_object<polymass_context>(allocator, allocator, &hook_memory);
+        if (!batch) throw std::bad_alloc();
+        batch->serial_only_ = true;
+        batch->set_scratch_limit(scratch_limit_);
+        batch_contexts.push_back(batch);
+    }
+    polymass_context* batch = batch_contexts[thread];
+    batch->options = options;
+    return batch;
+}
 
 int32_t polymass_context::fail(int32_t status, const char* format, ...) {
     va_list arguments;
@@ -130,6 +173,14 @@ POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
         if (const int32_t status = check_struct(context, out_options, "out_options")) return status;
         write_struct(out_options, context->options);
         return POLYMASS_OK;
+    });
+}
+
+POLYMASS_API int32_t polymass_context_set_scratch_limit(polymass_context* context,
+                                                        uint64_t max_kept_bytes) {
+    return guarded(context, [&] {
+        context->set_scratch_limit(max_kept_bytes);
+        return int32_t(POLYMASS_OK);
     });
 }
 

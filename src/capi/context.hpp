@@ -1,18 +1,27 @@
 // The context behind polymass_context: options, the caller's allocator (as a
-// std::pmr::memory_resource for core/), and the last detailed error message.
+// std::pmr::memory_resource for core/, keeping scratch blocks between calls),
+// the library's workers, and the last detailed error message.
 #pragma once
 
 #include <polymass/polymass.h>
 
 #include <cstdint>
 #include <memory_resource>
+#include <mutex>
 #include <new>
+#include <optional>
 #include <utility>
+
+#include "core/task_runner.hpp"
+#include "core/worker_pool.hpp"
+#include "scratch_memory.hpp"
 
 namespace polymass::capi {
 
 // Routes every allocation of core/ through the caller's polymass_allocator;
-// a NULL from it becomes std::bad_alloc, which the API guard reports.
+// a NULL from it becomes std::bad_alloc, which the API guard reports. The
+// library's threads may allocate at the same time: the caller's functions are
+// called from one thread at a time.
 class HookMemoryResource final : public std::pmr::memory_resource {
 public:
     explicit HookMemoryResource(const polymass_allocator& allocator) : allocator_(allocator) {}
@@ -25,6 +34,7 @@ private:
     }
 
     polymass_allocator allocator_;
+    std::mutex mutex_;
 };
 
 // The allocator to use: the caller's, or malloc-backed when NULL.
@@ -60,15 +70,40 @@ int32_t call_options(polymass_context* context, const polymass_options* options,
 }  // namespace polymass::capi
 
 struct polymass_context {
-    explicit polymass_context(const polymass_allocator& hook) : allocator(hook), memory(hook) {}
+    // A batch's context allocates through its parent's hook (`shared`), so
+    // that the caller's allocator sees one thread at a time.
+    explicit polymass_context(const polymass_allocator& hook,
+                              polymass::capi::HookMemoryResource* shared = nullptr)
+        : allocator(hook),
+          hook_memory(hook),
+          memory(shared ? shared : &hook_memory),
+          batch_contexts(&hook_memory) {}
+    ~polymass_context();
 
     polymass_allocator allocator;
-    polymass::capi::HookMemoryResource memory;
+    polymass::capi::HookMemoryResource hook_memory;
+    polymass::capi::ScratchMemoryResource memory;  // what core/ allocates from
     polymass_options options{
-        sizeof(polymass_options), 0, POLYMASS_DEFAULT_PLANARITY_TOLERANCE, 0.0, {}, 0.0};
+        sizeof(polymass_options), 0, POLYMASS_DEFAULT_PLANARITY_TOLERANCE, 0.0, {}, 0.0, 0};
     char message[512] = "";
 
     void clear_message() { message[0] = '\0'; }
     // Formats the message and returns status, so that `return fail(...)` reads naturally.
     int32_t fail(int32_t status, const char* format, ...) __attribute__((format(printf, 3, 4)));
+
+    // What runs the pieces of a call with these (checked) options: the
+    // calling thread alone, or the context's workers, started on first use.
+    polymass::core::TaskRunner& tasks(const polymass_options& call_options);
+    // One context per thread of a batch (each item needs its own message and
+    // scratch), created on first use and kept; their own calls run serially.
+    polymass_context* batch_context(std::size_t thread);
+    // Bounds the scratch memory kept between calls, the batch's contexts' too.
+    void set_scratch_limit(uint64_t bytes);
+
+private:
+    polymass::core::SerialTaskRunner serial_;
+    std::optional<polymass::core::WorkerPool> workers_;
+    std::pmr::vector<polymass_context*> batch_contexts;
+    uint64_t scratch_limit_ = UINT64_MAX;
+    bool serial_only_ = false;  // a batch's context: its thread is one of the workers
 };

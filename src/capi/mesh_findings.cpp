@@ -48,6 +48,7 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
     settings.policy.accept_inverted = options.flags & POLYMASS_OPTION_ACCEPT_INVERTED;
     settings.policy.accept_balanced_non_manifold =
         options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
+    settings.tasks = &context->tasks(options);
     return visit_mesh(input, [&](const auto& view) {
         return core::analyse_mesh(view, settings, &context->memory);
     });

@@ -38,7 +38,8 @@ struct StructVersions;
 template <>
 struct StructVersions<polymass_options> {
     static constexpr uint32_t ends[] = {
-        POLYMASS_FIELD_END(polymass_options, weld_tolerance)};  // 1.0
+        POLYMASS_FIELD_END(polymass_options, weld_tolerance),    // 1.0
+        POLYMASS_FIELD_END(polymass_options, shell_thickness)};  // 1.2
     static polymass_options defaults() {
         return zeroed<polymass_options>();
     }  // 0: default tolerances

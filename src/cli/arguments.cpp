@@ -23,6 +23,7 @@ struct RawOptions {
     std::vector<std::string> files;
     std::vector<std::string> densities, masses;  // D or NAME=D, repeatable
     std::string scale, units, about, origin, weld_tolerance, planarity_tolerance;
+    std::string threads;
     bool json = false, urdf = false, sdf = false, mjcf = false;
     std::string from, mass_from;  // polymass audit
     bool repair = false, hull = false;
@@ -166,6 +167,11 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                    "(with --shell T), hull: e.g. --fallback repair,hull")
         ->group(kModes)
         ->option_text("LIST");
+    app.add_option("--threads", raw.threads,
+                   "threads the library may use; the results do not depend\n"
+                   "on it (default: all cores)")
+        ->group("Checks")
+        ->option_text("N");
     app.add_flag("--timings", arguments.timings,
                  "print the time spent reading and computing to stderr")
         ->group("Checks");
@@ -270,6 +276,15 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
                              raw.planarity_tolerance + "'");
         }
         arguments.planarity_tolerance = tolerance;
+    }
+    if (!raw.threads.empty()) {
+        double threads = 0.0;
+        if (!parse_double(raw.threads, threads) || !(threads >= 1.0) ||
+            threads > POLYMASS_MAX_THREADS || threads != std::floor(threads)) {
+            throw UsageError("--threads wants a whole number in [1, " +
+                             std::to_string(POLYMASS_MAX_THREADS) + "], not '" + raw.threads + "'");
+        }
+        arguments.threads = uint32_t(threads);
     }
     read_modes(raw, arguments);
 }

@@ -53,6 +53,7 @@ struct Arguments {
     bool timings = false;
     double weld_tolerance = 1e-9;
     double planarity_tolerance = 0.0;  // 0: the library's default
+    uint32_t threads = 0;              // --threads N; 0: all cores
     bool triangulate = false;
     AuditArguments audit;
     // The modes to try in order (POLYMASS_MODE_*): the solid alone by

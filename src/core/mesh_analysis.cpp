@@ -7,6 +7,8 @@ namespace polymass::core {
 template <class Scalar, class Index>
 MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSettings& settings,
                           std::pmr::memory_resource* memory) {
+    SerialTaskRunner serial;
+    TaskRunner& tasks = settings.tasks ? *settings.tasks : serial;
     MeshAnalysis analysis(scan_mesh(mesh, memory));
     const MeshScan& scan = analysis.scan;
     analysis.used_vertex_count = scan.used_vertex_count;
@@ -30,7 +32,8 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
             for (std::size_t vertex = 0; vertex < welded.size(); ++vertex)
                 analysis.used_vertex_count += scan.is_used(vertex) && welded[vertex] == vertex;
         }
-        analysis.topology = analyse_topology(mesh, settings.weld ? welded.data() : nullptr, memory);
+        analysis.topology =
+            analyse_topology(mesh, settings.weld ? welded.data() : nullptr, tasks, memory);
         if (stop()) return analysis;
     }
     const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
@@ -49,7 +52,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         analysis.verdict.valid()) {
         analysis.shells =
             survey_shells(mesh, vertex_ids, integration.reference, analysis.verdict.outward,
-                          analysis.integration->integrals.volume, memory);
+                          analysis.integration->integrals.volume, tasks, memory);
         if (stop()) return analysis;
     }
     if (settings.check_intersections && std::isfinite(scan.diagonal())) {

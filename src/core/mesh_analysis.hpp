@@ -14,6 +14,7 @@
 #include "mesh_view.hpp"
 #include "shell_survey.hpp"
 #include "surface_overlaps.hpp"
+#include "task_runner.hpp"
 #include "topology.hpp"
 #include "verdict.hpp"
 
@@ -27,6 +28,8 @@ struct AnalysisSettings {
     bool stop_at_first_problem = true;
     double planarity_tolerance = 1e-6;
     Policy policy;
+    // Runs the pieces of the passes over the faces; null: the calling thread.
+    TaskRunner* tasks = nullptr;
 };
 
 struct MeshAnalysis {

@@ -30,8 +30,8 @@ void record_kinds(ShellSurvey& survey) {
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                           const Eigen::Vector3d& reference, int outward, double whole_volume,
-                          std::pmr::memory_resource* memory) {
-    ShellSurvey survey(find_shells(mesh, vertex_ids, memory), memory);
+                          TaskRunner& tasks, std::pmr::memory_resource* memory) {
+    ShellSurvey survey(find_shells(mesh, vertex_ids, tasks, memory), memory);
     survey.summary.resize(survey.shells.count);
     // One shell is the whole surface, whose volume the caller knows positive
     // (outward): nothing to compare it with.
@@ -96,7 +96,7 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                                        \
     template ShellSurvey survey_shells<Scalar, Index>(                                             \
         const MeshView<Scalar, Index>&, const std::uint32_t*, const Eigen::Vector3d&, int, double, \
-        std::pmr::memory_resource*);
+        TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

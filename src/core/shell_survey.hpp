@@ -56,7 +56,7 @@ struct ShellSurvey {
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                           const Eigen::Vector3d& reference, int outward, double whole_volume,
-                          std::pmr::memory_resource* memory);
+                          TaskRunner& tasks, std::pmr::memory_resource* memory);
 
 // Classifies again by the winding numbers of find_overlaps (those it could
 // count; the others keep their boxes' answer).

@@ -1,40 +1,101 @@
 #include "shells.hpp"
 
 #include <numeric>
+#include <utility>
 
-#include "smallest_index_sets.hpp"
+#include "face_blocks.hpp"
 
 namespace polymass::core {
+namespace {
+
+// Union-find whose root is always the smallest index of its set (as
+// smallest_index_sets.hpp), safe for several threads joining at once: a root
+// is linked below a smaller one by compare-and-swap, and every parent is
+// smaller than its child, so paths halved by a thread reading an older parent
+// still lead to the root. The sets and their roots end the same whatever the
+// order of the joins - the shells' numbers do not depend on the threads.
+class ConcurrentSmallestIndexSets {
+public:
+    explicit ConcurrentSmallestIndexSets(std::pmr::vector<std::uint32_t>& parent)
+        : parent_(parent.data()) {}
+
+    std::uint32_t find(std::uint32_t index) const {
+        for (;;) {
+            const std::uint32_t parent = load(index);
+            if (parent == index) return index;
+            const std::uint32_t grandparent = load(parent);
+            if (grandparent != parent)
+                __atomic_store_n(&parent_[index], grandparent, __ATOMIC_RELAXED);  // halving
+            index = grandparent;
+        }
+    }
+    // Returns the joined set's root (as it is then), which the next join of
+    // the same face starts from: one search saved per join.
+    std::uint32_t join(std::uint32_t a, std::uint32_t b) const {
+        for (;;) {
+            a = find(a);
+            b = find(b);
+            if (a == b) return a;
+            if (a > b) std::swap(a, b);
+            std::uint32_t expected = b;  // b is still a root
+            if (__atomic_compare_exchange_n(&parent_[b], &expected, a, false, __ATOMIC_RELAXED,
+                                            __ATOMIC_RELAXED))
+                return a;
+        }
+    }
+
+private:
+    std::uint32_t load(std::uint32_t index) const {
+        return __atomic_load_n(&parent_[index], __ATOMIC_RELAXED);
+    }
+
+    std::uint32_t* parent_;
+};
+
+}  // namespace
 
 template <class Scalar, class Index>
 Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                   std::pmr::memory_resource* memory) {
+                   TaskRunner& tasks, std::pmr::memory_resource* memory) {
     auto id = [&](std::size_t position) {
         const std::uint32_t vertex = mesh.indices[position];
         return vertex_ids ? vertex_ids[vertex] : vertex;
     };
+    const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
     std::pmr::vector<std::uint32_t> parent(mesh.vertex_count, memory);
     std::iota(parent.begin(), parent.end(), 0u);
-    SmallestIndexSets sets(parent);
-    for_each_face(mesh, [&](std::size_t, std::size_t first, std::size_t size) {
-        for (std::size_t i = 1; i < size; ++i) sets.join(id(first), id(first + i));
+    const ConcurrentSmallestIndexSets sets(parent);
+    tasks.run(starts.size(), [&](std::size_t block) {
+        for_each_face_of_block(mesh, block, starts[block],
+                               [&](std::size_t, std::size_t first, std::size_t size) {
+                                   std::uint32_t root = id(first);
+                                   for (std::size_t i = 1; i < size; ++i)
+                                       root = sets.join(root, id(first + i));
+                               });
     });
-    // Shells numbered as their first faces come: a root's number, once met.
+    // Each face's root, then shells numbered as their first faces come.
+    Shells shells(memory);
+    shells.of_face.resize(mesh.face_count);
+    tasks.run(starts.size(), [&](std::size_t block) {
+        for_each_face_of_block(mesh, block, starts[block],
+                               [&](std::size_t face, std::size_t first, std::size_t) {
+                                   shells.of_face[face] = sets.find(id(first));
+                               });
+    });
     constexpr std::uint32_t unnumbered = UINT32_MAX;
     std::pmr::vector<std::uint32_t> number_of_root(mesh.vertex_count, unnumbered, memory);
-    Shells shells(memory);
-    shells.of_face.reserve(mesh.face_count);
-    for_each_face(mesh, [&](std::size_t, std::size_t first, std::size_t) {
-        std::uint32_t& number = number_of_root[sets.find(id(first))];
+    for (std::uint32_t& shell : shells.of_face) {
+        std::uint32_t& number = number_of_root[shell];
         if (number == unnumbered) number = std::uint32_t(shells.count++);
-        shells.of_face.push_back(number);
-    });
+        shell = number;
+    }
     return shells;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
-    template Shells find_shells<Scalar, Index>(const MeshView<Scalar, Index>&, \
-                                               const std::uint32_t*, std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                       \
+    template Shells find_shells<Scalar, Index>(const MeshView<Scalar, Index>&,    \
+                                               const std::uint32_t*, TaskRunner&, \
+                                               std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

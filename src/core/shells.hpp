@@ -11,6 +11,7 @@
 
 #include "mesh_scan.hpp"
 #include "mesh_view.hpp"
+#include "task_runner.hpp"
 
 namespace polymass::core {
 
@@ -23,8 +24,10 @@ struct Shells {
 
 // vertex_ids maps a vertex to its identity (welding; see weld_vertices), null
 // meaning the index itself. Indices must be in range; faces fewer than 2^32.
+// The faces are joined in blocks on `tasks`; the numbering is the same for
+// every runner.
 template <class Scalar, class Index>
 Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                   std::pmr::memory_resource* memory);
+                   TaskRunner& tasks, std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

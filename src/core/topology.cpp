@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "face_blocks.hpp"
+
 namespace polymass::core {
 namespace {
 
@@ -20,39 +22,71 @@ namespace {
 //
 // Entry is 32 bits when every vertex number fits in 31 bits and the entries
 // fit 32-bit offsets; 64 bits otherwise (meshes of billions of indices).
-template <class Entry, class Scalar, class Index, class VertexId>
-TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id,
-                           std::pmr::memory_resource* memory) {
-    // end_of[v]: first counts, then (after the prefix sum) where v's bucket
-    // starts, then (after filing, each bucket filled from its start) where it ends.
-    std::pmr::vector<Entry> end_of(mesh.vertex_count, Entry{0}, memory);
-    auto each_edge = [&](auto&& visit) {
-        for_each_face(mesh, [&](std::size_t, std::size_t first, std::size_t size) {
-            std::uint32_t from = id(first + size - 1);
-            for (std::size_t i = 0; i < size; ++i) {
-                const std::uint32_t to = id(first + i);
-                if (from != to) visit(from, to);
-                from = to;
-            }
-        });
-    };
-    each_edge([&](std::uint32_t from, std::uint32_t to) { ++end_of[std::min(from, to)]; });
-    Entry edge_total = 0;
-    for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
-    std::pmr::vector<Entry> entries(edge_total, memory);
-    each_edge([&](std::uint32_t from, std::uint32_t to) {
-        const bool down = from > to;
-        entries[end_of[down ? to : from]++] = (Entry(down ? from : to) << 1) | Entry(down);
-    });
+//
+// On several threads the faces are counted and filed in fixed blocks, each
+// bucket slot taken with an atomic increment: which thread files an edge
+// first changes the order within a bucket, which its sort undoes. The walk
+// runs in fixed blocks of lower vertices whose findings are joined in order.
+constexpr std::size_t vertices_per_piece = std::size_t{1} << 15;
 
+template <bool concurrent, class Entry>
+Entry increment(Entry& counter) {
+    if constexpr (concurrent)
+        return __atomic_fetch_add(&counter, Entry{1}, __ATOMIC_RELAXED);
+    else
+        return counter++;
+}
+
+// The buckets hold about three entries: insertion beats a general sort.
+template <class Entry>
+void sort_bucket(Entry* first, Entry* last) {
+    if (last - first > 16) {
+        std::sort(first, last);
+        return;
+    }
+    for (Entry* next = first + 1; next < last; ++next) {
+        const Entry value = *next;
+        Entry* at = next;
+        for (; at > first && at[-1] > value; --at) *at = at[-1];
+        *at = value;
+    }
+}
+
+// Visits the directed edges of one block of faces, in face order.
+template <class Scalar, class Index, class VertexId, class Visit>
+void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
+                        std::size_t first_index, VertexId& id, Visit&& visit) {
+    for_each_face_of_block(mesh, block, first_index,
+                           [&](std::size_t, std::size_t first, std::size_t size) {
+                               std::uint32_t from = id(first + size - 1);
+                               for (std::size_t i = 0; i < size; ++i) {
+                                   const std::uint32_t to = id(first + i);
+                                   if (from != to) visit(from, to);
+                                   from = to;
+                               }
+                           });
+}
+
+// Classifies the edges whose lower vertex is in [first_low, last_low), from
+// their bucket entries starting at `entries`.
+template <class Entry>
+TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t first_low,
+                            std::size_t last_low) {
     TopologyReport report;
-    Entry begin = 0;
-    for (std::size_t low = 0; low < end_of.size(); ++low) {
-        Entry* const first = entries.data() + begin;
-        Entry* const last = entries.data() + end_of[low];
+    Entry begin = first_low == 0 ? 0 : end_of[first_low - 1];
+    for (std::size_t low = first_low; low < last_low; ++low) {
+        Entry* const first = entries + begin;
+        Entry* const last = entries + end_of[low];
         begin = end_of[low];
-        std::sort(first, last);  // by higher vertex, ups (bit 0) before downs
+        sort_bucket(first, last);  // by higher vertex, ups (bit 0) before downs
         for (Entry* at = first; at != last;) {
+            // The common edge, once each way and by no other face, first.
+            if (last - at >= 2 && at[1] == (at[0] | 1) && !(at[0] & 1) &&
+                (last - at == 2 || (at[2] >> 1) != (at[0] >> 1))) {
+                ++report.edge_count;
+                at += 2;
+                continue;
+            }
             const Entry high = *at >> 1;
             std::size_t ups = 0, downs = 0;
             for (; at != last && (*at >> 1) == high; ++at) (*at & 1 ? downs : ups) += 1;
@@ -74,26 +108,75 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id,
     return report;
 }
 
+template <bool concurrent, class Entry, class Scalar, class Index, class VertexId>
+TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, TaskRunner& tasks,
+                           std::pmr::memory_resource* memory) {
+    const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
+    // end_of[v]: first counts, then (after the prefix sum) where v's bucket
+    // starts, then (after filing, each bucket filled from its start) where it ends.
+    std::pmr::vector<Entry> end_of(mesh.vertex_count, Entry{0}, memory);
+    tasks.run(starts.size(), [&](std::size_t block) {
+        each_edge_of_block(mesh, block, starts[block], id,
+                           [&](std::uint32_t from, std::uint32_t to) {
+                               increment<concurrent>(end_of[std::min(from, to)]);
+                           });
+    });
+    Entry edge_total = 0;
+    for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
+    std::pmr::vector<Entry> entries(edge_total, memory);
+    tasks.run(starts.size(), [&](std::size_t block) {
+        each_edge_of_block(mesh, block, starts[block], id,
+                           [&](std::uint32_t from, std::uint32_t to) {
+                               const bool down = from > to;
+                               entries[increment<concurrent>(end_of[down ? to : from])] =
+                                   (Entry(down ? from : to) << 1) | Entry(down);
+                           });
+    });
+
+    const std::size_t pieces = (mesh.vertex_count + vertices_per_piece - 1) / vertices_per_piece;
+    std::pmr::vector<TopologyReport> parts(pieces, memory);
+    tasks.run(pieces, [&](std::size_t piece) {
+        parts[piece] = walk_buckets(entries.data(), end_of.data(), piece * vertices_per_piece,
+                                    std::min(mesh.vertex_count, (piece + 1) * vertices_per_piece));
+    });
+    TopologyReport report;
+    for (const TopologyReport& part : parts) {
+        report.edge_count += part.edge_count;
+        report.open.append(part.open);
+        report.misoriented.append(part.misoriented);
+        report.non_manifold.append(part.non_manifold);
+        report.non_manifold_balanced &= part.non_manifold_balanced;
+    }
+    return report;
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
-                                const std::uint32_t* vertex_ids,
+                                const std::uint32_t* vertex_ids, TaskRunner& tasks,
                                 std::pmr::memory_resource* memory) {
+    // Atomic increments cost several times plain ones: only when the pieces
+    // may run at the same time.
+    const bool concurrent = dynamic_cast<SerialTaskRunner*>(&tasks) == nullptr;
     auto analyse = [&](auto&& id) {
         const bool narrow = mesh.vertex_count <= (std::size_t{1} << 31) &&
                             mesh.index_count <= std::numeric_limits<std::uint32_t>::max();
-        return narrow ? match_edges<std::uint32_t>(mesh, id, memory)
-                      : match_edges<std::uint64_t>(mesh, id, memory);
+        if (concurrent)
+            return narrow ? match_edges<true, std::uint32_t>(mesh, id, tasks, memory)
+                          : match_edges<true, std::uint64_t>(mesh, id, tasks, memory);
+        return narrow ? match_edges<false, std::uint32_t>(mesh, id, tasks, memory)
+                      : match_edges<false, std::uint64_t>(mesh, id, tasks, memory);
     };
     if (vertex_ids)
         return analyse([&](std::size_t position) { return vertex_ids[mesh.indices[position]]; });
     return analyse([&](std::size_t position) { return mesh.indices[position]; });
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                  \
-    template TopologyReport analyse_topology<Scalar, Index>( \
-        const MeshView<Scalar, Index>&, const std::uint32_t*, std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                    \
+    template TopologyReport analyse_topology<Scalar, Index>(const MeshView<Scalar, Index>&,    \
+                                                            const std::uint32_t*, TaskRunner&, \
+                                                            std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -17,6 +17,7 @@
 #include "findings.hpp"
 
 #include "mesh_view.hpp"
+#include "task_runner.hpp"
 
 namespace polymass::core {
 
@@ -35,6 +36,13 @@ struct EdgeFinding {
         if (count == 0) first_traversals = traversals;
         if (count < kKeptLocations) lowest[count] = {from, to};
         ++count;
+    }
+    // The findings of edges that all come after this one's.
+    void append(const EdgeFinding& later) {
+        if (count == 0) first_traversals = later.first_traversals;
+        for (std::size_t i = 0; i < later.kept() && count + i < kKeptLocations; ++i)
+            lowest[count + i] = later.lowest[i];
+        count += later.count;
     }
 };
 
@@ -55,8 +63,11 @@ struct TopologyReport {
 // vertex_ids maps a vertex index to its identity for the check (welding); null
 // means the index itself. Indices must be in range. Edges whose two ends are
 // the same vertex (a repeated index) are no edges.
+// The passes run in pieces on `tasks`; the report is the same for every
+// runner.
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
-                                const std::uint32_t* vertex_ids, std::pmr::memory_resource* memory);
+                                const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                                std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

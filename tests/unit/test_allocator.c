@@ -434,12 +434,61 @@ static void test_out_of_memory_message(void** state) {
     counting_release(&a);
 }
 
+/* The context keeps its large scratch blocks for the next call (no new
+   memory from the allocator for them), within the limit it is given, and
+   frees them when destroyed; the results do not change. */
+static void test_context_keeps_scratch(void** state) {
+    static const double centre[3] = {1e3, 0, 0};
+    counting_allocator a;
+    polymass_allocator alloc;
+    polymass_context* ctx = NULL;
+    pm_mesh m;
+    polymass_mesh_desc d;
+    polymass_mass_properties first, p;
+    size_t before, first_call, later_call, unkept_call;
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 200, 100, 10.0, 3.0, centre); /* 40,000 triangles */
+    d = pm_mesh_desc(&m);
+    counting_init(&a, -1, 0);
+    alloc = counting_interface(&a);
+    assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_OK);
+    pm_props_init(&first);
+    before = a.allocations;
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&first, ctx, &d, NULL));
+    first_call = a.allocations - before;
+    pm_props_init(&p);
+    before = a.allocations;
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    later_call = a.allocations - before;
+    assert_memory_equal(&first, &p, sizeof p);
+    assert_true(later_call < first_call);
+    assert_true(a.live_count > 1); /* the context and its kept blocks */
+    /* nothing kept: every call allocates all it needs */
+    PM_ASSERT_OK(ctx, polymass_context_set_scratch_limit(ctx, 0));
+    assert_int_equal(a.live_count, 1); /* the context alone */
+    before = a.allocations;
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    unkept_call = a.allocations - before;
+    assert_true(unkept_call >= first_call && unkept_call > later_call);
+    assert_int_equal(a.live_count, 1);
+    assert_memory_equal(&first, &p, sizeof p);
+    PM_ASSERT_OK(ctx, polymass_context_set_scratch_limit(ctx, UINT64_MAX));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    polymass_context_destroy(ctx);
+    assert_clean(&a, "kept scratch");
+    assert_int_equal(polymass_context_set_scratch_limit(NULL, 0), POLYMASS_ERROR_INVALID_ARGUMENT);
+    pm_mesh_free(&m);
+    counting_release(&a);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_counting_allocator),
         cmocka_unit_test(test_allocator_is_copied),
         cmocka_unit_test(test_incomplete_allocator),
         cmocka_unit_test(test_mesh_outlives_context_with_allocator),
+        cmocka_unit_test(test_context_keeps_scratch),
         cmocka_unit_test(test_context_create_out_of_memory),
         cmocka_unit_test(test_out_of_memory_message),
         cmocka_unit_test(test_fail_nth_allocation),

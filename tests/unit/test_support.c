@@ -153,6 +153,31 @@ void pm_mesh_add_prism(pm_mesh* m, const double* xy, size_t n, double z0, double
     }
 }
 
+void pm_mesh_add_torus(pm_mesh* m, uint32_t rings, uint32_t segments, double major, double minor,
+                       const double centre[3]) {
+    const double pi = 3.14159265358979323846;
+    const uint32_t base = (uint32_t)m->vertex_count;
+    uint32_t i, j;
+    for (i = 0; i < rings; ++i) {
+        for (j = 0; j < segments; ++j) {
+            const double u = 2 * pi * i / rings, v = 2 * pi * j / segments;
+            pm_mesh_add_vertex(m, centre[0] + (major + minor * cos(v)) * cos(u),
+                               centre[1] + (major + minor * cos(v)) * sin(u),
+                               centre[2] + minor * sin(v));
+        }
+    }
+    for (i = 0; i < rings; ++i) {
+        for (j = 0; j < segments; ++j) {
+            const uint32_t a = base + i * segments + j;
+            const uint32_t b = base + ((i + 1) % rings) * segments + j;
+            const uint32_t c = base + ((i + 1) % rings) * segments + (j + 1) % segments;
+            const uint32_t d = base + i * segments + (j + 1) % segments;
+            pm_mesh_add_tri(m, a, b, c);
+            pm_mesh_add_tri(m, a, c, d);
+        }
+    }
+}
+
 void pm_mesh_from_reference(pm_mesh* m, const pm_reference_solid* ref) {
     size_t v, f, offset = 0;
     pm_mesh_init(m);

@@ -63,6 +63,10 @@ void pm_mesh_unit_cube(pm_mesh* m, int triangulate);
 /* Extrusion of a counter-clockwise polygon (n points, x y pairs) from z0 to
    z1, caps as single polygon faces, sides as quads. */
 void pm_mesh_add_prism(pm_mesh* m, const double* xy, size_t n, double z0, double z1);
+/* A torus around the z axis through centre: rings x segments quads, two
+   triangles each, outward (a large closed mesh of any size). */
+void pm_mesh_add_torus(pm_mesh* m, uint32_t rings, uint32_t segments, double major, double minor,
+                       const double centre[3]);
 void pm_mesh_from_reference(pm_mesh* m, const pm_reference_solid* ref);
 size_t pm_mesh_face_offset(const pm_mesh* m, size_t face);
 void pm_mesh_reverse_face(pm_mesh* m, size_t face);

@@ -1,8 +1,12 @@
 /* "A mesh is immutable once created: any number of threads may read it at
- * once, each through its own context"; distinct contexts are independent. */
+ * once, each through its own context"; distinct contexts are independent.
+ * The library's own threads (polymass_options.threads): every count gives
+ * the same bits, for one large mesh and for a batch. */
 #include "test_support.h"
 
 #include <pthread.h>
+#include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 enum { THREADS = 4, ROUNDS = 200 };
@@ -106,10 +110,180 @@ static void test_contexts_are_independent(void** state) {
     polymass_context_destroy(b);
 }
 
+/* ------------------------------------------------------------------------ */
+/* The library's workers                                                    */
+/* ------------------------------------------------------------------------ */
+
+static const uint32_t thread_counts[] = {1, 2, 3, 4, 7};
+enum { THREAD_COUNTS = sizeof thread_counts / sizeof thread_counts[0] };
+
+static polymass_options options_with_threads(uint32_t flags, uint32_t threads) {
+    polymass_options o = pm_options(flags, 0.0);
+    o.threads = threads;
+    return o;
+}
+
+/* The checked path (scan, topology, integration, the shell) bit for bit for
+   every count, on a torus far from the origin: 302,400 triangles, several
+   blocks of faces. */
+static void test_thread_counts_give_the_same_bits(void** state) {
+    static const double centre[3] = {3e6, -2e6, 1e6};
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    polymass_mesh_desc desc;
+    polymass_mass_properties first, p;
+    int k;
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 420, 360, 10.0, 3.0, centre);
+    desc = pm_mesh_desc(&m);
+    assert_true(m.face_count >= 300000);
+    for (k = 0; k < THREAD_COUNTS; ++k) {
+        const polymass_options o = options_with_threads(0, thread_counts[k]);
+        pm_props_init(k == 0 ? &first : &p);
+        PM_ASSERT_OK(ctx, polymass_mass_properties_compute_with_options(k == 0 ? &first : &p, ctx,
+                                                                        &desc, NULL, &o));
+        if (k > 0) assert_memory_equal(&first, &p, sizeof p);
+    }
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* A defective mesh of several blocks of faces and of vertices: the same
+   findings, first locations and message, and the same shells, for every
+   count. */
+static void test_thread_counts_give_the_same_findings(void** state) {
+    static const double centre[3] = {0, 0, 0};
+    polymass_context* ctx = pm_context_new(0);
+    pm_mesh m;
+    polymass_mesh_desc desc;
+    polymass_diagnostics first, report;
+    char first_message[512];
+    uint32_t *first_shells, *shells;
+    uint64_t first_shell_count = 0, shell_count = 0;
+    int k, face;
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 350, 100, 10.0, 3.0, centre); /* 2 blocks of faces, of vertices */
+    for (face = 69000; face > 0; face -= 6900) pm_mesh_remove_face(&m, (size_t)face);
+    pm_mesh_reverse_face(&m, 123);
+    pm_mesh_add_torus(&m, 20, 10, 4.0, 1.0, centre); /* a second shell */
+    desc = pm_mesh_desc(&m);
+    first_shells = calloc(m.face_count, sizeof *first_shells);
+    shells = calloc(m.face_count, sizeof *shells);
+    assert_non_null(first_shells);
+    assert_non_null(shells);
+    for (k = 0; k < THREAD_COUNTS; ++k) {
+        const polymass_options o = options_with_threads(0, thread_counts[k]);
+        polymass_mass_properties p;
+        pm_diagnostics_init(k == 0 ? &first : &report);
+        PM_ASSERT_STATUS(
+            ctx, POLYMASS_ERROR_OPEN,
+            polymass_mesh_check_with_options(k == 0 ? &first : &report, ctx, &desc, &o));
+        pm_props_init(&p);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN,
+                         polymass_mass_properties_compute_with_options(&p, ctx, &desc, NULL, &o));
+        if (k == 0) {
+            strcpy(first_message, polymass_context_message(ctx));
+        } else {
+            assert_memory_equal(&first, &report, sizeof report);
+            assert_string_equal(first_message, polymass_context_message(ctx));
+        }
+        PM_ASSERT_OK(ctx, polymass_mesh_shells_with_options(
+                              k == 0 ? first_shells : shells,
+                              k == 0 ? &first_shell_count : &shell_count, ctx, &desc, &o));
+        if (k > 0) {
+            assert_int_equal(first_shell_count, shell_count);
+            assert_memory_equal(first_shells, shells, m.face_count * sizeof *shells);
+        }
+    }
+    assert_int_equal(first_shell_count, 2);
+    free(first_shells);
+    free(shells);
+    assert_true(first.open_edges > 0 && first.misoriented_edges > 0);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
+/* A batch spread over the context's threads: each item's status, message
+   and properties as with one thread, whatever the items' own options. */
+static void test_batch_thread_counts_give_the_same_bits(void** state) {
+    enum { ITEMS = 13 };
+    pm_mesh meshes[ITEMS];
+    polymass_mesh_desc descs[ITEMS];
+    polymass_mass_properties first[ITEMS], got[ITEMS];
+    polymass_batch_item first_items[ITEMS], items[ITEMS];
+    const polymass_options own = options_with_threads(POLYMASS_OPTION_ACCEPT_INVERTED, 3);
+    int i, k;
+    (void)state;
+    for (i = 0; i < ITEMS; ++i) {
+        pm_mesh_from_reference(&meshes[i], &pm_reference_solids[i % PM_REF_COUNT]);
+        if (i == 3) pm_mesh_remove_face(&meshes[i], 0);        /* open: fails */
+        if (i == 5 || i == 8) pm_mesh_reverse_all(&meshes[i]); /* inverted: 8 accepted */
+        descs[i] = pm_mesh_desc(&meshes[i]);
+    }
+    for (k = 0; k < THREAD_COUNTS; ++k) {
+        polymass_context* ctx = pm_context_new(0);
+        const polymass_options o = options_with_threads(0, thread_counts[k]);
+        polymass_batch_item* at = k == 0 ? first_items : items;
+        polymass_mass_properties* props = k == 0 ? first : got;
+        uint64_t failed = 99;
+        PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+        for (i = 0; i < ITEMS; ++i) {
+            assert_int_equal(polymass_batch_item_init(&at[i], sizeof at[i]), POLYMASS_OK);
+            pm_props_init(&props[i]);
+            at[i].desc = &descs[i];
+            at[i].options = i == 8 ? &own : NULL;
+            at[i].properties = &props[i];
+        }
+        PM_ASSERT_OK(ctx, polymass_batch_compute(at, ITEMS, &failed, ctx));
+        assert_int_equal(failed, 2);
+        for (i = 0; k > 0 && i < ITEMS; ++i) {
+            assert_int_equal(items[i].status, first_items[i].status);
+            assert_string_equal(items[i].message, first_items[i].message);
+            assert_memory_equal(&got[i], &first[i], sizeof got[i]);
+        }
+        polymass_context_destroy(ctx);
+    }
+    assert_int_equal(first_items[3].status, POLYMASS_ERROR_OPEN);
+    assert_int_equal(first_items[5].status, POLYMASS_ERROR_INVERTED);
+    assert_int_equal(first_items[8].status, POLYMASS_OK);
+    for (i = 0; i < ITEMS; ++i) pm_mesh_free(&meshes[i]);
+}
+
+/* threads is checked, read and kept; a caller of the 1.2 layout gets 1. */
+static void test_threads_option(void** state) {
+    polymass_context* ctx = pm_context_new(0);
+    polymass_options o = options_with_threads(0, POLYMASS_MAX_THREADS + 1);
+    polymass_options read;
+    polymass_mass_properties p;
+    (void)state;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_context_set_options(ctx, &o));
+    assert_non_null(strstr(polymass_context_message(ctx), "options->threads is 257"));
+    o.threads = 5;
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    read = pm_options(0, 0.0);
+    PM_ASSERT_OK(ctx, polymass_context_get_options(&read, ctx));
+    assert_int_equal(read.threads, 5);
+    o.struct_size = (uint32_t)offsetof(polymass_options, threads);
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    PM_ASSERT_OK(ctx, polymass_context_get_options(&read, ctx));
+    assert_int_equal(read.threads, 0);
+    /* threads beyond the hardware's still give the answer */
+    o = options_with_threads(0, POLYMASS_MAX_THREADS);
+    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    PM_ASSERT_REFERENCE_COMPUTE(ctx, &pm_reference_solids[PM_REF_TORUS_TRIS], &p);
+    polymass_context_destroy(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_concurrent_readers),
         cmocka_unit_test(test_contexts_are_independent),
+        cmocka_unit_test(test_thread_counts_give_the_same_bits),
+        cmocka_unit_test(test_thread_counts_give_the_same_findings),
+        cmocka_unit_test(test_batch_thread_counts_give_the_same_bits),
+        cmocka_unit_test(test_threads_option),
     };
     return cmocka_run_group_tests_name("threads", tests, NULL, NULL);
 }

@@ -5,6 +5,7 @@ from __future__ import annotations
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
+import pytest
 
 import polymass
 from shapes import SHAPES, torus
@@ -51,3 +52,27 @@ def test_mesh_properties_equal_the_one_call_function():
         assert _fingerprint(mesh.mass_properties(density=density)) == _fingerprint(
             polymass.mass_properties(vertices, faces, density=density)
         )
+
+
+def test_library_threads_give_the_bits_of_one():
+    vertices, faces = torus(3.0, 1.0, 400, 200)  # 160k triangles: several blocks of faces
+    vertices = vertices + 1e5
+    one = polymass.mass_properties(vertices, faces, threads=1)
+    report = polymass.check(vertices, faces)
+    for threads in (2, 3, 7):
+        many = polymass.mass_properties(vertices, faces, threads=threads)
+        assert _fingerprint(many) == _fingerprint(one)
+        assert many.error_bound == one.error_bound
+        assert polymass.check(vertices, faces, threads=threads) == report
+        assert np.array_equal(
+            polymass.shells(vertices, faces, threads=threads), polymass.shells(vertices, faces)
+        )
+
+
+def test_library_threads_are_checked():
+    vertices, faces = torus(3.0, 1.0, 12, 8)
+    for threads in (0, -2, 2.0, True):
+        with pytest.raises(ValueError, match="threads must be a positive integer"):
+            polymass.mass_properties(vertices, faces, threads=threads)
+    with pytest.raises(polymass.InvalidArgumentError, match="threads"):
+        polymass.mass_properties(vertices, faces, threads=10**6)

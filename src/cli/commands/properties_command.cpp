@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <thread>
 
 #include "commands/commands.hpp"
 #include "commands/part_materials.hpp"
@@ -83,6 +84,9 @@ polymass_options options_for(const Arguments& arguments) {
     options.planarity_tolerance = arguments.planarity_tolerance;
     std::copy(arguments.modes.begin(), arguments.modes.end(), options.modes);
     options.shell_thickness = arguments.shell_thickness;
+    const uint32_t cores = std::max(1u, std::thread::hardware_concurrency());
+    options.threads =
+        arguments.threads ? arguments.threads : std::min<uint32_t>(cores, POLYMASS_MAX_THREADS);
     return options;
 }
 

@@ -32,6 +32,21 @@ def _weld_tolerance(weld: Weld) -> float | None:
     )
 
 
+def _threads(threads: int | None) -> int:
+    """polymass_options.threads: None (the library's default, one thread) or a
+    positive integer, which the library bounds."""
+    if threads is None:
+        return 0
+    if (
+        isinstance(threads, (bool, np.bool_))
+        or not isinstance(threads, numbers.Integral)
+        or threads < 1
+    ):
+        raise ValueError(f"threads must be a positive integer (or None), not {threads!r}")
+    # Beyond uint32_t the library's own check would never see the value.
+    return min(int(threads), 2**32 - 1)
+
+
 _MODES = {
     "repair": _header.POLYMASS_MODE_REPAIR,
     "shell": _header.POLYMASS_MODE_SHELL,
@@ -91,9 +106,11 @@ def call_options(
     shell: float | None = None,
     hull: bool = False,
     fallback: Sequence[str] = (),
+    threads: int | None = None,
 ):
     """The keywords as a polymass_options, for a call that takes its own options."""
     options = new_struct("polymass_options")
+    options.threads = _threads(threads)
     chain = _modes(repair, shell, hull, fallback)
     options.modes = chain + [_header.POLYMASS_MODE_NONE] * (_header.POLYMASS_MAX_MODES - len(chain))
     options.shell_thickness = 0.0 if shell is None else shell

@@ -2,20 +2,19 @@
 
 Each item gets its own result or its own error; one item's failure does not
 stop the others. Results are bit for bit those of `mass_properties`, whatever
-the number of threads.
+the number of threads (the library's own, polymass_options.threads).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 import numpy as np
 
 from ._arrays import mesh_description
 from ._library import context, ffi, lib, new_struct
-from ._options import Weld, call_options
+from ._options import Weld, apply_options, call_options
 from .errors import Error, error_class, raise_for_status
 from .solids import About, MassProperties, _mass_desc
 
@@ -30,9 +29,12 @@ def _per_item(value, count: int, name: str) -> list:
     return values
 
 
-def _compute(pending: list, options) -> list[tuple[int, MassProperties | Error]]:
-    """One ``polymass_batch_compute`` call over pending items, on this thread's
-    context: each item's position and its result or error."""
+def _compute(
+    pending: list, options, threads: int | None
+) -> list[tuple[int, MassProperties | Error]]:
+    """One ``polymass_batch_compute`` call over pending items on this thread's
+    context, spread over ``threads`` of the library's threads: each item's
+    position and its result or error."""
     items = ffi.new("polymass_batch_item[]", len(pending))
     for item, (_, description, mass_desc, _, result) in zip(items, pending):
         item.struct_size = ffi.sizeof("polymass_batch_item")
@@ -41,6 +43,7 @@ def _compute(pending: list, options) -> list[tuple[int, MassProperties | Error]]
         item.options = options
         item.properties = result
     ctx = context()
+    apply_options(ctx, threads=threads)  # the context's threads spread the items
     failed = ffi.new("uint64_t*")
     raise_for_status(lib.polymass_batch_compute(items, len(pending), failed, ctx), ctx)
     outcomes: list[tuple[int, MassProperties | Error]] = []
@@ -64,18 +67,18 @@ def batch(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
-    threads: int = 1,
+    threads: int | None = None,
 ) -> list[MassProperties | Error]:
     """The mass properties of many meshes in one call, in order.
 
     meshes: ``(vertices, faces)`` or ``(vertices, faces, face_sizes)`` tuples, as
         `mass_properties` takes them.
     density, mass: one for every mesh, or a sequence with one per mesh (not both).
-    threads: how many threads compute the meshes. The library has no threads of
-        its own: the meshes are cut into chunks, each computed by one
-        ``polymass_batch_compute`` call on a pool thread with that thread's
-        context, the GIL released during the call. Each mesh's result does not
-        depend on the others, so the results are those of ``threads=1``.
+    threads: how many threads compute the meshes (None: one): the library's own
+        workers take the meshes one by one in a single
+        ``polymass_batch_compute`` call, the GIL released during it. Each
+        mesh's result does not depend on the others, so the results are those
+        of ``threads=1``.
     The other keywords are `mass_properties`'s and apply to every mesh.
 
     Returns a list with, for each mesh, its `MassProperties` or the `polymass.Error`
@@ -83,8 +86,6 @@ def batch(
     wrong with it. Arguments that cannot describe a mesh at all (a ragged array)
     raise at once. The GIL is released while the library computes.
     """
-    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
-        raise ValueError(f"threads must be a positive integer, not {threads!r}")
     count = len(meshes)
     densities = _per_item(density, count, "density")
     masses = _per_item(mass, count, "mass")
@@ -94,6 +95,7 @@ def batch(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
+        threads=threads,
     )
     results: list[MassProperties | Error | None] = [None] * count
     pending = []  # (position, description, mass_desc, point, result): what the items point into
@@ -107,16 +109,6 @@ def batch(
         pending.append((i, description, mass_desc, point, new_struct("polymass_mass_properties")))
     if not pending:
         return results  # type: ignore[return-value]
-    # Several chunks a thread, so that a thread given large meshes does not
-    # hold up the others.
-    size = -(-len(pending) // (4 * threads)) if threads > 1 else len(pending)
-    chunks = [pending[start : start + size] for start in range(0, len(pending), size)]
-    if len(chunks) == 1:
-        computed = [_compute(chunks[0], options)]
-    else:
-        with ThreadPoolExecutor(threads) as pool:
-            computed = list(pool.map(lambda chunk: _compute(chunk, options), chunks))
-    for chunk in computed:
-        for i, outcome in chunk:
-            results[i] = outcome
+    for i, outcome in _compute(pending, options, threads):
+        results[i] = outcome
     return results  # type: ignore[return-value]

@@ -120,6 +120,7 @@ def check(
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
     check_intersections: bool = False,
+    threads: int | None = None,
 ) -> Diagnostics:
     """Runs every check on a surface without stopping at the first finding.
 
@@ -142,6 +143,7 @@ def check(
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
         check_intersections=check_intersections,
+        threads=threads,
     )
     report = new_struct("polymass_diagnostics")
     status = lib.polymass_mesh_check(report, ctx, mesh.desc)
@@ -165,6 +167,7 @@ def shells(
     *,
     face_sizes: npt.ArrayLike | None = None,
     weld: Weld = False,
+    threads: int | None = None,
 ) -> np.ndarray:
     """The shell (connected piece of surface) of each face: an array of face
     numbers 0 .. n_shells - 1, numbered in the order of the shells' first faces.
@@ -178,7 +181,7 @@ def shells(
     """
     mesh = mesh_description(vertices, faces, face_sizes)
     ctx = context()
-    apply_options(ctx, weld=weld)
+    apply_options(ctx, weld=weld, threads=threads)
     face_count = mesh.face_sizes.size if mesh.face_sizes is not None else mesh.indices.size // 3
     of_face = np.empty(face_count, dtype=np.uint32)
     count = ffi.new("uint64_t *")
@@ -228,6 +231,7 @@ def shell_list(
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
     check_intersections: bool = False,
+    threads: int | None = None,
 ) -> list[Shell]:
     """What each shell of a closed surface is: a list of `Shell`, shell i being
     the one `shells` numbers i.
@@ -250,6 +254,7 @@ def shell_list(
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
         check_intersections=check_intersections,
+        threads=threads,
     )
     count = ffi.new("uint64_t *")
     capacity = _SHELLS_FIRST_GUESS

@@ -278,6 +278,7 @@ def mass_properties(
     shell: float | None = None,
     hull: bool = False,
     fallback: Sequence[str] = (),
+    threads: int | None = None,
 ) -> MassProperties:
     """Volume, mass, centre of mass, inertia and principal axes of a closed surface.
 
@@ -327,6 +328,8 @@ def mass_properties(
     fallback: modes tried in order after the solid: a list (or a
         comma-separated string) of "repair", "shell" (with shell=thickness)
         and "hull", such as ["repair", "hull"].
+    threads: how many threads the library may use for the call (None: its
+        default, one); every count gives the same bits.
 
     Returns a `MassProperties`; raises a subclass of `polymass.Error` saying what
     is wrong and where. The GIL is released while the library computes.
@@ -344,6 +347,7 @@ def mass_properties(
         shell=shell,
         hull=hull,
         fallback=fallback,
+        threads=threads,
     )
     desc, point = _mass_desc(density, mass, about)
     result = new_struct("polymass_mass_properties")
@@ -378,6 +382,7 @@ class Mesh:
         accept_non_manifold: bool = False,
         planarity_tolerance: float | None = None,
         check_intersections: bool = False,
+        threads: int | None = None,
     ) -> None:
         mesh = mesh_description(vertices, faces, face_sizes)
         ctx = context()
@@ -389,6 +394,7 @@ class Mesh:
             accept_non_manifold=accept_non_manifold,
             planarity_tolerance=planarity_tolerance,
             check_intersections=check_intersections,
+            threads=threads,
         )
         out = ffi.new("polymass_mesh**")
         raise_for_status(lib.polymass_mesh_create(out, ctx, mesh.desc), ctx)

@@ -26,6 +26,7 @@ pub struct Options {
     weld_tolerance: f64,
     modes: [u32; sys::POLYMASS_MAX_MODES as usize],
     shell_thickness: f64,
+    threads: u32,
 }
 
 /// How a surface becomes a body (`POLYMASS_MODE_*`): see
@@ -295,6 +296,30 @@ impl Options {
         self.shell_thickness
     }
 
+    /// How many threads one call may use: the calling thread and `threads - 1`
+    /// of the context's workers, started on first use, reused and joined when
+    /// the context is dropped (at most `POLYMASS_MAX_THREADS`, checked when the
+    /// options are applied). 0, the default, means one: the library starts no
+    /// thread unless asked. [`Context::batch`](crate::Context::batch) spreads
+    /// its items over them. Every count gives the same bits.
+    ///
+    /// ```
+    /// use polymass::{Context, Options};
+    ///
+    /// let threads = std::thread::available_parallelism().map_or(1, |n| n.get() as u32);
+    /// let mut context = Context::with_options(&Options::new().threads(threads)).unwrap();
+    /// assert_eq!(context.options().unwrap().threads_value(), threads);
+    /// ```
+    pub fn threads(mut self, threads: u32) -> Options {
+        self.threads = threads;
+        self
+    }
+
+    /// The number of threads asked for (0: the library's default, one).
+    pub fn threads_value(&self) -> u32 {
+        self.threads
+    }
+
     /// Whether the topology checks are skipped.
     ///
     /// ```
@@ -368,6 +393,7 @@ impl Options {
             weld_tolerance: self.weld_tolerance,
             modes: self.modes,
             shell_thickness: self.shell_thickness,
+            threads: self.threads,
         }
     }
 
@@ -380,6 +406,7 @@ impl Options {
             weld_tolerance: raw.weld_tolerance,
             modes: raw.modes,
             shell_thickness: raw.shell_thickness,
+            threads: raw.threads,
         }
     }
 }

@@ -5,7 +5,7 @@
 mod common;
 
 use common::*;
-use polymass::{Body, Context, Diagnostics, Error, MassProperties, Mesh, Surface};
+use polymass::{Body, Context, Diagnostics, Error, MassProperties, Mesh, Options, Surface};
 
 fn assert_send_sync<T: Send + Sync>() {}
 fn assert_send<T: Send>() {}
@@ -93,4 +93,24 @@ fn free_functions_from_many_threads_with_shared_slices() {
             });
         }
     });
+}
+
+#[test]
+fn every_thread_count_gives_the_same_bits() {
+    // Several blocks of faces.
+    let (positions, triangles) = torus::torus(300, 250, 1e5);
+    let surface = Surface::triangles(&positions, &triangles);
+    let body = Body::density(7.5);
+    let mut context = Context::new().unwrap();
+    let one = context.mass_properties(&surface, &body).unwrap();
+    for threads in [2, 3, 4, 7] {
+        let mut many = Context::with_options(&Options::new().threads(threads)).unwrap();
+        assert_eq!(many.mass_properties(&surface, &body).unwrap(), one);
+        let items = vec![(surface, body); 9];
+        for result in many.batch(&items).unwrap() {
+            assert_eq!(result.unwrap(), one);
+        }
+    }
+    let too_many = Options::new().threads(polymass_sys::POLYMASS_MAX_THREADS + 1);
+    assert!(Context::with_options(&too_many).is_err());
 }

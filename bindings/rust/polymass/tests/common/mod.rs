@@ -5,6 +5,8 @@
 
 use polymass::Surface;
 
+pub mod torus;
+
 /// Relative tolerance of every comparison with an exact value: volume, mass,
 /// area; matrices relative to their largest entry; the centre of mass
 /// relative to the larger of its distance from the origin and the shape's
