@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <tuple>
 
 #include "smallest_index_sets.hpp"
@@ -27,19 +28,67 @@ std::pmr::vector<std::uint32_t> identity_map(const MeshView<Scalar, Index>& mesh
     return representative;
 }
 
+// The bits of a coordinate, +0 for -0 (the same position).
+std::uint64_t position_bits(double value) {
+    value += 0.0;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+// A 64-bit mix of a position's three bit patterns (splitmix64's finaliser).
+std::uint64_t position_hash(const std::array<std::uint64_t, 3>& bits) {
+    std::uint64_t h = bits[0] * 0x9E3779B97F4A7C15ull ^ bits[1] * 0xC2B2AE3D27D4EB4Full ^
+                      bits[2] * 0x165667B19E3779F9ull;
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 27;
+    return h;
+}
+
+// One hashing pass over the used vertices in index order: the first vertex
+// met at a position (the lowest index) enters the table and names every
+// later one with the same bits. The table holds only distinct positions (a
+// triangle soup asks about each corner, but has a sixth as many vertices),
+// in open addressing with linear probing, at most half full. Comparing bits
+// rather than values is exact welding for finite coordinates and still
+// defined for NaN (copies of one NaN are one vertex), which sorting is not.
 template <class Scalar, class Index>
-void weld_exact(const MeshView<Scalar, Index>& mesh, std::pmr::vector<std::uint32_t>& used,
-                std::pmr::vector<std::uint32_t>& representative) {
-    auto key = [&](std::uint32_t vertex) {
+void weld_exact(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std::uint32_t>& used,
+                std::pmr::vector<std::uint32_t>& representative,
+                std::pmr::memory_resource* memory) {
+    using Bits = std::array<std::uint64_t, 3>;
+    const auto bits_of = [&](std::uint32_t vertex) {
         const Eigen::Vector3d p = mesh.positions[vertex];
-        return std::make_tuple(p.x(), p.y(), p.z());
+        return Bits{position_bits(p.x()), position_bits(p.y()), position_bits(p.z())};
     };
-    // Sorting by position, then index, puts each group's smallest index first.
-    std::sort(used.begin(), used.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return std::make_pair(key(a), a) < std::make_pair(key(b), b);
-    });
-    for (std::size_t i = 1; i < used.size(); ++i) {
-        if (key(used[i]) == key(used[i - 1])) representative[used[i]] = representative[used[i - 1]];
+    // Each slot: a vertex index + 1, 0 for empty.
+    std::pmr::vector<std::uint32_t> slots(std::size_t(1) << 10, 0, memory);
+    std::size_t distinct = 0;
+    const auto place = [&](std::uint32_t vertex, const Bits& bits) {
+        const std::size_t mask = slots.size() - 1;
+        std::size_t slot = position_hash(bits) & mask;
+        while (slots[slot] != 0) slot = (slot + 1) & mask;
+        slots[slot] = vertex + 1;
+    };
+    for (const std::uint32_t vertex : used) {
+        const Bits bits = bits_of(vertex);
+        const std::size_t mask = slots.size() - 1;
+        std::size_t slot = position_hash(bits) & mask;
+        for (; slots[slot] != 0; slot = (slot + 1) & mask) {
+            if (bits_of(slots[slot] - 1) == bits) break;
+        }
+        if (slots[slot] != 0) {
+            representative[vertex] = slots[slot] - 1;
+            continue;
+        }
+        slots[slot] = vertex + 1;
+        if (2 * ++distinct > slots.size()) {
+            std::pmr::vector<std::uint32_t> held(std::move(slots));
+            slots = std::pmr::vector<std::uint32_t>(2 * held.size(), 0, memory);
+            for (const std::uint32_t entry : held)
+                if (entry != 0) place(entry - 1, bits_of(entry - 1));
+        }
     }
 }
 
@@ -139,7 +188,7 @@ std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mes
     if (tolerance > 0.0 && distance > 0.0 && std::isfinite(distance))
         weld_within(mesh, scan, distance, used, representative, memory);
     else
-        weld_exact(mesh, used, representative);
+        weld_exact(mesh, used, representative, memory);
     return representative;
 }
 

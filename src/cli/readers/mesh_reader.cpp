@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <string>
 
+#include "readers/file_bytes.hpp"
 #include "readers/format_readers.hpp"
 #include "readers/isolated_reader.hpp"
 
@@ -24,31 +23,6 @@ std::string format_from_extension(const std::string& path) {
     const std::string::size_type slash = path.find_last_of('/');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
     return lowercase(path.substr(dot + 1));
-}
-
-std::ifstream open_file(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw ReadError("cannot open the file");
-    return file;
-}
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream file = open_file(path);
-    std::ostringstream contents;
-    contents << file.rdbuf();
-    if (file.bad()) throw ReadError("cannot read the file");
-    std::string bytes = contents.str();
-    if (bytes.empty()) throw ReadError("the file is empty");
-    return bytes;
-}
-
-// The same errors as read_bytes, for a file another library reads: looking
-// at its first byte tells an empty file without loading a large one.
-void check_not_empty(const std::string& path) {
-    std::ifstream file = open_file(path);
-    if (file.peek() == std::ifstream::traits_type::eof()) {
-        throw ReadError(file.bad() ? "cannot read the file" : "the file is empty");
-    }
 }
 
 // Every reader records, per part, the size of each face and then all their
@@ -76,21 +50,21 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     const std::string name = format.empty() ? format_from_extension(path) : lowercase(format);
     Model model;
     if (name == "obj") {
-        model = read_obj(read_bytes(path));
+        model = read_obj(FileBytes(path).view());
     } else if (name == "stl") {
-        model = read_stl(read_bytes(path));
+        model = read_stl(FileBytes(path));
     } else if (name == "ply") {
-        model = read_ply(read_bytes(path));
+        model = read_ply(FileBytes(path).view());
     } else if (name == "off") {
-        model = read_off(read_bytes(path));
+        model = read_off(FileBytes(path).view());
     } else if (name == "gltf" || name == "glb") {
-        check_not_empty(path);
+        check_regular_nonempty_file(path);
         model = read_isolated([&] { return read_gltf(path); });
     } else if (name == "3mf") {
-        check_not_empty(path);
+        check_regular_nonempty_file(path);
         model = read_isolated([&] { return read_3mf(path); });
     } else if (name == "dae") {
-        check_not_empty(path);
+        check_regular_nonempty_file(path);
         model = read_isolated([&] { return read_collada(path); });
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "

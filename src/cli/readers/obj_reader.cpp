@@ -32,7 +32,7 @@ uint32_t corner_vertex(std::string_view corner, uint64_t vertices_so_far, const 
 
 }  // namespace
 
-Model read_obj(const std::string& bytes) {
+Model read_obj(std::string_view bytes) {
     Model model;
     model.parts.emplace_back();
     TextLines lines(bytes);
