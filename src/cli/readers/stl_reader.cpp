@@ -62,7 +62,7 @@ Model read_ascii(std::string_view bytes) {
     Model model;
     // Every corner in file order; each part's indices number them until
     // they are welded, all parts at once (they share the positions).
-    std::vector<double> corners;
+    std::vector<double> soup;
     TextLines lines(bytes);
     Part* part = nullptr;
     // Where in a facet the reader is. Only `vertex` and `endloop` may appear
@@ -101,8 +101,8 @@ Model read_ascii(std::string_view bytes) {
             const double x = lines.expect_double("an x coordinate");
             const double y = lines.expect_double("a y coordinate");
             const double z = lines.expect_double("a z coordinate");
-            part->indices.push_back(uint32_t(corners.size() / 3));
-            corners.insert(corners.end(), {x, y, z});
+            part->indices.push_back(uint32_t(soup.size() / 3));
+            soup.insert(soup.end(), {x, y, z});
             ++corners;
         } else if (keyword == "endloop") {
             if (!in_loop) lines.fail("'endloop' without 'outer loop'");
@@ -118,7 +118,7 @@ Model read_ascii(std::string_view bytes) {
         }
     }
     if (in_loop || in_facet) lines.fail("the file ends inside a facet");
-    const std::vector<uint32_t> vertex_of = weld_corners(corners, model.positions);
+    const std::vector<uint32_t> vertex_of = weld_corners(soup, model.positions);
     for (Part& each : model.parts)
         for (uint32_t& index : each.indices) index = vertex_of[index];
     return model;
