@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 
 #include "smallest_index_sets.hpp"
 
@@ -117,91 +118,79 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std:
 
 // A grid of cells `distance` wide: vertices in one cell are within `distance`
 // of each other in every coordinate (up to rounding), so they are one; vertices
-// in adjacent cells are one when any pair across them is that close. A hash
-// of the occupied cells numbers them as they are first met and a counting pass
-// groups each cell's vertices; each cell then looks up the 13 neighbours of
-// `offsets` in the hash (the other 13 meet it from their side). The sets do
-// not depend on the order cells are met in. The cost is O(n) unless many
-// distinct vertices crowd two adjacent cells without touching (then it is
-// their product).
+// in adjacent cells are one when any pair across them is that close. Sorting
+// the vertices by cell groups each cell's and lets a merge-like walk meet each
+// cell's 26 neighbours. The cost is O(n log n) unless many distinct vertices
+// crowd two adjacent cells without touching (then it is their product).
 template <class Scalar, class Index>
 void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, double distance,
                  const std::pmr::vector<std::uint32_t>& used,
                  std::pmr::vector<std::uint32_t>& representative,
                  std::pmr::memory_resource* memory) {
     using Cell = std::array<std::int64_t, 3>;
-    const Eigen::Vector3d origin = scan.bounds.min();
-    const auto cell_of = [&](std::uint32_t vertex) {
-        const Eigen::Vector3d p = (Eigen::Vector3d(mesh.positions[vertex]) - origin) / distance;
-        return Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())};
-    };
-    // The occupied cells by number, and a table at most half full from a
-    // cell to its number + 1 (0: empty).
-    std::pmr::vector<Cell> cells(memory);
-    std::size_t table_size = 1;
-    while (table_size < 2 * used.size()) table_size *= 2;
-    std::pmr::vector<std::uint32_t> table(table_size, 0, memory);
-    const auto slot_of = [&](const Cell& cell) {
-        const std::size_t mask = table.size() - 1;
-        std::size_t slot = position_hash({std::uint64_t(cell[0]), std::uint64_t(cell[1]),
-                                          std::uint64_t(cell[2])}) &
-                           mask;
-        while (table[slot] != 0 && cells[table[slot] - 1] != cell) slot = (slot + 1) & mask;
-        return slot;
-    };
-    std::pmr::vector<std::uint32_t> cell_of_used(used.size(), memory);
-    for (std::size_t u = 0; u < used.size(); ++u) {
-        const Cell cell = cell_of(used[u]);
-        const std::size_t slot = slot_of(cell);
-        if (table[slot] == 0) {
-            cells.push_back(cell);
-            table[slot] = std::uint32_t(cells.size());
+    struct Entry {
+        Cell cell;
+        std::uint32_t vertex;
+        bool operator<(const Entry& other) const {
+            return std::tie(cell, vertex) < std::tie(other.cell, other.vertex);
         }
-        cell_of_used[u] = table[slot] - 1;
+    };
+    const Eigen::Vector3d origin = scan.bounds.min();
+    std::pmr::vector<Entry> entries(memory);
+    entries.reserve(used.size());
+    for (const std::uint32_t vertex : used) {
+        const Eigen::Vector3d p = (Eigen::Vector3d(mesh.positions[vertex]) - origin) / distance;
+        entries.push_back(
+            {Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())}, vertex});
     }
-    // Each cell's vertices, ascending, from members[starts[c]] to members[starts[c + 1]].
-    std::pmr::vector<std::size_t> starts(cells.size() + 1, 0, memory);
-    for (const std::uint32_t cell : cell_of_used) ++starts[cell + 1];
-    for (std::size_t c = 0; c < cells.size(); ++c) starts[c + 1] += starts[c];
-    std::pmr::vector<std::uint32_t> members(used.size(), memory);
-    {
-        std::pmr::vector<std::size_t> next(starts.begin(), starts.end() - 1, memory);
-        for (std::size_t u = 0; u < used.size(); ++u) members[next[cell_of_used[u]]++] = used[u];
-    }
-    const auto close = [&](std::uint32_t a, std::uint32_t b) {
-        const Eigen::Vector3d pa = mesh.positions[a];
-        const Eigen::Vector3d pb = mesh.positions[b];
+    std::sort(entries.begin(), entries.end());
+
+    // Each occupied cell's first entry; the next cell's first ends it.
+    std::pmr::vector<std::size_t> cell_starts(memory);
+    for (std::size_t i = 0; i < entries.size(); ++i)
+        if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_starts.push_back(i);
+    const std::size_t cell_count = cell_starts.size();
+    cell_starts.push_back(entries.size());
+    const auto close = [&](const Entry& a, const Entry& b) {
+        const Eigen::Vector3d pa = mesh.positions[a.vertex];
+        const Eigen::Vector3d pb = mesh.positions[b.vertex];
         return ((pa - pb).cwiseAbs().array() <= distance).all();
     };
+    // The 13 neighbours after a cell in sort order (the other 13 meet it from
+    // their side). Cells are visited in sort order, and so, shifted by one
+    // offset, are their neighbours: one cursor per offset only moves forward.
     std::array<Cell, 13> offsets;
     std::size_t offset_count = 0;
     for (std::int64_t dx = 0; dx <= 1; ++dx)
         for (std::int64_t dy = -1; dy <= 1; ++dy)
             for (std::int64_t dz = -1; dz <= 1; ++dz)
                 if (dx > 0 || dy > 0 || (dy == 0 && dz > 0)) offsets[offset_count++] = {dx, dy, dz};
+    std::array<std::size_t, 13> cursors{};
+    const auto cell_at = [&](std::size_t c) -> const Cell& { return entries[cell_starts[c]].cell; };
 
     SmallestIndexSets sets(representative);
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        const std::uint32_t* first = &members[starts[c]];
-        const std::uint32_t* last = &members[0] + starts[c + 1];
-        for (const std::uint32_t* vertex = first + 1; vertex != last; ++vertex)
-            sets.join(*first, *vertex);
-        for (const Cell& offset : offsets) {
-            const std::size_t slot = slot_of(
-                {cells[c][0] + offset[0], cells[c][1] + offset[1], cells[c][2] + offset[2]});
-            if (table[slot] == 0) continue;
-            const std::size_t n = table[slot] - 1;
-            const std::uint32_t* near_first = &members[starts[n]];
-            const std::uint32_t* near_last = &members[0] + starts[n + 1];
+    for (std::size_t c = 0; c < cell_count; ++c) {
+        const Entry* first = &entries[cell_starts[c]];
+        const Entry* last = &entries[0] + cell_starts[c + 1];
+        for (const Entry* entry = first + 1; entry != last; ++entry)
+            sets.join(first->vertex, entry->vertex);
+        for (std::size_t o = 0; o < offsets.size(); ++o) {
+            const Cell near{first->cell[0] + offsets[o][0], first->cell[1] + offsets[o][1],
+                            first->cell[2] + offsets[o][2]};
+            std::size_t& n = cursors[o];
+            while (n < cell_count && cell_at(n) < near) ++n;
+            if (n == cell_count || cell_at(n) != near) continue;
+            const Entry* near_first = &entries[cell_starts[n]];
+            const Entry* near_last = &entries[0] + cell_starts[n + 1];
             auto touching = [&] {
-                for (const std::uint32_t* a = first; a != last; ++a)
-                    for (const std::uint32_t* b = near_first; b != near_last; ++b)
+                for (const Entry* a = first; a != last; ++a)
+                    for (const Entry* b = near_first; b != near_last; ++b)
                         if (close(*a, *b)) return true;
                 return false;
             };
             // Already one (through a chain): no pair need be compared.
-            if (sets.find(*first) != sets.find(*near_first) && touching())
-                sets.join(*first, *near_first);
+            if (sets.find(first->vertex) != sets.find(near_first->vertex) && touching())
+                sets.join(first->vertex, near_first->vertex);
         }
     }
     for (const std::uint32_t vertex : used) representative[vertex] = sets.find(vertex);
