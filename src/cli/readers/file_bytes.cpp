@@ -29,7 +29,7 @@ private:
 };
 
 // The size of a regular, non-empty file; anything else is a ReadError.
-std::size_t regular_file_size(int fd) {
+std::size_t size_of_open_file(int fd) {
     struct stat status {};
     if (fstat(fd, &status) != 0)
         throw ReadError(std::string("cannot read the file: ") + std::strerror(errno));
@@ -46,7 +46,7 @@ std::size_t regular_file_size(int fd) {
 
 FileBytes::FileBytes(const std::string& path) {
     const Descriptor file(path);
-    const std::size_t size = regular_file_size(file.fd());
+    const std::size_t size = size_of_open_file(file.fd());
     void* data = mmap(nullptr, size, PROT_READ, MAP_PRIVATE, file.fd(), 0);
     if (data == MAP_FAILED)
         throw ReadError(std::string("cannot read the file: ") + std::strerror(errno));
@@ -69,9 +69,9 @@ void FileBytes::release() {
     size_ = 0;
 }
 
-void check_regular_nonempty_file(const std::string& path) {
+std::size_t regular_file_size(const std::string& path) {
     const Descriptor file(path);
-    regular_file_size(file.fd());
+    return size_of_open_file(file.fd());
 }
 
 }  // namespace polymass_cli

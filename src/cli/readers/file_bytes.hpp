@@ -32,8 +32,8 @@ private:
     std::size_t size_ = 0;
 };
 
-// The checks of FileBytes without the mapping, for a file another library
-// opens itself (glTF, 3MF, Collada).
-void check_regular_nonempty_file(const std::string& path);
+// The size of path after the checks of FileBytes, without the mapping, for a
+// file another library opens itself (glTF, 3MF, Collada).
+std::size_t regular_file_size(const std::string& path);
 
 }  // namespace polymass_cli

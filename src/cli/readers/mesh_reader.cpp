@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "readers/file_bytes.hpp"
 #include "readers/format_readers.hpp"
@@ -42,6 +43,29 @@ void check_faces_match_indices(const Model& model) {
     }
 }
 
+// A polygon passes through each of its vertices once, or twice where a
+// bridge joins a hole to its outline: a face of many more corners than the
+// mesh has vertices is not a polygon but a corrupt or hostile file (one line
+// of an OBJ can name 10^8 corners), refused before the library spends tens of
+// bytes on each corner. Faces of up to kAlwaysPassed corners go to the
+// library whatever the vertices, which names their bad indices.
+void check_face_sizes(const Model& model) {
+    constexpr uint64_t kAlwaysPassed = uint64_t(1) << 16;
+    const uint64_t most = std::max(kAlwaysPassed, 2 * model.vertex_count());
+    for (size_t p = 0; p < model.parts.size(); ++p) {
+        const std::vector<uint32_t>& sizes = model.parts[p].face_sizes;
+        const auto large = std::find_if(sizes.begin(), sizes.end(),
+                                        [&](uint32_t size) { return size > most; });
+        if (large != sizes.end()) {
+            throw ReadError("face " + std::to_string(large - sizes.begin()) +
+                            (model.parts.size() > 1 ? " of part " + std::to_string(p) : "") +
+                            " has " + std::to_string(*large) + " corners, but the file has " +
+                            std::to_string(model.vertex_count()) +
+                            " vertices: a polygon passes through a vertex at most twice");
+        }
+    }
+}
+
 }  // namespace
 
 const char* supported_formats() { return "obj, stl, ply, off, gltf, glb, 3mf, dae"; }
@@ -58,13 +82,12 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     } else if (name == "off") {
         model = read_off(FileBytes(path).view());
     } else if (name == "gltf" || name == "glb") {
-        check_regular_nonempty_file(path);
+        regular_file_size(path);  // a device, a pipe or an empty file is refused here
         model = read_isolated([&] { return read_gltf(path); });
     } else if (name == "3mf") {
-        check_regular_nonempty_file(path);
-        model = read_isolated([&] { return read_3mf(path); });
+        model = read_isolated([&] { return read_3mf(path); }, regular_file_size(path));
     } else if (name == "dae") {
-        check_regular_nonempty_file(path);
+        regular_file_size(path);  // as for glTF
         model = read_isolated([&] { return read_collada(path); });
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
@@ -75,6 +98,7 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     }
     model.format = name;
     check_faces_match_indices(model);
+    check_face_sizes(model);
     model.parts.erase(std::remove_if(model.parts.begin(), model.parts.end(),
                                      [](const Part& part) { return part.face_sizes.empty(); }),
                       model.parts.end());
