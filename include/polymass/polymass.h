@@ -884,8 +884,7 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
    polymass_mesh_create; the topology is not checked. At most UINT32_MAX
    vertices. Since 1.3. Context: one thread at a time. */
 POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
-                                        polymass_context* context,
-                                        const polymass_mesh_desc* desc);
+                                        polymass_context* context, const polymass_mesh_desc* desc);
 
 #ifdef __cplusplus
 }

@@ -16,8 +16,7 @@ using namespace polymass::capi;
 extern "C" {
 
 POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
-                                        polymass_context* context,
-                                        const polymass_mesh_desc* desc) {
+                                        polymass_context* context, const polymass_mesh_desc* desc) {
     return guarded(context, [&] {
         if (!out_vertex_of || !out_distinct_count)
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s is NULL",

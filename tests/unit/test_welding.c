@@ -272,7 +272,7 @@ static void test_weld_on_its_own(void** state) {
     pm_mesh_box(&m, lo, hi, 1);
     pm_mesh_to_soup(&m);
     assert_int_equal(m.vertex_count, 36);
-    m.positions[0] = 0.0; /* the first corner at +0, the others at -0 */
+    m.positions[0] = 0.0;            /* the first corner at +0, the others at -0 */
     pm_mesh_add_vertex(&m, 5, 5, 5); /* vertex 36: used by no face */
     d = pm_mesh_desc(&m);
     PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));

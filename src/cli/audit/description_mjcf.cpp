@@ -108,8 +108,8 @@ private:
                                        "'> includes a file that includes it (" + path + ")");
             }
             if (included_.size() >= kMostIncludes) {
-                throw DescriptionError(main_.path + ": more than " +
-                                       std::to_string(kMostIncludes) + " <include>s");
+                throw DescriptionError(main_.path + ": more than " + std::to_string(kMostIncludes) +
+                                       " <include>s");
             }
             auto included = std::make_unique<XmlFile>();
             load_xml(*included, path);

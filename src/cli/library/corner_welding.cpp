@@ -94,8 +94,7 @@ std::vector<uint32_t> weld_corners(const std::vector<Scalar>& corners,
     return vertex_of;
 }
 
-template std::vector<uint32_t> weld_corners<float>(const std::vector<float>&,
-                                                   std::vector<double>&);
+template std::vector<uint32_t> weld_corners<float>(const std::vector<float>&, std::vector<double>&);
 template std::vector<uint32_t> weld_corners<double>(const std::vector<double>&,
                                                     std::vector<double>&);
 

@@ -54,8 +54,8 @@ void check_face_sizes(const Model& model) {
     const uint64_t most = std::max(kAlwaysPassed, 2 * model.vertex_count());
     for (size_t p = 0; p < model.parts.size(); ++p) {
         const std::vector<uint32_t>& sizes = model.parts[p].face_sizes;
-        const auto large = std::find_if(sizes.begin(), sizes.end(),
-                                        [&](uint32_t size) { return size > most; });
+        const auto large =
+            std::find_if(sizes.begin(), sizes.end(), [&](uint32_t size) { return size > most; });
         if (large != sizes.end()) {
             throw ReadError("face " + std::to_string(large - sizes.begin()) +
                             (model.parts.size() > 1 ? " of part " + std::to_string(p) : "") +
