@@ -11,21 +11,27 @@
 namespace polymass::core {
 namespace {
 
-// Identity for every vertex, and the used vertices in index order.
+// Identity for every vertex up to the last one a face may use.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> identity_map(const MeshView<Scalar, Index>& mesh,
                                              const MeshScan& scan,
-                                             std::pmr::vector<std::uint32_t>& used,
                                              std::pmr::memory_resource* memory) {
     const std::size_t addressable = scan.used.size() * 64;
     std::pmr::vector<std::uint32_t> representative(std::min(mesh.vertex_count, addressable),
                                                    memory);
-    used.reserve(scan.used_vertex_count);
-    for (std::size_t vertex = 0; vertex < representative.size(); ++vertex) {
+    for (std::size_t vertex = 0; vertex < representative.size(); ++vertex)
         representative[vertex] = std::uint32_t(vertex);
-        if (scan.is_used(vertex)) used.push_back(std::uint32_t(vertex));
-    }
     return representative;
+}
+
+// The used vertices among the first `count`, in index order.
+std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t count,
+                                              std::pmr::memory_resource* memory) {
+    std::pmr::vector<std::uint32_t> used(memory);
+    used.reserve(scan.used_vertex_count);
+    for (std::size_t vertex = 0; vertex < count; ++vertex)
+        if (scan.is_used(vertex)) used.push_back(std::uint32_t(vertex));
+    return used;
 }
 
 // The bits of a coordinate, +0 for -0 (the same position).
@@ -46,9 +52,9 @@ std::uint64_t position_hash(const std::array<std::uint64_t, 3>& bits) {
     return h;
 }
 
-// One hashing pass over the used vertices in index order: the first vertex
-// met at a position (the lowest index) enters the table and names every
-// later one with the same bits. The table holds only distinct positions (a
+// One hashing pass over the used vertices in index order (no list of them):
+// the first vertex met at a position (the lowest index) enters the table and
+// names every later one with the same bits. The table holds only distinct positions (a
 // triangle soup asks about each corner, but has a sixth as many vertices),
 // in open addressing with linear probing, at most half full. Each slot keeps
 // the vertex with the high half of its hash, so that a probe reads another
@@ -58,7 +64,7 @@ std::uint64_t position_hash(const std::array<std::uint64_t, 3>& bits) {
 // values is exact welding for finite coordinates and still defined for NaN
 // (copies of one NaN are one vertex), which sorting is not.
 template <class Scalar, class Index>
-void weld_exact(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std::uint32_t>& used,
+void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                 std::pmr::vector<std::uint32_t>& representative,
                 std::pmr::memory_resource* memory) {
     using Bits = std::array<std::uint64_t, 3>;
@@ -78,21 +84,24 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std:
         while (slots[slot] != 0) slot = (slot + 1) & mask;
         slots[slot] = entry;
     };
-    // The hashes of the next kAhead vertices, by u % kAhead.
+    // The hashes of the next kAhead vertices, by vertex % kAhead (stale for
+    // an unused one, which is never looked up).
+    const std::size_t count = representative.size();
     constexpr std::size_t kAhead = 16;
     std::array<std::uint64_t, kAhead> ahead{};
-    const auto hash_ahead = [&](std::size_t u) {
-        if (u >= used.size()) return;
-        const std::uint64_t hash = position_hash(bits_of(used[u]));
-        ahead[u % kAhead] = hash;
+    const auto hash_ahead = [&](std::size_t vertex) {
+        if (vertex >= count || !scan.is_used(vertex)) return;
+        const std::uint64_t hash = position_hash(bits_of(std::uint32_t(vertex)));
+        ahead[vertex % kAhead] = hash;
         __builtin_prefetch(&slots[hash & (slots.size() - 1)]);
     };
-    for (std::size_t u = 0; u < kAhead; ++u) hash_ahead(u);
-    for (std::size_t u = 0; u < used.size(); ++u) {
-        const std::uint32_t vertex = used[u];
+    for (std::size_t vertex = 0; vertex < kAhead; ++vertex) hash_ahead(vertex);
+    for (std::size_t index = 0; index < count; ++index) {
+        const std::uint64_t hash = ahead[index % kAhead];  // before its slot is reused
+        hash_ahead(index + kAhead);
+        if (!scan.is_used(index)) continue;
+        const auto vertex = std::uint32_t(index);
         const Bits bits = bits_of(vertex);
-        const std::uint64_t hash = ahead[u % kAhead];
-        hash_ahead(u + kAhead);
         const std::uint64_t tag = hash & 0xFFFFFFFF00000000ull;
         const std::size_t mask = slots.size() - 1;
         std::size_t slot = hash & mask;
@@ -202,17 +211,17 @@ template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,
                                               std::pmr::memory_resource* memory) {
-    std::pmr::vector<std::uint32_t> used(memory);
-    std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, used, memory);
+    std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, memory);
     // At least 2^-50 of the extent (a few of its ulps), so that every cell
     // coordinate fits in an int64. Zero (an exact weld, or a mesh that is one
     // point) and an extent past the largest double weld exact copies only.
     const double extent = scan.bounds.isEmpty() ? 0.0 : scan.bounds.sizes().maxCoeff();
     const double distance = std::max(tolerance, 0x1p-50) * extent;
     if (tolerance > 0.0 && distance > 0.0 && std::isfinite(distance))
-        weld_within(mesh, scan, distance, used, representative, memory);
+        weld_within(mesh, scan, distance, used_vertices(scan, representative.size(), memory),
+                    representative, memory);
     else
-        weld_exact(mesh, used, representative, memory);
+        weld_exact(mesh, scan, representative, memory);
     return representative;
 }
 

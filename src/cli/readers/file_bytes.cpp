@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -62,6 +63,12 @@ FileBytes::FileBytes(FileBytes&& other) noexcept : data_(other.data_), size_(oth
 }
 
 FileBytes::~FileBytes() { release(); }
+
+void FileBytes::drop_before(std::size_t offset) {
+    const std::size_t page = std::size_t(sysconf(_SC_PAGESIZE));
+    const std::size_t whole_pages = std::min(offset, size_) / page * page;
+    if (whole_pages > 0) madvise(data_, whole_pages, MADV_DONTNEED);
+}
 
 void FileBytes::release() {
     if (data_ != nullptr) munmap(data_, size_);

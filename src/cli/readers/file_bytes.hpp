@@ -23,6 +23,11 @@ public:
     FileBytes& operator=(const FileBytes&) = delete;
 
     std::string_view view() const { return {static_cast<const char*>(data_), size_}; }
+    // Gives back the pages before offset that the reader is done with: a
+    // reader walking a large file front to back keeps only a window of it in
+    // memory (the file is mapped read-only, so a page touched again is read
+    // again).
+    void drop_before(std::size_t offset);
     // Unmaps the file now (view() is then empty): a reader that has decoded
     // what it needs frees the pages before building the rest.
     void release();

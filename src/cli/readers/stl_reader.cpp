@@ -40,15 +40,20 @@ bool starts_with_solid(std::string_view bytes) {
 
 // The triangles' corners as float32, as the file stores them (36 bytes a
 // triangle, against the file's 50), decoded in one pass over the mapping,
-// which is let go before the corners are welded.
+// which is let go as it is read and before the corners are welded.
 Model read_binary(FileBytes file, uint64_t triangle_count) {
     std::vector<float> corners(9 * triangle_count);
     const unsigned char* triangle =
         reinterpret_cast<const unsigned char*>(file.view().data()) + kBinaryHeaderBytes;
     float* corner = corners.data();
+    // The file and its corners are not held whole at once: the pages decoded
+    // are given back every kWindow triangles.
+    constexpr uint64_t kWindow = uint64_t(1) << 18;
     for (uint64_t t = 0; t < triangle_count; ++t, triangle += kBinaryTriangleBytes) {
         const unsigned char* coordinate = triangle + 12;  // after the normal
         for (int c = 0; c < 9; ++c, coordinate += 4) *corner++ = little_endian_f32(coordinate);
+        if ((t + 1) % kWindow == 0)
+            file.drop_before(kBinaryHeaderBytes + (t + 1) * kBinaryTriangleBytes);
     }
     file.release();
     Model model;
