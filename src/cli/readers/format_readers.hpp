@@ -14,7 +14,8 @@ namespace polymass_cli {
 Model read_obj(std::string_view bytes);
 Model read_off(std::string_view bytes);
 Model read_ply(std::string_view bytes);
-// STL takes the file itself, to let it go once its triangles are decoded.
+Model read_stl(std::string_view bytes);
+// The same from the file itself, let go as its triangles are decoded.
 Model read_stl(FileBytes file);
 // glTF 2 (.gltf with embedded or external buffers, .glb) through tinygltf:
 // node transforms applied, one part per node with a mesh.

@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "library/corner_welding.hpp"
@@ -41,10 +40,11 @@ bool starts_with_solid(std::string_view bytes) {
 // The triangles' corners as float32, as the file stores them (36 bytes a
 // triangle, against the file's 50), decoded in one pass over the mapping,
 // which is let go as it is read and before the corners are welded.
-Model read_binary(FileBytes file, uint64_t triangle_count) {
+// file, when given, holds bytes and is let go as they are decoded.
+Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_count) {
     std::vector<float> corners(9 * triangle_count);
     const unsigned char* triangle =
-        reinterpret_cast<const unsigned char*>(file.view().data()) + kBinaryHeaderBytes;
+        reinterpret_cast<const unsigned char*>(bytes.data()) + kBinaryHeaderBytes;
     float* corner = corners.data();
     // The file and its corners are not held whole at once: the pages decoded
     // are given back every kWindow triangles.
@@ -52,10 +52,10 @@ Model read_binary(FileBytes file, uint64_t triangle_count) {
     for (uint64_t t = 0; t < triangle_count; ++t, triangle += kBinaryTriangleBytes) {
         const unsigned char* coordinate = triangle + 12;  // after the normal
         for (int c = 0; c < 9; ++c, coordinate += 4) *corner++ = little_endian_f32(coordinate);
-        if ((t + 1) % kWindow == 0)
-            file.drop_before(kBinaryHeaderBytes + (t + 1) * kBinaryTriangleBytes);
+        if (file != nullptr && (t + 1) % kWindow == 0)
+            file->drop_before(kBinaryHeaderBytes + (t + 1) * kBinaryTriangleBytes);
     }
-    file.release();
+    if (file != nullptr) file->release();
     Model model;
     Part& part = model.parts.emplace_back();
     part.indices = weld_corners(corners, model.positions);
@@ -129,10 +129,7 @@ Model read_ascii(std::string_view bytes) {
     return model;
 }
 
-}  // namespace
-
-Model read_stl(FileBytes file) {
-    const std::string_view bytes = file.view();
+Model read_stl_from(std::string_view bytes, FileBytes* file) {
     const uint64_t size = bytes.size();
     uint64_t binary_count = 0;
     bool binary_size_matches = false;
@@ -155,7 +152,13 @@ Model read_stl(FileBytes file) {
                         std::to_string(size) +
                         (size < expected ? " (truncated)" : " (not an STL, or corrupt)"));
     }
-    return read_binary(std::move(file), binary_count);
+    return read_binary(bytes, file, binary_count);
 }
+
+}  // namespace
+
+Model read_stl(std::string_view bytes) { return read_stl_from(bytes, nullptr); }
+
+Model read_stl(FileBytes file) { return read_stl_from(file.view(), &file); }
 
 }  // namespace polymass_cli
