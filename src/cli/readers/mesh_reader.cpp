@@ -43,15 +43,9 @@ void check_faces_match_indices(const Model& model) {
     }
 }
 
-// A polygon passes through each of its vertices once, or twice where a
-// bridge joins a hole to its outline: a face of many more corners than the
-// mesh has vertices is not a polygon but a corrupt or hostile file (one line
-// of an OBJ can name 10^8 corners), refused before the library spends tens of
-// bytes on each corner. Faces of up to kAlwaysPassed corners go to the
-// library whatever the vertices, which names their bad indices.
+// Faces past most_face_corners, in any format.
 void check_face_sizes(const Model& model) {
-    constexpr uint64_t kAlwaysPassed = uint64_t(1) << 16;
-    const uint64_t most = std::max(kAlwaysPassed, 2 * model.vertex_count());
+    const uint64_t most = most_face_corners(model.vertex_count());
     for (size_t p = 0; p < model.parts.size(); ++p) {
         const std::vector<uint32_t>& sizes = model.parts[p].face_sizes;
         const auto large =
@@ -67,6 +61,10 @@ void check_face_sizes(const Model& model) {
 }
 
 }  // namespace
+
+uint64_t most_face_corners(uint64_t vertex_count) {
+    return std::max(uint64_t(1) << 16, 2 * vertex_count);
+}
 
 const char* supported_formats() { return "obj, stl, ply, off, gltf, glb, 3mf, dae"; }
 
