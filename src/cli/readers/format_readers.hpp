@@ -3,6 +3,7 @@
 // throwing ReadError.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -20,8 +21,10 @@ Model read_stl(FileBytes file);
 // glTF 2 (.gltf with embedded or external buffers, .glb) through tinygltf:
 // node transforms applied, one part per node with a mesh.
 Model read_gltf(const std::string& path);
-// 3MF through lib3mf: transforms applied, one part per build item.
-Model read_3mf(const std::string& path);
+// 3MF through lib3mf: transforms applied, one part per build item; a package
+// whose parts inflate past packed_memory_budget(packed_size) (its size) is
+// refused.
+Model read_3mf(const std::string& path, uint64_t packed_size);
 // Collada through assimp: its <unit> and <up_axis> applied (metres, Z up),
 // node transforms applied, one part per node with meshes.
 Model read_collada(const std::string& path);

@@ -151,13 +151,11 @@ uint64_t mapped_bytes() {
     // Memory: an allocation past the budget fails (std::bad_alloc, below).
     // An existing lower limit stays. Without /proc, no limit: the budget
     // would have nothing to add to.
-    constexpr uint64_t kBaseBudget = uint64_t(256) << 20;
-    constexpr uint64_t kBytesPerFileByte = 64;
     const uint64_t mapped = mapped_bytes();
     struct rlimit memory {};
     if (packed_size > 0 && mapped > 0 && getrlimit(RLIMIT_AS, &memory) == 0 &&
-        packed_size < (RLIM_INFINITY - mapped - kBaseBudget) / kBytesPerFileByte) {
-        const rlim_t budget = mapped + kBaseBudget + kBytesPerFileByte * packed_size;
+        packed_memory_budget(packed_size) < RLIM_INFINITY - mapped) {
+        const rlim_t budget = mapped + packed_memory_budget(packed_size);
         if (memory.rlim_cur == RLIM_INFINITY || budget < memory.rlim_cur) {
             memory.rlim_cur = budget;
             setrlimit(RLIMIT_AS, &memory);
@@ -174,8 +172,8 @@ uint64_t mapped_bytes() {
     } catch (const std::bad_alloc&) {
         Writer out;
         out.value(Outcome::kReadError);
-        out.text("the reader ran out of its memory (" + std::to_string(kBytesPerFileByte) +
-                 " bytes per byte of the file, and " + std::to_string(kBaseBudget >> 20) +
+        out.text("the reader ran out of its memory (" +
+                 std::to_string(packed_memory_budget(packed_size) >> 20) +
                  " MiB): the file expands beyond what a mesh of its size can hold (a zip "
                  "bomb?), or is corrupt");
         answer = out.data();
@@ -187,6 +185,14 @@ uint64_t mapped_bytes() {
 }
 
 }  // namespace
+
+uint64_t packed_memory_budget(uint64_t packed_size) {
+    constexpr uint64_t kBase = uint64_t(256) << 20;
+    constexpr uint64_t kBytesPerPackedByte = 64;
+    return packed_size > (UINT64_MAX - kBase) / kBytesPerPackedByte
+               ? UINT64_MAX
+               : kBase + kBytesPerPackedByte * packed_size;
+}
 
 Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
     int pipe_ends[2];

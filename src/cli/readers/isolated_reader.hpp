@@ -27,4 +27,7 @@ namespace polymass_cli {
 // against the bytes it has).
 Model read_isolated(const std::function<Model()>& read, uint64_t packed_size = 0);
 
+// That memory (beyond what the tool had) for a compressed file of packed_size bytes.
+uint64_t packed_memory_budget(uint64_t packed_size);
+
 }  // namespace polymass_cli

@@ -83,7 +83,8 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         regular_file_size(path);  // a device, a pipe or an empty file is refused here
         model = read_isolated([&] { return read_gltf(path); });
     } else if (name == "3mf") {
-        model = read_isolated([&] { return read_3mf(path); }, regular_file_size(path));
+        const uint64_t size = regular_file_size(path);
+        model = read_isolated([&] { return read_3mf(path, size); }, size);
     } else if (name == "dae") {
         regular_file_size(path);  // as for glTF
         model = read_isolated([&] { return read_collada(path); });
