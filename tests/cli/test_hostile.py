@@ -103,6 +103,12 @@ class Hostile(unittest.TestCase):
 
     def bounded(self, args, extra_memory=EXTRA_MEMORY):
         outcome = run_bounded(args, self.address_space)
+        # The figures, for the record (unittest shows them with -v).
+        print(
+            f"\n  {Path(str(args[-1])).name}: {outcome.peak_bytes / MIB:.0f} MiB peak "
+            f"({self.footprint / MIB:.0f} on a tiny file), {outcome.seconds:.2f} s",
+            file=sys.stderr,
+        )
         self.assertGreaterEqual(outcome.returncode, 0, f"crashed: {outcome.stderr}")
         self.assertNotIn("Sanitizer", outcome.stderr)
         self.assertLess(outcome.seconds, SECONDS, f"{args}: out of time")
