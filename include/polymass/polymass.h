@@ -899,6 +899,25 @@ POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_
 POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t item_count,
                                             uint64_t* out_failed, polymass_context* context);
 
+/* ========================================================================== */
+/* Welding on its own                                                         */
+/* ========================================================================== */
+
+/* The library's welding, for a caller that numbers vertices before handing a
+   mesh over (a triangle soup such as STL repeats a vertex once per face).
+   Writes to out_vertex_of (room for vertex_count) the lowest vertex index
+   welded to each used vertex, and to *out_distinct_count how many used
+   vertices are their own lowest; vertices no face uses map to themselves.
+   The weld is the context options' weld_tolerance (whatever their flags):
+   0 welds exactly equal positions (+0 and -0 being one, and copies of the
+   same NaN: coordinates are compared bit for bit) in one hashing pass;
+   above 0, as POLYMASS_OPTION_WELD_VERTICES describes, and then non-finite
+   coordinates are an error. Indices out of range are an error, as for
+   polymass_mesh_create; the topology is not checked. At most UINT32_MAX
+   vertices. Since 1.3. Context: one thread at a time. */
+POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
+                                        polymass_context* context, const polymass_mesh_desc* desc);
+
 #ifdef __cplusplus
 }
 #endif

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <tuple>
 
 #include "smallest_index_sets.hpp"
@@ -10,36 +11,117 @@
 namespace polymass::core {
 namespace {
 
-// Identity for every vertex, and the used vertices in index order.
+// Identity for every vertex up to the last one a face may use.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> identity_map(const MeshView<Scalar, Index>& mesh,
                                              const MeshScan& scan,
-                                             std::pmr::vector<std::uint32_t>& used,
                                              std::pmr::memory_resource* memory) {
     const std::size_t addressable = scan.used.size() * 64;
     std::pmr::vector<std::uint32_t> representative(std::min(mesh.vertex_count, addressable),
                                                    memory);
-    used.reserve(scan.used_vertex_count);
-    for (std::size_t vertex = 0; vertex < representative.size(); ++vertex) {
+    for (std::size_t vertex = 0; vertex < representative.size(); ++vertex)
         representative[vertex] = std::uint32_t(vertex);
-        if (scan.is_used(vertex)) used.push_back(std::uint32_t(vertex));
-    }
     return representative;
 }
 
+// The used vertices among the first `count`, in index order.
+std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t count,
+                                              std::pmr::memory_resource* memory) {
+    std::pmr::vector<std::uint32_t> used(memory);
+    used.reserve(scan.used_vertex_count);
+    for (std::size_t vertex = 0; vertex < count; ++vertex)
+        if (scan.is_used(vertex)) used.push_back(std::uint32_t(vertex));
+    return used;
+}
+
+// The bits of a coordinate, +0 for -0 (the same position).
+std::uint64_t position_bits(double value) {
+    value += 0.0;
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    return bits;
+}
+
+// A 64-bit mix of a position's three bit patterns (splitmix64's finaliser).
+std::uint64_t position_hash(const std::array<std::uint64_t, 3>& bits) {
+    std::uint64_t h = bits[0] * 0x9E3779B97F4A7C15ull ^ bits[1] * 0xC2B2AE3D27D4EB4Full ^
+                      bits[2] * 0x165667B19E3779F9ull;
+    h ^= h >> 31;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 27;
+    return h;
+}
+
+// One hashing pass over the used vertices in index order (no list of them):
+// the first vertex met at a position (the lowest index) enters the table and
+// names every later one with the same bits. The table holds only distinct positions (a
+// triangle soup asks about each corner, but has a sixth as many vertices),
+// in open addressing with linear probing, at most half full. Each slot keeps
+// the vertex with the high half of its hash, so that a probe reads another
+// vertex's coordinates only when the halves agree (almost only for a copy),
+// and the slot of a vertex a few ahead is prefetched: the table outgrows the
+// caches, and waiting on it was the pass's cost. Comparing bits rather than
+// values is exact welding for finite coordinates and still defined for NaN
+// (copies of one NaN are one vertex), which sorting is not.
 template <class Scalar, class Index>
-void weld_exact(const MeshView<Scalar, Index>& mesh, std::pmr::vector<std::uint32_t>& used,
-                std::pmr::vector<std::uint32_t>& representative) {
-    auto key = [&](std::uint32_t vertex) {
+void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                std::pmr::vector<std::uint32_t>& representative,
+                std::pmr::memory_resource* memory) {
+    using Bits = std::array<std::uint64_t, 3>;
+    const auto bits_of = [&](std::uint32_t vertex) {
         const Eigen::Vector3d p = mesh.positions[vertex];
-        return std::make_tuple(p.x(), p.y(), p.z());
+        return Bits{position_bits(p.x()), position_bits(p.y()), position_bits(p.z())};
     };
-    // Sorting by position, then index, puts each group's smallest index first.
-    std::sort(used.begin(), used.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return std::make_pair(key(a), a) < std::make_pair(key(b), b);
-    });
-    for (std::size_t i = 1; i < used.size(); ++i) {
-        if (key(used[i]) == key(used[i - 1])) representative[used[i]] = representative[used[i - 1]];
+    // A slot: the hash's high half, then the vertex index + 1 (0: empty).
+    const auto slot_of = [](std::uint64_t hash, std::uint32_t vertex) {
+        return (hash & 0xFFFFFFFF00000000ull) | (std::uint64_t(vertex) + 1);
+    };
+    std::pmr::vector<std::uint64_t> slots(std::size_t(1) << 12, 0, memory);
+    std::size_t distinct = 0;
+    const auto place = [&](std::uint64_t entry, std::uint64_t hash) {
+        const std::size_t mask = slots.size() - 1;
+        std::size_t slot = hash & mask;
+        while (slots[slot] != 0) slot = (slot + 1) & mask;
+        slots[slot] = entry;
+    };
+    // The hashes of the next kAhead vertices, by vertex % kAhead (stale for
+    // an unused one, which is never looked up).
+    const std::size_t count = representative.size();
+    constexpr std::size_t kAhead = 16;
+    std::array<std::uint64_t, kAhead> ahead{};
+    const auto hash_ahead = [&](std::size_t vertex) {
+        if (vertex >= count || !scan.is_used(vertex)) return;
+        const std::uint64_t hash = position_hash(bits_of(std::uint32_t(vertex)));
+        ahead[vertex % kAhead] = hash;
+        __builtin_prefetch(&slots[hash & (slots.size() - 1)]);
+    };
+    for (std::size_t vertex = 0; vertex < kAhead; ++vertex) hash_ahead(vertex);
+    for (std::size_t index = 0; index < count; ++index) {
+        const std::uint64_t hash = ahead[index % kAhead];  // before its slot is reused
+        hash_ahead(index + kAhead);
+        if (!scan.is_used(index)) continue;
+        const auto vertex = std::uint32_t(index);
+        const Bits bits = bits_of(vertex);
+        const std::uint64_t tag = hash & 0xFFFFFFFF00000000ull;
+        const std::size_t mask = slots.size() - 1;
+        std::size_t slot = hash & mask;
+        for (; slots[slot] != 0; slot = (slot + 1) & mask) {
+            const std::uint64_t entry = slots[slot];
+            if ((entry & 0xFFFFFFFF00000000ull) != tag) continue;
+            const Bits held = bits_of(std::uint32_t(entry) - 1);
+            if (held[0] == bits[0] && held[1] == bits[1] && held[2] == bits[2]) break;
+        }
+        if (slots[slot] != 0) {
+            representative[vertex] = std::uint32_t(slots[slot]) - 1;
+            continue;
+        }
+        slots[slot] = slot_of(hash, vertex);
+        if (2 * ++distinct > slots.size()) {
+            std::pmr::vector<std::uint64_t> held(std::move(slots));
+            slots = std::pmr::vector<std::uint64_t>(2 * held.size(), 0, memory);
+            for (const std::uint64_t entry : held)
+                if (entry != 0) place(entry, position_hash(bits_of(std::uint32_t(entry) - 1)));
+        }
     }
 }
 
@@ -129,17 +211,17 @@ template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,
                                               std::pmr::memory_resource* memory) {
-    std::pmr::vector<std::uint32_t> used(memory);
-    std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, used, memory);
+    std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, memory);
     // At least 2^-50 of the extent (a few of its ulps), so that every cell
     // coordinate fits in an int64. Zero (an exact weld, or a mesh that is one
     // point) and an extent past the largest double weld exact copies only.
     const double extent = scan.bounds.isEmpty() ? 0.0 : scan.bounds.sizes().maxCoeff();
     const double distance = std::max(tolerance, 0x1p-50) * extent;
     if (tolerance > 0.0 && distance > 0.0 && std::isfinite(distance))
-        weld_within(mesh, scan, distance, used, representative, memory);
+        weld_within(mesh, scan, distance, used_vertices(scan, representative.size(), memory),
+                    representative, memory);
     else
-        weld_exact(mesh, used, representative);
+        weld_exact(mesh, scan, representative, memory);
     return representative;
 }
 

@@ -19,8 +19,10 @@
 namespace polymass::core {
 
 // For every vertex the faces use, the smallest used vertex index welded to it
-// (unused vertices map to themselves). scan must say the mesh is in range and
-// finite; tolerance is relative, >= 0.
+// (unused vertices map to themselves). scan must say the mesh is in range, and
+// finite when tolerance > 0 (an exact weld compares bits: copies of one NaN
+// are one vertex); tolerance is relative, >= 0. Exact welding is one hashing
+// pass; within a tolerance, a sort by grid cell.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,

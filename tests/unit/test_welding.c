@@ -2,7 +2,8 @@
  * repeat a vertex once per face with rounding noise in its coordinates; a
  * weld tolerance larger than the noise closes the surface, one smaller than
  * the gap between distinct features keeps them apart. And the shells
- * (polymass_mesh_shells), which split as welding joins. */
+ * (polymass_mesh_shells), which split as welding joins; and the welding on
+ * its own (polymass_mesh_weld). */
 #include "test_support.h"
 
 #include <math.h>
@@ -255,6 +256,79 @@ static void test_shells_errors(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* polymass_mesh_weld: a soup of a box (each face its own corners) gives
+ * every corner the first corner at its position, exactly (+0 and -0 one,
+ * copies of a NaN one); a tolerance welds near copies; an unused vertex maps
+ * to itself; bad arguments are refused. */
+static void test_weld_on_its_own(void** state) {
+    static const double lo[3] = {-0.0, 0, 0}, hi[3] = {1, 1, 1};
+    polymass_context* ctx = pm_context_new(0);
+    uint32_t of_vertex[40];
+    uint64_t distinct = 0;
+    polymass_mesh_desc d;
+    pm_mesh m;
+    size_t v, w;
+    (void)state;
+    pm_mesh_box(&m, lo, hi, 1);
+    pm_mesh_to_soup(&m);
+    assert_int_equal(m.vertex_count, 36);
+    m.positions[0] = 0.0;            /* the first corner at +0, the others at -0 */
+    pm_mesh_add_vertex(&m, 5, 5, 5); /* vertex 36: used by no face */
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    assert_int_equal(distinct, 8);
+    for (v = 0; v < 36; ++v) {
+        for (w = 0; w < v; ++w) {
+            if (m.positions[3 * w] == m.positions[3 * v] &&
+                m.positions[3 * w + 1] == m.positions[3 * v + 1] &&
+                m.positions[3 * w + 2] == m.positions[3 * v + 2]) {
+                break;
+            }
+        }
+        assert_int_equal(of_vertex[v], w);
+    }
+    assert_int_equal(of_vertex[36], 36);
+
+    /* NaN copies are one vertex when welding exactly; within a tolerance,
+       an error. */
+    m.positions[3 * 5 + 1] = NAN;
+    m.positions[3 * 9 + 1] = NAN;
+    memcpy(&m.positions[3 * 9], &m.positions[3 * 5], 3 * sizeof(double));
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    assert_int_equal(of_vertex[9], 5);
+    set_weld(ctx, 1e-6);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE,
+                     polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    pm_mesh_free(&m);
+
+    /* Within a tolerance: noise below it welds the soup to the box's 8. */
+    pm_mesh_box(&m, lo, hi, 1);
+    pm_mesh_to_soup(&m);
+    add_noise(&m, 1e-9, 7);
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    assert_int_equal(distinct, 8);
+    set_weld(ctx, 0.0);
+    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    assert_int_equal(distinct, 36);
+
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_weld(NULL, &distinct, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_weld(of_vertex, NULL, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_weld(of_vertex, &distinct, ctx, NULL));
+    m.indices[7] = 99;
+    d = pm_mesh_desc(&m);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                     polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    pm_mesh_free(&m);
+    assert_int_equal(polymass_mesh_weld(of_vertex, &distinct, NULL, NULL),
+                     POLYMASS_ERROR_INVALID_ARGUMENT);
+    polymass_context_destroy(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_noisy_soup_closes),
@@ -263,6 +337,7 @@ int main(void) {
         cmocka_unit_test(test_invalid_tolerances),
         cmocka_unit_test(test_shells),
         cmocka_unit_test(test_shells_errors),
+        cmocka_unit_test(test_weld_on_its_own),
     };
     return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
 }

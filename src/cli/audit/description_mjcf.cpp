@@ -18,7 +18,9 @@
 //   is audited but not written by --fix.
 // A mesh geom is where the file's vertices put it in the geom frame (MuJoCo
 // re-centres the mesh internally and moves the geom frame to match).
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -31,6 +33,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kDeepestInclude = 20;
+// Files loaded by <include>, counting each time one is met: a file including
+// another twice, which includes another twice, ... doubles at each level.
+constexpr std::size_t kMostIncludes = 4096;
 constexpr int kDeepestBody = 1000;  // bodies in bodies, beyond any robot's chain
 
 using Attributes = std::map<std::string, std::string>;
@@ -50,7 +55,8 @@ std::string joined(const std::string& dir, const std::string& path) {
 
 class MjcfParser {
 public:
-    explicit MjcfParser(const XmlFile& main) : main_(main), model_dir_(directory_of(main.path)) {}
+    explicit MjcfParser(const XmlFile& main)
+        : main_(main), model_dir_(directory_of(main.path)), include_chain_{same_file(main.path)} {}
 
     Description parse() {
         description_.format = Format::kMjcf;
@@ -93,12 +99,33 @@ private:
                 throw DescriptionError(main_.path + ": <include> nested more than " +
                                        std::to_string(kDeepestInclude) + " deep");
             }
+            const std::string path = joined(model_dir_, child.attribute("file").value());
+            const std::string identity = same_file(path);
+            if (std::find(include_chain_.begin(), include_chain_.end(), identity) !=
+                include_chain_.end()) {
+                throw DescriptionError(source.path + ": <include file='" +
+                                       child.attribute("file").value() +
+                                       "'> includes a file that includes it (" + path + ")");
+            }
+            if (included_.size() >= kMostIncludes) {
+                throw DescriptionError(main_.path + ": more than " + std::to_string(kMostIncludes) +
+                                       " <include>s");
+            }
             auto included = std::make_unique<XmlFile>();
-            load_xml(*included, joined(model_dir_, child.attribute("file").value()));
+            load_xml(*included, path);
             const XmlFile& file = *included;
             included_.push_back(std::move(included));
+            include_chain_.push_back(identity);
             for_each_child(file.document.document_element(), file, depth + 1, visit);
+            include_chain_.pop_back();
         }
+    }
+
+    // One name for a file however a path reaches it (links, "..").
+    static std::string same_file(const std::string& path) {
+        std::error_code error;
+        const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+        return error ? path : canonical.string();
     }
 
     void read_compiler(const pugi::xml_node& node) {
@@ -382,6 +409,8 @@ private:
     const XmlFile& main_;
     std::string model_dir_;
     std::vector<std::unique_ptr<XmlFile>> included_;
+    // The files whose <include> is being expanded, the model file first.
+    std::vector<std::string> include_chain_;
     bool degrees_ = true;
     std::string eulerseq_ = "xyz";
     std::string meshdir_, assetdir_;

@@ -2,12 +2,14 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <regex>
 #include <sstream>
 #include <system_error>
 #include <vector>
+
+#include "readers/file_bytes.hpp"
+#include "readers/mesh_reader.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -37,14 +39,16 @@ std::vector<fs::path> search_path(const char* variable) {
 }
 
 // The <name> a package.xml in dir declares, or "".
+// (Mapped, so a package.xml that is a device or a pipe is no package.)
 std::string package_name(const fs::path& dir) {
-    std::ifstream file(dir / "package.xml");
-    if (!file) return "";
-    std::ostringstream text;
-    text << file.rdbuf();
+    std::string content;
+    try {
+        content = std::string(FileBytes(dir / "package.xml").view());
+    } catch (const ReadError&) {
+        return "";
+    }
     static const std::regex kName(R"(<name>\s*([^<\s]+)\s*</name>)");
     std::smatch match;
-    const std::string content = text.str();
     return std::regex_search(content, match, kName) ? match[1].str() : "";
 }
 

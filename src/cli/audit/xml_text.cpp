@@ -1,9 +1,9 @@
 #include "audit/xml_text.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
+#include "readers/file_bytes.hpp"
+#include "readers/mesh_reader.hpp"
 #include "readers/text_lines.hpp"
 
 namespace polymass_cli::audit {
@@ -64,13 +64,14 @@ std::size_t element_end(const std::string& text, std::size_t begin) {
 }  // namespace
 
 void load_xml(XmlFile& file, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DescriptionError(path + ": cannot open the file");
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (in.bad()) throw DescriptionError(path + ": cannot read the file");
+    // Mapped as mesh files are: a device (/dev/zero) or a pipe, which has
+    // no end to read to, is refused rather than read without bound.
+    try {
+        file.text = std::string(FileBytes(path).view());
+    } catch (const ReadError& error) {
+        throw DescriptionError(path + ": " + error.what());
+    }
     file.path = path;
-    file.text = bytes.str();
     // Parsed as UTF-8 from a copy of text, so that offsets are text's.
     const pugi::xml_parse_result parsed = file.document.load_buffer(
         file.text.data(), file.text.size(), pugi::parse_default, pugi::encoding_utf8);

@@ -1,22 +1,30 @@
-// One function per file format, each turning the file's bytes (or, for the
-// formats another library reads, its path) into a Model or throwing ReadError.
+// One function per file format, each turning the file's bytes (mapped, not
+// copied; for the formats another library reads, its path) into a Model or
+// throwing ReadError.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "model/model.hpp"
+#include "readers/file_bytes.hpp"
 
 namespace polymass_cli {
 
-Model read_obj(const std::string& bytes);
-Model read_off(const std::string& bytes);
-Model read_stl(const std::string& bytes);
-Model read_ply(const std::string& bytes);
+Model read_obj(std::string_view bytes);
+Model read_off(std::string_view bytes);
+Model read_ply(std::string_view bytes);
+Model read_stl(std::string_view bytes);
+// The same from the file itself, let go as its triangles are decoded.
+Model read_stl(FileBytes file);
 // glTF 2 (.gltf with embedded or external buffers, .glb) through tinygltf:
 // node transforms applied, one part per node with a mesh.
 Model read_gltf(const std::string& path);
-// 3MF through lib3mf: transforms applied, one part per build item.
-Model read_3mf(const std::string& path);
+// 3MF through lib3mf: transforms applied, one part per build item; a package
+// whose parts inflate past packed_memory_budget(packed_size) (its size) is
+// refused.
+Model read_3mf(const std::string& path, uint64_t packed_size);
 // Collada through assimp: its <unit> and <up_axis> applied (metres, Z up),
 // node transforms applied, one part per node with meshes.
 Model read_collada(const std::string& path);

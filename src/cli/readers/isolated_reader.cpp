@@ -7,7 +7,9 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <new>
 #include <string>
 
 #include "readers/mesh_reader.hpp"
@@ -127,7 +129,18 @@ std::string read_all(int fd) {
     }
 }
 
-[[noreturn]] void run_child(int fd, const std::function<Model()>& read) {
+// The bytes of address space the process has mapped (its libraries, stacks,
+// heap), or 0 when /proc cannot tell.
+uint64_t mapped_bytes() {
+    FILE* statm = std::fopen("/proc/self/statm", "r");
+    if (statm == nullptr) return 0;
+    unsigned long long pages = 0;
+    const int read = std::fscanf(statm, "%llu", &pages);
+    std::fclose(statm);
+    return read == 1 ? pages * uint64_t(sysconf(_SC_PAGESIZE)) : 0;
+}
+
+[[noreturn]] void run_child(int fd, uint64_t packed_size, const std::function<Model()>& read) {
     // A small crafted file can make a reader work without end (3MF objects
     // whose components reuse each other expand into a full tree): two minutes
     // of CPU, far beyond any real file, then SIGXCPU - a crash the parent
@@ -135,6 +148,19 @@ std::string read_all(int fd) {
     constexpr rlim_t kCpuSeconds = 120;
     const struct rlimit cpu = {kCpuSeconds, kCpuSeconds};
     setrlimit(RLIMIT_CPU, &cpu);
+    // Memory: an allocation past the budget fails (std::bad_alloc, below).
+    // An existing lower limit stays. Without /proc, no limit: the budget
+    // would have nothing to add to.
+    const uint64_t mapped = mapped_bytes();
+    struct rlimit memory {};
+    if (packed_size > 0 && mapped > 0 && getrlimit(RLIMIT_AS, &memory) == 0 &&
+        packed_memory_budget(packed_size) < RLIM_INFINITY - mapped) {
+        const rlim_t budget = mapped + packed_memory_budget(packed_size);
+        if (memory.rlim_cur == RLIM_INFINITY || budget < memory.rlim_cur) {
+            memory.rlim_cur = budget;
+            setrlimit(RLIMIT_AS, &memory);
+        }
+    }
     std::string answer;
     try {
         answer = serialize(read());
@@ -143,8 +169,16 @@ std::string read_all(int fd) {
         out.value(Outcome::kReadError);
         out.text(error.what());
         answer = out.data();
+    } catch (const std::bad_alloc&) {
+        Writer out;
+        out.value(Outcome::kReadError);
+        out.text("the reader ran out of its memory (" +
+                 std::to_string(packed_memory_budget(packed_size) >> 20) +
+                 " MiB): the file expands beyond what a mesh of its size can hold (a zip "
+                 "bomb?), or is corrupt");
+        answer = out.data();
     } catch (...) {
-        _exit(2);  // out of memory or worse: the parent reports the exit status
+        _exit(2);  // worse: the parent reports the exit status
     }
     write_all(fd, answer);
     _exit(0);
@@ -152,7 +186,15 @@ std::string read_all(int fd) {
 
 }  // namespace
 
-Model read_isolated(const std::function<Model()>& read) {
+uint64_t packed_memory_budget(uint64_t packed_size) {
+    constexpr uint64_t kBase = uint64_t(256) << 20;
+    constexpr uint64_t kBytesPerPackedByte = 64;
+    return packed_size > (UINT64_MAX - kBase) / kBytesPerPackedByte
+               ? UINT64_MAX
+               : kBase + kBytesPerPackedByte * packed_size;
+}
+
+Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
     int pipe_ends[2];
     if (pipe(pipe_ends) != 0) throw ReadError(std::string("pipe: ") + std::strerror(errno));
     const pid_t child = fork();
@@ -163,7 +205,7 @@ Model read_isolated(const std::function<Model()>& read) {
     }
     if (child == 0) {
         close(pipe_ends[0]);
-        run_child(pipe_ends[1], read);
+        run_child(pipe_ends[1], packed_size, read);
     }
     close(pipe_ends[1]);
     const std::string answer = read_all(pipe_ends[0]);

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <string>
+#include <vector>
 
+#include "readers/file_bytes.hpp"
 #include "readers/format_readers.hpp"
 #include "readers/isolated_reader.hpp"
 
@@ -26,31 +26,6 @@ std::string format_from_extension(const std::string& path) {
     return lowercase(path.substr(dot + 1));
 }
 
-std::ifstream open_file(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw ReadError("cannot open the file");
-    return file;
-}
-
-std::string read_bytes(const std::string& path) {
-    std::ifstream file = open_file(path);
-    std::ostringstream contents;
-    contents << file.rdbuf();
-    if (file.bad()) throw ReadError("cannot read the file");
-    std::string bytes = contents.str();
-    if (bytes.empty()) throw ReadError("the file is empty");
-    return bytes;
-}
-
-// The same errors as read_bytes, for a file another library reads: looking
-// at its first byte tells an empty file without loading a large one.
-void check_not_empty(const std::string& path) {
-    std::ifstream file = open_file(path);
-    if (file.peek() == std::ifstream::traits_type::eof()) {
-        throw ReadError(file.bad() ? "cannot read the file" : "the file is empty");
-    }
-}
-
 // Every reader records, per part, the size of each face and then all their
 // corners: if these disagree, a reader has a bug, and the file is refused
 // here rather than indexed past the end of its corners later.
@@ -68,7 +43,28 @@ void check_faces_match_indices(const Model& model) {
     }
 }
 
+// Faces past most_face_corners, in any format.
+void check_face_sizes(const Model& model) {
+    const uint64_t most = most_face_corners(model.vertex_count());
+    for (size_t p = 0; p < model.parts.size(); ++p) {
+        const std::vector<uint32_t>& sizes = model.parts[p].face_sizes;
+        const auto large =
+            std::find_if(sizes.begin(), sizes.end(), [&](uint32_t size) { return size > most; });
+        if (large != sizes.end()) {
+            throw ReadError("face " + std::to_string(large - sizes.begin()) +
+                            (model.parts.size() > 1 ? " of part " + std::to_string(p) : "") +
+                            " has " + std::to_string(*large) + " corners, but the file has " +
+                            std::to_string(model.vertex_count()) +
+                            " vertices: a polygon passes through a vertex at most twice");
+        }
+    }
+}
+
 }  // namespace
+
+uint64_t most_face_corners(uint64_t vertex_count) {
+    return std::max(uint64_t(1) << 16, 2 * vertex_count);
+}
 
 const char* supported_formats() { return "obj, stl, ply, off, gltf, glb, 3mf, dae"; }
 
@@ -76,21 +72,21 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     const std::string name = format.empty() ? format_from_extension(path) : lowercase(format);
     Model model;
     if (name == "obj") {
-        model = read_obj(read_bytes(path));
+        model = read_obj(FileBytes(path).view());
     } else if (name == "stl") {
-        model = read_stl(read_bytes(path));
+        model = read_stl(FileBytes(path));
     } else if (name == "ply") {
-        model = read_ply(read_bytes(path));
+        model = read_ply(FileBytes(path).view());
     } else if (name == "off") {
-        model = read_off(read_bytes(path));
+        model = read_off(FileBytes(path).view());
     } else if (name == "gltf" || name == "glb") {
-        check_not_empty(path);
+        regular_file_size(path);  // a device, a pipe or an empty file is refused here
         model = read_isolated([&] { return read_gltf(path); });
     } else if (name == "3mf") {
-        check_not_empty(path);
-        model = read_isolated([&] { return read_3mf(path); });
+        const uint64_t size = regular_file_size(path);
+        model = read_isolated([&] { return read_3mf(path, size); }, size);
     } else if (name == "dae") {
-        check_not_empty(path);
+        regular_file_size(path);  // as for glTF
         model = read_isolated([&] { return read_collada(path); });
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
@@ -101,6 +97,7 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     }
     model.format = name;
     check_faces_match_indices(model);
+    check_face_sizes(model);
     model.parts.erase(std::remove_if(model.parts.begin(), model.parts.end(),
                                      [](const Part& part) { return part.face_sizes.empty(); }),
                       model.parts.end());

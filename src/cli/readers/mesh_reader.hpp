@@ -7,6 +7,7 @@
 // untrusted JSON, binary buffers and zip packages with code not ours.
 #pragma once
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,14 @@ class ReadError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// The most corners a face of a mesh of vertex_count vertices may have: a
+// polygon passes through each of its vertices once, or twice where a bridge
+// joins a hole to its outline. A face of more is not a polygon but a corrupt
+// or hostile file (one line of an OBJ can name 10^8 corners), refused before
+// the library spends tens of bytes on each corner. Up to 2^16 corners always
+// pass, so that the library names a small face's bad indices.
+uint64_t most_face_corners(uint64_t vertex_count);
 
 // The format names --format accepts and the extensions that select them.
 const char* supported_formats();

@@ -13,6 +13,8 @@
 namespace polymass_cli {
 namespace {
 
+constexpr uint64_t kSmallestVertexLine = 8;  // "v 0 0 0\n"
+
 // The 0-based vertex a face corner token names, or kIndexOutOfRange.
 uint32_t corner_vertex(std::string_view corner, uint64_t vertices_so_far, const TextLines& lines) {
     const std::string_view vertex_field = corner.substr(0, corner.find('/'));
@@ -32,7 +34,7 @@ uint32_t corner_vertex(std::string_view corner, uint64_t vertices_so_far, const 
 
 }  // namespace
 
-Model read_obj(const std::string& bytes) {
+Model read_obj(std::string_view bytes) {
     Model model;
     model.parts.emplace_back();
     TextLines lines(bytes);
@@ -45,6 +47,11 @@ Model read_obj(const std::string& bytes) {
             }
         } else if (keyword == "f") {
             Part& part = model.parts.back();
+            // The vertices the rest of the file can hold (a `v` line takes
+            // at least 8 bytes) bound the face's corners as they are read,
+            // not once they fill the memory.
+            const uint64_t most_corners =
+                most_face_corners((bytes.size() - lines.rest_of_line()) / kSmallestVertexLine);
             uint32_t corners = 0;
             std::string_view corner;
             while (lines.next_token(corner)) {
@@ -55,8 +62,13 @@ Model read_obj(const std::string& bytes) {
                     if (!lines.next_line(true)) break;
                     continue;
                 }
+                if (++corners > most_corners) {
+                    lines.fail("a face of more than " + std::to_string(most_corners) +
+                               " corners, which a file of " + std::to_string(bytes.size()) +
+                               " bytes has not the vertices for: a polygon passes through a "
+                               "vertex at most twice");
+                }
                 part.indices.push_back(corner_vertex(corner, model.vertex_count(), lines));
-                ++corners;
             }
             // A face of fewer than 3 corners is kept: the library names it.
             part.face_sizes.push_back(corners);

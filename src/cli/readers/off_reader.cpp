@@ -33,7 +33,7 @@ uint64_t header_count(TextLines& lines, const char* what, uint64_t file_size) {
 
 }  // namespace
 
-Model read_off(const std::string& bytes) {
+Model read_off(std::string_view bytes) {
     TextLines lines(bytes);
     const std::string_view keyword = first_token_of_next_line(lines, "the OFF header");
     const std::string_view::size_type off_at = keyword.find("OFF");

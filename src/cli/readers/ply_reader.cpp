@@ -74,7 +74,7 @@ size_t size_of(Scalar type) {
 // returned as a double, which holds any PLY integer exactly.
 class BodyReader {
 public:
-    BodyReader(const std::string& bytes, std::string_view::size_type start, Encoding encoding)
+    BodyReader(std::string_view bytes, std::string_view::size_type start, Encoding encoding)
         : bytes_(bytes), offset_(start), encoding_(encoding), lines_(bytes, start) {}
 
     // element and item say where, for the error message.
@@ -144,7 +144,7 @@ private:
         return static_cast<double>(value);
     }
 
-    const std::string& bytes_;
+    std::string_view bytes_;
     std::string::size_type offset_;
     Encoding encoding_;
     TextLines lines_;
@@ -156,7 +156,7 @@ struct Header {
     std::string_view::size_type body_start = 0;
 };
 
-Header read_header(const std::string& bytes) {
+Header read_header(std::string_view bytes) {
     TextLines lines(bytes);
     std::string_view token;
     if (!lines.next_line(false) || !lines.next_token(token) || token != "ply") {
@@ -224,7 +224,7 @@ uint32_t vertex_index(double value) {
 
 }  // namespace
 
-Model read_ply(const std::string& bytes) {
+Model read_ply(std::string_view bytes) {
     const Header header = read_header(bytes);
     BodyReader body(bytes, header.body_start, header.encoding);
     Model model;

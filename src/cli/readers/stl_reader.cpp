@@ -7,11 +7,12 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
+#include "library/corner_welding.hpp"
 #include "readers/format_readers.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/text_lines.hpp"
-#include "readers/vertex_welder.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -31,33 +32,42 @@ float little_endian_f32(const unsigned char* bytes) {
     return value;
 }
 
-bool starts_with_solid(const std::string& bytes) {
+bool starts_with_solid(std::string_view bytes) {
     const std::string::size_type first = bytes.find_first_not_of(" \t\r\n");
     return first != std::string::npos && bytes.compare(first, 5, "solid") == 0;
 }
 
-Model read_binary(const std::string& bytes, uint64_t triangle_count) {
-    Model model;
-    Part& part = model.parts.emplace_back();
-    VertexWelder welder(model.positions);
-    part.indices.reserve(3 * triangle_count);
-    part.face_sizes.assign(triangle_count, 3);
+// The triangles' corners as float32, as the file stores them (36 bytes a
+// triangle, against the file's 50), decoded in one pass over the mapping,
+// which is let go as it is read and before the corners are welded.
+// file, when given, holds bytes and is let go as they are decoded.
+Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_count) {
+    std::vector<float> corners(9 * triangle_count);
     const unsigned char* triangle =
         reinterpret_cast<const unsigned char*>(bytes.data()) + kBinaryHeaderBytes;
+    float* corner = corners.data();
+    // The file and its corners are not held whole at once: the pages decoded
+    // are given back every kWindow triangles.
+    constexpr uint64_t kWindow = uint64_t(1) << 18;
     for (uint64_t t = 0; t < triangle_count; ++t, triangle += kBinaryTriangleBytes) {
-        const unsigned char* corner = triangle + 12;  // after the normal
-        for (int c = 0; c < 3; ++c, corner += 12) {
-            part.indices.push_back(welder.index_of(little_endian_f32(corner),
-                                                   little_endian_f32(corner + 4),
-                                                   little_endian_f32(corner + 8)));
-        }
+        const unsigned char* coordinate = triangle + 12;  // after the normal
+        for (int c = 0; c < 9; ++c, coordinate += 4) *corner++ = little_endian_f32(coordinate);
+        if (file != nullptr && (t + 1) % kWindow == 0)
+            file->drop_before(kBinaryHeaderBytes + (t + 1) * kBinaryTriangleBytes);
     }
+    if (file != nullptr) file->release();
+    Model model;
+    Part& part = model.parts.emplace_back();
+    part.indices = weld_corners(corners, model.positions);
+    part.face_sizes.assign(triangle_count, 3);
     return model;
 }
 
-Model read_ascii(const std::string& bytes) {
+Model read_ascii(std::string_view bytes) {
     Model model;
-    VertexWelder welder(model.positions);
+    // Every corner in file order; each part's indices number them until
+    // they are welded, all parts at once (they share the positions).
+    std::vector<double> soup;
     TextLines lines(bytes);
     Part* part = nullptr;
     // Where in a facet the reader is. Only `vertex` and `endloop` may appear
@@ -96,7 +106,8 @@ Model read_ascii(const std::string& bytes) {
             const double x = lines.expect_double("an x coordinate");
             const double y = lines.expect_double("a y coordinate");
             const double z = lines.expect_double("a z coordinate");
-            part->indices.push_back(welder.index_of(x, y, z));
+            part->indices.push_back(uint32_t(soup.size() / 3));
+            soup.insert(soup.end(), {x, y, z});
             ++corners;
         } else if (keyword == "endloop") {
             if (!in_loop) lines.fail("'endloop' without 'outer loop'");
@@ -112,12 +123,13 @@ Model read_ascii(const std::string& bytes) {
         }
     }
     if (in_loop || in_facet) lines.fail("the file ends inside a facet");
+    const std::vector<uint32_t> vertex_of = weld_corners(soup, model.positions);
+    for (Part& each : model.parts)
+        for (uint32_t& index : each.indices) index = vertex_of[index];
     return model;
 }
 
-}  // namespace
-
-Model read_stl(const std::string& bytes) {
+Model read_stl_from(std::string_view bytes, FileBytes* file) {
     const uint64_t size = bytes.size();
     uint64_t binary_count = 0;
     bool binary_size_matches = false;
@@ -140,7 +152,13 @@ Model read_stl(const std::string& bytes) {
                         std::to_string(size) +
                         (size < expected ? " (truncated)" : " (not an STL, or corrupt)"));
     }
-    return read_binary(bytes, binary_count);
+    return read_binary(bytes, file, binary_count);
 }
+
+}  // namespace
+
+Model read_stl(std::string_view bytes) { return read_stl_from(bytes, nullptr); }
+
+Model read_stl(FileBytes file) { return read_stl_from(file.view(), &file); }
 
 }  // namespace polymass_cli

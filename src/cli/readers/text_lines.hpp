@@ -25,6 +25,8 @@ public:
     double expect_double(const char* what);
     int64_t expect_integer(const char* what);
     uint64_t line_number() const { return line_number_; }
+    // The bytes of the current line not yet read as tokens.
+    std::string_view::size_type rest_of_line() const { return line_.size(); }
     // Where the next line starts (for a binary body after a text header).
     // At most the text's size: a last line without a newline ends there.
     std::string_view::size_type offset() const { return std::min(next_line_, text_.size()); }

@@ -11,12 +11,14 @@
 // coordinate is exact here when it is a float (as those of CAD exports in
 // micrometre steps of a few millimetres are not). The README says so.
 #include <Model/COM/NMR_DLLInterfaces.h>
+#include <minizip/unzip.h>
 
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "readers/format_readers.hpp"
+#include "readers/isolated_reader.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/transform.hpp"
 
@@ -131,9 +133,36 @@ void add_object(Model& model, Part& part, Instance object, const Transform& tran
     }
 }
 
+// A zip bomb is refused before lib3mf inflates it: the sizes the package's
+// central directory declares for its parts (minizip reads them without
+// inflating anything) add up to no more than its reader's memory budget
+// (the same bound read_isolated sets). A package that declares less than it
+// holds fails its sizes and checksums in lib3mf, within that budget. A
+// package minizip cannot open is left to lib3mf's error.
+void check_declared_sizes(const std::string& path, uint64_t packed_size) {
+    const unzFile package = unzOpen64(path.c_str());
+    if (package == nullptr) return;
+    const uint64_t most = packed_memory_budget(packed_size);
+    uint64_t declared = 0;
+    for (int at = unzGoToFirstFile(package); at == UNZ_OK; at = unzGoToNextFile(package)) {
+        unz_file_info64 part{};
+        if (unzGetCurrentFileInfo64(package, &part, nullptr, 0, nullptr, 0, nullptr, 0) != UNZ_OK)
+            break;
+        declared += part.uncompressed_size;
+        if (declared > most) break;
+    }
+    unzClose(package);
+    if (declared > most) {
+        throw ReadError("not a readable 3MF file: its parts inflate to more than " +
+                        std::to_string(most >> 20) + " MiB from " + std::to_string(packed_size) +
+                        " bytes, more than a mesh of that size can hold (a zip bomb?)");
+    }
+}
+
 }  // namespace
 
-Model read_3mf(const std::string& path) {
+Model read_3mf(const std::string& path, uint64_t packed_size) {
+    check_declared_sizes(path, packed_size);
     Instance raw = nullptr;
     check(NMR::lib3mf_createmodel(&raw), nullptr, "creating a 3MF model");
     const Handle model3mf(raw);
