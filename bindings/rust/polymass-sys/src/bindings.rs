@@ -912,3 +912,11 @@ unsafe extern "C" {
         context: *mut polymass_context,
     ) -> i32;
 }
+unsafe extern "C" {
+    pub fn polymass_mesh_weld(
+        out_vertex_of: *mut u32,
+        out_distinct_count: *mut u64,
+        context: *mut polymass_context,
+        desc: *const polymass_mesh_desc,
+    ) -> i32;
+}
