@@ -111,18 +111,16 @@ __attribute__((always_inline)) inline void integrate_batch(
         // are of order one here) is measured without squaring instead, rarely.
         constexpr double squares_keep_digits = 0x1p-960;
         const MaskOf<Wide> sliver = squared_norm < squares_keep_digits;
-        if (any_lane(sliver)) {
+        // A degenerate triangle is reported; its terms, at rounding level, stay:
+        // they are what keeps a closed surface's sum balanced. Slivers and
+        // degenerate triangles are rare: one test for both.
+        const Wide extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+        if (any_lane(sliver | (twice_area <= degenerate_area_ratio * extent_squared))) {
             for (int lane = 0; lane < width; ++lane)
                 if (sliver[lane])
                     twice_area[lane] = std::hypot(edges.delta[0][lane], edges.delta[1][lane],
                                                   edges.delta[2][lane]);
-        }
-
-        // A degenerate triangle is reported; its terms, at rounding level, stay:
-        // they are what keeps a closed surface's sum balanced.
-        const Wide extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
-        const MaskOf<Wide> degenerate = twice_area <= degenerate_area_ratio * extent_squared;
-        if (any_lane(degenerate)) {
+            const MaskOf<Wide> degenerate = twice_area <= degenerate_area_ratio * extent_squared;
             const std::size_t used = std::min<std::size_t>(width, batch.count - first);
             for (std::size_t lane = 0; lane < used; ++lane)
                 if (degenerate[lane]) result.degenerate_faces.record(batch.face(first + lane));
