@@ -94,7 +94,10 @@ __attribute__((always_inline)) inline void integrate_batch(
         else
             load_triangles<listed, false>(batch, first, p);
         const TriangleEdges<Wide> edges(p);
-        const UnscaledTriangleSums<Wide> terms = unscaled_triangle_terms(p, edges.delta);
+        // Lane groups past the batch's end add nothing; padding lanes add zeros.
+        const int groups = int(std::min<std::size_t>(
+            groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count));
+        add_unscaled_triangle_sums(sums, p, edges.delta, groups);
 
         Wide squared_norm{}, e1_squared{}, e2_squared{};
 #pragma GCC unroll 3
@@ -125,10 +128,7 @@ __attribute__((always_inline)) inline void integrate_batch(
             for (std::size_t lane = 0; lane < used; ++lane)
                 if (degenerate[lane]) result.degenerate_faces.record(batch.face(first + lane));
         }
-        // Padding lanes add zeros; lane groups past the batch's end add nothing.
-        for (int group = 0; group < groups_of<Wide>; ++group) {
-            if (first + std::size_t(group) * lane_count >= batch.count) break;
-            add_lane_group_terms(sums, terms, group);
+        for (int group = 0; group < groups; ++group) {
             add_lane_group(twice_areas, twice_area, group);
             add_lane_group(extents, extent_squared, group);
         }
