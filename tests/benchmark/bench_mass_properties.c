@@ -58,16 +58,23 @@ static void* sum_share(void* argument) {
     const size_t coordinates = 3 * (size_t)desc->vertex_count;
     const size_t c0 = coordinates * share->part / share->parts;
     const size_t c1 = coordinates * (share->part + 1) / share->parts;
-    double sum = 0;
+    /* Eight running sums: one would make the probe wait on each addition
+       instead of on memory. */
+    double sums[8] = {0};
+    size_t i = c0;
     if (desc->position_type == POLYMASS_POSITION_FLOAT32) {
         const float* p = desc->positions;
-        float partial = 0;
-        for (size_t i = c0; i < c1; ++i) partial += p[i];
-        sum = partial;
+        for (; i + 8 <= c1; i += 8)
+            for (int k = 0; k < 8; ++k) sums[k] += p[i + k];
+        for (; i < c1; ++i) sums[0] += p[i];
     } else {
         const double* p = desc->positions;
-        for (size_t i = c0; i < c1; ++i) sum += p[i];
+        for (; i + 8 <= c1; i += 8)
+            for (int k = 0; k < 8; ++k) sums[k] += p[i + k];
+        for (; i < c1; ++i) sums[0] += p[i];
     }
+    double sum = 0;
+    for (int k = 0; k < 8; ++k) sum += sums[k];
     const uint32_t* indices = desc->indices;
     const size_t i0 = (size_t)desc->index_count * share->part / share->parts;
     const size_t i1 = (size_t)desc->index_count * (share->part + 1) / share->parts;
