@@ -10,6 +10,7 @@
 #include "test_mesh.hpp"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
