@@ -162,7 +162,9 @@ int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* 
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))
             return status;
-        piece.integration = core::integrate_mesh(view, range_settings(piece.scan, point, options));
+        core::SerialTaskRunner serial;
+        piece.integration =
+            core::integrate_mesh(view, range_settings(piece.scan, point, options), serial);
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))
             return status;

@@ -1,21 +1,35 @@
 // A few doubles processed as one value (GCC/Clang vector extension).
 //
-// Baseline x86-64 code runs a Lanes operation as two SSE2 instructions; the
-// x86-64-v3 clone of a function (see mesh_integration.cpp) as one AVX
-// instruction. The shipped library is built for the baseline: wider code is
-// only ever chosen at run time.
+// Lanes are the logical unit of the triangle kernel: lane_count triangles go
+// through the closed forms side by side and each lane keeps its own running
+// sums, so the order of every addition is fixed by lane_count alone. Wider
+// hardware processes several lane groups at once (WideLanes) but adds them to
+// the running sums one group after the other: every instruction set gives the
+// same bits. Baseline x86-64 code runs a Lanes operation as two SSE2
+// instructions, the AVX2 kernel as one, the AVX-512 kernel a WideLanes
+// operation as one. The shipped library is built for the baseline: wider code
+// is only ever chosen at run time (mesh_integration.cpp).
 //
 // Loops over the axes or vertices of arrays of Lanes carry `#pragma GCC
 // unroll 3` (Clang honours it too): at -O2 GCC keeps such a loop and, with its
 // counter, the arrays in memory; unrolled, their elements live in registers.
 #pragma once
 
+#include <cstddef>
 #include <cstring>
 
 namespace polymass::core {
 
 constexpr int lane_count = 4;
 using Lanes = double __attribute__((vector_size(lane_count * sizeof(double))));
+// Two lane groups: what one AVX-512 register holds.
+using WideLanes = double __attribute__((vector_size(2 * lane_count * sizeof(double))));
+
+// How many doubles, and how many lane groups, a vector of doubles holds.
+template <class Vector>
+constexpr int width_of = int(sizeof(Vector) / sizeof(double));
+template <class Vector>
+constexpr int groups_of = width_of<Vector> / lane_count;
 
 // Lanes are passed by reference, never by value: a function compiled for
 // another instruction set than its caller would disagree on how a vector is
@@ -24,12 +38,25 @@ __attribute__((always_inline)) inline void load_lanes(Lanes& lanes, const double
     std::memcpy(&lanes, values, sizeof lanes);
 }
 
-// A comparison of Lanes gives one of these: all bits set in the lanes where it holds.
-using LaneMask = decltype(Lanes{} < Lanes{});
+// Adds lane group `group` of a wider vector (or the whole of Lanes) to `sum`.
+template <class Vector>
+__attribute__((always_inline)) inline void add_lane_group(Lanes& sum, const Vector& vector,
+                                                          int group) {
+    Lanes lanes;
+    std::memcpy(&lanes, reinterpret_cast<const char*>(&vector) + group * sizeof(Lanes),
+                sizeof lanes);
+    sum += lanes;
+}
 
-__attribute__((always_inline)) inline bool any_lane(const LaneMask& mask) {
+// A comparison of vectors gives one of these: all bits set in the lanes where it holds.
+template <class Vector>
+using MaskOf = decltype(Vector{} < Vector{});
+using LaneMask = MaskOf<Lanes>;
+
+template <class Mask>
+__attribute__((always_inline)) inline bool any_lane(const Mask& mask) {
     auto any = mask[0];
-    for (int lane = 1; lane < lane_count; ++lane) any |= mask[lane];
+    for (int lane = 1; lane < int(sizeof(Mask) / sizeof(mask[0])); ++lane) any |= mask[lane];
     return any != 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "lanes.hpp"
 #include "polygon_integrals.hpp"
@@ -10,47 +11,29 @@
 namespace polymass::core {
 namespace {
 
-// Triangles wait here, as the caller's coordinates laid out axis by vertex by
-// slot, until lane_count of them can go through the closed forms at once; the
-// move into the integration frame happens there too, a lane group at a time.
-// A batch is also a block of the summation: its sums are reduced before they
-// join the total, so rounding grows with the number of batches rather than of
-// triangles.
+// A batch is a block of the summation: its lane sums are reduced before they
+// join the block's total, so rounding grows with the number of batches rather
+// than of triangles.
+constexpr std::size_t batch_capacity = 64;
+static_assert(batch_capacity % (2 * lane_count) == 0, "a batch holds whole wide lane groups");
+static_assert(faces_per_block % batch_capacity == 0, "a block of triangles holds whole batches");
+
+// Where the triangles of a batch are: faces first_face, first_face + 1, ...
+// of an all-triangle mesh, or the listed faces of a mixed one. The kernel
+// reads their vertices straight into lanes and moves them into the
+// integration frame, (coordinate − reference) · inverse_unit.
+template <class Scalar, class Index>
 struct TriangleBatch {
-    static constexpr std::size_t capacity = 64;
-    // pad() fills up to the next multiple of lane_count: it must stay inside.
-    static_assert(capacity % lane_count == 0, "a batch holds whole groups of lanes");
-    alignas(64) double coordinates[3][3][capacity];
-    std::size_t faces[capacity];
-    std::size_t size = 0;
-    // Integration coordinates are (coordinate − reference) · inverse_unit.
+    PositionArray<Scalar> positions;
+    IndexArray<Index> indices;
+    std::size_t count = 0;                 // at most batch_capacity
+    std::size_t first_face = 0;            // when not listed
+    const std::size_t* faces = nullptr;    // listed faces, or nullptr
+    const std::size_t* corners = nullptr;  // their first corner's position in the index array
     double reference[3];
-    double inverse_unit;
+    double inverse_unit;  // a power of two: exact
 
-    TriangleBatch(const Eigen::Vector3d& reference_point, double unit)
-        : reference{reference_point.x(), reference_point.y(), reference_point.z()},
-          inverse_unit(1.0 / unit) {}  // a power of two: exact
-
-    // Fills a slot; the caller counts it in size.
-    void put(std::size_t slot, std::size_t face, const Eigen::Vector3d& p0,
-             const Eigen::Vector3d& p1, const Eigen::Vector3d& p2) {
-        auto put = [&](int vertex, const Eigen::Vector3d& p) {
-            coordinates[0][vertex][slot] = p.x();
-            coordinates[1][vertex][slot] = p.y();
-            coordinates[2][vertex][slot] = p.z();
-        };
-        put(0, p0), put(1, p1), put(2, p2);
-        faces[slot] = face;
-    }
-
-    // Empty slots of the last lane group become triangles with all three
-    // vertices at the reference point: zero triangles, which add nothing.
-    void pad() {
-        const std::size_t end = (size + lane_count - 1) / lane_count * lane_count;
-        for (int axis = 0; axis < 3; ++axis)
-            for (auto& vertex : coordinates[axis])
-                std::fill(vertex + size, vertex + end, reference[axis]);
-    }
+    std::size_t face(std::size_t slot) const { return faces ? faces[slot] : first_face + slot; }
 };
 
 struct BatchResult {
@@ -62,59 +45,92 @@ struct BatchResult {
     Finding degenerate_faces;
 };
 
-// Built for baseline x86-64 and for x86-64-v3 (AVX2, FMA); the loader picks
-// the best one the processor runs.
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_triangle_batch(
-    const TriangleBatch& batch, BatchResult& result) {
-    UnscaledTriangleSums<Lanes> sums;
-    Lanes twice_areas{}, extents{};
-    for (std::size_t first = 0; first < batch.size; first += lane_count) {
-        Lanes p[3][3];
+// Loads triangles first, first + 1, ... of the batch into p[axis][vertex],
+// one per lane, in the integration frame. A lane past the batch's end gets a
+// triangle with all three vertices at the reference point: zeros, which add
+// nothing (`full`: there is none).
+template <bool listed, bool full, class Wide, class Scalar, class Index>
+__attribute__((always_inline)) inline void load_triangles(const TriangleBatch<Scalar, Index>& batch,
+                                                          std::size_t first, Wide (&p)[3][3]) {
+    constexpr int width = width_of<Wide>;
+    const std::size_t present = full ? width : batch.count - first;
+#pragma GCC unroll 3
+    for (int vertex = 0; vertex < 3; ++vertex) {
+        double c[3][width];
+#pragma GCC unroll 8
+        for (int lane = 0; lane < width; ++lane) {
+            if (!full && std::size_t(lane) >= present) {
+                for (int axis = 0; axis < 3; ++axis) c[axis][lane] = batch.reference[axis];
+                continue;
+            }
+            const std::size_t corner =
+                (listed ? batch.corners[first + lane] : 3 * (batch.first_face + first + lane)) +
+                vertex;
+            const Eigen::Vector3d position = batch.positions[batch.indices[corner]];
+            c[0][lane] = position.x(), c[1][lane] = position.y(), c[2][lane] = position.z();
+        }
 #pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
-#pragma GCC unroll 3
-            for (int vertex = 0; vertex < 3; ++vertex) {
-                Lanes coordinate;
-                load_lanes(coordinate, &batch.coordinates[axis][vertex][first]);
-                p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
-            }
+            Wide coordinate;
+            std::memcpy(&coordinate, c[axis], sizeof coordinate);
+            p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
         }
-        const TriangleEdges<Lanes> edges(p);
-        add_unscaled_triangle_sums(sums, p, edges.delta);  // padding lanes add zero
+    }
+}
 
-        Lanes squared_norm{}, e1_squared{}, e2_squared{};
+// The closed forms over a batch, `Wide` (one or two lane groups) at a time.
+// Each lane group joins the running sums in turn, so the sums are those of
+// one lane group at a time, in order, whatever Wide is.
+template <class Wide, bool listed, class Scalar, class Index>
+__attribute__((always_inline)) inline void integrate_batch(
+    const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
+    constexpr int width = width_of<Wide>;
+    UnscaledTriangleSums<Lanes> sums;
+    Lanes twice_areas{}, extents{};
+    for (std::size_t first = 0; first < batch.count; first += width) {
+        Wide p[3][3];
+        if (first + width <= batch.count)
+            load_triangles<listed, true>(batch, first, p);
+        else
+            load_triangles<listed, false>(batch, first, p);
+        const TriangleEdges<Wide> edges(p);
+        // Lane groups past the batch's end add nothing; padding lanes add zeros.
+        const int groups = int(std::min<std::size_t>(
+            groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count));
+        add_unscaled_triangle_sums(sums, p, edges.delta, groups);
+
+        Wide squared_norm{}, e1_squared{}, e2_squared{};
 #pragma GCC unroll 3
         for (int axis = 0; axis < 3; ++axis) {
             squared_norm += edges.delta[axis] * edges.delta[axis];
             e1_squared += edges.e1[axis] * edges.e1[axis];
             e2_squared += edges.e2[axis] * edges.e2[axis];
         }
-        Lanes twice_area;
-        for (int lane = 0; lane < lane_count; ++lane)
-            twice_area[lane] = std::sqrt(squared_norm[lane]);
+        Wide twice_area;
+        for (int lane = 0; lane < width; ++lane) twice_area[lane] = std::sqrt(squared_norm[lane]);
         // Below 2^-1022 squares lose digits (down to none: a well-shaped
         // triangle 1e-150 of the mesh's size squares to zero); above 2^-960
         // what they lose is under 2^-115 of the sum. So a small δ (coordinates
         // are of order one here) is measured without squaring instead, rarely.
         constexpr double squares_keep_digits = 0x1p-960;
-        const LaneMask sliver = squared_norm < squares_keep_digits;
-        if (any_lane(sliver)) {
-            for (int lane = 0; lane < lane_count; ++lane)
+        const MaskOf<Wide> sliver = squared_norm < squares_keep_digits;
+        // A degenerate triangle is reported; its terms, at rounding level, stay:
+        // they are what keeps a closed surface's sum balanced. Slivers and
+        // degenerate triangles are rare: one test for both.
+        const Wide extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+        if (any_lane(sliver | (twice_area <= degenerate_area_ratio * extent_squared))) {
+            for (int lane = 0; lane < width; ++lane)
                 if (sliver[lane])
                     twice_area[lane] = std::hypot(edges.delta[0][lane], edges.delta[1][lane],
                                                   edges.delta[2][lane]);
-        }
-        twice_areas += twice_area;
-
-        // A degenerate triangle is reported; its terms, at rounding level, stay:
-        // they are what keeps a closed surface's sum balanced.
-        const Lanes extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
-        extents += extent_squared;  // padding lanes add zero
-        const LaneMask degenerate = twice_area <= degenerate_area_ratio * extent_squared;
-        if (any_lane(degenerate)) {
-            const std::size_t used = std::min<std::size_t>(lane_count, batch.size - first);
+            const MaskOf<Wide> degenerate = twice_area <= degenerate_area_ratio * extent_squared;
+            const std::size_t used = std::min<std::size_t>(width, batch.count - first);
             for (std::size_t lane = 0; lane < used; ++lane)
-                if (degenerate[lane]) result.degenerate_faces.record(batch.faces[first + lane]);
+                if (degenerate[lane]) result.degenerate_faces.record(batch.face(first + lane));
+        }
+        for (int group = 0; group < groups; ++group) {
+            add_lane_group(twice_areas, twice_area, group);
+            add_lane_group(extents, extent_squared, group);
         }
     }
     result.surface_area += sum_lanes(twice_areas) / 2.0;
@@ -129,145 +145,294 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void integrate_trian
     result.sums += scaled(reduced);
 }
 
-class Integrator {
+template <class Wide, class Scalar, class Index>
+__attribute__((always_inline)) inline void integrate_any_batch(
+    const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
+    if (batch.faces)
+        integrate_batch<Wide, true>(batch, result);
+    else
+        integrate_batch<Wide, false>(batch, result);
+}
+
+// The kernel built for each instruction set. No FMA: a fused multiply-add
+// rounds once where the baseline rounds twice (and the file is compiled with
+// -ffp-contract=off, so that no other target fuses either).
+template <class Scalar, class Index>
+void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
+    integrate_any_batch<Lanes>(batch, result);
+}
+
+#if defined(__x86_64__)
+template <class Scalar, class Index>
+__attribute__((target("avx2"))) void integrate_batch_avx2(const TriangleBatch<Scalar, Index>& batch,
+                                                          BatchResult& result) {
+    integrate_any_batch<Lanes>(batch, result);
+}
+
+template <class Scalar, class Index>
+__attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))) void integrate_batch_avx512(
+    const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
+    integrate_any_batch<WideLanes>(batch, result);
+}
+#endif
+
+template <class Scalar, class Index>
+using BatchKernel = void (*)(const TriangleBatch<Scalar, Index>&, BatchResult&);
+
+template <class Scalar, class Index>
+BatchKernel<Scalar, Index> batch_kernel(InstructionSet set) {
+#if defined(__x86_64__)
+    if (set == InstructionSet::avx512) return integrate_batch_avx512<Scalar, Index>;
+    if (set == InstructionSet::avx2) return integrate_batch_avx2<Scalar, Index>;
+#endif
+    (void)set;
+    return integrate_batch_baseline<Scalar, Index>;
+}
+
+// What one block of faces adds up, in integration units.
+struct BlockSums {
+    FaceSums sums;
+    double surface_area = 0.0;
+    double extents_squared = 0.0;  // Σ over faces, in units²
+    std::size_t summed_terms = 0;  // batches and polygons added to sums
+    Finding degenerate_faces;
+    Finding non_planar_faces;
+    double max_non_planarity = 0.0;
+
+    // Block order: a block's sums join the total after those of the blocks
+    // before it.
+    void add(const BlockSums& block) {
+        sums += block.sums;
+        surface_area += block.surface_area;
+        extents_squared += block.extents_squared;
+        summed_terms += block.summed_terms;
+        degenerate_faces.merge(block.degenerate_faces);
+        non_planar_faces.merge(block.non_planar_faces);
+        max_non_planarity = std::max(max_non_planarity, block.max_non_planarity);
+    }
+};
+
+// Sums one block of faces: triangles a batch at a time, polygons one by one,
+// each joining the block's sums in face order (a triangle when its batch is
+// full or the block ends).
+template <class Scalar, class Index>
+class BlockIntegrator {
 public:
-    explicit Integrator(const IntegrationSettings& settings)
-        : settings_(settings),
-          unit_(unit_length_near(settings.size)),
-          batch_(settings.reference, unit_) {}
-
-    // Coordinates relative to the reference point are divided by this.
-    double unit() const { return unit_; }
-
-    // Vertices in the caller's coordinates.
-    void add_triangle(std::size_t face, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                      const Eigen::Vector3d& p2) {
-        batch_.put(batch_.size++, face, p0, p1, p2);
-        if (batch_.size == TriangleBatch::capacity) flush_triangles();
+    BlockIntegrator(const MeshView<Scalar, Index>& mesh, const IntegrationSettings& settings,
+                    double unit)
+        : settings_(settings), kernel_(batch_kernel<Scalar, Index>(settings.instruction_set)) {
+        batch_.positions = mesh.positions;
+        batch_.indices = mesh.indices;
+        for (int axis = 0; axis < 3; ++axis) batch_.reference[axis] = settings.reference[axis];
+        batch_.inverse_unit = 1.0 / unit;  // a power of two: exact
     }
 
-    // Faces [begin, end), all triangles, with corner(face, i) their vertices in
-    // the caller's coordinates. Counting slots in a local, not in the batch,
-    // keeps the count in a register across the batch's stores.
-    template <class Corner>
-    void add_triangles(std::size_t begin, std::size_t end, Corner&& corner) {
-        for (std::size_t face = begin; face < end;) {
-            const std::size_t first_slot = batch_.size;
-            const std::size_t slots = std::min(TriangleBatch::capacity - first_slot, end - face);
-            for (std::size_t slot = first_slot; slot < first_slot + slots; ++slot, ++face)
-                batch_.put(slot, face, corner(face, 0), corner(face, 1), corner(face, 2));
-            batch_.size = first_slot + slots;
-            if (batch_.size == TriangleBatch::capacity) flush_triangles();
+    // Faces [begin, end) of an all-triangle mesh: whole batches now, the rest
+    // at finish().
+    void add_triangles(std::size_t begin, std::size_t end) {
+        for (batch_.first_face = begin; end - batch_.first_face >= batch_capacity;
+             batch_.first_face += batch_capacity) {
+            batch_.count = batch_capacity;
+            flush_triangles();
         }
+        batch_.count = end - batch_.first_face;
+    }
+
+    // A triangle of a mixed mesh, whose first corner is at position `corner`
+    // of the index array.
+    void add_triangle(std::size_t face, std::size_t corner) {
+        faces_[batch_.count] = face;
+        corners_[batch_.count] = corner;
+        batch_.faces = faces_;
+        batch_.corners = corners_;
+        if (++batch_.count == batch_capacity) flush_triangles();
     }
 
     // vertex_at(i): the i-th vertex relative to the reference point, in units.
     template <class VertexAt>
     void add_polygon(std::size_t face, std::size_t count, VertexAt&& vertex_at) {
         const FacePlane plane = face_plane(count, vertex_at);
-        result_.surface_area += plane.area;
+        block_.surface_area += plane.area;
         // Each triangle of a fan has |E1||E2| ≤ (2 extent)²; the projection
         // and lift add operations, hence the extra factor (docs/error_bound.md).
-        extents_squared_ += 8.0 * double(count) * 4.0 * plane.extent * plane.extent;
-        ++summed_terms_;
+        block_.extents_squared += 8.0 * double(count) * 4.0 * plane.extent * plane.extent;
+        ++block_.summed_terms;
         if (plane.degenerate) {
             // No normal to project along; its terms would be at rounding level.
-            result_.degenerate_faces.record(face);
+            block_.degenerate_faces.record(face);
             return;
         }
         if (settings_.check_planarity) {
             const double relative = plane_deviation(plane, count, vertex_at) / (2.0 * plane.extent);
-            result_.max_non_planarity = std::max(result_.max_non_planarity, relative);
-            if (relative > settings_.planarity_tolerance) result_.non_planar_faces.record(face);
+            block_.max_non_planarity = std::max(block_.max_non_planarity, relative);
+            if (relative > settings_.planarity_tolerance) block_.non_planar_faces.record(face);
         }
-        total_ += polygon_face_sums(plane, count, vertex_at);
+        block_.sums += polygon_face_sums(plane, count, vertex_at);
     }
 
-    IntegrationResult finish() {
+    // The last batch, full or not (even empty: it counts as a term).
+    BlockSums finish() {
         flush_triangles();
-        const double unit = unit_;
-        const VolumeIntegrals in_units = volume_integrals_from(total_);
+        return block_;
+    }
+
+private:
+    void flush_triangles() {
+        BatchResult batch_result;
+        kernel_(batch_, batch_result);
+        block_.sums += batch_result.sums;
+        block_.surface_area += batch_result.surface_area;
+        block_.extents_squared += batch_result.extents_squared;
+        ++block_.summed_terms;
+        block_.degenerate_faces.merge(batch_result.degenerate_faces);
+        batch_.count = 0;
+    }
+
+    const IntegrationSettings& settings_;
+    const BatchKernel<Scalar, Index> kernel_;
+    TriangleBatch<Scalar, Index> batch_;
+    std::size_t faces_[batch_capacity];
+    std::size_t corners_[batch_capacity];
+    BlockSums block_;
+};
+
+// The whole mesh's result from the blocks' sums added in block order.
+class ResultBuilder {
+public:
+    ResultBuilder(const IntegrationSettings& settings, double unit)
+        : settings_(settings), unit_(unit) {}
+
+    void add(const BlockSums& block) {
+        total_.add(block);
+        ++blocks_;
+    }
+
+    IntegrationResult finish() const {
+        IntegrationResult result;
+        const VolumeIntegrals in_units = volume_integrals_from(total_.sums);
         constexpr double slack = 1024.0 * 2.220446049250313e-16;
-        result_.encloses_no_volume =
-            std::abs(in_units.volume) <= slack * result_.surface_area * (settings_.size / unit);
-        result_.integrals = in_units.scaled(unit);
-        result_.bounds = rounding_bounds().scaled(unit);
-        result_.surface_area = times_unit_power(result_.surface_area, unit, 2);
-        return result_;
+        result.encloses_no_volume =
+            std::abs(in_units.volume) <= slack * total_.surface_area * (settings_.size / unit_);
+        result.integrals = in_units.scaled(unit_);
+        result.bounds = rounding_bounds().scaled(unit_);
+        result.surface_area = times_unit_power(total_.surface_area, unit_, 2);
+        result.degenerate_faces = total_.degenerate_faces;
+        result.non_planar_faces = total_.non_planar_faces;
+        result.max_non_planarity = total_.max_non_planarity;
+        return result;
     }
 
 private:
     // docs/error_bound.md: each face's terms carry a relative error of a few
     // dozen roundings of (|δ|/2)·R^k, the sum one rounding per term it adds up
-    // (blocks of a batch, then batches and polygons one by one), and rounding
-    // the vertices into the integration frame moves them by √3·u·R at most: a
-    // shell of the surface's area that thick. In integration units.
+    // (blocks of a batch, then batches and polygons one by one within a
+    // block, then the blocks after the first), and rounding the vertices into
+    // the integration frame moves them by √3·u·R at most: a shell of the
+    // surface's area that thick. In integration units.
     IntegralBounds rounding_bounds() const {
         constexpr double u = 0x1p-53;
         const double radius = settings_.size / 2.0 / unit_;
-        const double depth = 64.0 + double(summed_terms_);
-        const double terms = depth * u * extents_squared_ / 2.0;
-        const double shell = std::sqrt(3.0) * u * radius * result_.surface_area;
+        const std::size_t block_additions = blocks_ > 0 ? blocks_ - 1 : 0;
+        const double depth = 64.0 + double(total_.summed_terms + block_additions);
+        const double terms = depth * u * total_.extents_squared / 2.0;
+        const double shell = std::sqrt(3.0) * u * radius * total_.surface_area;
         return {terms * radius + shell, terms * radius * radius + shell * radius,
                 terms * radius * radius * radius + shell * radius * radius};
     }
 
-    void flush_triangles() {
-        batch_.pad();
-        BatchResult batch_result;
-        integrate_triangle_batch(batch_, batch_result);
-        total_ += batch_result.sums;
-        result_.surface_area += batch_result.surface_area;
-        extents_squared_ += batch_result.extents_squared;
-        ++summed_terms_;
-        result_.degenerate_faces.merge(batch_result.degenerate_faces);
-        batch_.size = 0;
-    }
-
     const IntegrationSettings& settings_;
     const double unit_;  // a power of two near the mesh size
-    TriangleBatch batch_;
-    FaceSums total_;
-    IntegrationResult result_;
-    double extents_squared_ = 0.0;  // Σ over faces, in units²
-    std::size_t summed_terms_ = 0;  // batches and polygons added to total_
+    BlockSums total_;
+    std::size_t blocks_ = 0;
 };
+
+// Blocks are run this many at a time, their sums kept on the stack until
+// they join the total in order.
+constexpr std::size_t blocks_per_round = 32;
 
 }  // namespace
 
-template <class Scalar, class Index>
-IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
-                                 const IntegrationSettings& settings) {
-    Integrator integrator(settings);
-    const Eigen::Vector3d reference = settings.reference;
-    const double inverse_unit = 1.0 / integrator.unit();  // a power of two: exact
-    // Copies: the batch's stores cannot then alias them, and they stay in registers.
-    const auto positions = mesh.positions;
-    const auto indices = mesh.indices;
-    auto vertex = [positions, indices](std::size_t position) {
-        return positions[indices[position]];
-    };
-    if (mesh.all_triangles()) {
-        integrator.add_triangles(0, mesh.face_count, [&](std::size_t face, int corner) {
-            return vertex(3 * face + corner);
-        });
-        return integrator.finish();
+bool runs_instruction_set(InstructionSet set) {
+#if defined(__x86_64__)
+    switch (set) {
+        case InstructionSet::avx512:
+            return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                   __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
+        case InstructionSet::avx2:
+            return __builtin_cpu_supports("avx2");
+        case InstructionSet::baseline:
+            return true;
     }
-    for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
-        if (size == 3) {
-            integrator.add_triangle(face, vertex(first), vertex(first + 1), vertex(first + 2));
-            return;
-        }
-        integrator.add_polygon(face, size, [&](std::size_t i) {
-            return Eigen::Vector3d((vertex(first + i) - reference) * inverse_unit);
-        });
-    });
-    return integrator.finish();
+    return false;
+#else
+    return set == InstructionSet::baseline;
+#endif
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                                  \
-    template IntegrationResult integrate_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
-                                                             const IntegrationSettings&);
+InstructionSet widest_instruction_set() {
+    static const InstructionSet widest = [] {
+        for (InstructionSet set : {InstructionSet::avx512, InstructionSet::avx2})
+            if (runs_instruction_set(set)) return set;
+        return InstructionSet::baseline;
+    }();
+    return widest;
+}
+
+template <class Scalar, class Index>
+IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
+                                 const IntegrationSettings& settings, TaskRunner& runner) {
+    const double unit = unit_length_near(settings.size);
+    const double inverse_unit = 1.0 / unit;  // a power of two: exact
+    const Eigen::Vector3d reference = settings.reference;
+    const std::size_t block_count = (mesh.face_count + faces_per_block - 1) / faces_per_block;
+    ResultBuilder builder(settings, unit);
+    std::size_t block_corner = 0;  // position in the index array of the round's first face
+    for (std::size_t round = 0; round < block_count; round += blocks_per_round) {
+        const std::size_t blocks = std::min(blocks_per_round, block_count - round);
+        BlockSums sums[blocks_per_round];
+        std::size_t first_corners[blocks_per_round];
+        for (std::size_t block = 0; block < blocks; ++block) {
+            first_corners[block] = block_corner;
+            const std::size_t begin = (round + block) * faces_per_block;
+            const std::size_t end = std::min(begin + faces_per_block, mesh.face_count);
+            if (mesh.all_triangles()) {
+                block_corner += 3 * (end - begin);
+            } else {
+                for (std::size_t face = begin; face < end; ++face)
+                    block_corner += mesh.face_sizes[face];
+            }
+        }
+        runner.run(blocks, [&](std::size_t block) {
+            const std::size_t begin = (round + block) * faces_per_block;
+            const std::size_t end = std::min(begin + faces_per_block, mesh.face_count);
+            BlockIntegrator<Scalar, Index> integrator(mesh, settings, unit);
+            if (mesh.all_triangles()) {
+                integrator.add_triangles(begin, end);
+                sums[block] = integrator.finish();
+                return;
+            }
+            std::size_t corner = first_corners[block];
+            for (std::size_t face = begin; face < end; corner += mesh.face_sizes[face], ++face) {
+                const std::size_t size = mesh.face_sizes[face];
+                if (size == 3) {
+                    integrator.add_triangle(face, corner);
+                    continue;
+                }
+                integrator.add_polygon(face, size, [&](std::size_t i) {
+                    const Eigen::Vector3d p = mesh.positions[mesh.indices[corner + i]];
+                    return Eigen::Vector3d((p - reference) * inverse_unit);
+                });
+            }
+            sums[block] = integrator.finish();
+        });
+        for (std::size_t block = 0; block < blocks; ++block) builder.add(sums[block]);
+    }
+    return builder.finish();
+}
+
+#define POLYMASS_INSTANTIATE(Scalar, Index)                   \
+    template IntegrationResult integrate_mesh<Scalar, Index>( \
+        const MeshView<Scalar, Index>&, const IntegrationSettings&, TaskRunner&);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

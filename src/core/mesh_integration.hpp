@@ -7,9 +7,24 @@
 
 #include "findings.hpp"
 #include "mesh_view.hpp"
+#include "task_runner.hpp"
 #include "volume_integrals.hpp"
 
 namespace polymass::core {
+
+// The instruction sets the triangle kernel is built for: on x86-64 all three,
+// elsewhere the baseline only. Every one gives the same bits (lanes.hpp).
+enum class InstructionSet { baseline, avx2, avx512 };
+
+// Whether this processor (and its operating system) runs code built for `set`.
+bool runs_instruction_set(InstructionSet set);
+// The widest set it runs, found once.
+InstructionSet widest_instruction_set();
+
+// The integration pass splits the faces into blocks of this many, each summed
+// on its own and the blocks' sums added in block order: the summation order
+// depends on the mesh alone, not on how many threads run the blocks.
+inline constexpr std::size_t faces_per_block = std::size_t(1) << 16;
 
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
@@ -19,6 +34,8 @@ struct IntegrationSettings {
     double size = 0.0;
     bool check_planarity = true;
     double planarity_tolerance = 1e-6;  // off-plane distance / face diameter
+    // Tests force each set the processor runs, to compare their bits.
+    InstructionSet instruction_set = widest_instruction_set();
 };
 
 struct IntegrationResult {
@@ -36,9 +53,10 @@ struct IntegrationResult {
     bool encloses_no_volume = false;
 };
 
-// Indices must be in range and used coordinates finite (checked before).
+// Indices must be in range and used coordinates finite (checked before). The
+// blocks of faces run as tasks of `runner`.
 template <class Scalar, class Index>
 IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
-                                 const IntegrationSettings& settings);
+                                 const IntegrationSettings& settings, TaskRunner& runner);
 
 }  // namespace polymass::core

@@ -1,9 +1,22 @@
 #include "mesh_scan.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 namespace polymass::core {
+namespace {
+
+// Whether all 64 bytes from `bytes` are 1.
+bool all_set(const unsigned char* bytes) {
+    std::uint64_t words[8];
+    std::memcpy(words, bytes, sizeof words);
+    std::uint64_t all = ~std::uint64_t{0};
+    for (std::uint64_t word : words) all &= word;
+    return all == 0x0101010101010101u;
+}
+
+}  // namespace
 
 template <class Scalar, class Index>
 MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory) {
@@ -22,13 +35,35 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     const auto indices = mesh.indices;
     const std::size_t index_count = mesh.index_count, vertex_count = mesh.vertex_count;
     unsigned char* const seen_vertex = seen.data();
+    // A chunk at a time: whether an index is out of range first (a loop
+    // without branches and, in a whole chunk, of a fixed length, which
+    // compilers vectorise), then, when none is, one store per index and
+    // nothing else, while the chunk is still in the L1 cache.
+    constexpr std::size_t chunk = 2048;
+    // In 32 bits, which vectorise: the largest index in range (none when
+    // there is no vertex; every 32-bit index when there are more).
+    const std::uint32_t last = std::uint32_t(
+        std::min<std::size_t>(vertex_count, std::size_t{1} << 32) - (vertex_count > 0));
+    auto count_out_of_range = [&](std::size_t begin, std::size_t length) {
+        std::uint32_t out = 0;
+        for (std::size_t i = 0; i < length; ++i) out += indices[begin + i] > last;
+        return out;
+    };
     bool all_in_range = true;
-    for (std::size_t i = 0; i < index_count; ++i) {
-        const std::size_t vertex = indices[i];
-        if (vertex < vertex_count)
-            seen_vertex[vertex] = 1;
-        else
-            all_in_range = false;
+    for (std::size_t begin = 0; begin < index_count; begin += chunk) {
+        const std::size_t length = std::min(index_count - begin, chunk);
+        const std::uint32_t out =
+            length == chunk ? count_out_of_range(begin, chunk) : count_out_of_range(begin, length);
+        if (out == 0 && vertex_count > 0) {
+#pragma GCC unroll 4
+            for (std::size_t i = begin; i < begin + length; ++i) seen_vertex[indices[i]] = 1;
+            continue;
+        }
+        all_in_range = false;
+        for (std::size_t i = begin; i < begin + length; ++i) {
+            const std::size_t vertex = indices[i];
+            if (vertex < vertex_count) seen_vertex[vertex] = 1;
+        }
     }
     if (!all_in_range) {
         for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
@@ -47,15 +82,34 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     // Locals rather than scan's members, which the stores into scan.used might alias.
     Eigen::Vector3d low = scan.bounds.min(), high = scan.bounds.max();
     std::size_t used_vertex_count = 0;
+    const auto positions = mesh.positions;
     for (std::size_t block = 0; block < scan.used.size(); ++block) {
-        const std::size_t end = std::min(addressable, 64 * block + 64);
+        const std::size_t begin = 64 * block, end = std::min(addressable, begin + 64);
+        // Usually every vertex of a block is used and finite: then no test
+        // per vertex. x − x is 0 for a finite x and NaN otherwise, and a NaN
+        // stays in a sum: one test for the block.
+        if (end - begin == 64 && all_set(seen_vertex + begin)) {
+            Eigen::Vector3d block_low = low, block_high = high;
+            double finite_if_zero = 0.0;
+            for (std::size_t vertex = begin; vertex < end; ++vertex) {
+                const Eigen::Vector3d p = positions[vertex];
+                finite_if_zero += (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
+                block_low = block_low.cwiseMin(p);
+                block_high = block_high.cwiseMax(p);
+            }
+            if (finite_if_zero == 0.0) {
+                scan.used[block] = ~std::uint64_t{0};
+                used_vertex_count += 64;
+                low = block_low, high = block_high;
+                continue;
+            }
+        }
         std::uint64_t used = 0;
-        for (std::size_t vertex = 64 * block; vertex < end; ++vertex) {
-            if (!seen[vertex]) continue;
+        for (std::size_t vertex = begin; vertex < end; ++vertex) {
+            if (!seen_vertex[vertex]) continue;
             used |= std::uint64_t{1} << (vertex % 64);
             ++used_vertex_count;
-            const Eigen::Vector3d p = mesh.positions[vertex];
-            // x − x is 0 for a finite x and NaN otherwise: one test for three coordinates.
+            const Eigen::Vector3d p = positions[vertex];
             const double finite_if_zero = (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
             if (finite_if_zero != 0.0) {
                 scan.non_finite.record(vertex);

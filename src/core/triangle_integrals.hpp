@@ -9,13 +9,16 @@
 // integrate several triangles at once.
 #pragma once
 
+#include "lanes.hpp"
 #include "volume_integrals.hpp"
 
 namespace polymass::core {
 
 // The face sums of triangles, each times a constant (6 for x, 12 for the
 // squares, 20 for the cubes, 60 for the mixed terms) that scaled() divides out
-// once per batch instead of once per triangle.
+// once per batch instead of once per triangle. Summed lane by lane in the
+// triangles' order: the same sums, in the same order, whatever the
+// instruction set.
 template <class T>
 struct UnscaledTriangleSums {
     T x{};
@@ -76,25 +79,28 @@ struct TriangleEdges {
     }
 };
 
-// Adds one triangle (per lane) with vertex coordinates p[axis][vertex] and
-// δ from TriangleEdges; a lane whose δ is zero adds nothing.
+// Adds the unscaled face sums of triangles with vertex coordinates
+// p[axis][vertex] and δ from TriangleEdges (a lane whose δ is zero adds
+// zeros) to the running sums, lane group by lane group (T is Lanes or
+// WideLanes; `groups` of its lane groups are added). Each sum is added to as
+// soon as its term is known, which keeps fewer values alive at once; the
+// order of the additions into any one sum is the same.
 template <class T>
-__attribute__((always_inline)) inline void add_unscaled_triangle_sums(UnscaledTriangleSums<T>& sums,
-                                                                      const T (&p)[3][3],
-                                                                      const T (&delta)[3]) {
-    const detail::TriangleCoordinateTerms<T> terms[3] = {detail::TriangleCoordinateTerms<T>(p[0]),
-                                                         detail::TriangleCoordinateTerms<T>(p[1]),
-                                                         detail::TriangleCoordinateTerms<T>(p[2])};
-    sums.x += delta[0] * terms[0].f1;
+__attribute__((always_inline)) inline void add_unscaled_triangle_sums(
+    UnscaledTriangleSums<Lanes>& sums, const T (&p)[3][3], const T (&delta)[3], int groups) {
+    auto add = [groups](Lanes& sum, const T& term) {
+        for (int group = 0; group < groups; ++group) add_lane_group(sum, term, group);
+    };
 #pragma GCC unroll 3
     for (int axis = 0; axis < 3; ++axis) {
         // The mixed term of axis a is ∫a²b with b the next axis (x²y, y²z, z²x).
         const int next = (axis + 1) % 3;
-        const detail::TriangleCoordinateTerms<T>& t = terms[axis];
-        sums.squares[axis] += delta[axis] * t.f2;
-        sums.cubes[axis] += delta[axis] * t.f3;
-        sums.mixed[axis] +=
-            delta[axis] * (p[next][0] * t.g[0] + p[next][1] * t.g[1] + p[next][2] * t.g[2]);
+        const detail::TriangleCoordinateTerms<T> t(p[axis]);
+        if (axis == 0) add(sums.x, delta[0] * t.f1);
+        add(sums.squares[axis], delta[axis] * t.f2);
+        add(sums.cubes[axis], delta[axis] * t.f3);
+        add(sums.mixed[axis],
+            delta[axis] * (p[next][0] * t.g[0] + p[next][1] * t.g[1] + p[next][2] * t.g[2]));
     }
 }
 

@@ -1,14 +1,18 @@
-/* Throughput of libpolymass on a large closed triangle mesh (a torus grid),
-   fully checked with and without the intersection check, and trusted
-   (topology checks skipped) with float64 and with float32 positions; the cost
-   of the intersection check on its own is the difference of the first two.
-   Prints figures; asserts nothing about speed.
-   Usage: bench_mass_properties [triangles] [repeats] */
+/* Throughput of libpolymass on large closed triangle meshes (torus grids far
+   from the origin) at 1e5, 1e6 and 1e7 triangles: trusted (topology checks
+   skipped) with float64 and with float32 positions, and fully checked; each
+   against a read-bandwidth probe that sums the very arrays the library reads,
+   on one thread and on two. Runs are interleaved (every path once per round)
+   and the median of the rounds is printed, as M triangles/s and as a fraction
+   of the one-thread read bound. Prints figures; asserts nothing about speed.
+   Usage: bench_mass_properties [rounds] [largest triangle count] */
 #include <polymass/polymass.h>
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 static double now_seconds(void) {
@@ -40,79 +44,156 @@ static void make_torus(uint32_t rings, uint32_t segments, double* positions, uin
     }
 }
 
-static double best_seconds(polymass_context* context, const polymass_mesh_desc* desc, int repeats,
-                           polymass_mass_properties* out) {
-    double best = 1e300;
-    for (int r = 0; r < repeats; ++r) {
-        const double start = now_seconds();
-        const int32_t status = polymass_mass_properties_compute(out, context, desc, NULL);
-        const double elapsed = now_seconds() - start;
-        if (status != POLYMASS_OK) {
-            fprintf(stderr, "error: %s\n", polymass_context_message(context));
-            exit(1);
-        }
-        if (elapsed < best) best = elapsed;
+/* The read probe: one thread's share of the position and index arrays, summed
+   (coordinates as their type, indices as integers) so that nothing is skipped. */
+typedef struct probe_share {
+    const polymass_mesh_desc* desc;
+    int part, parts;
+    double sum;
+} probe_share;
+
+static void* sum_share(void* argument) {
+    probe_share* share = argument;
+    const polymass_mesh_desc* desc = share->desc;
+    const size_t coordinates = 3 * (size_t)desc->vertex_count;
+    const size_t c0 = coordinates * share->part / share->parts;
+    const size_t c1 = coordinates * (share->part + 1) / share->parts;
+    /* Eight running sums: one would make the probe wait on each addition
+       instead of on memory. */
+    double sums[8] = {0};
+    size_t i = c0;
+    if (desc->position_type == POLYMASS_POSITION_FLOAT32) {
+        const float* p = desc->positions;
+        for (; i + 8 <= c1; i += 8)
+            for (int k = 0; k < 8; ++k) sums[k] += p[i + k];
+        for (; i < c1; ++i) sums[0] += p[i];
+    } else {
+        const double* p = desc->positions;
+        for (; i + 8 <= c1; i += 8)
+            for (int k = 0; k < 8; ++k) sums[k] += p[i + k];
+        for (; i < c1; ++i) sums[0] += p[i];
     }
-    return best;
+    double sum = 0;
+    for (int k = 0; k < 8; ++k) sum += sums[k];
+    const uint32_t* indices = desc->indices;
+    const size_t i0 = (size_t)desc->index_count * share->part / share->parts;
+    const size_t i1 = (size_t)desc->index_count * (share->part + 1) / share->parts;
+    uint64_t index_sum = 0;
+    for (size_t i = i0; i < i1; ++i) index_sum += indices[i];
+    share->sum = sum + (double)index_sum;
+    return NULL;
 }
 
-int main(int argc, char** argv) {
-    const double wanted = argc > 1 ? atof(argv[1]) : 1e6;
-    const int repeats = argc > 2 ? atoi(argv[2]) : 5;
+static double probe_seconds(const polymass_mesh_desc* desc, int threads, double* checksum) {
+    pthread_t workers[2];
+    probe_share shares[2];
+    const double start = now_seconds();
+    for (int t = 0; t < threads; ++t) {
+        shares[t] = (probe_share){desc, t, threads, 0};
+        if (t > 0) pthread_create(&workers[t], NULL, sum_share, &shares[t]);
+    }
+    sum_share(&shares[0]);
+    for (int t = 1; t < threads; ++t) pthread_join(workers[t], NULL);
+    const double elapsed = now_seconds() - start;
+    for (int t = 0; t < threads; ++t) *checksum += shares[t].sum;
+    return elapsed;
+}
+
+static double compute_seconds(polymass_context* context, const polymass_mesh_desc* desc,
+                              uint32_t flags, double* checksum) {
+    polymass_options options = {sizeof options, flags, 0.0};
+    polymass_context_set_options(context, &options);
+    polymass_mass_properties out = {sizeof out};
+    const double start = now_seconds();
+    const int32_t status = polymass_mass_properties_compute(&out, context, desc, NULL);
+    const double elapsed = now_seconds() - start;
+    if (status != POLYMASS_OK) {
+        fprintf(stderr, "error: %s\n", polymass_context_message(context));
+        exit(1);
+    }
+    *checksum += out.volume;
+    return elapsed;
+}
+
+static int by_value(const void* a, const void* b) {
+    const double x = *(const double*)a, y = *(const double*)b;
+    return (x > y) - (x < y);
+}
+
+static double median(double* values, int count) {
+    qsort(values, (size_t)count, sizeof *values, by_value);
+    return count % 2 ? values[count / 2] : 0.5 * (values[count / 2 - 1] + values[count / 2]);
+}
+
+enum { read_1_f64, read_2_f64, read_1_f32, trusted_f64, trusted_f32, checked, measures };
+static const char* const names[measures] = {
+    "read probe, 1 thread", "read probe, 2 threads", "read probe, 1 thread, float32",
+    "trusted, float64",     "trusted, float32",      "checked (topology), float64"};
+
+static void run(size_t wanted, int rounds, polymass_context* context) {
     const uint32_t segments = 500, rings = (uint32_t)(wanted / (2.0 * segments));
     const size_t vertices = (size_t)rings * segments, triangles = 2 * vertices;
     double* positions = malloc(3 * vertices * sizeof *positions);
+    float* float_positions = malloc(3 * vertices * sizeof *float_positions);
     uint32_t* indices = malloc(3 * triangles * sizeof *indices);
-    if (!positions || !indices) return 1;
+    double* seconds = malloc((size_t)measures * (size_t)rounds * sizeof *seconds);
+    if (!positions || !float_positions || !indices || !seconds) exit(1);
     make_torus(rings, segments, positions, indices);
+    /* The float torus at the origin: 1e6 away, float's steps of 1/16 would
+       collapse many of its triangles. */
+    for (size_t i = 0; i < 3 * vertices; ++i) float_positions[i] = (float)(positions[i] - 1e6);
 
-    polymass_context* context = NULL;
-    if (polymass_context_create(&context, NULL) != POLYMASS_OK) return 1;
     polymass_mesh_desc desc = {sizeof desc};
     desc.positions = positions;
     desc.vertex_count = vertices;
     desc.indices = indices;
     desc.index_count = 3 * triangles;
-
-    polymass_mass_properties properties = {sizeof properties};
-    const double checked = best_seconds(context, &desc, repeats, &properties);
-    polymass_options intersections = {sizeof intersections, POLYMASS_OPTION_CHECK_INTERSECTIONS,
-                                      0.0};
-    polymass_context_set_options(context, &intersections);
-    const double with_intersections = best_seconds(context, &desc, repeats, &properties);
-    polymass_options options = {sizeof options, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, 0.0};
-    polymass_context_set_options(context, &options);
-    const double trusted = best_seconds(context, &desc, repeats, &properties);
-
-    /* The same torus in float, moved to the origin: 1e6 away, float's steps
-       of 1/16 would collapse many of its triangles. */
-    float* float_positions = malloc(3 * vertices * sizeof *float_positions);
-    if (!float_positions) return 1;
-    for (size_t i = 0; i < 3 * vertices; ++i) float_positions[i] = (float)(positions[i] - 1e6);
     polymass_mesh_desc float_desc = desc;
     float_desc.position_type = POLYMASS_POSITION_FLOAT32;
     float_desc.positions = float_positions;
-    polymass_mass_properties float_properties = {sizeof float_properties};
-    const double trusted_float = best_seconds(context, &float_desc, repeats, &float_properties);
 
-    printf("libpolymass %s, %zu triangles, best of %d\n", polymass_version_string(), triangles,
-           repeats);
-    printf("  checked (topology):  %8.2f ms  %7.1f M triangles/s\n", 1e3 * checked,
-           triangles / checked / 1e6);
-    printf(
-        "  checked + intersect: %8.2f ms  %7.1f M triangles/s (the intersection check alone: "
-        "%.2f ms, %.1f M triangles/s)\n",
-        1e3 * with_intersections, triangles / with_intersections / 1e6,
-        1e3 * (with_intersections - checked), triangles / (with_intersections - checked) / 1e6);
-    printf("  trusted (no checks): %8.2f ms  %7.1f M triangles/s\n", 1e3 * trusted,
-           triangles / trusted / 1e6);
-    printf("  trusted, float32:    %8.2f ms  %7.1f M triangles/s\n", 1e3 * trusted_float,
-           triangles / trusted_float / 1e6);
-    printf("  volume %.17g (torus: 2 pi^2 R r^2 = %.17g as the grid refines)\n", properties.volume,
-           2 * 3.14159265358979323846 * 3.14159265358979323846 * 2);
-    polymass_context_destroy(context);
+    double checksum = 0;
+    for (int r = 0; r < rounds; ++r) {
+        double* s = seconds + (size_t)r * measures;
+        s[read_1_f64] = probe_seconds(&desc, 1, &checksum);
+        s[trusted_f64] =
+            compute_seconds(context, &desc, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, &checksum);
+        s[read_2_f64] = probe_seconds(&desc, 2, &checksum);
+        s[trusted_f32] =
+            compute_seconds(context, &float_desc, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, &checksum);
+        s[read_1_f32] = probe_seconds(&float_desc, 1, &checksum);
+        s[checked] = compute_seconds(context, &desc, 0, &checksum);
+    }
+    double medians[measures];
+    for (int m = 0; m < measures; ++m) {
+        double* column = malloc((size_t)rounds * sizeof *column);
+        if (!column) exit(1);
+        for (int r = 0; r < rounds; ++r) column[r] = seconds[(size_t)r * measures + m];
+        medians[m] = median(column, rounds);
+        free(column);
+    }
+    printf("%zu triangles (median of %d interleaved rounds; checksum %.6g)\n", triangles, rounds,
+           checksum);
+    for (int m = 0; m < measures; ++m) {
+        /* float32 against the probe of the float32 arrays, the rest against float64's */
+        const int bound = m == trusted_f32 || m == read_1_f32 ? read_1_f32 : read_1_f64;
+        printf("  %-32s %9.3f ms %8.1f M triangles/s  %5.2f of the 1-thread read bound\n", names[m],
+               1e3 * medians[m], (double)triangles / medians[m] / 1e6, medians[bound] / medians[m]);
+    }
+    free(seconds);
+    free(indices);
     free(float_positions);
     free(positions);
-    free(indices);
+}
+
+int main(int argc, char** argv) {
+    const int rounds = argc > 1 ? atoi(argv[1]) : 7;
+    const double largest = argc > 2 ? atof(argv[2]) : 1e7;
+    polymass_context* context = NULL;
+    if (rounds < 1 || polymass_context_create(&context, NULL) != POLYMASS_OK) return 1;
+    printf("libpolymass %s\n", polymass_version_string());
+    for (double wanted = 1e5; wanted <= largest * 1.0001; wanted *= 10)
+        run((size_t)wanted, rounds, context);
+    polymass_context_destroy(context);
     return 0;
 }

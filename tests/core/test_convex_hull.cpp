@@ -59,7 +59,8 @@ IntegrationResult integrate(const polymass::core::MeshView<double, std::uint32_t
     polymass::core::IntegrationSettings settings;
     settings.reference = reference;
     settings.size = size;
-    return polymass::core::integrate_mesh(view, settings);
+    polymass::core::SerialTaskRunner serial;
+    return polymass::core::integrate_mesh(view, settings, serial);
 }
 
 // The hull's volume integrals equal the solid's within both rounding bounds.

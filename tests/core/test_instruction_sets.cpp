@@ -1,0 +1,186 @@
+// The integration pass gives the same bits on every instruction set this
+// processor runs (baseline x86-64, AVX2, AVX-512; elsewhere the baseline
+// alone) and whatever order its blocks of faces run in: random triangle
+// soups with partial batches, degenerate triangles and slivers, far from the
+// origin; polygon meshes with planar and non-planar faces; float positions
+// and 16-bit indices; and a mesh of more than one block of faces.
+#include "core/mesh_integration.hpp"
+
+#include "check.hpp"
+#include "test_mesh.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace {
+
+using polymass::core::InstructionSet;
+using polymass::core::IntegrationResult;
+using polymass::core::IntegrationSettings;
+using polymass_test::TestMesh;
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool same_finding(const polymass::core::Finding& a, const polymass::core::Finding& b) {
+    return a.count == b.count && a.lowest == b.lowest;
+}
+
+bool same_result(const IntegrationResult& a, const IntegrationResult& b) {
+    const auto& p = a.integrals;
+    const auto& q = b.integrals;
+    bool same = same_bits(p.volume, q.volume) && same_bits(a.surface_area, b.surface_area) &&
+                same_bits(a.bounds.volume, b.bounds.volume) &&
+                same_bits(a.bounds.first, b.bounds.first) &&
+                same_bits(a.bounds.second, b.bounds.second) &&
+                same_bits(a.max_non_planarity, b.max_non_planarity) &&
+                a.encloses_no_volume == b.encloses_no_volume &&
+                same_finding(a.degenerate_faces, b.degenerate_faces) &&
+                same_finding(a.non_planar_faces, b.non_planar_faces);
+    for (int axis = 0; axis < 3; ++axis)
+        same = same && same_bits(p.first[axis], q.first[axis]) &&
+               same_bits(p.second[axis], q.second[axis]) &&
+               same_bits(p.products[axis], q.products[axis]);
+    return same;
+}
+
+// Runs the tasks last first: a pool may finish them in any order.
+class ReversedTaskRunner final : public polymass::core::TaskRunner {
+public:
+    void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
+        for (std::size_t i = count; i-- > 0;) task(i);
+    }
+};
+
+template <class Scalar, class Index>
+struct TypedMesh {
+    std::vector<Scalar> coordinates;
+    std::vector<Index> indices;
+    polymass::core::MeshView<Scalar, Index> view;
+
+    explicit TypedMesh(const TestMesh& mesh)
+        : coordinates(mesh.coordinates.begin(), mesh.coordinates.end()),
+          indices(mesh.indices.begin(), mesh.indices.end()) {
+        view.positions.base = reinterpret_cast<const unsigned char*>(coordinates.data());
+        view.positions.stride = 3 * sizeof(Scalar);
+        view.vertex_count = mesh.vertex_count();
+        view.indices.base = reinterpret_cast<const unsigned char*>(indices.data());
+        view.index_count = indices.size();
+        view.face_sizes = mesh.polygons ? mesh.face_sizes.data() : nullptr;
+        view.face_count = mesh.face_sizes.size();
+    }
+};
+
+// Every wider instruction set this processor runs, and the widest with its
+// blocks run in reverse, against the baseline run in order.
+template <class Scalar, class Index>
+void check_all_sets(const char* name, const TestMesh& mesh, const Eigen::Vector3d& reference,
+                    double size) {
+    const TypedMesh<Scalar, Index> typed(mesh);
+    IntegrationSettings settings;
+    settings.reference = reference;
+    settings.size = size;
+    settings.instruction_set = InstructionSet::baseline;
+    polymass::core::SerialTaskRunner serial;
+    const IntegrationResult expected = integrate_mesh(typed.view, settings, serial);
+    for (InstructionSet set : {InstructionSet::avx2, InstructionSet::avx512}) {
+        if (!polymass::core::runs_instruction_set(set)) continue;
+        settings.instruction_set = set;
+        const bool same = same_result(integrate_mesh(typed.view, settings, serial), expected);
+        if (!same) std::fprintf(stderr, "%s: instruction set %d differs\n", name, int(set));
+        CHECK(same);
+    }
+    settings.instruction_set = polymass::core::widest_instruction_set();
+    ReversedTaskRunner reversed;
+    const bool same = same_result(integrate_mesh(typed.view, settings, reversed), expected);
+    if (!same) std::fprintf(stderr, "%s: blocks run in reverse differ\n", name);
+    CHECK(same);
+}
+
+// Random triangles around `centre` (some degenerate: a repeated vertex, three
+// collinear points, a sliver of 1e-200 of its length).
+TestMesh triangle_soup(std::size_t triangles, const Eigen::Vector3d& centre,
+                       std::mt19937_64& random) {
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    TestMesh mesh;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        Eigen::Vector3d p[3];
+        for (auto& q : p)
+            q = centre +
+                Eigen::Vector3d(coordinate(random), coordinate(random), coordinate(random));
+        if (t % 97 == 5) p[2] = p[1];
+        if (t % 89 == 7) p[2] = p[0] + 0.5 * (p[1] - p[0]);
+        if (t % 83 == 11) p[2] = p[0] + 1e-200 * (p[1] - p[0]) + Eigen::Vector3d(0, 0, 1e-200);
+        const std::uint32_t a = mesh.add_vertex(p[0]), b = mesh.add_vertex(p[1]),
+                            c = mesh.add_vertex(p[2]);
+        mesh.add_face({a, b, c});
+    }
+    return mesh;
+}
+
+// Triangles, planar quads and a bent pentagon now and then, in random order.
+TestMesh polygon_soup(std::size_t faces, std::mt19937_64& random) {
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    TestMesh mesh;
+    for (std::size_t f = 0; f < faces; ++f) {
+        const Eigen::Vector3d o(coordinate(random), coordinate(random), coordinate(random));
+        const Eigen::Vector3d u(coordinate(random), coordinate(random), coordinate(random));
+        const Eigen::Vector3d v(coordinate(random), coordinate(random), coordinate(random));
+        const std::size_t kind = random() % 3;
+        if (kind == 0) {
+            mesh.add_face({mesh.add_vertex(o), mesh.add_vertex(o + u), mesh.add_vertex(o + v)});
+        } else if (kind == 1) {
+            mesh.add_face({mesh.add_vertex(o), mesh.add_vertex(o + u), mesh.add_vertex(o + u + v),
+                           mesh.add_vertex(o + v)});
+        } else {
+            const Eigen::Vector3d bend = 1e-3 * u.cross(v);
+            mesh.add_face({mesh.add_vertex(o), mesh.add_vertex(o + u),
+                           mesh.add_vertex(o + 1.2 * u + 0.7 * v + bend), mesh.add_vertex(o + v),
+                           mesh.add_vertex(o - 0.3 * u + 0.5 * v)});
+        }
+    }
+    return mesh;
+}
+
+}  // namespace
+
+int main() {
+    const char* const set_names[] = {"baseline", "AVX2", "AVX-512"};
+    for (InstructionSet set :
+         {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512})
+        std::printf(
+            "%s: %s\n", set_names[int(set)],
+            polymass::core::runs_instruction_set(set) ? "compared" : "not run on this processor");
+    std::mt19937_64 random(12);
+    const Eigen::Vector3d far(1e6, -2e6, 3e6);
+    // Sizes around a batch (64) and a lane group (4, 8), and a few batches.
+    for (std::size_t triangles : {1, 3, 7, 9, 63, 64, 65, 1000, 1031}) {
+        const TestMesh soup = triangle_soup(triangles, far, random);
+        check_all_sets<double, std::uint32_t>("triangles", soup, far, 4.0);
+        check_all_sets<double, std::uint16_t>("triangles, 16-bit indices", soup, far, 4.0);
+        const TestMesh near = triangle_soup(triangles, Eigen::Vector3d::Zero(), random);
+        check_all_sets<float, std::uint32_t>("triangles, float", near, Eigen::Vector3d::Zero(),
+                                             4.0);
+        check_all_sets<float, std::uint16_t>("triangles, float, 16-bit indices", near,
+                                             Eigen::Vector3d::Zero(), 4.0);
+    }
+    for (std::size_t faces : {5, 70, 700}) {
+        const TestMesh polygons = polygon_soup(faces, random);
+        check_all_sets<double, std::uint32_t>("polygons", polygons, Eigen::Vector3d::Zero(), 6.0);
+        check_all_sets<float, std::uint32_t>("polygons, float", polygons, Eigen::Vector3d::Zero(),
+                                             6.0);
+    }
+    // More than one block: the blocks' sums join in block order however the
+    // blocks run; a mixed mesh over a block boundary too.
+    const std::size_t beyond_a_block = polymass::core::faces_per_block + 1001;
+    check_all_sets<double, std::uint32_t>("two blocks", triangle_soup(beyond_a_block, far, random),
+                                          far, 4.0);
+    check_all_sets<double, std::uint32_t>(
+        "two blocks, polygons", polygon_soup(beyond_a_block, random), Eigen::Vector3d::Zero(), 6.0);
+    return polymass_test::finish("test_instruction_sets");
+}
