@@ -162,9 +162,8 @@ int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* 
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))
             return status;
-        core::SerialTaskRunner serial;
-        piece.integration =
-            core::integrate_mesh(view, range_settings(piece.scan, point, options), serial);
+        piece.integration = core::integrate_mesh(view, range_settings(piece.scan, point, options),
+                                                 context->tasks(options));
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))
             return status;

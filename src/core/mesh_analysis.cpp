@@ -43,8 +43,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     integration.size = scan.diagonal();
     integration.check_planarity = settings.check_topology;
     integration.planarity_tolerance = settings.planarity_tolerance;
-    SerialTaskRunner serial;
-    analysis.integration = integrate_mesh(mesh, integration, serial);
+    analysis.integration = integrate_mesh(mesh, integration, tasks);
     if (stop()) return analysis;
 
     // Shells are judged on a closed, oriented surface with a volume.

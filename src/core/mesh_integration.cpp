@@ -16,7 +16,7 @@ namespace {
 // than of triangles.
 constexpr std::size_t batch_capacity = 64;
 static_assert(batch_capacity % (2 * lane_count) == 0, "a batch holds whole wide lane groups");
-static_assert(faces_per_block % batch_capacity == 0, "a block of triangles holds whole batches");
+static_assert(kFacesPerBlock % batch_capacity == 0, "a block of triangles holds whole batches");
 
 // Where the triangles of a batch are: faces first_face, first_face + 1, ...
 // of an all-triangle mesh, or the listed faces of a mixed one. The kernel
@@ -384,7 +384,7 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
     const double unit = unit_length_near(settings.size);
     const double inverse_unit = 1.0 / unit;  // a power of two: exact
     const Eigen::Vector3d reference = settings.reference;
-    const std::size_t block_count = (mesh.face_count + faces_per_block - 1) / faces_per_block;
+    const std::size_t block_count = (mesh.face_count + kFacesPerBlock - 1) / kFacesPerBlock;
     ResultBuilder builder(settings, unit);
     std::size_t block_corner = 0;  // position in the index array of the round's first face
     for (std::size_t round = 0; round < block_count; round += blocks_per_round) {
@@ -393,8 +393,8 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
         std::size_t first_corners[blocks_per_round];
         for (std::size_t block = 0; block < blocks; ++block) {
             first_corners[block] = block_corner;
-            const std::size_t begin = (round + block) * faces_per_block;
-            const std::size_t end = std::min(begin + faces_per_block, mesh.face_count);
+            const std::size_t begin = (round + block) * kFacesPerBlock;
+            const std::size_t end = std::min(begin + kFacesPerBlock, mesh.face_count);
             if (mesh.all_triangles()) {
                 block_corner += 3 * (end - begin);
             } else {
@@ -403,8 +403,8 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
             }
         }
         runner.run(blocks, [&](std::size_t block) {
-            const std::size_t begin = (round + block) * faces_per_block;
-            const std::size_t end = std::min(begin + faces_per_block, mesh.face_count);
+            const std::size_t begin = (round + block) * kFacesPerBlock;
+            const std::size_t end = std::min(begin + kFacesPerBlock, mesh.face_count);
             BlockIntegrator<Scalar, Index> integrator(mesh, settings, unit);
             if (mesh.all_triangles()) {
                 integrator.add_triangles(begin, end);

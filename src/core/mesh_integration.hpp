@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cstddef>
 
+#include "face_blocks.hpp"
 #include "findings.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
@@ -21,10 +22,6 @@ bool runs_instruction_set(InstructionSet set);
 // The widest set it runs, found once.
 InstructionSet widest_instruction_set();
 
-// The integration pass splits the faces into blocks of this many, each summed
-// on its own and the blocks' sums added in block order: the summation order
-// depends on the mesh alone, not on how many threads run the blocks.
-inline constexpr std::size_t faces_per_block = std::size_t(1) << 16;
 
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
@@ -54,7 +51,9 @@ struct IntegrationResult {
 };
 
 // Indices must be in range and used coordinates finite (checked before). The
-// blocks of faces run as tasks of `runner`.
+// blocks of faces (face_blocks.hpp) run as tasks of `runner`, each summed on
+// its own, and the blocks' sums are added in block order: the bits depend on
+// the mesh alone, not on how many threads run the blocks.
 template <class Scalar, class Index>
 IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
                                  const IntegrationSettings& settings, TaskRunner& runner);

@@ -177,7 +177,7 @@ int main() {
     }
     // More than one block: the blocks' sums join in block order however the
     // blocks run; a mixed mesh over a block boundary too.
-    const std::size_t beyond_a_block = polymass::core::faces_per_block + 1001;
+    const std::size_t beyond_a_block = polymass::core::kFacesPerBlock + 1001;
     check_all_sets<double, std::uint32_t>("two blocks", triangle_soup(beyond_a_block, far, random),
                                           far, 4.0);
     check_all_sets<double, std::uint32_t>(
