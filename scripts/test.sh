@@ -10,7 +10,12 @@
 #   dev     configure, build and ctest the `dev` preset (Debug, -Werror)
 #   asan    configure, build and ctest the `asan` preset (ASan + UBSan)
 #   fuzz    configure, build and ctest the `fuzz` preset (Clang, libFuzzer):
-#           a bounded, fixed-seed run of tests/fuzz/fuzz_mesh.c
+#           each target of tests/fuzz (the C API, the tool's readers, audit and
+#           command line, the moments): its regressions replayed, then a
+#           bounded, fixed-seed run
+#   tsan    configure, build and ctest the `tsan` preset (ThreadSanitizer):
+#           the library and its threading unit tests only (threads, batch,
+#           concurrent_calls)
 #   python  scripts/test-python.sh: the Python binding installed into a venv,
 #           ruff over every Python file, pytest, the Python examples
 #   rust    scripts/test-rust.sh: rustfmt, clippy, cargo test (with doc
@@ -30,7 +35,7 @@ mkdir -p "$LOG_DIR"
 export CMAKE_BUILD_PARALLEL_LEVEL=${CMAKE_BUILD_PARALLEL_LEVEL:-2}
 export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-2}
 
-STEPS=(deps format dev asan fuzz python rust debian)
+STEPS=(deps format dev asan fuzz tsan python rust debian)
 
 # Counts of test cases (ctest) across the steps, for the closing line.
 TESTS_PASSED=0
@@ -109,6 +114,10 @@ step_asan() {
 
 step_fuzz() {
     preset_workflow fuzz
+}
+
+step_tsan() {
+    preset_workflow tsan
 }
 
 # Adds the "N passed" / "F failed" of every pytest closing line of a log (the

@@ -39,6 +39,80 @@ const Eigen::Vector3d kProbeDirections[] = {
 // Vertices of a shell tried as probes before its nesting is left unknown.
 constexpr std::size_t kProbeVertices = 4;
 
+// Face pairs of one kind (crossing, touching) as the candidates come, in any
+// order and with repeats (a polygon's triangles): every pair is counted until
+// kMostCountedPairs distinct ones are; past that, only a pair that would be
+// among the lowest kKeptLocations is still wanted. Piles of coincident copies
+// of a part meet in millions of pairs, each an exact test: counting them all
+// took minutes and told nothing the first thousand do not.
+class PairCollector {
+public:
+    static constexpr std::size_t kMostCountedPairs = 1024;
+
+    explicit PairCollector(std::pmr::memory_resource* memory) : pairs_(memory) {}
+
+    // Whether a test of pair could change the finding.
+    bool wants(const FacePair& pair) const {
+        return !stopped_ || kept_ < kKeptLocations || pair < lowest_[kKeptLocations - 1];
+    }
+
+    void add(const FacePair& pair) {
+        keep_if_lowest(pair);
+        if (stopped_) return;
+        pairs_.push_back(pair);
+        // Repeats are dropped before deciding to stop: a polygon's pair may
+        // come once per triangle.
+        if (pairs_.size() >= 2 * kMostCountedPairs) {
+            sort_unique(pairs_);
+            stopped_ = pairs_.size() >= kMostCountedPairs;
+        }
+    }
+
+    // The pairs counted, without those `except` holds. Past the stop the
+    // count is a lower bound (complete false).
+    PairFinding finding(const PairCollector* except = nullptr) {
+        sort_unique(pairs_);
+        auto excepted = [&](const FacePair& pair) { return except && except->holds(pair); };
+        pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(), excepted), pairs_.end());
+        PairFinding found = PairFinding::of(pairs_);
+        if (stopped_) {
+            // The lowest pairs were kept apart past the stop.
+            std::size_t kept = 0;
+            for (std::size_t i = 0; i < kept_; ++i)
+                if (!excepted(lowest_[i])) found.lowest[kept++] = lowest_[i];
+            found.count = std::max(found.count, kept);
+            found.complete = false;
+        }
+        return found;
+    }
+
+    // Whether pair was counted or kept (after finding(): pairs_ is sorted).
+    bool holds(const FacePair& pair) const {
+        return std::binary_search(pairs_.begin(), pairs_.end(), pair) ||
+               std::binary_search(lowest_.begin(), lowest_.begin() + kept_, pair);
+    }
+
+private:
+    void keep_if_lowest(const FacePair& pair) {
+        auto end = lowest_.begin() + kept_;
+        auto at = std::lower_bound(lowest_.begin(), end, pair);
+        if (at != end && *at == pair) return;
+        if (kept_ < kKeptLocations) {
+            ++kept_;
+            ++end;
+        } else if (at == end) {
+            return;
+        }
+        std::move_backward(at, end - 1, end);
+        *at = pair;
+    }
+
+    std::pmr::vector<FacePair> pairs_;  // until stopped, with repeats between sorts
+    std::array<FacePair, kKeptLocations> lowest_{};
+    std::size_t kept_ = 0;
+    bool stopped_ = false;
+};
+
 }  // namespace
 
 template <class Scalar, class Index>
@@ -79,10 +153,12 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     }
     const BoxTree tree(boxes, memory);
 
-    std::pmr::vector<FacePair> crossing(memory), touching(memory);
+    PairCollector crossing(memory), touching(memory);
     tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
         const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
         if (face_i == face_j) return;  // pieces of one polygon
+        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+        if (!crossing.wants(pair) && !touching.wants(pair)) return;
         int shared = 0, at_i = 0, at_j = 0;
         for (int k = 0; k < 3; ++k)
             for (int l = 0; l < 3; ++l)
@@ -98,21 +174,12 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
         const Contact contact = triangle_contact(p_turned, q_turned, shared == 1);
         if (contact == Contact::none) return;
-        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-        (contact == Contact::crossing ? crossing : touching).push_back(pair);
+        (contact == Contact::crossing ? crossing : touching).add(pair);
     });
-    sort_unique(crossing);
-    sort_unique(touching);
     // Faces that cross somewhere are listed as crossing only.
-    touching.erase(std::remove_if(touching.begin(), touching.end(),
-                                  [&](const FacePair& pair) {
-                                      return std::binary_search(crossing.begin(), crossing.end(),
-                                                                pair);
-                                  }),
-                   touching.end());
-    result.crossing = PairFinding::of(crossing);
-    result.touching = PairFinding::of(touching);
-    if (!shells || shells->count < 2 || !crossing.empty()) return result;
+    result.crossing = crossing.finding();
+    result.touching = touching.finding(&crossing);
+    if (!shells || shells->count < 2 || result.crossing.count > 0) return result;
 
     // Nesting. The probes' far ends lie outside every box.
     double span = 0;

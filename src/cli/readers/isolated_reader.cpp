@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdint>
 #include <cstring>
+#include <new>
 #include <string>
 
 #include "readers/mesh_reader.hpp"
@@ -127,6 +128,9 @@ std::string read_all(int fd) {
     }
 }
 
+// The child's exit status when an allocation failed.
+constexpr int kChildOutOfMemory = 3;
+
 [[noreturn]] void run_child(int fd, const std::function<Model()>& read) {
     // A small crafted file can make a reader work without end (3MF objects
     // whose components reuse each other expand into a full tree): two minutes
@@ -143,8 +147,10 @@ std::string read_all(int fd) {
         out.value(Outcome::kReadError);
         out.text(error.what());
         answer = out.data();
+    } catch (const std::bad_alloc&) {
+        _exit(kChildOutOfMemory);
     } catch (...) {
-        _exit(2);  // out of memory or worse: the parent reports the exit status
+        _exit(2);  // worse: the parent reports the exit status
     }
     write_all(fd, answer);
     _exit(0);
@@ -174,9 +180,12 @@ Model read_isolated(const std::function<Model()>& read) {
     if (WIFSIGNALED(status))
         throw ReadError(std::string("the reader crashed on this file (") +
                         strsignal(WTERMSIG(status)) + "): it is corrupt or not of its format");
+    // The child's memory ran out: the tool's out-of-memory ending, not a
+    // file that cannot be read.
+    if (WIFEXITED(status) && WEXITSTATUS(status) == kChildOutOfMemory) throw std::bad_alloc();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw ReadError("the reader failed (exit status " + std::to_string(WEXITSTATUS(status)) +
-                        ", e.g. out of memory)");
+                        ")");
     return deserialize(answer);
 }
 
