@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <memory_resource>
+#include <unordered_map>
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
@@ -113,6 +115,41 @@ private:
     bool stopped_ = false;
 };
 
+// For each triangle, the lowest triangle at the same three positions in the
+// same order (itself when none is lower), and how many share them: copies of a
+// part stacked in place, or a surface exported twice, meet every other
+// triangle alike, so a contact found for one copy holds for all.
+template <class TriangleAt>
+void find_shapes(std::size_t count, const TriangleAt& triangle,
+                 std::pmr::vector<std::uint32_t>& shape_of,
+                 std::pmr::vector<std::uint32_t>& copies) {
+    auto coordinates = [&](std::uint32_t t) {
+        const Triangle corners = triangle(t);
+        std::array<double, 9> flat;
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) flat[3 * k + c] = corners[k][c];
+        return flat;
+    };
+    std::pmr::vector<std::uint32_t> order(count, shape_of.get_allocator());
+    for (std::uint32_t t = 0; t < count; ++t) order[t] = t;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        const auto ca = coordinates(a), cb = coordinates(b);
+        return ca < cb || (ca == cb && a < b);
+    });
+    shape_of.assign(count, 0);
+    copies.assign(count, 1);
+    for (std::size_t k = 0; k < count;) {
+        std::size_t end = k + 1;
+        const auto first = coordinates(order[k]);
+        while (end < count && coordinates(order[end]) == first) ++end;
+        for (std::size_t m = k; m < end; ++m) {
+            shape_of[order[m]] = order[k];
+            copies[order[m]] = std::uint32_t(end - k);
+        }
+        k = end;
+    }
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
@@ -153,6 +190,12 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     }
     const BoxTree tree(boxes, memory);
 
+    std::pmr::vector<std::uint32_t> shape_of(memory), copies(memory);
+    find_shapes(triangles.size(), triangle, shape_of, copies);
+    // The contact of two shapes, once tested, for pairs of triangles that
+    // share no corner and of which one has copies.
+    std::pmr::unordered_map<std::uint64_t, Contact> contact_of_shapes(memory);
+
     PairCollector crossing(memory), touching(memory);
     tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
         const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
@@ -168,11 +211,23 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                     at_j = l;
                 }
         if (shared >= 2) return;  // neighbours across an edge
-        const Triangle p = triangle(i), q = triangle(j);
-        // The shared corner first, keeping each triangle's turn.
-        const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
-        const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
-        const Contact contact = triangle_contact(p_turned, q_turned, shared == 1);
+        auto test = [&] {
+            const Triangle p = triangle(i), q = triangle(j);
+            // The shared corner first, keeping each triangle's turn.
+            const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
+            const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
+            return triangle_contact(p_turned, q_turned, shared == 1);
+        };
+        Contact contact;
+        if (shared == 0 && (copies[i] > 1 || copies[j] > 1)) {
+            const std::uint64_t key = std::uint64_t(shape_of[i]) << 32 | shape_of[j];
+            const auto known = contact_of_shapes.find(key);
+            contact = known != contact_of_shapes.end()
+                          ? known->second
+                          : contact_of_shapes.emplace(key, test()).first->second;
+        } else {
+            contact = test();
+        }
         if (contact == Contact::none) return;
         (contact == Contact::crossing ? crossing : touching).add(pair);
     });
