@@ -116,20 +116,19 @@ static void check_properties(int32_t status, const polymass_mass_properties* p,
         }
 }
 
-/* The unit cube, each coordinate c of vertex v as scale * c + offset. */
+/* The unit cube (vertex v at x = bit 0, y = bit 1, z = bit 2 of v; quads
+   counter-clockwise seen from outside), each coordinate c as scale * c +
+   offset. */
 static int32_t cube_moments(polymass_moments* out, polymass_context* context, const double scale[3],
                             const double offset[3]) {
-    static const uint32_t quads[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4,
-                                       1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+    static const uint32_t quads[24] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+                                       2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
     static const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
     double positions[24];
     polymass_mesh_desc desc;
     int v, k;
     for (v = 0; v < 8; ++v)
-        for (k = 0; k < 3; ++k) {
-            const int bit = k == 0 ? ((v + 1) >> 1) & 1 : k == 1 ? (v >> 1) & 1 : (v >> 2) & 1;
-            positions[3 * v + k] = scale[k] * bit + offset[k];
-        }
+        for (k = 0; k < 3; ++k) positions[3 * v + k] = scale[k] * ((v >> k) & 1) + offset[k];
     memset(&desc, 0, sizeof desc);
     desc.struct_size = sizeof desc;
     desc.position_type = POLYMASS_POSITION_FLOAT64;
@@ -160,6 +159,8 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     int32_t status;
     int i, operations = 0;
     if (polymass_context_create(&context, NULL) != POLYMASS_OK) __builtin_trap();
+    memset(&slots[0], 0, sizeof slots[0]);
+    slots[0].struct_size = sizeof slots[0];
     current_call = "polymass_moments_compute (unit cube)";
     status = cube_moments(&slots[0], context, unit, zero);
     CHECK(status == POLYMASS_OK, status, context);
