@@ -1,6 +1,7 @@
 // Out-of-memory injection into the polymass tool: every allocation of the
-// tool (its readers, the libraries they use, its reports; the library's own
-// allocations are test_allocator.c's) made to fail in turn. For each file and
+// tool after its command line is parsed (its readers, the libraries they use,
+// its reports; the library's own allocations are test_allocator.c's) made to
+// fail in turn. For each file and
 // each N = 1, 2, ... the Nth allocation fails (operator new throws
 // std::bad_alloc, as it does when memory runs out), until a run makes fewer
 // than N allocations. Every failing run must end as the tool ends on
@@ -20,7 +21,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <new>
-#include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -65,20 +66,35 @@ void* allocate_or_throw(std::size_t size) {
     return memory;
 }
 
-// One run of `polymass FILE`, its output discarded: the exit status, with
-// std::bad_alloc reaching main counted as main counts it.
-int run_tool(const std::string& file) {
+// Output thrown away without allocating (a string stream would allocate,
+// and swallow the failure as a stream error).
+class Discard : public std::streambuf {
+protected:
+    int_type overflow(int_type c) override { return traits_type::not_eof(c); }
+};
+
+// One run of `polymass FILE` with the countdown armed at n (< 0: none),
+// its output discarded: the exit status, with std::bad_alloc reaching main
+// counted as main counts it. The command line is parsed before: CLI11 copies
+// strings inside functions declared noexcept (App::_find_subcommand), where
+// a failed allocation terminates - not the project's to fix, and a command
+// line is a few short strings.
+int run_tool(const std::string& file, long n) {
     using namespace polymass_cli;
-    std::ostringstream discarded;
-    std::streambuf* out = std::cout.rdbuf(discarded.rdbuf());
-    std::streambuf* err = std::cerr.rdbuf(discarded.rdbuf());
+    const char* argv[] = {"polymass", file.c_str()};
+    const Arguments arguments = parse_arguments(2, argv);
+    Discard discarded;
+    std::streambuf* out = std::cout.rdbuf(&discarded);
+    std::streambuf* err = std::cerr.rdbuf(&discarded);
     int status;
+    injection()->failed.store(0);
+    injection()->countdown.store(n);
     try {
-        const char* argv[] = {"polymass", file.c_str()};
-        status = run_properties(parse_arguments(2, argv));
+        status = run_properties(arguments);
     } catch (const std::bad_alloc&) {
         status = kExitInternal;
     }
+    injection()->countdown.store(-1);
     std::cout.rdbuf(out);
     std::cerr.rdbuf(err);
     return status;
@@ -99,13 +115,10 @@ int main(int argc, char** argv) {
     int failures = 0;
     for (int f = 1; f < argc; ++f) {
         const std::string file = argv[f];
-        const int expected = run_tool(file);
+        const int expected = run_tool(file, -1);
         long n = 0;
         for (;; ++n) {
-            injection()->failed.store(0);
-            injection()->countdown.store(n);
-            const int status = run_tool(file);
-            injection()->countdown.store(-1);
+            const int status = run_tool(file, n);
             if (!injection()->failed.load()) {
                 if (status != expected) {
                     std::printf("%s: exit %d without a failed allocation, %d expected\n",

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstdint>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 #include <string>
 
 #include "readers/format_readers.hpp"
@@ -34,10 +34,11 @@ std::ifstream open_file(const std::string& path) {
 
 std::string read_bytes(const std::string& path) {
     std::ifstream file = open_file(path);
-    std::ostringstream contents;
-    contents << file.rdbuf();
+    // Copied through iterators, not `stream << file.rdbuf()`, which turns a
+    // failed allocation into a stream error: out of memory must stay
+    // std::bad_alloc (the tool's out-of-memory ending), not "cannot read".
+    std::string bytes{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     if (file.bad()) throw ReadError("cannot read the file");
-    std::string bytes = contents.str();
     if (bytes.empty()) throw ReadError("the file is empty");
     return bytes;
 }
