@@ -7,8 +7,10 @@
 // this process, which holds the meshes a reference may name (meshes/cube.stl,
 // meshes/cube.obj, and a package "robot" with its package.xml, for
 // package://robot/meshes/...); the search paths of package:// and model://
-// point there only. References outside it (an absolute path) are followed as
-// the tool follows them: the dictionary names no such path.
+// point there only; a relative reference resolves from the description's
+// directory. References outside it (an absolute path) are followed as the
+// tool follows them: the dictionary names no such path. The working directory
+// is left alone: libFuzzer's -fork mode names its files relative to it.
 //
 // audit_file never throws for a bad description (it says so in its error)
 // and the report and fix take any audit it returns: any exception escaping,
@@ -73,7 +75,6 @@ const std::string& description_path() {
                                      "IGN_GAZEBO_RESOURCE_PATH", "SDF_PATH", "GAZEBO_MODEL_PATH"}) {
             setenv(variable, root.c_str(), 1);
         }
-        if (chdir(directory) != 0) std::abort();
         return root + "/robot.urdf";
     }();
     return path;
