@@ -13,6 +13,7 @@ packages=(
     libcmocka-dev                          # unit tests
     clang-format                           # style check
     clang libclang-rt-14-dev               # fuzz preset: clang, libFuzzer + sanitizer runtimes
+    llvm                                   # coverage preset: llvm-profdata, llvm-cov
     abigail-tools binutils                 # ABI gate (abidw, abidiff), nm, readelf
     dpkg-dev file                          # dpkg-buildpackage, dpkg-shlibdeps
     python3 python3-venv                   # Python binding: a venv with cffi, pytest from PyPI

@@ -10,7 +10,14 @@
 #   dev     configure, build and ctest the `dev` preset (Debug, -Werror)
 #   asan    configure, build and ctest the `asan` preset (ASan + UBSan)
 #   fuzz    configure, build and ctest the `fuzz` preset (Clang, libFuzzer):
-#           a bounded, fixed-seed run of tests/fuzz/fuzz_mesh.c
+#           each target of tests/fuzz (the C API, the tool's readers, audit and
+#           command line, the moments): its regressions replayed, then a
+#           bounded, fixed-seed run
+#   tsan    configure, build and ctest the `tsan` preset (ThreadSanitizer):
+#           the library and its threading unit tests only (threads, batch,
+#           concurrent_calls). Run by name only (not in STEPS): on this
+#           machine (GCC 12, Linux 6.18) every TSan test linked to the shared
+#           library dies in the dynamic loader before main
 #   python  scripts/test-python.sh: the Python binding installed into a venv,
 #           ruff over every Python file, pytest, the Python examples
 #   rust    scripts/test-rust.sh: rustfmt, clippy, cargo test (with doc
@@ -122,6 +129,10 @@ step_asan() {
 
 step_fuzz() {
     preset_workflow fuzz
+}
+
+step_tsan() {
+    preset_workflow tsan
 }
 
 # Adds the "N passed" / "F failed" of every pytest closing line of a log (the

@@ -391,7 +391,9 @@ typedef struct polymass_diagnostics {
     double signed_volume;     /* NaN when the faces could not be integrated */
     /* Since 1.1. Shells are counted on a closed, oriented surface; the face
        pairs with POLYMASS_OPTION_CHECK_INTERSECTIONS, each pair (lower face,
-       higher face), lowest pairs first. */
+       higher face), lowest pairs first. Face pairs are counted up to 1024 of
+       a kind: past that the count is a lower bound (the message says "at
+       least"), and the first pairs are still the lowest. */
     uint64_t shell_count;
     uint64_t inverted_shells; /* inside out, inside no solid shell */
     uint64_t first_inverted_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];

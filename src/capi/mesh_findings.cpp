@@ -132,19 +132,20 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
         case Defect::crossing: {
             const core::PairFinding& pairs = analysis.overlaps->crossing;
             const auto [low, high] = pairs.first();
+            const char* at_least = pairs.complete ? "" : "at least ";
             if (analysis.shells) {
                 const auto& of_face = analysis.shells->shells.of_face;
                 return context->fail(POLYMASS_ERROR_INTERSECTING,
                                      "faces %llu (shell %u) and %llu (shell %u) cross each "
                                      "other: the region inside both would be counted twice "
-                                     "(%llu such face pairs)",
-                                     u64(low), of_face[low], u64(high), of_face[high],
+                                     "(%s%llu such face pairs)",
+                                     u64(low), of_face[low], u64(high), of_face[high], at_least,
                                      u64(pairs.count));
             }
             return context->fail(POLYMASS_ERROR_INTERSECTING,
                                  "faces %llu and %llu cross each other: the region inside both "
-                                 "would be counted twice (%llu such face pairs)",
-                                 u64(low), u64(high), u64(pairs.count));
+                                 "would be counted twice (%s%llu such face pairs)",
+                                 u64(low), u64(high), at_least, u64(pairs.count));
         }
         case Defect::inverted_shell:
             return fail_on_shell(context, POLYMASS_ERROR_INVERTED, *analysis.shells,

@@ -2,6 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <memory_resource>
+#include <unordered_map>
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
@@ -38,6 +40,115 @@ const Eigen::Vector3d kProbeDirections[] = {
     {0.4353, 0.5209, 0.7342}, {-0.6016, 0.3187, 0.7326}, {0.2679, -0.8535, 0.4472}};
 // Vertices of a shell tried as probes before its nesting is left unknown.
 constexpr std::size_t kProbeVertices = 4;
+
+// Face pairs of one kind (crossing, touching) as the candidates come, in any
+// order and with repeats (a polygon's triangles): every pair is counted until
+// kMostCountedPairs distinct ones are; past that, only a pair that would be
+// among the lowest kKeptLocations is still wanted. Piles of coincident copies
+// of a part meet in millions of pairs, each an exact test: counting them all
+// took minutes and told nothing the first thousand do not.
+class PairCollector {
+public:
+    static constexpr std::size_t kMostCountedPairs = 1024;
+
+    explicit PairCollector(std::pmr::memory_resource* memory) : pairs_(memory) {}
+
+    // Whether a test of pair could change the finding.
+    bool wants(const FacePair& pair) const {
+        return !stopped_ || kept_ < kKeptLocations || pair < lowest_[kKeptLocations - 1];
+    }
+
+    void add(const FacePair& pair) {
+        keep_if_lowest(pair);
+        if (stopped_) return;
+        pairs_.push_back(pair);
+        // Repeats are dropped before deciding to stop: a polygon's pair may
+        // come once per triangle.
+        if (pairs_.size() >= 2 * kMostCountedPairs) {
+            sort_unique(pairs_);
+            stopped_ = pairs_.size() >= kMostCountedPairs;
+        }
+    }
+
+    // The pairs counted, without those `except` holds. Past the stop the
+    // count is a lower bound (complete false).
+    PairFinding finding(const PairCollector* except = nullptr) {
+        sort_unique(pairs_);
+        auto excepted = [&](const FacePair& pair) { return except && except->holds(pair); };
+        pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(), excepted), pairs_.end());
+        PairFinding found = PairFinding::of(pairs_);
+        if (stopped_) {
+            // The lowest pairs were kept apart past the stop.
+            std::size_t kept = 0;
+            for (std::size_t i = 0; i < kept_; ++i)
+                if (!excepted(lowest_[i])) found.lowest[kept++] = lowest_[i];
+            found.count = std::max(found.count, kept);
+            found.complete = false;
+        }
+        return found;
+    }
+
+    // Whether pair was counted or kept (after finding(): pairs_ is sorted).
+    bool holds(const FacePair& pair) const {
+        return std::binary_search(pairs_.begin(), pairs_.end(), pair) ||
+               std::binary_search(lowest_.begin(), lowest_.begin() + kept_, pair);
+    }
+
+private:
+    void keep_if_lowest(const FacePair& pair) {
+        auto end = lowest_.begin() + kept_;
+        auto at = std::lower_bound(lowest_.begin(), end, pair);
+        if (at != end && *at == pair) return;
+        if (kept_ < kKeptLocations) {
+            ++kept_;
+            ++end;
+        } else if (at == end) {
+            return;
+        }
+        std::move_backward(at, end - 1, end);
+        *at = pair;
+    }
+
+    std::pmr::vector<FacePair> pairs_;  // until stopped, with repeats between sorts
+    std::array<FacePair, kKeptLocations> lowest_{};
+    std::size_t kept_ = 0;
+    bool stopped_ = false;
+};
+
+// For each triangle, the lowest triangle at the same three positions in the
+// same order (itself when none is lower), and how many share them: copies of a
+// part stacked in place, or a surface exported twice, meet every other
+// triangle alike, so a contact found for one copy holds for all.
+template <class TriangleAt>
+void find_shapes(std::size_t count, const TriangleAt& triangle,
+                 std::pmr::vector<std::uint32_t>& shape_of,
+                 std::pmr::vector<std::uint32_t>& copies) {
+    auto coordinates = [&](std::uint32_t t) {
+        const Triangle corners = triangle(t);
+        std::array<double, 9> flat;
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c) flat[3 * k + c] = corners[k][c];
+        return flat;
+    };
+    std::pmr::vector<std::uint32_t> order(count, shape_of.get_allocator());
+    for (std::uint32_t t = 0; t < count; ++t) order[t] = t;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        const auto ca = coordinates(a), cb = coordinates(b);
+        return ca < cb || (ca == cb && a < b);
+    });
+    shape_of.assign(count, 0);
+    copies.assign(count, 1);
+    for (std::size_t k = 0; k < count;) {
+        std::size_t end = k + 1;
+        const auto first = coordinates(order[k]);
+        while (end < count && coordinates(order[end]) == first) ++end;
+        for (std::size_t m = k; m < end; ++m) {
+            shape_of[order[m]] = order[k];
+            copies[order[m]] = std::uint32_t(end - k);
+        }
+        k = end;
+    }
+}
 
 }  // namespace
 
@@ -79,10 +190,18 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     }
     const BoxTree tree(boxes, memory);
 
-    std::pmr::vector<FacePair> crossing(memory), touching(memory);
+    std::pmr::vector<std::uint32_t> shape_of(memory), copies(memory);
+    find_shapes(triangles.size(), triangle, shape_of, copies);
+    // The contact of two shapes, once tested, for pairs of triangles that
+    // share no corner and of which one has copies.
+    std::pmr::unordered_map<std::uint64_t, Contact> contact_of_shapes(memory);
+
+    PairCollector crossing(memory), touching(memory);
     tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
         const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
         if (face_i == face_j) return;  // pieces of one polygon
+        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+        if (!crossing.wants(pair) && !touching.wants(pair)) return;
         int shared = 0, at_i = 0, at_j = 0;
         for (int k = 0; k < 3; ++k)
             for (int l = 0; l < 3; ++l)
@@ -92,27 +211,30 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                     at_j = l;
                 }
         if (shared >= 2) return;  // neighbours across an edge
-        const Triangle p = triangle(i), q = triangle(j);
-        // The shared corner first, keeping each triangle's turn.
-        const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
-        const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
-        const Contact contact = triangle_contact(p_turned, q_turned, shared == 1);
+        auto test = [&] {
+            const Triangle p = triangle(i), q = triangle(j);
+            // The shared corner first, keeping each triangle's turn.
+            const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
+            const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
+            return triangle_contact(p_turned, q_turned, shared == 1);
+        };
+        Contact contact;
+        if (shared == 0 && (copies[i] > 1 || copies[j] > 1)) {
+            const std::uint64_t key = std::uint64_t(shape_of[i]) << 32 | shape_of[j];
+            const auto known = contact_of_shapes.find(key);
+            contact = known != contact_of_shapes.end()
+                          ? known->second
+                          : contact_of_shapes.emplace(key, test()).first->second;
+        } else {
+            contact = test();
+        }
         if (contact == Contact::none) return;
-        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-        (contact == Contact::crossing ? crossing : touching).push_back(pair);
+        (contact == Contact::crossing ? crossing : touching).add(pair);
     });
-    sort_unique(crossing);
-    sort_unique(touching);
     // Faces that cross somewhere are listed as crossing only.
-    touching.erase(std::remove_if(touching.begin(), touching.end(),
-                                  [&](const FacePair& pair) {
-                                      return std::binary_search(crossing.begin(), crossing.end(),
-                                                                pair);
-                                  }),
-                   touching.end());
-    result.crossing = PairFinding::of(crossing);
-    result.touching = PairFinding::of(touching);
-    if (!shells || shells->count < 2 || !crossing.empty()) return result;
+    result.crossing = crossing.finding();
+    result.touching = touching.finding(&crossing);
+    if (!shells || shells->count < 2 || result.crossing.count > 0) return result;
 
     // Nesting. The probes' far ends lie outside every box.
     double span = 0;

@@ -484,6 +484,19 @@ class Mjcf(AuditCase):
         self.assertIsNone(entry["declared"])
         self.assertIsNotNone(entry["computed"])
 
+    def test_sdf_inertia_entry_not_a_number_is_refused_not_a_crash(self):
+        # Found by fuzz_audit: the entry threw inside Eigen's comma
+        # initializer, which aborted (assertions on) as it unwound.
+        path = fresh("sdf_bad_inertia") / "model.sdf"
+        path.write_text(
+            '<sdf version="1.9"><model name="m"><link name="l"><inertial><mass>1</mass>'
+            "<inertia><ixx>1</ixx><iyy>one</iyy><izz>1</izz></inertia></inertial>"
+            "</link></model></sdf>\n"
+        )
+        result = run("audit", "--json", path)
+        self.assertIn(result.returncode, (1, 3))
+        self.assertIn("iyy", result.stdout + result.stderr)
+
     def test_include_and_fix_leaves_an_included_inertial(self):
         directory = fresh("mjcf_include")
         path, _ = write_mjcf_model(directory, "1 0 0 0")

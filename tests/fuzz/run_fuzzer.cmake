@@ -1,7 +1,7 @@
 # Runs a libFuzzer target for a bounded, reproducible time (ctest fuzz.*).
 #
-#   cmake -DFUZZER=<exe> -DSEEDS=<dir> [-DREGRESSIONS=<dir>] -DWORK_DIR=<dir>
-#         -DRUNS=<n> -DMAX_TIME=<s> -P run_fuzzer.cmake
+#   cmake -DFUZZER=<exe> -DSEEDS=<dir> [-DREGRESSIONS=<dir>] [-DDICT=<file>]
+#         -DWORK_DIR=<dir> -DRUNS=<n> -DMAX_TIME=<s> -P run_fuzzer.cmake
 #
 # 1. Every file in REGRESSIONS (inputs that once crashed) is run once; the
 #    test stops there if one fails, and names it.
@@ -31,6 +31,11 @@ list(SORT seeds)
 list(JOIN seeds "," seed_inputs)
 
 set(common_options -rss_limit_mb=2048 -timeout=10 -artifact_prefix=${WORK_DIR}/)
+# The dictionary (a text format's keywords) guides the mutations only.
+set(dictionary_option)
+if(DEFINED DICT)
+    set(dictionary_option -dict=${DICT})
+endif()
 
 # The library compares addresses (its array bounds checks) and libFuzzer feeds
 # compared values back into its mutations, so with address space layout
@@ -77,7 +82,7 @@ message(STATUS "fuzzing: ${RUNS} runs, seed 1, at most ${MAX_TIME} s, corpus ${W
 execute_process(
     COMMAND ${launcher} ${FUZZER} ${common_options}
         -seed=1 -runs=${RUNS} -max_total_time=${MAX_TIME} -max_len=8192
-        -print_final_stats=1 -seed_inputs=${seed_inputs}
+        ${dictionary_option} -print_final_stats=1 -seed_inputs=${seed_inputs}
         ${WORK_DIR}/corpus
     WORKING_DIRECTORY ${WORK_DIR}
     RESULT_VARIABLE result

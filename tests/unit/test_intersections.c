@@ -364,6 +364,57 @@ static void test_report_lists_pairs_and_shells(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* A pile of `copies` triangulated unit cubes, copy k moved by k * step
+   along (1, 2, 3) (step 0: all coincident), checked. */
+static int32_t check_pile(polymass_diagnostics* d, polymass_context* ctx, int copies, double step) {
+    pm_mesh m;
+    int32_t status;
+    int k;
+    pm_mesh_init(&m);
+    for (k = 0; k < copies; ++k)
+        box(&m, k * step, 2 * k * step, 3 * k * step, 1 + k * step, 1 + 2 * k * step,
+            1 + 3 * k * step, 1, 0);
+    pm_diagnostics_init(d);
+    status = pm_check(d, ctx, &m);
+    pm_mesh_free(&m);
+    return status;
+}
+
+/* Piles of copies of a part meet in face pairs by the square of the copies
+   (a fuzzed pile of 252 coincident cubes took minutes): counting stops at 1024
+   pairs of a kind and says "at least", and the pairs listed are still the
+   lowest, those of a pile of four. Forty copies pass the limit for both kinds. */
+static void test_piles_of_copies_stop_counting(void** state) {
+    static const double steps[] = {1e-3, 0.0}; /* crossing, then touching */
+    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_diagnostics few, many;
+    size_t s, i;
+    (void)state;
+    for (s = 0; s < 2; ++s) {
+        const int32_t status = check_pile(&few, ctx, 4, steps[s]);
+        const uint64_t few_count = s == 0 ? few.intersecting_face_pairs : few.touching_face_pairs;
+        const uint64_t(*few_first)[2] =
+            s == 0 ? few.first_intersecting_face_pairs : few.first_touching_face_pairs;
+        const uint64_t(*many_first)[2] =
+            s == 0 ? many.first_intersecting_face_pairs : many.first_touching_face_pairs;
+        assert_true(few_count >= POLYMASS_DIAGNOSTIC_LOCATIONS && few_count < 1024);
+        if (s == 0) assert_null(strstr(polymass_context_message(ctx), "at least"));
+        PM_ASSERT_STATUS(ctx, status, check_pile(&many, ctx, 40, steps[s]));
+        if (s == 0) {
+            assert_int_equal(status, POLYMASS_ERROR_INTERSECTING);
+            assert_non_null(strstr(polymass_context_message(ctx), "(at least "));
+            assert_true(many.intersecting_face_pairs >= 1024);
+        } else {
+            assert_true(many.touching_face_pairs >= 1024);
+        }
+        for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+            assert_int_equal(many_first[i][0], few_first[i][0]);
+            assert_int_equal(many_first[i][1], few_first[i][1]);
+        }
+    }
+    polymass_context_destroy(ctx);
+}
+
 /* Reference solids whose faces touch by construction: four boxes face to
    face, and caps fanned into triangles that overlap outside the star. */
 static int touches_by_construction(const char* name) {
@@ -416,6 +467,7 @@ int main(void) {
         cmocka_unit_test(test_solid_inside_a_solid_counts_twice),
         cmocka_unit_test(test_inside_out_shells),
         cmocka_unit_test(test_report_lists_pairs_and_shells),
+        cmocka_unit_test(test_piles_of_copies_stop_counting),
         cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),
     };

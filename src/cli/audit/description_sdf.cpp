@@ -72,9 +72,12 @@ Inertial inertial_of(const XmlFile& file, const pugi::xml_node& element, const s
         const auto entry = [&](const char* name, double fallback) {
             return tensor.child(name) ? number_of(tensor, name, where) : fallback;
         };
+        // Every entry read before the matrix is filled: one that is not a
+        // number throws, and must not leave Eigen's comma initializer half
+        // done (it asserts as it unwinds).
+        const double ixx = entry("ixx", 1.0), iyy = entry("iyy", 1.0), izz = entry("izz", 1.0);
         const double ixy = entry("ixy", 0.0), ixz = entry("ixz", 0.0), iyz = entry("iyz", 0.0);
-        in_frame << entry("ixx", 1.0), ixy, ixz, ixy, entry("iyy", 1.0), iyz, ixz, iyz,
-            entry("izz", 1.0);
+        in_frame << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
     }
     inertial.center_of_mass = frame.position;
     inertial.inertia = frame.rotation * in_frame * frame.rotation.transpose();

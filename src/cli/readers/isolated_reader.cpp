@@ -129,6 +129,10 @@ std::string read_all(int fd) {
     }
 }
 
+// The child's exit status when an allocation failed outside the budget below:
+// the parent reports it as the tool running out of memory.
+constexpr int kChildOutOfMemory = 3;
+
 // The bytes of address space the process has mapped (its libraries, stacks,
 // heap), or 0 when /proc cannot tell.
 uint64_t mapped_bytes() {
@@ -153,12 +157,13 @@ uint64_t mapped_bytes() {
     // would have nothing to add to.
     const uint64_t mapped = mapped_bytes();
     struct rlimit memory {};
+    bool budgeted = false;  // a failed allocation then means the file's, not the machine's
     if (packed_size > 0 && mapped > 0 && getrlimit(RLIMIT_AS, &memory) == 0 &&
         packed_memory_budget(packed_size) < RLIM_INFINITY - mapped) {
         const rlim_t budget = mapped + packed_memory_budget(packed_size);
         if (memory.rlim_cur == RLIM_INFINITY || budget < memory.rlim_cur) {
             memory.rlim_cur = budget;
-            setrlimit(RLIMIT_AS, &memory);
+            budgeted = setrlimit(RLIMIT_AS, &memory) == 0;
         }
     }
     std::string answer;
@@ -170,6 +175,7 @@ uint64_t mapped_bytes() {
         out.text(error.what());
         answer = out.data();
     } catch (const std::bad_alloc&) {
+        if (!budgeted) _exit(kChildOutOfMemory);
         Writer out;
         out.value(Outcome::kReadError);
         out.text("the reader ran out of its memory (" +
@@ -216,9 +222,12 @@ Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
     if (WIFSIGNALED(status))
         throw ReadError(std::string("the reader crashed on this file (") +
                         strsignal(WTERMSIG(status)) + "): it is corrupt or not of its format");
+    // The child's memory ran out: the tool's out-of-memory ending, not a
+    // file that cannot be read.
+    if (WIFEXITED(status) && WEXITSTATUS(status) == kChildOutOfMemory) throw std::bad_alloc();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw ReadError("the reader failed (exit status " + std::to_string(WEXITSTATUS(status)) +
-                        ", e.g. out of memory)");
+                        ")");
     return deserialize(answer);
 }
 
