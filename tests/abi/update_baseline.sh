@@ -20,7 +20,8 @@ else
     cd "$root"
     cmake --preset dev >/dev/null
     cmake --build --preset dev --target polymass
-    library=$(ls "$root"/build/dev/src/libpolymass.so.*.*.* | head -n 1)
+    # The link, not a listing: a build tree keeps the libraries of earlier versions.
+    library=$root/build/dev/src/libpolymass.so
 fi
 library=$(readlink -f "$library")
 abidw=$(command -v abidw) || { echo "abidw not found (Debian: apt-get install abigail-tools)" >&2; exit 1; }
