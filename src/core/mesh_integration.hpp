@@ -22,7 +22,6 @@ bool runs_instruction_set(InstructionSet set);
 // The widest set it runs, found once.
 InstructionSet widest_instruction_set();
 
-
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point
     // Twice the largest distance of a vertex from the reference (about the
