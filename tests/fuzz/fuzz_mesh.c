@@ -65,6 +65,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_input.h"
+
 #define HEADER_SIZE 40
 /* Bounds on the replicated mesh, to keep one execution fast. */
 #define MAX_TOTAL_VERTICES 8192u
@@ -91,31 +93,6 @@ static void fail(const char* file, int line, const char* what, int32_t status,
     do {                                                                         \
         if (!(condition)) fail(__FILE__, __LINE__, #condition, status, context); \
     } while (0)
-
-/* ------------------------------------------------------------------------ */
-/* Reading the input                                                        */
-/* ------------------------------------------------------------------------ */
-
-typedef struct reader {
-    const uint8_t* data;
-    size_t size;
-    size_t at;
-} reader;
-
-/* Copies n bytes to out; past the end of the input they are 0. */
-static void take(reader* r, void* out, size_t n) {
-    size_t have = r->at < r->size ? r->size - r->at : 0;
-    if (have > n) have = n;
-    if (have) memcpy(out, r->data + r->at, have);
-    memset((uint8_t*)out + have, 0, n - have);
-    r->at += n;
-}
-
-static uint8_t take_u8(reader* r) {
-    uint8_t value;
-    take(r, &value, 1);
-    return value;
-}
 
 /* ------------------------------------------------------------------------ */
 /* Invariants                                                               */

@@ -31,31 +31,7 @@
 #include <stdio.h>
 #include <string.h>
 
-typedef struct reader {
-    const uint8_t* data;
-    size_t size;
-    size_t at;
-} reader;
-
-static void take(reader* r, void* out, size_t n) {
-    size_t have = r->at < r->size ? r->size - r->at : 0;
-    if (have > n) have = n;
-    if (have) memcpy(out, r->data + r->at, have);
-    memset((uint8_t*)out + have, 0, n - have);
-    r->at += n;
-}
-
-static double take_double(reader* r) {
-    double value;
-    take(r, &value, sizeof value);
-    return value;
-}
-
-static uint8_t take_u8(reader* r) {
-    uint8_t value;
-    take(r, &value, 1);
-    return value;
-}
+#include "fuzz_input.h"
 
 static const char* current_call = "";
 
