@@ -40,6 +40,8 @@ Entry increment(Entry& counter) {
 // The buckets hold about three entries: insertion beats a general sort.
 template <class Entry>
 void sort_bucket(Entry* first, Entry* last) {
+    // Also the empty mesh's case, whose buckets may be null: null + 1 is undefined.
+    if (last - first < 2) return;
     if (last - first > 16) {
         std::sort(first, last);
         return;
