@@ -1,7 +1,8 @@
 // Sorting of 64-bit keys in linear time (least significant digit first).
 //
-// The topology check sorts three keys per triangle; for meshes of millions of
-// faces a comparison sort dominates the whole computation.
+// The box tree of the intersection check (box_tree.cpp) sorts one Morton key
+// per triangle; for meshes of millions of faces a comparison sort would
+// dominate the whole check.
 #pragma once
 
 #include <cstdint>
