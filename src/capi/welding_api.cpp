@@ -43,15 +43,11 @@ POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_d
             }
             const std::pmr::vector<std::uint32_t> welded =
                 core::weld_vertices(view, scanned.scan, tolerance, memory);
-            uint64_t distinct = 0;
             // Past the last used vertex, welded stops: the rest are unused.
-            for (std::size_t vertex = 0; vertex < welded.size(); ++vertex) {
-                out_vertex_of[vertex] = welded[vertex];
-                distinct += welded[vertex] == vertex && scanned.scan.is_used(vertex);
-            }
+            std::copy(welded.begin(), welded.end(), out_vertex_of);
             for (std::size_t vertex = welded.size(); vertex < input.vertex_count; ++vertex)
                 out_vertex_of[vertex] = std::uint32_t(vertex);
-            *out_distinct_count = distinct;
+            *out_distinct_count = core::distinct_vertices(welded, scanned.scan);
             return int32_t(POLYMASS_OK);
         });
     });

@@ -28,9 +28,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     if (settings.check_topology) {
         if (settings.weld) {
             welded = weld_vertices(mesh, scan, settings.weld_tolerance, memory);
-            analysis.used_vertex_count = 0;
-            for (std::size_t vertex = 0; vertex < welded.size(); ++vertex)
-                analysis.used_vertex_count += scan.is_used(vertex) && welded[vertex] == vertex;
+            analysis.used_vertex_count = distinct_vertices(welded, scan);
         }
         analysis.topology =
             analyse_topology(mesh, settings.weld ? welded.data() : nullptr, tasks, memory);

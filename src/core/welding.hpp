@@ -9,6 +9,7 @@
 // only serves the topology checks: the integrals use the positions as given.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <memory_resource>
 #include <vector>
@@ -27,5 +28,15 @@ template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,
                                               std::pmr::memory_resource* memory);
+
+// How many vertices are left once `welded` (weld_vertices' answer) is applied:
+// the used vertices that are their own smallest welded index.
+inline std::size_t distinct_vertices(const std::pmr::vector<std::uint32_t>& welded,
+                                     const MeshScan& scan) {
+    std::size_t distinct = 0;
+    for (std::size_t vertex = 0; vertex < welded.size(); ++vertex)
+        distinct += scan.is_used(vertex) && welded[vertex] == vertex;
+    return distinct;
+}
 
 }  // namespace polymass::core
