@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Builds the Debian packages from debian/ and checks them:
 #   1. copies the source tree (the files git tracks, plus new files it does not
-#      ignore) to build/debian/polymass-<version>/, so that dpkg-buildpackage,
-#      which writes its packages into the parent directory and its build tree
-#      into the source, leaves the working tree clean;
+#      ignore) to ~/.cache/polymass/debian/polymass-<version>/, so that
+#      dpkg-buildpackage, which writes its packages into the parent directory
+#      and its build tree into the source, leaves the working tree clean. The
+#      place is the same for every clone: dpkg-buildflags writes the source
+#      directory into the compiler flags (-ffile-prefix-map=DIR=.), and ccache
+#      finds an earlier build's objects only under the same flags;
 #   2. dpkg-buildpackage -us -uc -b (binary packages, unsigned): the cmake
 #      build through dh, the symbols check against debian/libpolymass1.symbols,
 #      the manual page from `polymass --help`;
@@ -20,7 +23,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 version=$(dpkg-parsechangelog -S Version)
-work=$root/build/debian
+work=${XDG_CACHE_HOME:-$HOME/.cache}/polymass/debian
 source_dir=$work/polymass-$version
 
 step() { printf '\n==================== debian: %s ====================\n' "$1"; }

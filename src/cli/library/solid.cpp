@@ -47,8 +47,11 @@ void probe_modes(const Library& library, const polymass_mesh_desc& desc, SolidRe
         polymass_provenance& provenance = result.answering_provenance;
         provenance = polymass_provenance{};
         provenance.struct_size = sizeof provenance;
-        if (polymass_mass_properties_with_provenance(&properties, &provenance, library.context(),
-                                                     &desc, nullptr, &single) == POLYMASS_OK) {
+        const int32_t status = polymass_mass_properties_with_provenance(
+            &properties, &provenance, library.context(), &desc, nullptr, &single);
+        // Out of memory says nothing of whether the mode would answer.
+        if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+        if (status == POLYMASS_OK) {
             result.answering_option = option;
             return;
         }
@@ -83,6 +86,7 @@ SolidResult compute_solid(const Library& library, const Model& model, const Part
     result.status = polymass_mass_properties_with_provenance(
         &result.properties, &result.provenance, library.context(), &desc, &mass, nullptr);
     if (result.status == POLYMASS_OK) return result;
+    if (result.status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     result.message = library.message();
     probe_modes(library, desc, result);
     if (!result.answering_option.empty())
@@ -94,9 +98,9 @@ CheckResult check_solid(const Library& library, const Model& model, const Part& 
     const polymass_mesh_desc desc = describe(model, part);
     CheckResult result;
     result.diagnostics.struct_size = sizeof result.diagnostics;
-    if (polymass_mesh_check(&result.diagnostics, library.context(), &desc) != POLYMASS_OK) {
-        result.message = library.message();
-    }
+    const int32_t status = polymass_mesh_check(&result.diagnostics, library.context(), &desc);
+    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (status != POLYMASS_OK) result.message = library.message();
     return result;
 }
 
@@ -105,8 +109,9 @@ std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& mo
     const polymass_mesh_desc desc = describe(model, part);
     std::vector<uint32_t> shells(part.face_sizes.size());
     uint64_t count = 0;
-    if (polymass_mesh_shells(shells.data(), &count, library.context(), &desc) != POLYMASS_OK)
-        shells.clear();
+    const int32_t status = polymass_mesh_shells(shells.data(), &count, library.context(), &desc);
+    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (status != POLYMASS_OK) shells.clear();
     return shells;
 }
 
@@ -114,14 +119,15 @@ std::vector<polymass_shell> shell_list(const Library& library, const Model& mode
                                        const Part& part) {
     const polymass_mesh_desc desc = describe(model, part);
     uint64_t count = 0;
-    if (polymass_mesh_shell_list(nullptr, 0, &count, library.context(), &desc) != POLYMASS_OK)
-        return {};
+    int32_t status = polymass_mesh_shell_list(nullptr, 0, &count, library.context(), &desc);
+    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (status != POLYMASS_OK) return {};
     polymass_shell blank{};
     blank.struct_size = sizeof blank;
     std::vector<polymass_shell> shells(count, blank);
-    if (polymass_mesh_shell_list(shells.data(), count, &count, library.context(), &desc) !=
-        POLYMASS_OK)
-        return {};
+    status = polymass_mesh_shell_list(shells.data(), count, &count, library.context(), &desc);
+    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (status != POLYMASS_OK) return {};
     return shells;
 }
 

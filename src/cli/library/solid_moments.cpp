@@ -37,8 +37,9 @@ IntegratedSolid::IntegratedSolid(const Library& library, const Model& model, con
     }
     polymass_mass_properties own{};
     polymass_mass_properties_init(&own, sizeof own);
-    if (polymass_mesh_mass_properties(&own, library.context(), mesh_, nullptr) == POLYMASS_OK)
-        warnings_ = own.warnings;
+    const int32_t status = polymass_mesh_mass_properties(&own, library.context(), mesh_, nullptr);
+    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();  // its warnings unknown
+    if (status == POLYMASS_OK) warnings_ = own.warnings;
 }
 
 IntegratedSolid::~IntegratedSolid() { polymass_mesh_destroy(mesh_); }
@@ -62,6 +63,7 @@ SolidResult IntegratedSolid::properties(const Library& library,
     polymass_mass_properties_init(&result.properties, sizeof result.properties);
     result.status =
         polymass_mesh_mass_properties(&result.properties, library.context(), mesh_, &mass);
+    if (result.status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (result.status != POLYMASS_OK) result.message = library.message();
     return result;
 }

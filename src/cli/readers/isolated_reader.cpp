@@ -1,9 +1,11 @@
 #include "readers/isolated_reader.hpp"
 
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdint>
@@ -129,9 +131,26 @@ std::string read_all(int fd) {
     }
 }
 
-// The child's exit status when an allocation failed outside the budget below:
-// the parent reports it as the tool running out of memory.
-constexpr int kChildOutOfMemory = 3;
+// What the child tells the parent besides its answer, in memory both share:
+// whether an allocation failed in it, and whether it ran under a memory
+// budget. The libraries behind these readers catch std::bad_alloc inside
+// their parsers and report a parse error of their own, carry on with what
+// they have, or let it escape a noexcept function and abort (tinygltf,
+// lib3mf, assimp): however the child ends after an allocation failed, its
+// answer says nothing about the file, and the parent reports the failed
+// allocation instead.
+struct ChildState {
+    std::atomic<int> allocation_failed{0};
+    std::atomic<int> budgeted{0};  // a failed allocation then means the file's, not the machine's
+};
+
+ChildState* child_state = nullptr;  // the child's view of the shared page
+
+// The child's new handler: called by operator new when memory runs out.
+void note_failed_allocation() {
+    child_state->allocation_failed.store(1);
+    throw std::bad_alloc();
+}
 
 // The bytes of address space the process has mapped (its libraries, stacks,
 // heap), or 0 when /proc cannot tell.
@@ -144,7 +163,10 @@ uint64_t mapped_bytes() {
     return read == 1 ? pages * uint64_t(sysconf(_SC_PAGESIZE)) : 0;
 }
 
-[[noreturn]] void run_child(int fd, uint64_t packed_size, const std::function<Model()>& read) {
+[[noreturn]] void run_child(int fd, uint64_t packed_size, const std::function<Model()>& read,
+                            ChildState* state) {
+    child_state = state;
+    std::set_new_handler(note_failed_allocation);
     // A small crafted file can make a reader work without end (3MF objects
     // whose components reuse each other expand into a full tree): two minutes
     // of CPU, far beyond any real file, then SIGXCPU - a crash the parent
@@ -152,18 +174,17 @@ uint64_t mapped_bytes() {
     constexpr rlim_t kCpuSeconds = 120;
     const struct rlimit cpu = {kCpuSeconds, kCpuSeconds};
     setrlimit(RLIMIT_CPU, &cpu);
-    // Memory: an allocation past the budget fails (std::bad_alloc, below).
-    // An existing lower limit stays. Without /proc, no limit: the budget
-    // would have nothing to add to.
+    // Memory: an allocation past the budget fails (std::bad_alloc). An
+    // existing lower limit stays. Without /proc, no limit: the budget would
+    // have nothing to add to.
     const uint64_t mapped = mapped_bytes();
     struct rlimit memory {};
-    bool budgeted = false;  // a failed allocation then means the file's, not the machine's
     if (packed_size > 0 && mapped > 0 && getrlimit(RLIMIT_AS, &memory) == 0 &&
         packed_memory_budget(packed_size) < RLIM_INFINITY - mapped) {
         const rlim_t budget = mapped + packed_memory_budget(packed_size);
         if (memory.rlim_cur == RLIM_INFINITY || budget < memory.rlim_cur) {
             memory.rlim_cur = budget;
-            budgeted = setrlimit(RLIMIT_AS, &memory) == 0;
+            state->budgeted.store(setrlimit(RLIMIT_AS, &memory) == 0);
         }
     }
     std::string answer;
@@ -175,20 +196,32 @@ uint64_t mapped_bytes() {
         out.text(error.what());
         answer = out.data();
     } catch (const std::bad_alloc&) {
-        if (!budgeted) _exit(kChildOutOfMemory);
-        Writer out;
-        out.value(Outcome::kReadError);
-        out.text("the reader ran out of its memory (" +
-                 std::to_string(packed_memory_budget(packed_size) >> 20) +
-                 " MiB): the file expands beyond what a mesh of its size can hold (a zip "
-                 "bomb?), or is corrupt");
-        answer = out.data();
+        state->allocation_failed.store(1);  // also when thrown without an allocation
+        _exit(1);                           // the parent reads the shared state first
     } catch (...) {
         _exit(2);  // worse: the parent reports the exit status
     }
     write_all(fd, answer);
     _exit(0);
 }
+
+// The shared page of a child's state, unmapped when the parent is done with it.
+class SharedChildState {
+public:
+    SharedChildState() {
+        void* memory = mmap(nullptr, sizeof(ChildState), PROT_READ | PROT_WRITE,
+                            MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+        if (memory == MAP_FAILED) throw std::bad_alloc();
+        state_ = new (memory) ChildState;
+    }
+    ~SharedChildState() { munmap(state_, sizeof(ChildState)); }
+    SharedChildState(const SharedChildState&) = delete;
+    SharedChildState& operator=(const SharedChildState&) = delete;
+    ChildState* get() const { return state_; }
+
+private:
+    ChildState* state_;
+};
 
 }  // namespace
 
@@ -201,6 +234,7 @@ uint64_t packed_memory_budget(uint64_t packed_size) {
 }
 
 Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
+    const SharedChildState state;
     int pipe_ends[2];
     if (pipe(pipe_ends) != 0) throw ReadError(std::string("pipe: ") + std::strerror(errno));
     const pid_t child = fork();
@@ -211,7 +245,7 @@ Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
     }
     if (child == 0) {
         close(pipe_ends[0]);
-        run_child(pipe_ends[1], packed_size, read);
+        run_child(pipe_ends[1], packed_size, read, state.get());
     }
     close(pipe_ends[1]);
     const std::string answer = read_all(pipe_ends[0]);
@@ -219,12 +253,19 @@ Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
     int status = 0;
     while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
     }
+    if (state.get()->allocation_failed.load()) {
+        // Under the file's budget, the file asked for more than a mesh of its
+        // size can; otherwise the machine's memory ran out: the tool's
+        // out-of-memory ending, not a file that cannot be read.
+        if (!state.get()->budgeted.load()) throw std::bad_alloc();
+        throw ReadError("the reader ran out of its memory (" +
+                        std::to_string(packed_memory_budget(packed_size) >> 20) +
+                        " MiB): the file expands beyond what a mesh of its size can hold (a zip "
+                        "bomb?), or is corrupt");
+    }
     if (WIFSIGNALED(status))
         throw ReadError(std::string("the reader crashed on this file (") +
                         strsignal(WTERMSIG(status)) + "): it is corrupt or not of its format");
-    // The child's memory ran out: the tool's out-of-memory ending, not a
-    // file that cannot be read.
-    if (WIFEXITED(status) && WEXITSTATUS(status) == kChildOutOfMemory) throw std::bad_alloc();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw ReadError("the reader failed (exit status " + std::to_string(WEXITSTATUS(status)) +
                         ")");
