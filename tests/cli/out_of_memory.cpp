@@ -90,7 +90,10 @@ void* allocate_or_null(std::size_t size) noexcept {
 // dropped.
 class Capture : public std::streambuf {
 public:
-    Capture() { setp(buffer_, buffer_ + sizeof buffer_); }
+    Capture() { clear(); }
+    Capture(const Capture&) = delete;
+    Capture& operator=(const Capture&) = delete;
+    void clear() { setp(buffer_, buffer_ + sizeof buffer_); }
     std::string_view text() const { return {pbase(), std::size_t(pptr() - pbase())}; }
 
 protected:
@@ -116,8 +119,8 @@ Run run_tool(const std::string& file, long n) {
     const char* argv[] = {"polymass", file.c_str()};
     const Arguments arguments = parse_arguments(2, argv);
     static Capture output, errors;  // too large for the stack of a sanitized build
-    output = Capture();
-    errors = Capture();
+    output.clear();
+    errors.clear();
     std::streambuf* out = std::cout.rdbuf(&output);
     std::streambuf* err = std::cerr.rdbuf(&errors);
     Run run;

@@ -32,6 +32,7 @@ import fixtures
 
 EXE = os.environ["POLYMASS_EXE"]
 WORK = Path(os.environ["POLYMASS_WORK_DIR"])
+SOURCE = Path(os.environ["POLYMASS_SOURCE_DIR"])
 
 EXIT_INVALID_MESH, EXIT_UNREADABLE = 1, 3
 MIB = 1 << 20
@@ -230,6 +231,21 @@ class Hostile(unittest.TestCase):
                 package.writestr(name, data)
         self.append_deflated(path, model_name, head, block, repeats, tail, crc, size)
         self.expect_unreadable(path, "inflate to more than")
+
+    # -- Collada ------------------------------------------------------------
+
+    @unittest.skipIf(
+        SANITIZED,
+        "AddressSanitizer's operator new ends the process when memory runs out, where the "
+        "reader's budget relies on std::bad_alloc",
+    )
+    def test_collada_accessor_without_count(self):
+        # A fuzzer's find (tests/fuzz/dae/open/): a box whose <accessor> has
+        # no count, from which assimp allocates and fills 2.2 GB. The reader's
+        # memory is bounded by the file's size (256 MiB and 64 bytes a byte
+        # of it), where it stops.
+        path = SOURCE / "tests/fuzz/dae/open/found_accessor_without_count_2GB.dae"
+        self.expect_unreadable(path, "ran out of its memory", extra_memory=320 * MIB)
 
     # -- robot descriptions -------------------------------------------------
 

@@ -22,7 +22,7 @@ Model read_stl(FileBytes file);
 // node transforms applied, one part per node with a mesh.
 Model read_gltf(const std::string& path);
 // 3MF through lib3mf: transforms applied, one part per build item; a package
-// whose parts inflate past packed_memory_budget(packed_size) (its size) is
+// whose parts inflate past reader_memory_budget(packed_size) (its size) is
 // refused.
 Model read_3mf(const std::string& path, uint64_t packed_size);
 // Collada through assimp: its <unit> and <up_axis> applied (metres, Z up),

@@ -163,7 +163,7 @@ uint64_t mapped_bytes() {
     return read == 1 ? pages * uint64_t(sysconf(_SC_PAGESIZE)) : 0;
 }
 
-[[noreturn]] void run_child(int fd, uint64_t packed_size, const std::function<Model()>& read,
+[[noreturn]] void run_child(int fd, uint64_t file_size, const std::function<Model()>& read,
                             ChildState* state) {
     child_state = state;
     std::set_new_handler(note_failed_allocation);
@@ -179,9 +179,9 @@ uint64_t mapped_bytes() {
     // have nothing to add to.
     const uint64_t mapped = mapped_bytes();
     struct rlimit memory {};
-    if (packed_size > 0 && mapped > 0 && getrlimit(RLIMIT_AS, &memory) == 0 &&
-        packed_memory_budget(packed_size) < RLIM_INFINITY - mapped) {
-        const rlim_t budget = mapped + packed_memory_budget(packed_size);
+    if (file_size > 0 && mapped > 0 && getrlimit(RLIMIT_AS, &memory) == 0 &&
+        reader_memory_budget(file_size) < RLIM_INFINITY - mapped) {
+        const rlim_t budget = mapped + reader_memory_budget(file_size);
         if (memory.rlim_cur == RLIM_INFINITY || budget < memory.rlim_cur) {
             memory.rlim_cur = budget;
             state->budgeted.store(setrlimit(RLIMIT_AS, &memory) == 0);
@@ -225,15 +225,15 @@ private:
 
 }  // namespace
 
-uint64_t packed_memory_budget(uint64_t packed_size) {
+uint64_t reader_memory_budget(uint64_t file_size) {
     constexpr uint64_t kBase = uint64_t(256) << 20;
-    constexpr uint64_t kBytesPerPackedByte = 64;
-    return packed_size > (UINT64_MAX - kBase) / kBytesPerPackedByte
+    constexpr uint64_t kBytesPerFileByte = 64;
+    return file_size > (UINT64_MAX - kBase) / kBytesPerFileByte
                ? UINT64_MAX
-               : kBase + kBytesPerPackedByte * packed_size;
+               : kBase + kBytesPerFileByte * file_size;
 }
 
-Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
+Model read_isolated(const std::function<Model()>& read, uint64_t file_size) {
     const SharedChildState state;
     int pipe_ends[2];
     if (pipe(pipe_ends) != 0) throw ReadError(std::string("pipe: ") + std::strerror(errno));
@@ -245,7 +245,7 @@ Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
     }
     if (child == 0) {
         close(pipe_ends[0]);
-        run_child(pipe_ends[1], packed_size, read, state.get());
+        run_child(pipe_ends[1], file_size, read, state.get());
     }
     close(pipe_ends[1]);
     const std::string answer = read_all(pipe_ends[0]);
@@ -259,9 +259,9 @@ Model read_isolated(const std::function<Model()>& read, uint64_t packed_size) {
         // out-of-memory ending, not a file that cannot be read.
         if (!state.get()->budgeted.load()) throw std::bad_alloc();
         throw ReadError("the reader ran out of its memory (" +
-                        std::to_string(packed_memory_budget(packed_size) >> 20) +
-                        " MiB): the file expands beyond what a mesh of its size can hold (a zip "
-                        "bomb?), or is corrupt");
+                        std::to_string(reader_memory_budget(file_size) >> 20) +
+                        " MiB for a file of this size): it expands beyond what a mesh of its "
+                        "size can hold (a zip bomb, an element count that lies), or is corrupt");
     }
     if (WIFSIGNALED(status))
         throw ReadError(std::string("the reader crashed on this file (") +

@@ -86,8 +86,10 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         const uint64_t size = regular_file_size(path);
         model = read_isolated([&] { return read_3mf(path, size); }, size);
     } else if (name == "dae") {
-        regular_file_size(path);  // as for glTF
-        model = read_isolated([&] { return read_collada(path); });
+        // assimp trusts a Collada accessor's count (or fills gigabytes when it
+        // is missing): its memory is bounded as a 3MF's.
+        const uint64_t size = regular_file_size(path);
+        model = read_isolated([&] { return read_collada(path); }, size);
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
                                     "with one, or give --format (") +

@@ -142,7 +142,7 @@ void add_object(Model& model, Part& part, Instance object, const Transform& tran
 void check_declared_sizes(const std::string& path, uint64_t packed_size) {
     const unzFile package = unzOpen64(path.c_str());
     if (package == nullptr) return;
-    const uint64_t most = packed_memory_budget(packed_size);
+    const uint64_t most = reader_memory_budget(packed_size);
     uint64_t declared = 0;
     for (int at = unzGoToFirstFile(package); at == UNZ_OK; at = unzGoToNextFile(package)) {
         unz_file_info64 part{};
