@@ -1,8 +1,10 @@
 /* Throughput of libpolymass on large closed triangle meshes (torus grids far
    from the origin) at 1e5, 1e6 and 1e7 triangles: trusted (topology checks
-   skipped) with float64 and with float32 positions, and fully checked; each
-   against a read-bandwidth probe that sums the very arrays the library reads,
-   on one thread and on two. Runs are interleaved (every path once per round)
+   skipped) with float64 and with float32 positions, and fully checked, each on
+   one thread and on two (polymass_options.threads); each against a
+   read-bandwidth probe that sums the very arrays the library reads, on one
+   thread and on two, a two-thread figure also against its one-thread one,
+   and the checked path against the trusted one. Runs are interleaved (every path once per round)
    and the median of the rounds is printed, as M triangles/s and as a fraction
    of the one-thread read bound. Prints figures; asserts nothing about speed.
    Usage: bench_mass_properties [rounds] [largest triangle count] */
@@ -100,8 +102,10 @@ static double probe_seconds(const polymass_mesh_desc* desc, int threads, double*
 }
 
 static double compute_seconds(polymass_context* context, const polymass_mesh_desc* desc,
-                              uint32_t flags, double* checksum) {
-    polymass_options options = {sizeof options, flags, 0.0};
+                              uint32_t flags, uint32_t threads, double* checksum) {
+    polymass_options options = POLYMASS_OPTIONS_INIT;
+    options.flags = flags;
+    options.threads = threads;
     polymass_context_set_options(context, &options);
     polymass_mass_properties out = {sizeof out};
     const double start = now_seconds();
@@ -125,10 +129,36 @@ static double median(double* values, int count) {
     return count % 2 ? values[count / 2] : 0.5 * (values[count / 2 - 1] + values[count / 2]);
 }
 
-enum { read_1_f64, read_2_f64, read_1_f32, trusted_f64, trusted_f32, checked, measures };
+enum {
+    read_1_f64,
+    read_2_f64,
+    read_1_f32,
+    trusted_f64,
+    trusted_f64_2,
+    trusted_f32,
+    trusted_f32_2,
+    checked,
+    checked_2,
+    measures
+};
 static const char* const names[measures] = {
-    "read probe, 1 thread", "read probe, 2 threads", "read probe, 1 thread, float32",
-    "trusted, float64",     "trusted, float32",      "checked (topology), float64"};
+    "read probe, 1 thread",          "read probe, 2 threads",
+    "read probe, 1 thread, float32", "trusted, float64",
+    "trusted, float64, 2 threads",   "trusted, float32",
+    "trusted, float32, 2 threads",   "checked (topology), float64",
+    "checked, float64, 2 threads"};
+/* What each measure is compared with: the 1-thread read bound of its arrays,
+   and for a library path on two threads, the same path on one. */
+static int read_bound_of(int m) {
+    return m == trusted_f32 || m == trusted_f32_2 || m == read_1_f32 ? read_1_f32 : read_1_f64;
+}
+static int one_thread_of(int m) {
+    return m == read_2_f64      ? read_1_f64
+           : m == trusted_f64_2 ? trusted_f64
+           : m == trusted_f32_2 ? trusted_f32
+           : m == checked_2     ? checked
+                                : -1;
+}
 
 static void run(size_t wanted, int rounds, polymass_context* context) {
     const uint32_t segments = 500, rings = (uint32_t)(wanted / (2.0 * segments));
@@ -155,14 +185,16 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
     double checksum = 0;
     for (int r = 0; r < rounds; ++r) {
         double* s = seconds + (size_t)r * measures;
+        const uint32_t trusted = POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
         s[read_1_f64] = probe_seconds(&desc, 1, &checksum);
-        s[trusted_f64] =
-            compute_seconds(context, &desc, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, &checksum);
+        s[trusted_f64] = compute_seconds(context, &desc, trusted, 1, &checksum);
         s[read_2_f64] = probe_seconds(&desc, 2, &checksum);
-        s[trusted_f32] =
-            compute_seconds(context, &float_desc, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, &checksum);
+        s[trusted_f64_2] = compute_seconds(context, &desc, trusted, 2, &checksum);
+        s[trusted_f32] = compute_seconds(context, &float_desc, trusted, 1, &checksum);
         s[read_1_f32] = probe_seconds(&float_desc, 1, &checksum);
-        s[checked] = compute_seconds(context, &desc, 0, &checksum);
+        s[trusted_f32_2] = compute_seconds(context, &float_desc, trusted, 2, &checksum);
+        s[checked] = compute_seconds(context, &desc, 0, 1, &checksum);
+        s[checked_2] = compute_seconds(context, &desc, 0, 2, &checksum);
     }
     double medians[measures];
     for (int m = 0; m < measures; ++m) {
@@ -175,10 +207,15 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
     printf("%zu triangles (median of %d interleaved rounds; checksum %.6g)\n", triangles, rounds,
            checksum);
     for (int m = 0; m < measures; ++m) {
-        /* float32 against the probe of the float32 arrays, the rest against float64's */
-        const int bound = m == trusted_f32 || m == read_1_f32 ? read_1_f32 : read_1_f64;
-        printf("  %-32s %9.3f ms %8.1f M triangles/s  %5.2f of the 1-thread read bound\n", names[m],
-               1e3 * medians[m], (double)triangles / medians[m] / 1e6, medians[bound] / medians[m]);
+        printf("  %-32s %9.3f ms %8.1f M triangles/s  %5.2f of the 1-thread read bound", names[m],
+               1e3 * medians[m], (double)triangles / medians[m] / 1e6,
+               medians[read_bound_of(m)] / medians[m]);
+        if (one_thread_of(m) >= 0)
+            printf("  %4.2fx one thread", medians[one_thread_of(m)] / medians[m]);
+        if (m == checked || m == checked_2)
+            printf("  %4.2f of trusted",
+                   medians[m == checked ? trusted_f64 : trusted_f64_2] / medians[m]);
+        printf("\n");
     }
     free(seconds);
     free(indices);
