@@ -2,11 +2,14 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <memory_resource>
 #include <unordered_map>
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
+#include "radix_sort.hpp"
 #include "surface_triangles.hpp"
 #include "triangle_contact.hpp"
 #include "volume_integrals.hpp"
@@ -119,6 +122,12 @@ private:
 // same order (itself when none is lower), and how many share them: copies of a
 // part stacked in place, or a surface exported twice, meet every other
 // triangle alike, so a contact found for one copy holds for all.
+//
+// Triangles are first sorted by a hash of their nine coordinates and then by
+// index (one 64-bit key each, sorted in linear time): copies hash alike, so
+// only triangles of one hash, nearly always alone, are compared coordinate by
+// coordinate. Sorting every triangle by its coordinates took 40 % of the
+// intersection check of a million-triangle sphere.
 template <class TriangleAt>
 void find_shapes(std::size_t count, const TriangleAt& triangle,
                  std::pmr::vector<std::uint32_t>& shape_of,
@@ -130,21 +139,50 @@ void find_shapes(std::size_t count, const TriangleAt& triangle,
             for (int c = 0; c < 3; ++c) flat[3 * k + c] = corners[k][c];
         return flat;
     };
-    std::pmr::vector<std::uint32_t> order(count, shape_of.get_allocator());
-    for (std::uint32_t t = 0; t < count; ++t) order[t] = t;
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const auto ca = coordinates(a), cb = coordinates(b);
-        return ca < cb || (ca == cb && a < b);
-    });
+    auto hash = [](const std::array<double, 9>& flat) {
+        std::uint64_t h = 0x9e3779b97f4a7c15u;
+        for (double x : flat) {
+            const double zero_as_plus = x + 0.0;  // -0 == +0: one hash
+            std::uint64_t bits;
+            std::memcpy(&bits, &zero_as_plus, sizeof bits);
+            h = (h ^ bits) * 0xff51afd7ed558ccdu;
+            h ^= h >> 32;
+        }
+        return h;
+    };
+    std::pmr::memory_resource* memory = shape_of.get_allocator().resource();
+    std::pmr::vector<std::uint64_t> keys(count, memory);
+    for (std::uint32_t t = 0; t < count; ++t)
+        keys[t] = (hash(coordinates(t)) & 0xffffffff00000000u) | t;
+    radix_sort(keys.data(), keys.data() + keys.size(), memory);
+    auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
     shape_of.assign(count, 0);
     copies.assign(count, 1);
+    std::pmr::vector<std::uint32_t> order(memory);
     for (std::size_t k = 0; k < count;) {
         std::size_t end = k + 1;
-        const auto first = coordinates(order[k]);
-        while (end < count && coordinates(order[end]) == first) ++end;
-        for (std::size_t m = k; m < end; ++m) {
-            shape_of[order[m]] = order[k];
-            copies[order[m]] = std::uint32_t(end - k);
+        while (end < count && keys[end] >> 32 == keys[k] >> 32) ++end;
+        if (end - k == 1) {
+            shape_of[triangle_of(k)] = triangle_of(k);
+            k = end;
+            continue;
+        }
+        // Triangles of one hash: by coordinates, then index.
+        order.clear();
+        for (std::size_t m = k; m < end; ++m) order.push_back(triangle_of(m));
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+            const auto ca = coordinates(a), cb = coordinates(b);
+            return ca < cb || (ca == cb && a < b);
+        });
+        for (std::size_t first = 0; first < order.size();) {
+            std::size_t last = first + 1;
+            const auto at = coordinates(order[first]);
+            while (last < order.size() && coordinates(order[last]) == at) ++last;
+            for (std::size_t m = first; m < last; ++m) {
+                shape_of[order[m]] = order[first];
+                copies[order[m]] = std::uint32_t(last - first);
+            }
+            first = last;
         }
         k = end;
     }
