@@ -278,8 +278,13 @@ ExitCode run_check(const Arguments& arguments) {
         prepare_model(model, arguments);
         const Part all = combined_part(model);
         const CheckResult check = check_solid(library, model, all);
-        const ShellView shells{shell_of_each_face(library, model, all),
-                               shell_list(library, model, all)};
+        std::vector<uint32_t> shell_of_face = shell_of_each_face(library, model, all);
+        const uint64_t shell_count =
+            shell_of_face.empty()
+                ? 0
+                : uint64_t(*std::max_element(shell_of_face.begin(), shell_of_face.end())) + 1;
+        const ShellView shells{std::move(shell_of_face),
+                               shell_list(library, model, all, shell_count)};
         const SolidResult answer = answer_of(library, model, all);
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json) {

@@ -115,19 +115,23 @@ std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& mo
     return shells;
 }
 
-std::vector<polymass_shell> shell_list(const Library& library, const Model& model,
-                                       const Part& part) {
+std::vector<polymass_shell> shell_list(const Library& library, const Model& model, const Part& part,
+                                       uint64_t expected_count) {
     const polymass_mesh_desc desc = describe(model, part);
-    uint64_t count = 0;
-    int32_t status = polymass_mesh_shell_list(nullptr, 0, &count, library.context(), &desc);
-    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
-    if (status != POLYMASS_OK) return {};
     polymass_shell blank{};
     blank.struct_size = sizeof blank;
-    std::vector<polymass_shell> shells(count, blank);
-    status = polymass_mesh_shell_list(shells.data(), count, &count, library.context(), &desc);
+    std::vector<polymass_shell> shells(expected_count, blank);
+    uint64_t count = 0;
+    int32_t status =
+        polymass_mesh_shell_list(shells.data(), shells.size(), &count, library.context(), &desc);
+    if (status == POLYMASS_OK && count > shells.size()) {
+        shells.assign(count, blank);
+        status = polymass_mesh_shell_list(shells.data(), shells.size(), &count, library.context(),
+                                          &desc);
+    }
     if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (status != POLYMASS_OK) return {};
+    shells.resize(count);
     return shells;
 }
 

@@ -63,8 +63,11 @@ std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& mo
 // Each shell of a part as the library judges it (a solid, a cavity, inside
 // out, overlapping, no volume); empty when the surface fails the checks that
 // come before the shells (open, non-manifold, ...: the check says which).
-std::vector<polymass_shell> shell_list(const Library& library, const Model& model,
-                                       const Part& part);
+// expected_count: how many shells the caller expects (shell_of_each_face
+// tells), so that one call of the library, which checks the whole surface,
+// usually does.
+std::vector<polymass_shell> shell_list(const Library& library, const Model& model, const Part& part,
+                                       uint64_t expected_count);
 
 // The name of a polymass_shell.kind in the tool's reports.
 const char* shell_kind_name(int32_t kind);
