@@ -64,9 +64,12 @@ __attribute__((always_inline)) inline bool integrate_gathered(
                     : groups_of<Wide>;
         add_unscaled_triangle_sums(sums, p, edges.delta, groups);
 
-        Wide squared_norm{}, e1_squared{}, e2_squared{};
-#pragma GCC unroll 3
-        for (int axis = 0; axis < 3; ++axis) {
+        // Started from the first square rather than from zero: 0 + a² is a²
+        // exactly (a square is never −0), one addition fewer each.
+        Wide squared_norm = edges.delta[0] * edges.delta[0];
+        Wide e1_squared = edges.e1[0] * edges.e1[0], e2_squared = edges.e2[0] * edges.e2[0];
+#pragma GCC unroll 2
+        for (int axis = 1; axis < 3; ++axis) {
             squared_norm += edges.delta[axis] * edges.delta[axis];
             e1_squared += edges.e1[axis] * edges.e1[axis];
             e2_squared += edges.e2[axis] * edges.e2[axis];
