@@ -8,8 +8,8 @@
 #include <cstddef>
 
 #include "face_blocks.hpp"
+#include "instruction_sets.hpp"
 #include "lanes.hpp"
-#include "mesh_integration.hpp"
 #include "mesh_view.hpp"
 
 namespace polymass::core {
