@@ -8,7 +8,7 @@
 // same bits. Baseline x86-64 code runs a Lanes operation as two SSE2
 // instructions, the AVX2 kernel as one, the AVX-512 kernel a WideLanes
 // operation as one. The shipped library is built for the baseline: wider code
-// is only ever chosen at run time (mesh_integration.cpp).
+// is only ever chosen at run time (instruction_sets.hpp).
 //
 // Loops over the axes or vertices of arrays of Lanes carry `#pragma GCC
 // unroll 3` (Clang honours it too): at -O2 GCC keeps such a loop and, with its
