@@ -8,7 +8,7 @@
 // same bits. Baseline x86-64 code runs a Lanes operation as two SSE2
 // instructions, the AVX2 kernel as one, the AVX-512 kernel a WideLanes
 // operation as one. The shipped library is built for the baseline: wider code
-// is only ever chosen at run time (mesh_integration.cpp).
+// is only ever chosen at run time (instruction_sets.hpp).
 //
 // Loops over the axes or vertices of arrays of Lanes carry `#pragma GCC
 // unroll 3` (Clang honours it too): at -O2 GCC keeps such a loop and, with its
@@ -34,9 +34,6 @@ constexpr int groups_of = width_of<Vector> / lane_count;
 // Lanes are passed by reference, never by value: a function compiled for
 // another instruction set than its caller would disagree on how a vector is
 // passed (GCC's -Wpsabi warning), and at -O0 nothing is inlined.
-__attribute__((always_inline)) inline void load_lanes(Lanes& lanes, const double* values) {
-    std::memcpy(&lanes, values, sizeof lanes);
-}
 
 // Adds lane group `group` of a wider vector (or the whole of Lanes) to `sum`.
 template <class Vector>
@@ -53,11 +50,19 @@ template <class Vector>
 using MaskOf = decltype(Vector{} < Vector{});
 using LaneMask = MaskOf<Lanes>;
 
-template <class Mask>
-__attribute__((always_inline)) inline bool any_lane(const Mask& mask) {
-    auto any = mask[0];
-    for (int lane = 1; lane < int(sizeof(Mask) / sizeof(mask[0])); ++lane) any |= mask[lane];
-    return any != 0;
+// Whether any lane of a mask is set: halves or'ed together in registers (a
+// mask stored whole and read back a lane at a time waits for the store to
+// forward, on every lane group).
+__attribute__((always_inline)) inline bool any_lane(const LaneMask& mask) {
+    const auto pair =
+        __builtin_shufflevector(mask, mask, 0, 1) | __builtin_shufflevector(mask, mask, 2, 3);
+    return (pair[0] | pair[1]) != 0;
+}
+
+__attribute__((always_inline)) inline bool any_lane(const MaskOf<WideLanes>& mask) {
+    const LaneMask half = __builtin_shufflevector(mask, mask, 0, 1, 2, 3) |
+                          __builtin_shufflevector(mask, mask, 4, 5, 6, 7);
+    return any_lane(half);
 }
 
 __attribute__((always_inline)) inline double sum_lanes(const Lanes& lanes) {

@@ -6,35 +6,11 @@
 
 #include "lanes.hpp"
 #include "polygon_integrals.hpp"
+#include "triangle_gather.hpp"
 #include "triangle_integrals.hpp"
 
 namespace polymass::core {
 namespace {
-
-// A batch is a block of the summation: its lane sums are reduced before they
-// join the block's total, so rounding grows with the number of batches rather
-// than of triangles.
-constexpr std::size_t batch_capacity = 64;
-static_assert(batch_capacity % (2 * lane_count) == 0, "a batch holds whole wide lane groups");
-static_assert(kFacesPerBlock % batch_capacity == 0, "a block of triangles holds whole batches");
-
-// Where the triangles of a batch are: faces first_face, first_face + 1, ...
-// of an all-triangle mesh, or the listed faces of a mixed one. The kernel
-// reads their vertices straight into lanes and moves them into the
-// integration frame, (coordinate − reference) · inverse_unit.
-template <class Scalar, class Index>
-struct TriangleBatch {
-    PositionArray<Scalar> positions;
-    IndexArray<Index> indices;
-    std::size_t count = 0;                 // at most batch_capacity
-    std::size_t first_face = 0;            // when not listed
-    const std::size_t* faces = nullptr;    // listed faces, or nullptr
-    const std::size_t* corners = nullptr;  // their first corner's position in the index array
-    double reference[3];
-    double inverse_unit;  // a power of two: exact
-
-    std::size_t face(std::size_t slot) const { return faces ? faces[slot] : first_face + slot; }
-};
 
 struct BatchResult {
     FaceSums sums;
@@ -45,94 +21,95 @@ struct BatchResult {
     Finding degenerate_faces;
 };
 
-// Loads triangles first, first + 1, ... of the batch into p[axis][vertex],
-// one per lane, in the integration frame. A lane past the batch's end gets a
-// triangle with all three vertices at the reference point: zeros, which add
-// nothing (`full`: there is none).
-template <bool listed, bool full, class Wide, class Scalar, class Index>
-__attribute__((always_inline)) inline void load_triangles(const TriangleBatch<Scalar, Index>& batch,
-                                                          std::size_t first, Wide (&p)[3][3]) {
+// The closed forms over a gathered batch, `Wide` (one or two lane groups) at
+// a time. Each lane group joins the running sums in turn, so the sums are
+// those of one lane group at a time, in order, whatever Wide is.
+//
+// Slivers (measured without squaring) and degenerate triangles (reported) are
+// rare. The fast pass (`careful` false, for whole batches) only notes whether
+// the batch holds one, with no branch per lane group, and then returns false
+// without touching `result`: the batch is run again carefully. Both passes
+// give the same bits for every triangle that is neither.
+template <class Wide, bool careful, class Scalar, class Index>
+__attribute__((always_inline)) inline bool integrate_gathered(
+    const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
+    BatchResult& result) {
     constexpr int width = width_of<Wide>;
-    const std::size_t present = full ? width : batch.count - first;
-#pragma GCC unroll 3
-    for (int vertex = 0; vertex < 3; ++vertex) {
-        double c[3][width];
-#pragma GCC unroll 8
-        for (int lane = 0; lane < width; ++lane) {
-            if (!full && std::size_t(lane) >= present) {
-                for (int axis = 0; axis < 3; ++axis) c[axis][lane] = batch.reference[axis];
-                continue;
-            }
-            const std::size_t corner =
-                (listed ? batch.corners[first + lane] : 3 * (batch.first_face + first + lane)) +
-                vertex;
-            const Eigen::Vector3d position = batch.positions[batch.indices[corner]];
-            c[0][lane] = position.x(), c[1][lane] = position.y(), c[2][lane] = position.z();
-        }
-#pragma GCC unroll 3
-        for (int axis = 0; axis < 3; ++axis) {
-            Wide coordinate;
-            std::memcpy(&coordinate, c[axis], sizeof coordinate);
-            p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
-        }
-    }
-}
-
-// The closed forms over a batch, `Wide` (one or two lane groups) at a time.
-// Each lane group joins the running sums in turn, so the sums are those of
-// one lane group at a time, in order, whatever Wide is.
-template <class Wide, bool listed, class Scalar, class Index>
-__attribute__((always_inline)) inline void integrate_batch(
-    const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
-    constexpr int width = width_of<Wide>;
+    // Below 2^-1022 squares lose digits (down to none: a well-shaped triangle
+    // 1e-150 of the mesh's size squares to zero); above 2^-960 what they lose
+    // is under 2^-115 of the sum. So a small δ (coordinates are of order one
+    // here) is measured without squaring instead, rarely.
+    constexpr double squares_keep_digits = 0x1p-960;
     UnscaledTriangleSums<Lanes> sums;
     Lanes twice_areas{}, extents{};
+    // Over the fast pass: the smallest squared |δ| and twice area less the
+    // degeneracy threshold (1 is above the thresholds of both).
+    Wide smallest_norm = Wide{} + 1.0, smallest_margin = Wide{} + 1.0;
     for (std::size_t first = 0; first < batch.count; first += width) {
         Wide p[3][3];
-        if (first + width <= batch.count)
-            load_triangles<listed, true>(batch, first, p);
-        else
-            load_triangles<listed, false>(batch, first, p);
+#pragma GCC unroll 3
+        for (int axis = 0; axis < 3; ++axis)
+#pragma GCC unroll 3
+            for (int vertex = 0; vertex < 3; ++vertex) {
+                Wide coordinate;
+                std::memcpy(&coordinate, &gathered.coordinates[axis][vertex][first],
+                            sizeof coordinate);
+                p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
+            }
         const TriangleEdges<Wide> edges(p);
         // Lane groups past the batch's end add nothing; padding lanes add zeros.
-        const int groups = int(std::min<std::size_t>(
-            groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count));
+        const int groups =
+            careful ? int(std::min<std::size_t>(
+                          groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count))
+                    : groups_of<Wide>;
         add_unscaled_triangle_sums(sums, p, edges.delta, groups);
 
-        Wide squared_norm{}, e1_squared{}, e2_squared{};
-#pragma GCC unroll 3
-        for (int axis = 0; axis < 3; ++axis) {
+        // Started from the first square rather than from zero: 0 + a² is a²
+        // exactly (a square is never −0), one addition fewer each.
+        Wide squared_norm = edges.delta[0] * edges.delta[0];
+        Wide e1_squared = edges.e1[0] * edges.e1[0], e2_squared = edges.e2[0] * edges.e2[0];
+#pragma GCC unroll 2
+        for (int axis = 1; axis < 3; ++axis) {
             squared_norm += edges.delta[axis] * edges.delta[axis];
             e1_squared += edges.e1[axis] * edges.e1[axis];
             e2_squared += edges.e2[axis] * edges.e2[axis];
         }
         Wide twice_area;
         for (int lane = 0; lane < width; ++lane) twice_area[lane] = std::sqrt(squared_norm[lane]);
-        // Below 2^-1022 squares lose digits (down to none: a well-shaped
-        // triangle 1e-150 of the mesh's size squares to zero); above 2^-960
-        // what they lose is under 2^-115 of the sum. So a small δ (coordinates
-        // are of order one here) is measured without squaring instead, rarely.
-        constexpr double squares_keep_digits = 0x1p-960;
-        const MaskOf<Wide> sliver = squared_norm < squares_keep_digits;
         // A degenerate triangle is reported; its terms, at rounding level, stay:
-        // they are what keeps a closed surface's sum balanced. Slivers and
-        // degenerate triangles are rare: one test for both.
+        // they are what keeps a closed surface's sum balanced.
         const Wide extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
-        if (any_lane(sliver | (twice_area <= degenerate_area_ratio * extent_squared))) {
-            for (int lane = 0; lane < width; ++lane)
-                if (sliver[lane])
-                    twice_area[lane] = std::hypot(edges.delta[0][lane], edges.delta[1][lane],
-                                                  edges.delta[2][lane]);
-            const MaskOf<Wide> degenerate = twice_area <= degenerate_area_ratio * extent_squared;
-            const std::size_t used = std::min<std::size_t>(width, batch.count - first);
-            for (std::size_t lane = 0; lane < used; ++lane)
-                if (degenerate[lane]) result.degenerate_faces.record(batch.face(first + lane));
+        if constexpr (careful) {
+            if (any_lane((squared_norm < squares_keep_digits) |
+                         (twice_area <= degenerate_area_ratio * extent_squared))) {
+                for (int lane = 0; lane < width; ++lane)
+                    if (squared_norm[lane] < squares_keep_digits)
+                        twice_area[lane] = std::hypot(edges.delta[0][lane], edges.delta[1][lane],
+                                                      edges.delta[2][lane]);
+                const MaskOf<Wide> degenerate =
+                    twice_area <= degenerate_area_ratio * extent_squared;
+                const std::size_t used = std::min<std::size_t>(width, batch.count - first);
+                for (std::size_t lane = 0; lane < used; ++lane)
+                    if (degenerate[lane]) result.degenerate_faces.record(batch.face(first + lane));
+            }
+        } else {
+            // Minima rather than or'ed masks, which compilers build a lane at
+            // a time. The margin is ≤ 0 wherever the test above holds (and at
+            // worst also where it does not, when the subtraction underflows
+            // to zero under flush-to-zero: a needless careful pass).
+            smallest_norm = squared_norm < smallest_norm ? squared_norm : smallest_norm;
+            const Wide margin = twice_area - degenerate_area_ratio * extent_squared;
+            smallest_margin = margin < smallest_margin ? margin : smallest_margin;
         }
         for (int group = 0; group < groups; ++group) {
             add_lane_group(twice_areas, twice_area, group);
             add_lane_group(extents, extent_squared, group);
         }
     }
+    if (!careful)
+        for (int lane = 0; lane < width; ++lane)
+            if (smallest_norm[lane] < squares_keep_digits || smallest_margin[lane] <= 0.0)
+                return false;
     result.surface_area += sum_lanes(twice_areas) / 2.0;
     result.extents_squared += sum_lanes(extents);
     UnscaledTriangleSums<double> reduced;
@@ -143,41 +120,46 @@ __attribute__((always_inline)) inline void integrate_batch(
         reduced.mixed[axis] = sum_lanes(sums.mixed[axis]);
     }
     result.sums += scaled(reduced);
+    return true;
 }
 
 template <class Wide, class Scalar, class Index>
-__attribute__((always_inline)) inline void integrate_any_batch(
-    const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
-    if (batch.faces)
-        integrate_batch<Wide, true>(batch, result);
-    else
-        integrate_batch<Wide, false>(batch, result);
+__attribute__((always_inline)) inline void integrate_batch(
+    const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
+    BatchResult& result) {
+    if (batch.count == batch_capacity && integrate_gathered<Wide, false>(batch, gathered, result))
+        return;
+    integrate_gathered<Wide, true>(batch, gathered, result);
 }
 
 // The kernel built for each instruction set. No FMA: a fused multiply-add
 // rounds once where the baseline rounds twice (and the file is compiled with
 // -ffp-contract=off, so that no other target fuses either).
 template <class Scalar, class Index>
-void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
-    integrate_any_batch<Lanes>(batch, result);
+void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch,
+                              const GatheredTriangles& gathered, BatchResult& result) {
+    integrate_batch<Lanes>(batch, gathered, result);
 }
 
 #if defined(__x86_64__)
 template <class Scalar, class Index>
 __attribute__((target("avx2"))) void integrate_batch_avx2(const TriangleBatch<Scalar, Index>& batch,
+                                                          const GatheredTriangles& gathered,
                                                           BatchResult& result) {
-    integrate_any_batch<Lanes>(batch, result);
+    integrate_batch<Lanes>(batch, gathered, result);
 }
 
 template <class Scalar, class Index>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))) void integrate_batch_avx512(
-    const TriangleBatch<Scalar, Index>& batch, BatchResult& result) {
-    integrate_any_batch<WideLanes>(batch, result);
+    const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
+    BatchResult& result) {
+    integrate_batch<WideLanes>(batch, gathered, result);
 }
 #endif
 
 template <class Scalar, class Index>
-using BatchKernel = void (*)(const TriangleBatch<Scalar, Index>&, BatchResult&);
+using BatchKernel = void (*)(const TriangleBatch<Scalar, Index>&, const GatheredTriangles&,
+                             BatchResult&);
 
 template <class Scalar, class Index>
 BatchKernel<Scalar, Index> batch_kernel(InstructionSet set) {
@@ -220,7 +202,9 @@ class BlockIntegrator {
 public:
     BlockIntegrator(const MeshView<Scalar, Index>& mesh, const IntegrationSettings& settings,
                     double unit)
-        : settings_(settings), kernel_(batch_kernel<Scalar, Index>(settings.instruction_set)) {
+        : settings_(settings),
+          gatherer_(triangle_gatherer<Scalar, Index>(settings.instruction_set)),
+          kernel_(batch_kernel<Scalar, Index>(settings.instruction_set)) {
         batch_.positions = mesh.positions;
         batch_.indices = mesh.indices;
         for (int axis = 0; axis < 3; ++axis) batch_.reference[axis] = settings.reference[axis];
@@ -279,7 +263,8 @@ public:
 private:
     void flush_triangles() {
         BatchResult batch_result;
-        kernel_(batch_, batch_result);
+        gatherer_(batch_, gathered_);
+        kernel_(batch_, gathered_, batch_result);
         block_.sums += batch_result.sums;
         block_.surface_area += batch_result.surface_area;
         block_.extents_squared += batch_result.extents_squared;
@@ -289,8 +274,10 @@ private:
     }
 
     const IntegrationSettings& settings_;
+    const TriangleGatherer<Scalar, Index> gatherer_;
     const BatchKernel<Scalar, Index> kernel_;
     TriangleBatch<Scalar, Index> batch_;
+    GatheredTriangles gathered_;
     std::size_t faces_[batch_capacity];
     std::size_t corners_[batch_capacity];
     BlockSums block_;
@@ -351,32 +338,6 @@ private:
 constexpr std::size_t blocks_per_round = 32;
 
 }  // namespace
-
-bool runs_instruction_set(InstructionSet set) {
-#if defined(__x86_64__)
-    switch (set) {
-        case InstructionSet::avx512:
-            return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-                   __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
-        case InstructionSet::avx2:
-            return __builtin_cpu_supports("avx2");
-        case InstructionSet::baseline:
-            return true;
-    }
-    return false;
-#else
-    return set == InstructionSet::baseline;
-#endif
-}
-
-InstructionSet widest_instruction_set() {
-    static const InstructionSet widest = [] {
-        for (InstructionSet set : {InstructionSet::avx512, InstructionSet::avx2})
-            if (runs_instruction_set(set)) return set;
-        return InstructionSet::baseline;
-    }();
-    return widest;
-}
 
 template <class Scalar, class Index>
 IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,

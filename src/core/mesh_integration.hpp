@@ -7,20 +7,12 @@
 
 #include "face_blocks.hpp"
 #include "findings.hpp"
+#include "instruction_sets.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
 #include "volume_integrals.hpp"
 
 namespace polymass::core {
-
-// The instruction sets the triangle kernel is built for: on x86-64 all three,
-// elsewhere the baseline only. Every one gives the same bits (lanes.hpp).
-enum class InstructionSet { baseline, avx2, avx512 };
-
-// Whether this processor (and its operating system) runs code built for `set`.
-bool runs_instruction_set(InstructionSet set);
-// The widest set it runs, found once.
-InstructionSet widest_instruction_set();
 
 struct IntegrationSettings {
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();  // integrate about this point

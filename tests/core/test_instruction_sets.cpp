@@ -3,7 +3,8 @@
 // alone) and whatever order its blocks of faces run in: random triangle
 // soups with partial batches, degenerate triangles and slivers, far from the
 // origin; polygon meshes with planar and non-planar faces; float positions
-// and 16-bit indices; and a mesh of more than one block of faces.
+// and 16-bit indices; a mesh of more than one block of faces; and a vertex
+// array that ends where an unreadable page begins.
 #include "core/mesh_integration.hpp"
 
 #include "check.hpp"
@@ -17,6 +18,11 @@
 #include <functional>
 #include <random>
 #include <vector>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace {
 
@@ -147,6 +153,42 @@ TestMesh polygon_soup(std::size_t faces, std::mt19937_64& random) {
     return mesh;
 }
 
+#if defined(__unix__) || defined(__APPLE__)
+// A mesh whose vertex array ends where an unreadable page begins, its last
+// vertex used in a whole lane group: the wider sets load a vertex with a
+// masked load of four lanes, which must neither read past z nor fault.
+template <class Scalar>
+void check_last_vertex_before_unreadable_page(const TestMesh& mesh) {
+    const std::size_t page = std::size_t(sysconf(_SC_PAGESIZE));
+    const std::size_t bytes = mesh.coordinates.size() * sizeof(Scalar);
+    const std::size_t pages = (bytes + page - 1) / page;
+    void* const mapped = mmap(nullptr, (pages + 1) * page, PROT_READ | PROT_WRITE,
+                              MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    CHECK(mapped != MAP_FAILED);
+    if (mapped == MAP_FAILED) return;
+    unsigned char* const unreadable = static_cast<unsigned char*>(mapped) + pages * page;
+    CHECK(mprotect(unreadable, page, PROT_NONE) == 0);
+    unsigned char* const base = unreadable - bytes;
+    for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) {
+        const Scalar c = Scalar(mesh.coordinates[i]);
+        std::memcpy(base + i * sizeof(Scalar), &c, sizeof c);
+    }
+    TypedMesh<Scalar, std::uint32_t> typed(mesh);
+    typed.view.positions.base = base;
+    IntegrationSettings settings;
+    settings.size = 4.0;
+    polymass::core::SerialTaskRunner serial;
+    settings.instruction_set = InstructionSet::baseline;
+    const IntegrationResult expected = integrate_mesh(typed.view, settings, serial);
+    for (InstructionSet set : {InstructionSet::avx2, InstructionSet::avx512}) {
+        if (!polymass::core::runs_instruction_set(set)) continue;
+        settings.instruction_set = set;
+        CHECK(same_result(integrate_mesh(typed.view, settings, serial), expected));
+    }
+    munmap(mapped, (pages + 1) * page);
+}
+#endif
+
 }  // namespace
 
 int main() {
@@ -182,5 +224,11 @@ int main() {
                                           far, 4.0);
     check_all_sets<double, std::uint32_t>(
         "two blocks, polygons", polygon_soup(beyond_a_block, random), Eigen::Vector3d::Zero(), 6.0);
+#if defined(__unix__) || defined(__APPLE__)
+    // 64 triangles: one whole batch, the last vertex in its last lane group.
+    const TestMesh to_the_end = triangle_soup(64, Eigen::Vector3d::Zero(), random);
+    check_last_vertex_before_unreadable_page<double>(to_the_end);
+    check_last_vertex_before_unreadable_page<float>(to_the_end);
+#endif
     return polymass_test::finish("test_instruction_sets");
 }

@@ -1,0 +1,204 @@
+#include "triangle_gather.hpp"
+
+#include <Eigen/Core>
+#include <cstring>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
+namespace polymass::core {
+namespace {
+
+// The position in the index array of corner `corner` of the batch's triangle `slot`.
+template <bool listed, class Scalar, class Index>
+__attribute__((always_inline)) inline std::size_t corner_position(
+    const TriangleBatch<Scalar, Index>& batch, std::size_t slot, int corner) {
+    return (listed ? batch.corners[slot] : 3 * (batch.first_face + slot)) + std::size_t(corner);
+}
+
+// Slots [begin, count) one coordinate at a time, then the padding. The whole
+// batch for the baseline; the slots short of a whole group for the others.
+template <bool listed, class Scalar, class Index>
+void gather_one_by_one(const TriangleBatch<Scalar, Index>& batch, std::size_t begin,
+                       GatheredTriangles& gathered) {
+    for (std::size_t slot = begin; slot < batch.count; ++slot)
+        for (int corner = 0; corner < 3; ++corner) {
+            const Eigen::Vector3d position =
+                batch.positions[batch.indices[corner_position<listed>(batch, slot, corner)]];
+            for (int axis = 0; axis < 3; ++axis)
+                gathered.coordinates[axis][corner][slot] = position[axis];
+        }
+    const std::size_t padded = (batch.count + gathered_group - 1) / gathered_group * gathered_group;
+    for (std::size_t slot = batch.count; slot < padded; ++slot)
+        for (int corner = 0; corner < 3; ++corner)
+            for (int axis = 0; axis < 3; ++axis)
+                gathered.coordinates[axis][corner][slot] = batch.reference[axis];
+}
+
+template <class Scalar, class Index>
+void gather_baseline(const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
+    if (batch.faces)
+        gather_one_by_one<true>(batch, 0, gathered);
+    else
+        gather_one_by_one<false>(batch, 0, gathered);
+}
+
+#if defined(__x86_64__)
+// Rows x, y, z, 0 of lane_count triangles, transposed into x, y and z of
+// the triangles. Plain vector shuffles: each instruction set's compiler
+// turns them into its unpacks and permutes.
+__attribute__((always_inline)) inline void transpose_rows(const Lanes (&rows)[lane_count],
+                                                          Lanes (&axes)[3]) {
+    const Lanes xz01 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);  // x0 x1 z0 z1
+    const Lanes y01 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);   // y0 y1 0 0
+    const Lanes xz23 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
+    const Lanes y23 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
+    axes[0] = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
+    axes[1] = __builtin_shufflevector(y01, y23, 0, 1, 4, 5);
+    axes[2] = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
+}
+
+// Where the corners of a batch's triangles are, in locals: the stores into
+// GatheredTriangles could alias the batch's fields for all the compiler knows,
+// and it would read them again after each.
+template <bool listed, class Scalar, class Index>
+struct CornerSource {
+    const unsigned char* base;
+    std::size_t stride;
+    IndexArray<Index> indices;
+    std::size_t first_corner;    // when not listed
+    const std::size_t* corners;  // when listed
+
+    __attribute__((always_inline)) explicit CornerSource(const TriangleBatch<Scalar, Index>& batch)
+        : base(batch.positions.base),
+          stride(batch.positions.stride),
+          indices(batch.indices),
+          first_corner(3 * batch.first_face),
+          corners(batch.corners) {}
+
+    // The first coordinate of corner `corner` of the batch's triangle `slot`.
+    __attribute__((always_inline)) const unsigned char* vertex(std::size_t slot, int corner) const {
+        const std::size_t position =
+            (listed ? corners[slot] : first_corner + 3 * slot) + std::size_t(corner);
+        return base + std::size_t(indices[position]) * stride;
+    }
+};
+
+// The rows of a lane group's corners `corner`, stored transposed at `slot`.
+__attribute__((always_inline)) inline void store_transposed(const Lanes (&rows)[lane_count],
+                                                            GatheredTriangles& gathered, int corner,
+                                                            std::size_t slot) {
+    Lanes axes[3];
+    transpose_rows(rows, axes);
+#pragma GCC unroll 3
+    for (int axis = 0; axis < 3; ++axis)
+        std::memcpy(&gathered.coordinates[axis][corner][slot], &axes[axis], sizeof(Lanes));
+}
+
+// A vertex as x, y, z and a zero, in one register, for each wider set.
+// Masked loads: the lane past z is neither read nor able to fault, so the
+// last vertex of the array is read like any other. The AVX-512 gatherer
+// differs from the AVX2 one only in its masked load, which Zen 4 runs much
+// faster than AVX2's vmaskmovpd (the whole trusted path at 1e6 triangles,
+// 6.6 against 7.7 ns per triangle). Each has its own loop: a loop shared as a
+// template would have to inline code built for a wider set into code that is
+// not. Four rows at a time for both: a transpose of four 256-bit rows takes
+// fewer shuffle slots than one of eight in 512-bit registers, which Zen 4
+// runs as two halves.
+__attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const unsigned char* xyz,
+                                                                           double, Lanes& row) {
+    row = Lanes(_mm256_maskload_pd(reinterpret_cast<const double*>(xyz),
+                                   _mm256_setr_epi64x(-1, -1, -1, 0)));
+}
+
+__attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const unsigned char* xyz,
+                                                                           float, Lanes& row) {
+    row = Lanes(_mm256_cvtps_pd(
+        _mm_maskload_ps(reinterpret_cast<const float*>(xyz), _mm_setr_epi32(-1, -1, -1, 0))));
+}
+
+template <bool listed, class Scalar, class Index>
+__attribute__((target("avx2"))) void gather_avx2(const TriangleBatch<Scalar, Index>& batch,
+                                                 GatheredTriangles& gathered) {
+    const CornerSource<listed, Scalar, Index> source(batch);
+    std::size_t slot = 0;
+    for (; slot + lane_count <= batch.count; slot += lane_count)
+#pragma GCC unroll 3
+        for (int corner = 0; corner < 3; ++corner) {
+            Lanes rows[lane_count];
+#pragma GCC unroll 4
+            for (int lane = 0; lane < lane_count; ++lane)
+                vertex_row_avx2(source.vertex(slot + lane, corner), Scalar{}, rows[lane]);
+            store_transposed(rows, gathered, corner, slot);
+        }
+    gather_one_by_one<listed>(batch, slot, gathered);
+}
+
+template <class Scalar, class Index>
+__attribute__((target("avx2"))) void gather_avx2(const TriangleBatch<Scalar, Index>& batch,
+                                                 GatheredTriangles& gathered) {
+    if (batch.faces)
+        gather_avx2<true>(batch, gathered);
+    else
+        gather_avx2<false>(batch, gathered);
+}
+
+#define POLYMASS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw"
+
+__attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_avx512(
+    const unsigned char* xyz, double, Lanes& row) {
+    row = Lanes(_mm256_maskz_loadu_pd(0x7, xyz));
+}
+
+__attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_avx512(
+    const unsigned char* xyz, float, Lanes& row) {
+    row = Lanes(_mm256_cvtps_pd(_mm_maskz_loadu_ps(0x7, xyz)));
+}
+
+template <bool listed, class Scalar, class Index>
+__attribute__((target(POLYMASS_AVX512))) void gather_avx512(
+    const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
+    const CornerSource<listed, Scalar, Index> source(batch);
+    std::size_t slot = 0;
+    for (; slot + lane_count <= batch.count; slot += lane_count)
+#pragma GCC unroll 3
+        for (int corner = 0; corner < 3; ++corner) {
+            Lanes rows[lane_count];
+#pragma GCC unroll 4
+            for (int lane = 0; lane < lane_count; ++lane)
+                vertex_row_avx512(source.vertex(slot + lane, corner), Scalar{}, rows[lane]);
+            store_transposed(rows, gathered, corner, slot);
+        }
+    gather_one_by_one<listed>(batch, slot, gathered);
+}
+
+template <class Scalar, class Index>
+__attribute__((target(POLYMASS_AVX512))) void gather_avx512(
+    const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
+    if (batch.faces)
+        gather_avx512<true>(batch, gathered);
+    else
+        gather_avx512<false>(batch, gathered);
+}
+#undef POLYMASS_AVX512
+#endif
+
+}  // namespace
+
+template <class Scalar, class Index>
+TriangleGatherer<Scalar, Index> triangle_gatherer(InstructionSet set) {
+#if defined(__x86_64__)
+    if (set == InstructionSet::avx512) return gather_avx512<Scalar, Index>;
+    if (set == InstructionSet::avx2) return gather_avx2<Scalar, Index>;
+#endif
+    (void)set;
+    return gather_baseline<Scalar, Index>;
+}
+
+#define POLYMASS_INSTANTIATE(Scalar, Index) \
+    template TriangleGatherer<Scalar, Index> triangle_gatherer<Scalar, Index>(InstructionSet);
+POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
+#undef POLYMASS_INSTANTIATE
+
+}  // namespace polymass::core

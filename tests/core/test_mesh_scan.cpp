@@ -1,0 +1,112 @@
+// The scan's bounding box is that of the used, finite vertices, whichever way
+// the scan reads them (a vector of packed coordinates at a time, or vertex by
+// vertex): the same as a minimum and maximum taken vertex by vertex, down to
+// which zero a bound of zero is (the first such coordinate's, as a running
+// minimum that keeps its value on a tie gives), for double and float, packed
+// and strided positions, with unused and non-finite vertices among them.
+#include "core/mesh_scan.hpp"
+
+#include "check.hpp"
+
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory_resource>
+#include <random>
+#include <vector>
+
+namespace {
+
+bool same_bits(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
+
+// Positions (xyz per vertex, `stride` coordinates apart) and triangles over
+// every vertex but the unused ones.
+template <class Scalar>
+void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t stride,
+                  const std::vector<bool>& unused) {
+    const std::size_t vertices = unused.size();
+    std::vector<Scalar> positions(vertices * stride, Scalar(7));
+    for (std::size_t v = 0; v < vertices; ++v)
+        for (int axis = 0; axis < 3; ++axis)
+            positions[v * stride + axis] = Scalar(xyz[3 * v + axis]);
+    std::vector<std::uint32_t> indices;
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (!unused[v]) indices.push_back(std::uint32_t(v));
+    while (indices.size() % 3 != 0) indices.push_back(indices.back());
+
+    // Vertex by vertex, keeping the first of equal values.
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d high = -low;
+    for (std::size_t v = 0; v < vertices; ++v) {
+        const Eigen::Vector3d p{double(positions[v * stride]), double(positions[v * stride + 1]),
+                                double(positions[v * stride + 2])};
+        if (unused[v] || !p.allFinite()) continue;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (p[axis] < low[axis]) low[axis] = p[axis];
+            if (p[axis] > high[axis]) high[axis] = p[axis];
+        }
+    }
+
+    polymass::core::MeshView<Scalar, std::uint32_t> view;
+    view.positions.base = reinterpret_cast<const unsigned char*>(positions.data());
+    view.positions.stride = stride * sizeof(Scalar);
+    view.vertex_count = vertices;
+    view.indices.base = reinterpret_cast<const unsigned char*>(indices.data());
+    view.index_count = indices.size();
+    view.face_count = indices.size() / 3;
+    const polymass::core::MeshScan scan =
+        polymass::core::scan_mesh(view, std::pmr::get_default_resource());
+    bool same = true;
+    for (int axis = 0; axis < 3; ++axis)
+        same = same && same_bits(scan.bounds.min()[axis], low[axis]) &&
+               same_bits(scan.bounds.max()[axis], high[axis]);
+    if (!same) std::fprintf(stderr, "%s: the bounds differ\n", name);
+    CHECK(same);
+}
+
+template <class Scalar>
+void check_layouts(const char* name, const std::vector<double>& xyz,
+                   const std::vector<bool>& unused) {
+    check_bounds<Scalar>(name, xyz, 3, unused);
+    check_bounds<Scalar>(name, xyz, 5, unused);
+}
+
+}  // namespace
+
+int main() {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+    for (std::size_t vertices : {5, 64, 200, 1000}) {
+        std::vector<double> xyz(3 * vertices);
+        for (double& c : xyz) c = coordinate(random);
+        std::vector<bool> none(vertices, false), some(vertices, false);
+        for (std::size_t v = 3; v < vertices; v += 37) some[v] = true;
+        check_layouts<double>("random", xyz, none);
+        check_layouts<float>("random, float", xyz, none);
+        check_layouts<double>("random, some unused", xyz, some);
+
+        // Bounds of zero, reached by zeros of both signs: x ≥ 0 with −0 first
+        // and +0 later, y ≤ 0 with +0 first, z ≥ 0 with +0 first.
+        std::vector<double> zeros = xyz;
+        for (std::size_t v = 0; v < vertices; ++v) {
+            zeros[3 * v] = std::abs(zeros[3 * v]);
+            zeros[3 * v + 1] = -std::abs(zeros[3 * v + 1]);
+            zeros[3 * v + 2] = std::abs(zeros[3 * v + 2]);
+        }
+        for (std::size_t v = vertices / 3; v < vertices; v += 7) {
+            zeros[3 * v] = v == vertices / 3 ? -0.0 : 0.0;
+            zeros[3 * v + 1] = v == vertices / 3 ? 0.0 : -0.0;
+            zeros[3 * v + 2] = v == vertices / 3 ? 0.0 : -0.0;
+        }
+        check_layouts<double>("zeros", zeros, none);
+        check_layouts<float>("zeros, float", zeros, none);
+        check_layouts<double>("zeros, some unused", zeros, some);
+
+        // A non-finite vertex: its block is read vertex by vertex.
+        std::vector<double> infinite = zeros;
+        infinite[3 * (vertices / 2) + 1] = std::numeric_limits<double>::infinity();
+        check_layouts<double>("an infinite coordinate", infinite, none);
+    }
+    return polymass_test::finish("test_mesh_scan");
+}
