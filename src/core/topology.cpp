@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -55,6 +56,53 @@ void sort_bucket(Entry* first, Entry* last) {
     }
 }
 
+// Buckets of at most this many entries (most of a surface's: about six
+// each) are tested for common edges before, and usually instead of, sorting.
+constexpr std::size_t small_bucket = 8;
+// The test pads a small bucket with 0, 4, ..., 4 * (small_bucket - 1):
+// distinct, and neither equal nor a partner (one apart) to any entry of a
+// lower vertex from here on, whose entries are at least 2 * (low + 1).
+constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
+
+// Whether a small bucket, in any order, holds only common edges (each
+// traversed once each way and by no other face): all its entries distinct,
+// and n / 2 pairs of them partners (h << 1 and h << 1 | 1), so that every
+// higher vertex is there once up and once down. Every pair is compared,
+// four at a time and with no branch on the data, where a sort's branches
+// would be mispredicted about once an entry: the padded bucket is written
+// twice in a row, and each pair is met at the two shifts between its slots.
+// 32-bit entries only (64-bit ones, for meshes of billions, are sorted).
+bool small_bucket_of_common_edges(const std::uint32_t* first, std::size_t n) {
+    using Four = std::uint32_t __attribute__((vector_size(16)));
+    static_assert(small_bucket == 8, "two vectors of four");
+    std::uint32_t twice[2 * small_bucket] = {0, 4, 8, 12, 16, 20, 24, 28};
+    for (std::size_t i = 0; i < n; ++i) twice[i] = first[i];
+    std::memcpy(twice + small_bucket, twice, small_bucket * sizeof *twice);
+    Four low_half, high_half;
+    std::memcpy(&low_half, twice, sizeof low_half);
+    std::memcpy(&high_half, twice + 4, sizeof high_half);
+    Four partners{}, repeated{};
+#pragma GCC unroll 7
+    for (std::size_t shift = 1; shift < small_bucket; ++shift) {
+        Four low_shifted, high_shifted;
+        std::memcpy(&low_shifted, twice + shift, sizeof low_shifted);
+        std::memcpy(&high_shifted, twice + shift + 4, sizeof high_shifted);
+        const Four low_difference = low_half ^ low_shifted;
+        const Four high_difference = high_half ^ high_shifted;
+        // A comparison gives all bits set (-1) where it holds.
+        partners -= Four(low_difference == 1) + Four(high_difference == 1);
+        repeated |= Four(low_difference == 0) | Four(high_difference == 0);
+    }
+    const std::uint32_t pairs_twice = partners[0] + partners[1] + partners[2] + partners[3];
+    const std::uint32_t any_repeated = repeated[0] | repeated[1] | repeated[2] | repeated[3];
+    return any_repeated == 0 && pairs_twice == n;  // each partner pair counted twice
+}
+
+template <class Entry>
+bool small_bucket_of_common_edges(const Entry*, std::size_t) {
+    return false;
+}
+
 // Whether a sorted bucket holds only common edges, each traversed once each
 // way and by no other face: pairs (h << 1, h << 1 | 1), with h rising. That
 // every pair starts with an up (an even entry) also rules out a third
@@ -98,6 +146,12 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
         Entry* const first = entries + begin;
         Entry* const last = entries + end_of[low];
         begin = end_of[low];
+        const std::size_t size = std::size_t(last - first);
+        if (size <= small_bucket && low >= padded_from_low &&
+            small_bucket_of_common_edges(first, size)) {
+            report.edge_count += size / 2;
+            continue;
+        }
         sort_bucket(first, last);  // by higher vertex, ups (bit 0) before downs
         if (only_common_edges(first, last)) {
             report.edge_count += std::size_t(last - first) / 2;
