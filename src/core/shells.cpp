@@ -20,13 +20,15 @@ public:
     explicit ConcurrentSmallestIndexSets(std::pmr::vector<std::uint32_t>& parent)
         : parent_(parent.data()) {}
 
+    // Two steps at a time: a root and a root's child (most of what a search
+    // meets once paths are halved) both end at the first test, a branch
+    // that rarely goes the other way.
     std::uint32_t find(std::uint32_t index) const {
         for (;;) {
             const std::uint32_t parent = load(index);
-            if (parent == index) return index;
             const std::uint32_t grandparent = load(parent);
-            if (grandparent != parent)
-                __atomic_store_n(&parent_[index], grandparent, __ATOMIC_RELAXED);  // halving
+            if (grandparent == parent) return parent;
+            __atomic_store_n(&parent_[index], grandparent, __ATOMIC_RELAXED);  // halving
             index = grandparent;
         }
     }
@@ -52,6 +54,22 @@ private:
 
     std::uint32_t* parent_;
 };
+
+// Joins each face's vertices (a triangle's loop unrolled: the root stays in a
+// register).
+template <class Scalar, class Index, class VertexId>
+void join_faces(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std::size_t>& starts,
+                VertexId&& id, const ConcurrentSmallestIndexSets& sets, TaskRunner& tasks) {
+    tasks.run(starts.size(), [&](std::size_t block) {
+        for_each_face_of_block(mesh, block, starts[block],
+                               [&](std::size_t, std::size_t first, std::size_t size) {
+                                   std::uint32_t root = id(first);
+#pragma GCC unroll 4
+                                   for (std::size_t i = 1; i < size; ++i)
+                                       root = sets.join(root, id(first + i));
+                               });
+    });
+}
 
 // The roots among the identities the faces use: the used vertices that are
 // their own identity (weld_vertices maps a used vertex to the smallest used
@@ -80,17 +98,13 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     std::pmr::vector<std::uint32_t> parent(mesh.vertex_count, memory);
     std::iota(parent.begin(), parent.end(), 0u);
     const ConcurrentSmallestIndexSets sets(parent);
-    // Each face's vertices joined (a triangle's loop unrolled: the root stays
-    // in a register).
-    tasks.run(starts.size(), [&](std::size_t block) {
-        for_each_face_of_block(mesh, block, starts[block],
-                               [&](std::size_t, std::size_t first, std::size_t size) {
-                                   std::uint32_t root = id(first);
-#pragma GCC unroll 4
-                                   for (std::size_t i = 1; i < size; ++i)
-                                       root = sets.join(root, id(first + i));
-                               });
-    });
+    // Without welding, no test per index for the identities.
+    if (vertex_ids)
+        join_faces(mesh, starts, id, sets, tasks);
+    else
+        join_faces(
+            mesh, starts, [&](std::size_t position) { return mesh.indices[position]; }, sets,
+            tasks);
     Shells shells(memory);
     // Every set holds the identities of some faces' vertices, and its root is
     // one of them: the shells are as many as the roots among those
