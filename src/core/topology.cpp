@@ -69,33 +69,40 @@ constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
 // and n / 2 pairs of them partners (h << 1 and h << 1 | 1), so that every
 // higher vertex is there once up and once down. Every pair is compared,
 // four at a time and with no branch on the data, where a sort's branches
-// would be mispredicted about once an entry: the padded bucket is written
-// twice in a row, and each pair is met at the two shifts between its slots.
+// would be mispredicted about once an entry. The padded bucket's eight slots
+// against themselves turned by 1, 2 and 3 slots meet each pair of slots 1,
+// 2, 3, 5, 6 or 7 apart once; its first four against its last four, the
+// pairs 4 apart. (Turned in registers: loads straddling the stores of a
+// copy would wait for them.) The eight slots from `first` are read whatever
+// n is: the edge list has small_bucket slots of slack after its end.
 // 32-bit entries only (64-bit ones, for meshes of billions, are sorted).
 bool small_bucket_of_common_edges(const std::uint32_t* first, std::size_t n) {
     using Four = std::uint32_t __attribute__((vector_size(16)));
     static_assert(small_bucket == 8, "two vectors of four");
-    std::uint32_t twice[2 * small_bucket] = {0, 4, 8, 12, 16, 20, 24, 28};
-    for (std::size_t i = 0; i < n; ++i) twice[i] = first[i];
-    std::memcpy(twice + small_bucket, twice, small_bucket * sizeof *twice);
-    Four low_half, high_half;
-    std::memcpy(&low_half, twice, sizeof low_half);
-    std::memcpy(&high_half, twice + 4, sizeof high_half);
+    Four low, high;
+    std::memcpy(&low, first, sizeof low);
+    std::memcpy(&high, first + 4, sizeof high);
+    // A comparison gives all bits set (-1) where it holds.
+    const auto count = std::uint32_t(n);
+    const Four low_in = Four(Four{0, 1, 2, 3} < count), high_in = Four(Four{4, 5, 6, 7} < count);
+    low = (low & low_in) | (Four{0, 4, 8, 12} & ~low_in);
+    high = (high & high_in) | (Four{16, 20, 24, 28} & ~high_in);
     Four partners{}, repeated{};
-#pragma GCC unroll 7
-    for (std::size_t shift = 1; shift < small_bucket; ++shift) {
-        Four low_shifted, high_shifted;
-        std::memcpy(&low_shifted, twice + shift, sizeof low_shifted);
-        std::memcpy(&high_shifted, twice + shift + 4, sizeof high_shifted);
-        const Four low_difference = low_half ^ low_shifted;
-        const Four high_difference = high_half ^ high_shifted;
-        // A comparison gives all bits set (-1) where it holds.
-        partners -= Four(low_difference == 1) + Four(high_difference == 1);
-        repeated |= Four(low_difference == 0) | Four(high_difference == 0);
-    }
-    const std::uint32_t pairs_twice = partners[0] + partners[1] + partners[2] + partners[3];
+    auto compare = [&](const Four& a, const Four& b) {
+        const Four difference = a ^ b;
+        partners -= Four(difference == 1);
+        repeated |= Four(difference == 0);
+    };
+    compare(low, high);
+    compare(low, __builtin_shufflevector(low, high, 1, 2, 3, 4));
+    compare(high, __builtin_shufflevector(low, high, 5, 6, 7, 0));
+    compare(low, __builtin_shufflevector(low, high, 2, 3, 4, 5));
+    compare(high, __builtin_shufflevector(low, high, 6, 7, 0, 1));
+    compare(low, __builtin_shufflevector(low, high, 3, 4, 5, 6));
+    compare(high, __builtin_shufflevector(low, high, 7, 0, 1, 2));
+    const std::uint32_t pairs = partners[0] + partners[1] + partners[2] + partners[3];
     const std::uint32_t any_repeated = repeated[0] | repeated[1] | repeated[2] | repeated[3];
-    return any_repeated == 0 && pairs_twice == n;  // each partner pair counted twice
+    return any_repeated == 0 && 2 * std::size_t(pairs) == n;
 }
 
 template <class Entry>
@@ -194,7 +201,10 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     });
     Entry edge_total = 0;
     for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
-    ScratchBuffer<Entry> entries(edge_total, memory);  // each slot filed once below
+    // Each slot filed once below, and a slack that small_bucket_of_common_edges
+    // reads past the last bucket (set: no value read is left unwritten).
+    ScratchBuffer<Entry> entries(std::size_t(edge_total) + small_bucket, memory);
+    std::fill_n(entries.data() + edge_total, small_bucket, Entry{0});
     tasks.run(starts.size(), [&](std::size_t block) {
         each_edge_of_block(mesh, block, starts[block], id,
                            [&](std::uint32_t from, std::uint32_t to) {
