@@ -193,10 +193,13 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     // end_of[v]: first counts, then (after the prefix sum) where v's bucket
     // starts, then (after filing, each bucket filled from its start) where it ends.
     std::pmr::vector<Entry> end_of(mesh.vertex_count, Entry{0}, memory);
+    // The passes below write through copies of the arrays' addresses: read
+    // through the containers, they were loaded again after every store.
+    Entry* const bucket_end = end_of.data();
     tasks.run(starts.size(), [&](std::size_t block) {
         each_edge_of_block(mesh, block, starts[block], id,
-                           [&](std::uint32_t from, std::uint32_t to) {
-                               increment<concurrent>(end_of[std::min(from, to)]);
+                           [bucket_end](std::uint32_t from, std::uint32_t to) {
+                               increment<concurrent>(bucket_end[std::min(from, to)]);
                            });
     });
     Entry edge_total = 0;
@@ -204,12 +207,13 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     // Each slot filed once below, and a slack that small_bucket_of_common_edges
     // reads past the last bucket (set: no value read is left unwritten).
     ScratchBuffer<Entry> entries(std::size_t(edge_total) + small_bucket, memory);
-    std::fill_n(entries.data() + edge_total, small_bucket, Entry{0});
+    Entry* const slots = entries.data();
+    std::fill_n(slots + edge_total, small_bucket, Entry{0});
     tasks.run(starts.size(), [&](std::size_t block) {
         each_edge_of_block(mesh, block, starts[block], id,
-                           [&](std::uint32_t from, std::uint32_t to) {
+                           [bucket_end, slots](std::uint32_t from, std::uint32_t to) {
                                const bool down = from > to;
-                               entries[increment<concurrent>(end_of[down ? to : from])] =
+                               slots[increment<concurrent>(bucket_end[down ? to : from])] =
                                    (Entry(down ? from : to) << 1) | Entry(down);
                            });
     });
