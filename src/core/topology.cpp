@@ -74,7 +74,7 @@ constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
 // 2, 3, 5, 6 or 7 apart once; its first four against its last four, the
 // pairs 4 apart. (Turned in registers: loads straddling the stores of a
 // copy would wait for them.) The eight slots from `first` are read whatever
-// n is: the edge list has small_bucket slots of slack after its end.
+// n is: the caller sees that they are all its piece's.
 // 32-bit entries only (64-bit ones, for meshes of billions, are sorted).
 bool small_bucket_of_common_edges(const std::uint32_t* first, std::size_t n) {
     using Four = std::uint32_t __attribute__((vector_size(16)));
@@ -149,12 +149,16 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
                             std::size_t last_low) {
     TopologyReport report;
     Entry begin = first_low == 0 ? 0 : end_of[first_low - 1];
+    // Reading past a bucket stays within the piece: the next piece's buckets
+    // may be being sorted on another thread.
+    const Entry* const piece_end = entries + (last_low > first_low ? end_of[last_low - 1] : begin);
     for (std::size_t low = first_low; low < last_low; ++low) {
         Entry* const first = entries + begin;
         Entry* const last = entries + end_of[low];
         begin = end_of[low];
         const std::size_t size = std::size_t(last - first);
         if (size <= small_bucket && low >= padded_from_low &&
+            std::size_t(piece_end - first) >= small_bucket &&
             small_bucket_of_common_edges(first, size)) {
             report.edge_count += size / 2;
             continue;
@@ -204,11 +208,8 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     });
     Entry edge_total = 0;
     for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
-    // Each slot filed once below, and a slack that small_bucket_of_common_edges
-    // reads past the last bucket (set: no value read is left unwritten).
-    ScratchBuffer<Entry> entries(std::size_t(edge_total) + small_bucket, memory);
+    ScratchBuffer<Entry> entries(edge_total, memory);  // each slot filed once below
     Entry* const slots = entries.data();
-    std::fill_n(slots + edge_total, small_bucket, Entry{0});
     tasks.run(starts.size(), [&](std::size_t block) {
         each_edge_of_block(mesh, block, starts[block], id,
                            [bucket_end, slots](std::uint32_t from, std::uint32_t to) {
