@@ -18,17 +18,20 @@ namespace {
 // lower). A counting sort by the lower vertex (one pass counting, one
 // filing) replaces a sort of 64-bit keys: 4 bytes an edge instead of 16, and
 // two passes instead of four. The buckets are short (a vertex is the lower
-// end of about three edges), so sorting each one is cheap, and walking the
-// buckets in order visits the edges in ascending (lower, higher) order, which
-// keeps the findings' "lowest first".
+// end of about three edges, six entries). Most hold only edges traversed
+// once each way, which a comparison of all their pairs shows without sorting
+// them; any other is sorted, and walking the buckets in order visits the
+// edges in ascending (lower, higher) order, which keeps the findings' "lowest
+// first".
 //
 // Entry is 32 bits when every vertex number fits in 31 bits and the entries
 // fit 32-bit offsets; 64 bits otherwise (meshes of billions of indices).
 //
 // On several threads the faces are counted and filed in fixed blocks, each
 // bucket slot taken with an atomic increment: which thread files an edge
-// first changes the order within a bucket, which its sort undoes. The walk
-// runs in fixed blocks of lower vertices whose findings are joined in order.
+// first changes the order within a bucket, on which neither the comparison
+// of all pairs nor the sort depends. The walk runs in fixed blocks of lower
+// vertices whose findings are joined in order.
 constexpr std::size_t vertices_per_piece = std::size_t{1} << 15;
 
 template <bool concurrent, class Entry>
