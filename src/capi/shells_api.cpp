@@ -76,8 +76,9 @@ POLYMASS_API int32_t polymass_mesh_shells_with_options(uint32_t* out_shell_of_fa
             std::pmr::vector<std::uint32_t> welded(memory);
             if (call.flags & POLYMASS_OPTION_WELD_VERTICES)
                 welded = core::weld_vertices(view, scanned.scan, call.weld_tolerance, memory);
-            const core::Shells shells = core::find_shells(
-                view, welded.empty() ? nullptr : welded.data(), context->tasks(call), memory);
+            const core::Shells shells =
+                core::find_shells(view, scanned.scan, welded.empty() ? nullptr : welded.data(),
+                                  context->tasks(call), memory);
             std::copy(shells.of_face.begin(), shells.of_face.end(), out_shell_of_face);
             *out_shell_count = shells.count;
             return int32_t(POLYMASS_OK);

@@ -49,7 +49,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         analysis.topology->closed_and_oriented(settings.policy.accept_balanced_non_manifold) &&
         analysis.verdict.valid()) {
         analysis.shells =
-            survey_shells(mesh, vertex_ids, integration.reference, analysis.verdict.outward,
+            survey_shells(mesh, scan, vertex_ids, integration.reference, analysis.verdict.outward,
                           analysis.integration->integrals.volume, tasks, memory);
         if (stop()) return analysis;
     }

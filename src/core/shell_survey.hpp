@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "findings.hpp"
+#include "mesh_scan.hpp"
 #include "mesh_view.hpp"
 #include "shells.hpp"
 
@@ -54,9 +55,10 @@ struct ShellSurvey {
 // whole_volume is the surface's signed volume (the one shell's, when it is
 // in one piece: the common case costs no second pass over the faces).
 template <class Scalar, class Index>
-ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                          const Eigen::Vector3d& reference, int outward, double whole_volume,
-                          TaskRunner& tasks, std::pmr::memory_resource* memory);
+ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                          const std::uint32_t* vertex_ids, const Eigen::Vector3d& reference,
+                          int outward, double whole_volume, TaskRunner& tasks,
+                          std::pmr::memory_resource* memory);
 
 // Classifies again by the winding numbers of find_overlaps (those it could
 // count; the others keep their boxes' answer).

@@ -1,5 +1,6 @@
 #include "shells.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <utility>
 
@@ -19,13 +20,15 @@ public:
     explicit ConcurrentSmallestIndexSets(std::pmr::vector<std::uint32_t>& parent)
         : parent_(parent.data()) {}
 
+    // Two steps at a time: a root and a root's child (most of what a search
+    // meets once paths are halved) both end at the first test, a branch
+    // that rarely goes the other way.
     std::uint32_t find(std::uint32_t index) const {
         for (;;) {
             const std::uint32_t parent = load(index);
-            if (parent == index) return index;
             const std::uint32_t grandparent = load(parent);
-            if (grandparent != parent)
-                __atomic_store_n(&parent_[index], grandparent, __ATOMIC_RELAXED);  // halving
+            if (grandparent == parent) return parent;
+            __atomic_store_n(&parent_[index], grandparent, __ATOMIC_RELAXED);  // halving
             index = grandparent;
         }
     }
@@ -52,11 +55,41 @@ private:
     std::uint32_t* parent_;
 };
 
+// Joins each face's vertices (a triangle's loop unrolled: the root stays in a
+// register).
+template <class Scalar, class Index, class VertexId>
+void join_faces(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std::size_t>& starts,
+                VertexId&& id, const ConcurrentSmallestIndexSets& sets, TaskRunner& tasks) {
+    tasks.run(starts.size(), [&](std::size_t block) {
+        for_each_face_of_block(mesh, block, starts[block],
+                               [&](std::size_t, std::size_t first, std::size_t size) {
+                                   std::uint32_t root = id(first);
+#pragma GCC unroll 4
+                                   for (std::size_t i = 1; i < size; ++i)
+                                       root = sets.join(root, id(first + i));
+                               });
+    });
+}
+
+// The roots among the identities the faces use: the used vertices that are
+// their own identity (weld_vertices maps a used vertex to the smallest used
+// vertex welded to it). scan.used ends with the vertices indices can reach.
+std::size_t count_roots(const std::pmr::vector<std::uint32_t>& parent, const MeshScan& scan,
+                        const std::uint32_t* vertex_ids) {
+    const std::size_t reachable = std::min(parent.size(), 64 * scan.used.size());
+    std::size_t roots = 0;
+    for (std::size_t vertex = 0; vertex < reachable; ++vertex)
+        roots += scan.is_used(vertex) && parent[vertex] == vertex &&
+                 (!vertex_ids || vertex_ids[vertex] == vertex);
+    return roots;
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
-Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                   TaskRunner& tasks, std::pmr::memory_resource* memory) {
+Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                   const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                   std::pmr::memory_resource* memory) {
     auto id = [&](std::size_t position) {
         const std::uint32_t vertex = mesh.indices[position];
         return vertex_ids ? vertex_ids[vertex] : vertex;
@@ -65,16 +98,24 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* ver
     std::pmr::vector<std::uint32_t> parent(mesh.vertex_count, memory);
     std::iota(parent.begin(), parent.end(), 0u);
     const ConcurrentSmallestIndexSets sets(parent);
-    tasks.run(starts.size(), [&](std::size_t block) {
-        for_each_face_of_block(mesh, block, starts[block],
-                               [&](std::size_t, std::size_t first, std::size_t size) {
-                                   std::uint32_t root = id(first);
-                                   for (std::size_t i = 1; i < size; ++i)
-                                       root = sets.join(root, id(first + i));
-                               });
-    });
-    // Each face's root, then shells numbered as their first faces come.
+    // Without welding, no test per index for the identities.
+    if (vertex_ids)
+        join_faces(mesh, starts, id, sets, tasks);
+    else
+        join_faces(
+            mesh, starts, [&](std::size_t position) { return mesh.indices[position]; }, sets,
+            tasks);
     Shells shells(memory);
+    // Every set holds the identities of some faces' vertices, and its root is
+    // one of them: the shells are as many as the roots among those
+    // identities. One root (the common case) makes every face shell 0, with
+    // no search per face.
+    if (count_roots(parent, scan, vertex_ids) == 1) {
+        shells.count = 1;
+        shells.of_face.assign(mesh.face_count, 0u);
+        return shells;
+    }
+    // Each face's root, then shells numbered as their first faces come.
     shells.of_face.resize(mesh.face_count);
     tasks.run(starts.size(), [&](std::size_t block) {
         for_each_face_of_block(mesh, block, starts[block],
@@ -92,9 +133,9 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* ver
     return shells;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                       \
-    template Shells find_shells<Scalar, Index>(const MeshView<Scalar, Index>&,    \
-                                               const std::uint32_t*, TaskRunner&, \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                     \
+    template Shells find_shells<Scalar, Index>(const MeshView<Scalar, Index>&, const MeshScan&, \
+                                               const std::uint32_t*, TaskRunner&,               \
                                                std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

@@ -23,11 +23,12 @@ struct Shells {
 };
 
 // vertex_ids maps a vertex to its identity (welding; see weld_vertices), null
-// meaning the index itself. Indices must be in range; faces fewer than 2^32.
-// The faces are joined in blocks on `tasks`; the numbering is the same for
-// every runner.
+// meaning the index itself; `scan` is the mesh's (its used vertices). Indices
+// must be in range; faces fewer than 2^32. The faces are joined in blocks on
+// `tasks`; the numbering is the same for every runner.
 template <class Scalar, class Index>
-Shells find_shells(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                   TaskRunner& tasks, std::pmr::memory_resource* memory);
+Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                   const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                   std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

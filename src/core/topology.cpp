@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
 
 #include "face_blocks.hpp"
+#include "scratch_buffer.hpp"
 
 namespace polymass::core {
 namespace {
@@ -16,17 +18,20 @@ namespace {
 // lower). A counting sort by the lower vertex (one pass counting, one
 // filing) replaces a sort of 64-bit keys: 4 bytes an edge instead of 16, and
 // two passes instead of four. The buckets are short (a vertex is the lower
-// end of about three edges), so sorting each one is cheap, and walking the
-// buckets in order visits the edges in ascending (lower, higher) order, which
-// keeps the findings' "lowest first".
+// end of about three edges, six entries). Most hold only edges traversed
+// once each way, which a comparison of all their pairs shows without sorting
+// them; any other is sorted, and walking the buckets in order visits the
+// edges in ascending (lower, higher) order, which keeps the findings' "lowest
+// first".
 //
 // Entry is 32 bits when every vertex number fits in 31 bits and the entries
 // fit 32-bit offsets; 64 bits otherwise (meshes of billions of indices).
 //
 // On several threads the faces are counted and filed in fixed blocks, each
 // bucket slot taken with an atomic increment: which thread files an edge
-// first changes the order within a bucket, which its sort undoes. The walk
-// runs in fixed blocks of lower vertices whose findings are joined in order.
+// first changes the order within a bucket, on which neither the comparison
+// of all pairs nor the sort depends. The walk runs in fixed blocks of lower
+// vertices whose findings are joined in order.
 constexpr std::size_t vertices_per_piece = std::size_t{1} << 15;
 
 template <bool concurrent, class Entry>
@@ -54,13 +59,84 @@ void sort_bucket(Entry* first, Entry* last) {
     }
 }
 
-// Visits the directed edges of one block of faces, in face order.
+// Buckets of at most this many entries (most of a surface's: about six
+// each) are tested for common edges before, and usually instead of, sorting.
+constexpr std::size_t small_bucket = 8;
+// The test pads a small bucket with 0, 4, ..., 4 * (small_bucket - 1):
+// distinct, and neither equal nor a partner (one apart) to any entry of a
+// lower vertex from here on, whose entries are at least 2 * (low + 1).
+constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
+
+// Whether a small bucket, in any order, holds only common edges (each
+// traversed once each way and by no other face): all its entries distinct,
+// and n / 2 pairs of them partners (h << 1 and h << 1 | 1), so that every
+// higher vertex is there once up and once down. Every pair is compared,
+// four at a time and with no branch on the data, where a sort's branches
+// would be mispredicted about once an entry. The padded bucket's eight slots
+// against themselves turned by 1, 2 and 3 slots meet each pair of slots 1,
+// 2, 3, 5, 6 or 7 apart once; its first four against its last four, the
+// pairs 4 apart. (Turned in registers: loads straddling the stores of a
+// copy would wait for them.) The eight slots from `first` are read whatever
+// n is: the caller sees that they are all its piece's.
+// 32-bit entries only (64-bit ones, for meshes of billions, are sorted).
+bool small_bucket_of_common_edges(const std::uint32_t* first, std::size_t n) {
+    using Four = std::uint32_t __attribute__((vector_size(16)));
+    static_assert(small_bucket == 8, "two vectors of four");
+    Four low, high;
+    std::memcpy(&low, first, sizeof low);
+    std::memcpy(&high, first + 4, sizeof high);
+    // A comparison gives all bits set (-1) where it holds.
+    const auto count = std::uint32_t(n);
+    const Four low_in = Four(Four{0, 1, 2, 3} < count), high_in = Four(Four{4, 5, 6, 7} < count);
+    low = (low & low_in) | (Four{0, 4, 8, 12} & ~low_in);
+    high = (high & high_in) | (Four{16, 20, 24, 28} & ~high_in);
+    Four partners{}, repeated{};
+    auto compare = [&](const Four& a, const Four& b) {
+        const Four difference = a ^ b;
+        partners -= Four(difference == 1);
+        repeated |= Four(difference == 0);
+    };
+    compare(low, high);
+    compare(low, __builtin_shufflevector(low, high, 1, 2, 3, 4));
+    compare(high, __builtin_shufflevector(low, high, 5, 6, 7, 0));
+    compare(low, __builtin_shufflevector(low, high, 2, 3, 4, 5));
+    compare(high, __builtin_shufflevector(low, high, 6, 7, 0, 1));
+    compare(low, __builtin_shufflevector(low, high, 3, 4, 5, 6));
+    compare(high, __builtin_shufflevector(low, high, 7, 0, 1, 2));
+    const std::uint32_t pairs = partners[0] + partners[1] + partners[2] + partners[3];
+    const std::uint32_t any_repeated = repeated[0] | repeated[1] | repeated[2] | repeated[3];
+    return any_repeated == 0 && 2 * std::size_t(pairs) == n;
+}
+
+template <class Entry>
+bool small_bucket_of_common_edges(const Entry*, std::size_t) {
+    return false;
+}
+
+// Whether a sorted bucket holds only common edges, each traversed once each
+// way and by no other face: pairs (h << 1, h << 1 | 1), with h rising. That
+// every pair starts with an up (an even entry) also rules out a third
+// traversal of the pair before it, which would sort between the two pairs.
+// Tested for the whole bucket with no branch per edge: a surface is almost
+// all such buckets.
+template <class Entry>
+bool only_common_edges(const Entry* first, const Entry* last) {
+    if ((last - first) % 2 != 0) return false;
+    Entry mismatch = 0;
+    for (const Entry* at = first; at != last; at += 2)
+        mismatch |= (at[0] & 1) | (at[1] ^ (at[0] + 1));
+    return mismatch == 0;
+}
+
+// Visits the directed edges of one block of faces, in face order (a
+// triangle's loop unrolled: its three edges stay in registers).
 template <class Scalar, class Index, class VertexId, class Visit>
 void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
                         std::size_t first_index, VertexId& id, Visit&& visit) {
     for_each_face_of_block(mesh, block, first_index,
                            [&](std::size_t, std::size_t first, std::size_t size) {
                                std::uint32_t from = id(first + size - 1);
+#pragma GCC unroll 4
                                for (std::size_t i = 0; i < size; ++i) {
                                    const std::uint32_t to = id(first + i);
                                    if (from != to) visit(from, to);
@@ -76,19 +152,26 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
                             std::size_t last_low) {
     TopologyReport report;
     Entry begin = first_low == 0 ? 0 : end_of[first_low - 1];
+    // Reading past a bucket stays within the piece: the next piece's buckets
+    // may be being sorted on another thread.
+    const Entry* const piece_end = entries + (last_low > first_low ? end_of[last_low - 1] : begin);
     for (std::size_t low = first_low; low < last_low; ++low) {
         Entry* const first = entries + begin;
         Entry* const last = entries + end_of[low];
         begin = end_of[low];
+        const std::size_t size = std::size_t(last - first);
+        if (size <= small_bucket && low >= padded_from_low &&
+            std::size_t(piece_end - first) >= small_bucket &&
+            small_bucket_of_common_edges(first, size)) {
+            report.edge_count += size / 2;
+            continue;
+        }
         sort_bucket(first, last);  // by higher vertex, ups (bit 0) before downs
+        if (only_common_edges(first, last)) {
+            report.edge_count += std::size_t(last - first) / 2;
+            continue;
+        }
         for (Entry* at = first; at != last;) {
-            // The common edge, once each way and by no other face, first.
-            if (last - at >= 2 && at[1] == (at[0] | 1) && !(at[0] & 1) &&
-                (last - at == 2 || (at[2] >> 1) != (at[0] >> 1))) {
-                ++report.edge_count;
-                at += 2;
-                continue;
-            }
             const Entry high = *at >> 1;
             std::size_t ups = 0, downs = 0;
             for (; at != last && (*at >> 1) == high; ++at) (*at & 1 ? downs : ups) += 1;
@@ -117,20 +200,24 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     // end_of[v]: first counts, then (after the prefix sum) where v's bucket
     // starts, then (after filing, each bucket filled from its start) where it ends.
     std::pmr::vector<Entry> end_of(mesh.vertex_count, Entry{0}, memory);
+    // The passes below write through copies of the arrays' addresses: read
+    // through the containers, they were loaded again after every store.
+    Entry* const bucket_end = end_of.data();
     tasks.run(starts.size(), [&](std::size_t block) {
         each_edge_of_block(mesh, block, starts[block], id,
-                           [&](std::uint32_t from, std::uint32_t to) {
-                               increment<concurrent>(end_of[std::min(from, to)]);
+                           [bucket_end](std::uint32_t from, std::uint32_t to) {
+                               increment<concurrent>(bucket_end[std::min(from, to)]);
                            });
     });
     Entry edge_total = 0;
     for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
-    std::pmr::vector<Entry> entries(edge_total, memory);
+    ScratchBuffer<Entry> entries(edge_total, memory);  // each slot filed once below
+    Entry* const slots = entries.data();
     tasks.run(starts.size(), [&](std::size_t block) {
         each_edge_of_block(mesh, block, starts[block], id,
-                           [&](std::uint32_t from, std::uint32_t to) {
+                           [bucket_end, slots](std::uint32_t from, std::uint32_t to) {
                                const bool down = from > to;
-                               entries[increment<concurrent>(end_of[down ? to : from])] =
+                               slots[increment<concurrent>(bucket_end[down ? to : from])] =
                                    (Entry(down ? from : to) << 1) | Entry(down);
                            });
     });

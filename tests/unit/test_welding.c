@@ -7,6 +7,7 @@
 #include "test_support.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Deterministic noise in [-1, 1) (an LCG: the same on every platform). */
@@ -224,6 +225,67 @@ static void test_shells(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* Shells are counted among the vertices the faces use: vertices no face uses
+   (before, between and after the faces' ones, and past what 16-bit indices
+   reach) are in no shell, and a face whose corners are one vertex is a shell
+   of its own, numbered where its face comes. */
+static void test_shells_of_used_vertices(void** state) {
+    static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    uint32_t of_face[16];
+    uint16_t narrow[36];
+    polymass_context* ctx = pm_context_new(0);
+    polymass_mesh_desc d;
+    uint64_t count = 0;
+    uint32_t lone;
+    double* far;
+    pm_mesh m;
+    size_t f;
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_vertex(&m, 5, 5, 5);
+    pm_mesh_add_box(&m, lo, hi, 1);
+    pm_mesh_add_vertex(&m, 6, 6, 6);
+    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    for (f = 0; f < 12; ++f) assert_int_equal(of_face[f], 0);
+    set_weld(ctx, 0.0);
+    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    for (f = 0; f < 12; ++f) assert_int_equal(of_face[f], 0);
+
+    /* The lone vertex's face first: shell 0, the box shell 1. */
+    lone = pm_mesh_add_vertex(&m, 7, 7, 7);
+    pm_mesh_add_tri(&m, lone, lone, lone);
+    memmove(m.indices + 3, m.indices, 36 * sizeof *m.indices);
+    m.indices[0] = m.indices[1] = m.indices[2] = lone;
+    pm_context_set_flags(ctx, 0);
+    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    assert_int_equal(of_face[0], 0);
+    for (f = 1; f < 13; ++f) assert_int_equal(of_face[f], 1);
+    set_weld(ctx, 0.0);
+    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    assert_int_equal(of_face[0], 0);
+    for (f = 1; f < 13; ++f) assert_int_equal(of_face[f], 1);
+    pm_mesh_free(&m);
+
+    /* 16-bit indices into 70000 vertices: the box's, then ones no index reaches. */
+    pm_mesh_box(&m, lo, hi, 1);
+    far = calloc(3 * 70000, sizeof *far);
+    assert_non_null(far);
+    memcpy(far, m.positions, 3 * m.vertex_count * sizeof *far);
+    for (f = 0; f < 36; ++f) narrow[f] = (uint16_t)m.indices[f];
+    d = pm_mesh_desc(&m);
+    d.positions = far;
+    d.vertex_count = 70000;
+    d.indices = narrow;
+    d.index_type = POLYMASS_INDEX_UINT16;
+    pm_context_set_flags(ctx, 0);
+    PM_ASSERT_OK(ctx, polymass_mesh_shells(of_face, &count, ctx, &d));
+    assert_int_equal(count, 1);
+    for (f = 0; f < 12; ++f) assert_int_equal(of_face[f], 0);
+    free(far);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
 static void test_shells_errors(void** state) {
     static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     uint32_t of_face[12];
@@ -336,6 +398,7 @@ int main(void) {
         cmocka_unit_test(test_many_copies_of_one_vertex),
         cmocka_unit_test(test_invalid_tolerances),
         cmocka_unit_test(test_shells),
+        cmocka_unit_test(test_shells_of_used_vertices),
         cmocka_unit_test(test_shells_errors),
         cmocka_unit_test(test_weld_on_its_own),
     };
