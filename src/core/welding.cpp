@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <tuple>
 
 #include "smallest_index_sets.hpp"
 
@@ -137,12 +136,20 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
                  std::pmr::vector<std::uint32_t>& representative,
                  std::pmr::memory_resource* memory) {
     using Cell = std::array<std::int64_t, 3>;
+    // Cells compared coordinate by coordinate in line: std::array's own
+    // operators call memcmp and a generic lexicographic loop, which were half
+    // the weld of a million-triangle STL.
+    const auto same_cell = [](const Cell& a, const Cell& b) {
+        return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    };
+    const auto cell_before = [](const Cell& a, const Cell& b) {
+        if (a[0] != b[0]) return a[0] < b[0];
+        if (a[1] != b[1]) return a[1] < b[1];
+        return a[2] < b[2];
+    };
     struct Entry {
         Cell cell;
         std::uint32_t vertex;
-        bool operator<(const Entry& other) const {
-            return std::tie(cell, vertex) < std::tie(other.cell, other.vertex);
-        }
     };
     const Eigen::Vector3d origin = scan.bounds.min();
     std::pmr::vector<Entry> entries(memory);
@@ -152,12 +159,14 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
         entries.push_back(
             {Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())}, vertex});
     }
-    std::sort(entries.begin(), entries.end());
+    std::sort(entries.begin(), entries.end(), [&](const Entry& a, const Entry& b) {
+        return cell_before(a.cell, b.cell) || (same_cell(a.cell, b.cell) && a.vertex < b.vertex);
+    });
 
     // Each occupied cell's first entry; the next cell's first ends it.
     std::pmr::vector<std::size_t> cell_starts(memory);
     for (std::size_t i = 0; i < entries.size(); ++i)
-        if (i == 0 || entries[i].cell != entries[i - 1].cell) cell_starts.push_back(i);
+        if (i == 0 || !same_cell(entries[i].cell, entries[i - 1].cell)) cell_starts.push_back(i);
     const std::size_t cell_count = cell_starts.size();
     cell_starts.push_back(entries.size());
     const auto close = [&](const Entry& a, const Entry& b) {
@@ -187,8 +196,8 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
             const Cell near{first->cell[0] + offsets[o][0], first->cell[1] + offsets[o][1],
                             first->cell[2] + offsets[o][2]};
             std::size_t& n = cursors[o];
-            while (n < cell_count && cell_at(n) < near) ++n;
-            if (n == cell_count || cell_at(n) != near) continue;
+            while (n < cell_count && cell_before(cell_at(n), near)) ++n;
+            if (n == cell_count || !same_cell(cell_at(n), near)) continue;
             const Entry* near_first = &entries[cell_starts[n]];
             const Entry* near_last = &entries[0] + cell_starts[n + 1];
             auto touching = [&] {
