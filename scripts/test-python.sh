@@ -9,7 +9,9 @@
 #      build/python-venv (made once; pip leaves satisfied dependencies alone);
 #   4. ruff format --check and ruff check over every Python file of the repository
 #      (ruff.toml; .gitignore'd build trees are skipped);
-#   5. pytest (bindings/python/tests), then runs the examples;
+#   5. pytest (bindings/python/tests); its threading tests again on the library
+#      built with ThreadSanitizer (build/tsan, when the tsan step made it);
+#      then runs the examples;
 #   6. the Dask example (examples/dask): dask[distributed] and pyarrow from PyPI,
 #      then its pytest on a distributed.LocalCluster;
 #   7. polymass audit --fix read back by yourdfpy and MuJoCo (from PyPI):
@@ -88,6 +90,22 @@ step pytest
 # From bindings/python: its pyproject.toml holds the pytest settings. The package
 # under test is the installed one (src/ layout: nothing shadows it).
 (cd bindings/python && "$venv/bin/python" -m pytest -q -p no:cacheprovider </dev/null)
+
+step threads-under-tsan
+# The binding's threading tests again, on the library built with
+# ThreadSanitizer (the tsan step's build/tsan, which runs before this one in
+# scripts/test.sh): Python threads, each calling the library, which runs its
+# own workers. The interpreter is not instrumented; libtsan is preloaded so
+# that it sees every thread and lock.
+tsan_library=$root/build/tsan/src/libpolymass.so.1
+if [ -f "$tsan_library" ]; then
+    (cd bindings/python && POLYMASS_LIBRARY=$tsan_library \
+        LD_PRELOAD=$(gcc -print-file-name=libtsan.so) TSAN_OPTIONS=halt_on_error=1 \
+        "$venv/bin/python" -m pytest -q -p no:cacheprovider tests/test_threads.py \
+        tests/test_batch.py </dev/null)
+else
+    echo "skipped: no ThreadSanitizer build at $tsan_library (scripts/test.sh tsan makes it)"
+fi
 
 step examples
 "$venv/bin/python" examples/python/mass_properties_of_file.py </dev/null
