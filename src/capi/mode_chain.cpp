@@ -123,7 +123,8 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
                        const polymass_options& options, polymass_mesh& mesh,
                        polymass_provenance& provenance) {
     return visit_mesh(input, [&](const auto& view) -> int32_t {
-        const core::MeshScan scan = core::scan_mesh(view, &context->memory);
+        const core::MeshScan scan =
+            core::scan_mesh(view, &context->memory, context->tasks(options));
         if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0 ||
             !std::isfinite(scan.diagonal()))
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
@@ -160,8 +161,9 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
 
 // The scan shell and hull start from; a status when they cannot.
 template <class View>
-int32_t scan_for(polymass_context* context, const View& view, core::MeshScan& scan) {
-    scan = core::scan_mesh(view, &context->memory);
+int32_t scan_for(polymass_context* context, const View& view, const polymass_options& options,
+                 core::MeshScan& scan) {
+    scan = core::scan_mesh(view, &context->memory, context->tasks(options));
     if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0 ||
         !std::isfinite(scan.diagonal()))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
@@ -176,7 +178,7 @@ int32_t build_shell(polymass_context* context, const MeshInput& input,
                     polymass_provenance& provenance) {
     return visit_mesh(input, [&](const auto& view) -> int32_t {
         core::MeshScan scan(&context->memory);
-        if (const int32_t status = scan_for(context, view, scan)) return status;
+        if (const int32_t status = scan_for(context, view, options, scan)) return status;
         const core::ThinShell shell = core::thin_shell_moments(
             view, options.shell_thickness, scan.reference_point(), scan.diagonal());
         if (!(shell.moments.mass.volume >= DBL_MIN))
@@ -217,7 +219,7 @@ int32_t build_hull(polymass_context* context, const MeshInput& input,
                    polymass_provenance& provenance) {
     return visit_mesh(input, [&](const auto& view) -> int32_t {
         core::MeshScan scan(&context->memory);
-        if (const int32_t status = scan_for(context, view, scan)) return status;
+        if (const int32_t status = scan_for(context, view, options, scan)) return status;
         const core::ConvexHull hull = core::convex_hull(view, scan, &context->memory);
         if (hull.status != core::HullStatus::ok)
             return context->fail(POLYMASS_ERROR_ZERO_VOLUME, "the convex hull has no volume: %s",

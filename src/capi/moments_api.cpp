@@ -157,7 +157,7 @@ int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* 
     if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
     if (const int32_t status = select_faces(context, input, first_face, face_count)) return status;
     return visit_mesh(input, [&](const auto& view) {
-        core::MeshAnalysis piece(core::scan_mesh(view, &context->memory));
+        core::MeshAnalysis piece(core::scan_mesh(view, &context->memory, context->tasks(options)));
         uint32_t warnings = 0;
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))

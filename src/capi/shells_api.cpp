@@ -68,7 +68,7 @@ POLYMASS_API int32_t polymass_mesh_shells_with_options(uint32_t* out_shell_of_fa
         if (const int32_t status = check_face_count(context, input)) return status;
         return visit_mesh(input, [&](const auto& view) {
             std::pmr::memory_resource* memory = &context->memory;
-            core::MeshAnalysis scanned(core::scan_mesh(view, memory));
+            core::MeshAnalysis scanned(core::scan_mesh(view, memory, context->tasks(call)));
             scanned.verdict = core::judge(scanned, {});
             uint32_t warnings = 0;
             if (const int32_t status = report_verdict(context, input, call, scanned, warnings))

@@ -30,7 +30,8 @@ POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_d
         const double tolerance = context->options.weld_tolerance;
         return visit_mesh(input, [&](const auto& view) {
             std::pmr::memory_resource* memory = &context->memory;
-            core::MeshAnalysis scanned(core::scan_mesh(view, memory));
+            core::MeshAnalysis scanned(
+                core::scan_mesh(view, memory, context->tasks(context->options)));
             scanned.verdict = core::judge(scanned, {});
             // An exact weld compares bits, so only indices out of range stop
             // it; a weld within a tolerance measures distances, which need

@@ -9,7 +9,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
                           std::pmr::memory_resource* memory) {
     SerialTaskRunner serial;
     TaskRunner& tasks = settings.tasks ? *settings.tasks : serial;
-    MeshAnalysis analysis(scan_mesh(mesh, memory));
+    MeshAnalysis analysis(scan_mesh(mesh, memory, tasks));
     const MeshScan& scan = analysis.scan;
     analysis.used_vertex_count = scan.used_vertex_count;
     // Judges what is known; true when the analysis should end here.

@@ -105,12 +105,186 @@ void keep_first_zero_signs(const MeshView<Scalar, Index>& mesh, const unsigned c
     }
 }
 
-// What the scan looks at twice per index and once per vertex, in one piece so
-// that it can be built for each instruction set (`packed`: positions are
-// x, y, z, x, y, z, ...).
+// The scan runs in fixed parts, the same whatever the number of threads:
+// first the index array, a part at a time, marking the vertices it uses; then
+// the vertices, a part of whole 64-vertex blocks at a time, bounding the used
+// ones. Each part keeps its own results, joined in part order: the bounds are
+// exact minima and maxima (a tie keeps the earlier value, as a running
+// minimum does), the counts sums and the findings' lowest locations merged,
+// so every thread count gives the scan of one.
+constexpr std::size_t kIndicesPerPart = std::size_t{1} << 18;
+constexpr std::size_t kBlocksPerPart = std::size_t{1} << 10;  // 65,536 vertices
+
+// What a part of the index array found: whether every index was in range.
+struct IndexPart {
+    bool all_in_range = true;
+};
+
+// Marks seen_vertex[i] for the indices in [begin, end). Parts run at the same
+// time may mark one vertex together: a relaxed atomic store of the same byte,
+// a plain store on every processor the library runs on.
 template <class Scalar, class Index>
-__attribute__((always_inline)) inline MeshScan scan_mesh_as(const MeshView<Scalar, Index>& mesh,
-                                                            std::pmr::memory_resource* memory) {
+__attribute__((always_inline)) inline IndexPart mark_indices_as(const MeshView<Scalar, Index>& mesh,
+                                                                std::size_t begin, std::size_t end,
+                                                                unsigned char* seen_vertex) {
+    IndexPart part;
+    // (Copies in locals: a byte store may alias anything, so what it could
+    // overwrite would be read again after each.)
+    const auto indices = mesh.indices;
+    const std::size_t vertex_count = mesh.vertex_count;
+    // A chunk at a time: whether an index is out of range first (a loop
+    // without branches and, in a whole chunk, of a fixed length, which
+    // compilers vectorise), then, when none is, one store per index and
+    // nothing else, while the chunk is still in the L1 cache.
+    constexpr std::size_t chunk = 2048;
+    static_assert(kIndicesPerPart % chunk == 0, "a part holds whole chunks");
+    // In 32 bits, which vectorise: the largest index in range (none when
+    // there is no vertex; every 32-bit index when there are more).
+    const std::uint32_t last = std::uint32_t(
+        std::min<std::size_t>(vertex_count, std::size_t{1} << 32) - (vertex_count > 0));
+    auto count_out_of_range = [&](std::size_t first, std::size_t length) {
+        std::uint32_t out = 0;
+        for (std::size_t i = 0; i < length; ++i) out += indices[first + i] > last;
+        return out;
+    };
+    auto mark = [&](std::size_t vertex) {
+        __atomic_store_n(&seen_vertex[vertex], static_cast<unsigned char>(1), __ATOMIC_RELAXED);
+    };
+    for (std::size_t first = begin; first < end; first += chunk) {
+        const std::size_t length = std::min(end - first, chunk);
+        const std::uint32_t out =
+            length == chunk ? count_out_of_range(first, chunk) : count_out_of_range(first, length);
+        if (out == 0 && vertex_count > 0) {
+#pragma GCC unroll 4
+            for (std::size_t i = first; i < first + length; ++i) mark(indices[i]);
+            continue;
+        }
+        part.all_in_range = false;
+        for (std::size_t i = first; i < first + length; ++i) {
+            const std::size_t vertex = indices[i];
+            if (vertex < vertex_count) mark(vertex);
+        }
+    }
+    return part;
+}
+
+// What a part of the vertices found.
+struct VertexPart {
+    Eigen::Vector3d low = Eigen::AlignedBox3d().min(), high = Eigen::AlignedBox3d().max();
+    std::size_t used_vertex_count = 0;
+    Finding non_finite;
+};
+
+// Bounds the used vertices of blocks [first_block, last_block) (64 vertices
+// each, the last one maybe fewer) and sets their bits of `used`.
+template <class Scalar, class Index>
+__attribute__((always_inline)) inline VertexPart bound_vertices_as(
+    const MeshView<Scalar, Index>& mesh, const unsigned char* seen_vertex, std::size_t addressable,
+    std::size_t first_block, std::size_t last_block, std::uint64_t* used_words) {
+    VertexPart part;
+    // Locals rather than the part's members, which the stores into `used` might alias.
+    Eigen::Vector3d low = part.low, high = part.high;
+    std::size_t used_vertex_count = 0;
+    const auto positions = mesh.positions;
+    const bool packed = positions.stride == 3 * sizeof(Scalar);
+    PackedBounds<Scalar> packed_bounds;
+    for (std::size_t block = first_block; block < last_block; ++block) {
+        const std::size_t begin = 64 * block, end = std::min(addressable, begin + 64);
+        // Usually every vertex of a block is used and finite: then no test
+        // per vertex. x − x is 0 for a finite x and NaN otherwise, and a NaN
+        // stays in a sum: one test for the block.
+        if (end - begin == 64 && all_set(seen_vertex + begin)) {
+            if (packed && packed_bounds.add_block(positions.base + begin * positions.stride)) {
+                used_words[block] = ~std::uint64_t{0};
+                used_vertex_count += 64;
+                continue;
+            }
+            Eigen::Vector3d block_low = low, block_high = high;
+            double finite_if_zero = 0.0;
+            for (std::size_t vertex = begin; vertex < end; ++vertex) {
+                const Eigen::Vector3d p = positions[vertex];
+                finite_if_zero += (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
+                block_low = block_low.cwiseMin(p);
+                block_high = block_high.cwiseMax(p);
+            }
+            if (finite_if_zero == 0.0) {
+                used_words[block] = ~std::uint64_t{0};
+                used_vertex_count += 64;
+                low = block_low, high = block_high;
+                continue;
+            }
+        }
+        std::uint64_t used = 0;
+        for (std::size_t vertex = begin; vertex < end; ++vertex) {
+            if (!seen_vertex[vertex]) continue;
+            used |= std::uint64_t{1} << (vertex % 64);
+            ++used_vertex_count;
+            const Eigen::Vector3d p = positions[vertex];
+            const double finite_if_zero = (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
+            if (finite_if_zero != 0.0) {
+                part.non_finite.record(vertex);
+                continue;
+            }
+            low = low.cwiseMin(p);
+            high = high.cwiseMax(p);
+        }
+        used_words[block] = used;
+    }
+    packed_bounds.reduce(low, high);
+    part.low = low, part.high = high;
+    part.used_vertex_count = used_vertex_count;
+    return part;
+}
+
+// The two loops built for each instruction set.
+template <class Scalar, class Index>
+struct ScanKernels {
+    IndexPart (*mark_indices)(const MeshView<Scalar, Index>&, std::size_t, std::size_t,
+                              unsigned char*);
+    VertexPart (*bound_vertices)(const MeshView<Scalar, Index>&, const unsigned char*, std::size_t,
+                                 std::size_t, std::size_t, std::uint64_t*);
+};
+
+#define POLYMASS_SCAN_KERNELS(name, target)                                                      \
+    template <class Scalar, class Index>                                                         \
+    target IndexPart mark_indices_##name(const MeshView<Scalar, Index>& mesh, std::size_t begin, \
+                                         std::size_t end, unsigned char* seen_vertex) {          \
+        return mark_indices_as(mesh, begin, end, seen_vertex);                                   \
+    }                                                                                            \
+    template <class Scalar, class Index>                                                         \
+    target VertexPart bound_vertices_##name(                                                     \
+        const MeshView<Scalar, Index>& mesh, const unsigned char* seen_vertex,                   \
+        std::size_t addressable, std::size_t first, std::size_t last, std::uint64_t* used) {     \
+        return bound_vertices_as(mesh, seen_vertex, addressable, first, last, used);             \
+    }
+POLYMASS_SCAN_KERNELS(baseline, )
+#if defined(__x86_64__)
+POLYMASS_SCAN_KERNELS(avx2, __attribute__((target("avx2"))))
+POLYMASS_SCAN_KERNELS(avx512, __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))))
+#endif
+#undef POLYMASS_SCAN_KERNELS
+
+template <class Scalar, class Index>
+ScanKernels<Scalar, Index> scan_kernels() {
+#if defined(__x86_64__)
+    switch (widest_instruction_set()) {
+        case InstructionSet::avx512:
+            return {mark_indices_avx512<Scalar, Index>, bound_vertices_avx512<Scalar, Index>};
+        case InstructionSet::avx2:
+            return {mark_indices_avx2<Scalar, Index>, bound_vertices_avx2<Scalar, Index>};
+        case InstructionSet::baseline:
+            break;
+    }
+#endif
+    return {mark_indices_baseline<Scalar, Index>, bound_vertices_baseline<Scalar, Index>};
+}
+
+}  // namespace
+
+template <class Scalar, class Index>
+MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
+                   TaskRunner& tasks) {
+    const ScanKernels<Scalar, Index> kernels = scan_kernels<Scalar, Index>();
     MeshScan scan(memory);
     // No index can reach past this, however long the caller says the array is.
     const std::size_t addressable = std::min<std::size_t>(
@@ -119,43 +293,17 @@ __attribute__((always_inline)) inline MeshScan scan_mesh_as(const MeshView<Scala
     // place would chain each face's read-modify-write of a word to the last
     // one's (neighbouring faces share vertices), a byte store waits for nothing.
     std::pmr::vector<unsigned char> seen(addressable, 0, memory);
-    // The index array in one run, faces aside: they matter only to report an
-    // index out of range, which is rare enough to look for again.
-    // (Copies in locals: a byte store may alias anything, so what it could
-    // overwrite would be read again after each.)
-    const auto indices = mesh.indices;
-    const std::size_t index_count = mesh.index_count, vertex_count = mesh.vertex_count;
-    unsigned char* const seen_vertex = seen.data();
-    // A chunk at a time: whether an index is out of range first (a loop
-    // without branches and, in a whole chunk, of a fixed length, which
-    // compilers vectorise), then, when none is, one store per index and
-    // nothing else, while the chunk is still in the L1 cache.
-    constexpr std::size_t chunk = 2048;
-    // In 32 bits, which vectorise: the largest index in range (none when
-    // there is no vertex; every 32-bit index when there are more).
-    const std::uint32_t last = std::uint32_t(
-        std::min<std::size_t>(vertex_count, std::size_t{1} << 32) - (vertex_count > 0));
-    auto count_out_of_range = [&](std::size_t begin, std::size_t length) {
-        std::uint32_t out = 0;
-        for (std::size_t i = 0; i < length; ++i) out += indices[begin + i] > last;
-        return out;
-    };
-    bool all_in_range = true;
-    for (std::size_t begin = 0; begin < index_count; begin += chunk) {
-        const std::size_t length = std::min(index_count - begin, chunk);
-        const std::uint32_t out =
-            length == chunk ? count_out_of_range(begin, chunk) : count_out_of_range(begin, length);
-        if (out == 0 && vertex_count > 0) {
-#pragma GCC unroll 4
-            for (std::size_t i = begin; i < begin + length; ++i) seen_vertex[indices[i]] = 1;
-            continue;
-        }
-        all_in_range = false;
-        for (std::size_t i = begin; i < begin + length; ++i) {
-            const std::size_t vertex = indices[i];
-            if (vertex < vertex_count) seen_vertex[vertex] = 1;
-        }
-    }
+    const std::size_t index_parts = (mesh.index_count + kIndicesPerPart - 1) / kIndicesPerPart;
+    std::pmr::vector<IndexPart> marked(index_parts, memory);
+    tasks.run(index_parts, [&](std::size_t part) {
+        const std::size_t begin = part * kIndicesPerPart;
+        marked[part] = kernels.mark_indices(
+            mesh, begin, std::min(mesh.index_count, begin + kIndicesPerPart), seen.data());
+    });
+    // The faces matter only to report an index out of range, which is rare
+    // enough to look for again.
+    const bool all_in_range = std::all_of(marked.begin(), marked.end(),
+                                          [](const IndexPart& part) { return part.all_in_range; });
     if (!all_in_range) {
         for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
             bool in_range = true;
@@ -170,101 +318,30 @@ __attribute__((always_inline)) inline MeshScan scan_mesh_as(const MeshView<Scala
     }
 
     scan.used.assign((addressable + 63) / 64, 0);
-    // Locals rather than scan's members, which the stores into scan.used might alias.
+    const std::size_t vertex_parts = (scan.used.size() + kBlocksPerPart - 1) / kBlocksPerPart;
+    std::pmr::vector<VertexPart> bounded(vertex_parts, memory);
+    tasks.run(vertex_parts, [&](std::size_t part) {
+        const std::size_t first = part * kBlocksPerPart;
+        bounded[part] = kernels.bound_vertices(mesh, seen.data(), addressable, first,
+                                               std::min(scan.used.size(), first + kBlocksPerPart),
+                                               scan.used.data());
+    });
     Eigen::Vector3d low = scan.bounds.min(), high = scan.bounds.max();
-    std::size_t used_vertex_count = 0;
-    const auto positions = mesh.positions;
-    const bool packed = positions.stride == 3 * sizeof(Scalar);
-    PackedBounds<Scalar> packed_bounds;
-    for (std::size_t block = 0; block < scan.used.size(); ++block) {
-        const std::size_t begin = 64 * block, end = std::min(addressable, begin + 64);
-        // Usually every vertex of a block is used and finite: then no test
-        // per vertex. x − x is 0 for a finite x and NaN otherwise, and a NaN
-        // stays in a sum: one test for the block.
-        if (end - begin == 64 && all_set(seen_vertex + begin)) {
-            if (packed && packed_bounds.add_block(positions.base + begin * positions.stride)) {
-                scan.used[block] = ~std::uint64_t{0};
-                used_vertex_count += 64;
-                continue;
-            }
-            Eigen::Vector3d block_low = low, block_high = high;
-            double finite_if_zero = 0.0;
-            for (std::size_t vertex = begin; vertex < end; ++vertex) {
-                const Eigen::Vector3d p = positions[vertex];
-                finite_if_zero += (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
-                block_low = block_low.cwiseMin(p);
-                block_high = block_high.cwiseMax(p);
-            }
-            if (finite_if_zero == 0.0) {
-                scan.used[block] = ~std::uint64_t{0};
-                used_vertex_count += 64;
-                low = block_low, high = block_high;
-                continue;
-            }
-        }
-        std::uint64_t used = 0;
-        for (std::size_t vertex = begin; vertex < end; ++vertex) {
-            if (!seen_vertex[vertex]) continue;
-            used |= std::uint64_t{1} << (vertex % 64);
-            ++used_vertex_count;
-            const Eigen::Vector3d p = positions[vertex];
-            const double finite_if_zero = (p.x() - p.x()) + (p.y() - p.y()) + (p.z() - p.z());
-            if (finite_if_zero != 0.0) {
-                scan.non_finite.record(vertex);
-                continue;
-            }
-            low = low.cwiseMin(p);
-            high = high.cwiseMax(p);
-        }
-        scan.used[block] = used;
+    for (const VertexPart& part : bounded) {
+        low = low.cwiseMin(part.low);
+        high = high.cwiseMax(part.high);
+        scan.used_vertex_count += part.used_vertex_count;
+        scan.non_finite.merge(part.non_finite);
     }
-    packed_bounds.reduce(low, high);
-    scan.used_vertex_count = used_vertex_count;
     scan.bounds = Eigen::AlignedBox3d(low, high);
-    if (packed) keep_first_zero_signs(mesh, seen_vertex, addressable, scan.bounds);
+    if (mesh.positions.stride == 3 * sizeof(Scalar))
+        keep_first_zero_signs(mesh, seen.data(), addressable, scan.bounds);
     return scan;
-}
-
-template <class Scalar, class Index>
-MeshScan scan_mesh_baseline(const MeshView<Scalar, Index>& mesh,
-                            std::pmr::memory_resource* memory) {
-    return scan_mesh_as(mesh, memory);
-}
-
-#if defined(__x86_64__)
-template <class Scalar, class Index>
-__attribute__((target("avx2"))) MeshScan scan_mesh_avx2(const MeshView<Scalar, Index>& mesh,
-                                                        std::pmr::memory_resource* memory) {
-    return scan_mesh_as(mesh, memory);
-}
-
-template <class Scalar, class Index>
-__attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))) MeshScan scan_mesh_avx512(
-    const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory) {
-    return scan_mesh_as(mesh, memory);
-}
-#endif
-
-}  // namespace
-
-template <class Scalar, class Index>
-MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory) {
-#if defined(__x86_64__)
-    switch (widest_instruction_set()) {
-        case InstructionSet::avx512:
-            return scan_mesh_avx512(mesh, memory);
-        case InstructionSet::avx2:
-            return scan_mesh_avx2(mesh, memory);
-        case InstructionSet::baseline:
-            break;
-    }
-#endif
-    return scan_mesh_baseline(mesh, memory);
 }
 
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
     template MeshScan scan_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
-                                               std::pmr::memory_resource*);
+                                               std::pmr::memory_resource*, TaskRunner&);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

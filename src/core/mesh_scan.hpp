@@ -10,6 +10,7 @@
 
 #include "findings.hpp"
 #include "mesh_view.hpp"
+#include "task_runner.hpp"
 
 namespace polymass::core {
 
@@ -35,7 +36,9 @@ struct MeshScan {
     double diagonal() const { return bounds.isEmpty() ? 0.0 : bounds.diagonal().stableNorm(); }
 };
 
+// Runs in fixed parts on `tasks`: the same scan whatever runs them.
 template <class Scalar, class Index>
-MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory);
+MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
+                   TaskRunner& tasks);
 
 }  // namespace polymass::core

@@ -39,7 +39,8 @@ using polymass_test::TestMesh;
 
 ConvexHull hull_of(const TestMesh& mesh) {
     const auto view = mesh.view();
-    const auto scan = polymass::core::scan_mesh(view, std::pmr::get_default_resource());
+    polymass::core::SerialTaskRunner serial;
+    const auto scan = polymass::core::scan_mesh(view, std::pmr::get_default_resource(), serial);
     return polymass::core::convex_hull(view, scan, std::pmr::get_default_resource());
 }
 

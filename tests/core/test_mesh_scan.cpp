@@ -1,9 +1,10 @@
 // The scan's bounding box is that of the used, finite vertices, whichever way
 // the scan reads them (a vector of packed coordinates at a time, or vertex by
-// vertex): the same as a minimum and maximum taken vertex by vertex, down to
-// which zero a bound of zero is (the first such coordinate's, as a running
-// minimum that keeps its value on a tie gives), for double and float, packed
-// and strided positions, with unused and non-finite vertices among them.
+// vertex) and in whatever order its parts run: the same as a minimum and
+// maximum taken vertex by vertex, down to which zero a bound of zero is (the
+// first such coordinate's, as a running minimum that keeps its value on a tie
+// gives), for double and float, packed and strided positions, with unused and
+// non-finite vertices among them, in one part and in several.
 #include "core/mesh_scan.hpp"
 
 #include "check.hpp"
@@ -11,6 +12,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory_resource>
 #include <random>
@@ -19,6 +21,14 @@
 namespace {
 
 bool same_bits(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
+
+// Runs the parts last first: the scan joins them in part order all the same.
+class ReversedTaskRunner final : public polymass::core::TaskRunner {
+public:
+    void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
+        for (std::size_t i = count; i-- > 0;) task(i);
+    }
+};
 
 // Positions (xyz per vertex, `stride` coordinates apart) and triangles over
 // every vertex but the unused ones.
@@ -55,14 +65,25 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
     view.indices.base = reinterpret_cast<const unsigned char*>(indices.data());
     view.index_count = indices.size();
     view.face_count = indices.size() / 3;
-    const polymass::core::MeshScan scan =
-        polymass::core::scan_mesh(view, std::pmr::get_default_resource());
-    bool same = true;
-    for (int axis = 0; axis < 3; ++axis)
-        same = same && same_bits(scan.bounds.min()[axis], low[axis]) &&
-               same_bits(scan.bounds.max()[axis], high[axis]);
-    if (!same) std::fprintf(stderr, "%s: the bounds differ\n", name);
-    CHECK(same);
+    polymass::core::SerialTaskRunner serial;
+    ReversedTaskRunner reversed;
+    for (polymass::core::TaskRunner* runner :
+         {static_cast<polymass::core::TaskRunner*>(&serial),
+          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
+        const polymass::core::MeshScan scan =
+            polymass::core::scan_mesh(view, std::pmr::get_default_resource(), *runner);
+        bool same = true;
+        for (int axis = 0; axis < 3; ++axis)
+            same = same && same_bits(scan.bounds.min()[axis], low[axis]) &&
+                   same_bits(scan.bounds.max()[axis], high[axis]);
+        if (!same)
+            std::fprintf(stderr, "%s (%zu vertices, %s): the bounds differ\n", name, vertices,
+                         runner == &serial ? "parts in order" : "parts in reverse");
+        CHECK(same);
+        std::size_t used = 0;
+        for (std::size_t v = 0; v < vertices; ++v) used += !unused[v];
+        CHECK(scan.used_vertex_count == used);
+    }
 }
 
 template <class Scalar>
@@ -77,7 +98,8 @@ void check_layouts(const char* name, const std::vector<double>& xyz,
 int main() {
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
-    for (std::size_t vertices : {5, 64, 200, 1000}) {
+    // 300,000 vertices: several parts of the index array and of the vertices.
+    for (std::size_t vertices : {5, 64, 200, 1000, 300000}) {
         std::vector<double> xyz(3 * vertices);
         for (double& c : xyz) c = coordinate(random);
         std::vector<bool> none(vertices, false), some(vertices, false);
