@@ -105,9 +105,10 @@ private:
     // Calls push(t) for the tasks that together do `task`, which must not be
     // two leaves: the children of a node with themselves and with each
     // other, or the children of the higher node with the other node, where
-    // their boxes overlap.
+    // their boxes overlap. Inlined: called once per task of the search, as a
+    // call it added 2 % to the instructions of a sphere's intersection check.
     template <class Push>
-    void split(const PairTask& task, Push&& push) const;
+    __attribute__((always_inline)) inline void split(const PairTask& task, Push&& push) const;
 
     std::size_t level_size(std::uint32_t level) const {
         return level_begin_[level + 1] - level_begin_[level];
