@@ -9,6 +9,7 @@
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
+#include "face_blocks.hpp"
 #include "radix_sort.hpp"
 #include "surface_triangles.hpp"
 #include "triangle_contact.hpp"
@@ -139,6 +140,17 @@ private:
     bool stopped_ = false;
 };
 
+// visit(t) for each t in [0, count), in fixed blocks run as tasks: for
+// passes over the triangles whose items are independent of one another.
+template <class Visit>
+void for_each_in_blocks(std::size_t count, TaskRunner& tasks, const Visit& visit) {
+    const std::size_t blocks = (count + kFacesPerBlock - 1) / kFacesPerBlock;
+    tasks.run(blocks, [&](std::size_t block) {
+        const std::size_t end = std::min(count, (block + 1) * kFacesPerBlock);
+        for (std::size_t t = block * kFacesPerBlock; t < end; ++t) visit(t);
+    });
+}
+
 // For each triangle, the lowest triangle at the same three positions in the
 // same order (itself when none is lower), and how many share them: copies of a
 // part stacked in place, or a surface exported twice, meet every other
@@ -150,7 +162,7 @@ private:
 // coordinate. Sorting every triangle by its coordinates took 40 % of the
 // intersection check of a million-triangle sphere.
 template <class TriangleAt>
-void find_shapes(std::size_t count, const TriangleAt& triangle,
+void find_shapes(std::size_t count, const TriangleAt& triangle, TaskRunner& tasks,
                  std::pmr::vector<std::uint32_t>& shape_of,
                  std::pmr::vector<std::uint32_t>& copies) {
     auto coordinates = [&](std::uint32_t t) {
@@ -173,8 +185,9 @@ void find_shapes(std::size_t count, const TriangleAt& triangle,
     };
     std::pmr::memory_resource* memory = shape_of.get_allocator().resource();
     std::pmr::vector<std::uint64_t> keys(count, memory);
-    for (std::uint32_t t = 0; t < count; ++t)
-        keys[t] = (hash(coordinates(t)) & 0xffffffff00000000u) | t;
+    for_each_in_blocks(count, tasks, [&](std::size_t t) {
+        keys[t] = (hash(coordinates(std::uint32_t(t))) & 0xffffffff00000000u) | t;
+    });
     radix_sort(keys.data(), keys.data() + keys.size(), memory);
     auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
     shape_of.assign(count, 0);
@@ -240,17 +253,17 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
 
     // Degenerate triangles keep an empty box: they bound nothing and meet nothing.
     std::pmr::vector<FloatBox> boxes(triangles.size(), memory);
-    FloatBox everything;
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for_each_in_blocks(triangles.size(), tasks, [&](std::size_t t) {
         const Triangle corners = triangle(t);
-        if (is_degenerate(corners)) continue;
+        if (is_degenerate(corners)) return;
         for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
-        everything.extend(boxes[t]);
-    }
+    });
+    FloatBox everything;
+    for (const FloatBox& box : boxes) everything.extend(box);
     const BoxTree tree(boxes, memory);
 
     std::pmr::vector<std::uint32_t> shape_of(memory), copies(memory);
-    find_shapes(triangles.size(), triangle, shape_of, copies);
+    find_shapes(triangles.size(), triangle, tasks, shape_of, copies);
 
     // The contacts of one piece of the search, found on any thread.
     struct PieceContacts {
