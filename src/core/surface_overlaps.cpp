@@ -240,9 +240,10 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     // position of the vertex it was welded to, so that corners the surface
     // shares are the same point, not two points 1e-17 apart whose triangles
     // would seem to cross.
-    auto triangle = [&](std::size_t t) {
-        return Triangle{mesh.positions[ids[t][0]], mesh.positions[ids[t][1]],
-                        mesh.positions[ids[t][2]]};
+    // Corner `first` first, keeping the triangle's turn.
+    auto triangle = [&](std::size_t t, int first = 0) {
+        return Triangle{mesh.positions[ids[t][first]], mesh.positions[ids[t][(first + 1) % 3]],
+                        mesh.positions[ids[t][(first + 2) % 3]]};
     };
     // The tree's boxes are in a power-of-two unit near the surface's size, so
     // that single precision holds them for any size a double does.
@@ -294,12 +295,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                         at_j = l;
                     }
             if (shared >= 2) return;  // neighbours across an edge
+            // The shared corner first.
             auto test = [&] {
-                const Triangle p = triangle(i), q = triangle(j);
-                // The shared corner first, keeping each triangle's turn.
-                const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
-                const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
-                return triangle_contact(p_turned, q_turned, shared == 1);
+                return triangle_contact(triangle(i, at_i), triangle(j, at_j), shared == 1);
             };
             Contact contact;
             if (shared == 0 && (copies[i] > 1 || copies[j] > 1)) {
