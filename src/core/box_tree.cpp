@@ -98,4 +98,21 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
     pad_ = std::isfinite(extent) ? 1e-6 * extent : 0.0;
 }
 
+std::pmr::vector<BoxTree::PairTask> BoxTree::pair_tasks() const {
+    std::pmr::vector<PairTask> pieces(memory_);
+    if (order_.empty()) return pieces;
+    std::pmr::vector<PairTask> pending(memory_);
+    pending.push_back({root(), root()});
+    while (!pending.empty()) {
+        const PairTask task = pending.back();
+        pending.pop_back();
+        if (std::max(task.first.level, task.second.level) <= kPieceLevel) {
+            pieces.push_back(task);
+        } else {
+            split(task, [&](const PairTask& part) { pending.push_back(part); });
+        }
+    }
+    return pieces;
+}
+
 }  // namespace polymass::core

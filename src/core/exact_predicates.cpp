@@ -264,6 +264,31 @@ int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
     return orient3d_exact(a, b, c, d);
 }
 
+PlaneSide::PlaneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+    : a_(a), b_(b), c_(c) {
+    const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    const double uy_vz = uy * vz, uz_vy = uz * vy;
+    const double uz_vx = uz * vx, ux_vz = ux * vz;
+    const double ux_vy = ux * vy, uy_vx = uy * vx;
+    normal_ = {uy_vz - uz_vy, uz_vx - ux_vz, ux_vy - uy_vx};
+    normal_permanent_ = {std::fabs(uy_vz) + std::fabs(uz_vy), std::fabs(uz_vx) + std::fabs(ux_vz),
+                         std::fabs(ux_vy) + std::fabs(uy_vx)};
+}
+
+int PlaneSide::of(const Eigen::Vector3d& d) const {
+    const double wx = d[0] - a_[0], wy = d[1] - a_[1], wz = d[2] - a_[2];
+    const double det = wx * normal_[0] + wy * normal_[1] + wz * normal_[2];
+    const double awx = std::fabs(wx), awy = std::fabs(wy), awz = std::fabs(wz);
+    const double permanent =
+        awx * normal_permanent_[0] + awy * normal_permanent_[1] + awz * normal_permanent_[2];
+    // NaN or infinity anywhere (overflow) makes the comparison false.
+    const double bound =
+        orient3d_relative_bound * permanent + underflow_cover * (awx + awy + awz + 1.0);
+    if (std::fabs(det) > bound) return det > 0.0 ? 1 : -1;
+    return orient3d_exact(a_, b_, c_, d);
+}
+
 int orient2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
     const double ux_vy = (b[0] - a[0]) * (c[1] - a[1]);
     const double uy_vx = (b[1] - a[1]) * (c[0] - a[0]);

@@ -23,6 +23,22 @@ namespace polymass::core {
 int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
              const Eigen::Vector3d& d);
 
+// orient3d(a, b, c, d) for one plane abc and many points d: the same exact
+// sign, with the plane's cross product, which every orient3d call would
+// compute again, computed once (the filter expanded along the row of d − a,
+// with the same bound: docs/exact-predicates.md). The points must outlive it.
+class PlaneSide {
+public:
+    PlaneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+    int of(const Eigen::Vector3d& d) const;
+
+private:
+    const Eigen::Vector3d &a_, &b_, &c_;
+    Eigen::Vector3d normal_;  // (b − a) × (c − a), rounded
+    // |the two products| summed, for each component of normal_.
+    Eigen::Vector3d normal_permanent_;
+};
+
 // Sign of (b − a) × (c − a): +1 when a, b, c turn counter-clockwise, 0 when
 // they are collinear.
 int orient2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);

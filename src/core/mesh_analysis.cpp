@@ -56,7 +56,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     if (settings.check_intersections && std::isfinite(scan.diagonal())) {
         const Shells* shells = analysis.shells ? &analysis.shells->shells : nullptr;
         analysis.overlaps = find_overlaps(mesh, vertex_ids, integration.reference, integration.size,
-                                          shells, memory);
+                                          shells, tasks, memory);
         if (!analysis.overlaps->winding_of_shell.empty())
             classify_by_winding(*analysis.shells, analysis.overlaps->winding_of_shell,
                                 analysis.verdict.outward);

@@ -9,6 +9,7 @@
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
+#include "face_blocks.hpp"
 #include "radix_sort.hpp"
 #include "surface_triangles.hpp"
 #include "triangle_contact.hpp"
@@ -45,14 +46,21 @@ const Eigen::Vector3d kProbeDirections[] = {
 constexpr std::size_t kProbeVertices = 4;
 
 // Face pairs of one kind (crossing, touching) as the candidates come, in any
-// order and with repeats (a polygon's triangles): every pair is counted until
-// kMostCountedPairs distinct ones are; past that, only a pair that would be
-// among the lowest kKeptLocations is still wanted. Piles of coincident copies
-// of a part meet in millions of pairs, each an exact test: counting them all
-// took minutes and told nothing the first thousand do not.
+// order and with repeats (a polygon's triangles): every distinct pair is
+// counted until kMostCountedPairs are; past that, the count is that many (a
+// lower bound) and only a pair that would be among the lowest kKeptLocations
+// is still wanted. Piles of coincident copies of a part meet in millions of
+// pairs, each an exact test: counting them all took minutes and told nothing
+// the first thousands do not.
+//
+// The pieces of the search (BoxTree::pair_tasks) collect on their own and
+// are merged: the count is the number of distinct pairs, or
+// kMostCountedPairs when there are at least that many, and the lowest pairs
+// are exact, however the pairs were cut into pieces and in whatever order
+// they came.
 class PairCollector {
 public:
-    static constexpr std::size_t kMostCountedPairs = 1024;
+    static constexpr std::size_t kMostCountedPairs = 2048;
 
     explicit PairCollector(std::pmr::memory_resource* memory) : pairs_(memory) {}
 
@@ -65,12 +73,16 @@ public:
         keep_if_lowest(pair);
         if (stopped_) return;
         pairs_.push_back(pair);
-        // Repeats are dropped before deciding to stop: a polygon's pair may
-        // come once per triangle.
-        if (pairs_.size() >= 2 * kMostCountedPairs) {
-            sort_unique(pairs_);
-            stopped_ = pairs_.size() >= kMostCountedPairs;
-        }
+        if (pairs_.size() >= next_tidy_) tidy();
+    }
+
+    // Takes in what another piece of the search collected.
+    void merge(const PairCollector& piece) {
+        for (std::size_t i = 0; i < piece.kept_; ++i) keep_if_lowest(piece.lowest_[i]);
+        if (stopped_) return;
+        pairs_.insert(pairs_.end(), piece.pairs_.begin(), piece.pairs_.end());
+        stopped_ = piece.stopped_;
+        tidy();
     }
 
     // The pairs counted, without those `except` holds. Past the stop the
@@ -85,7 +97,7 @@ public:
             std::size_t kept = 0;
             for (std::size_t i = 0; i < kept_; ++i)
                 if (!excepted(lowest_[i])) found.lowest[kept++] = lowest_[i];
-            found.count = std::max(found.count, kept);
+            found.count = std::max(std::min(found.count, kMostCountedPairs), kept);
             found.complete = false;
         }
         return found;
@@ -98,6 +110,15 @@ public:
     }
 
 private:
+    // Drops repeats and stops at kMostCountedPairs distinct pairs; the next
+    // tidy comes after as many more pairs, so that each costs a sort of at
+    // most twice that many.
+    void tidy() {
+        sort_unique(pairs_);
+        stopped_ = stopped_ || pairs_.size() >= kMostCountedPairs;
+        next_tidy_ = pairs_.size() + kMostCountedPairs;
+    }
+
     void keep_if_lowest(const FacePair& pair) {
         auto end = lowest_.begin() + kept_;
         auto at = std::lower_bound(lowest_.begin(), end, pair);
@@ -112,11 +133,23 @@ private:
         *at = pair;
     }
 
-    std::pmr::vector<FacePair> pairs_;  // until stopped, with repeats between sorts
+    std::pmr::vector<FacePair> pairs_;  // until stopped, with repeats between tidies
+    std::size_t next_tidy_ = kMostCountedPairs;
     std::array<FacePair, kKeptLocations> lowest_{};
     std::size_t kept_ = 0;
     bool stopped_ = false;
 };
+
+// visit(t) for each t in [0, count), in fixed blocks run as tasks: for
+// passes over the triangles whose items are independent of one another.
+template <class Visit>
+void for_each_in_blocks(std::size_t count, TaskRunner& tasks, const Visit& visit) {
+    const std::size_t blocks = (count + kFacesPerBlock - 1) / kFacesPerBlock;
+    tasks.run(blocks, [&](std::size_t block) {
+        const std::size_t end = std::min(count, (block + 1) * kFacesPerBlock);
+        for (std::size_t t = block * kFacesPerBlock; t < end; ++t) visit(t);
+    });
+}
 
 // For each triangle, the lowest triangle at the same three positions in the
 // same order (itself when none is lower), and how many share them: copies of a
@@ -129,7 +162,7 @@ private:
 // coordinate. Sorting every triangle by its coordinates took 40 % of the
 // intersection check of a million-triangle sphere.
 template <class TriangleAt>
-void find_shapes(std::size_t count, const TriangleAt& triangle,
+void find_shapes(std::size_t count, const TriangleAt& triangle, TaskRunner& tasks,
                  std::pmr::vector<std::uint32_t>& shape_of,
                  std::pmr::vector<std::uint32_t>& copies) {
     auto coordinates = [&](std::uint32_t t) {
@@ -152,8 +185,9 @@ void find_shapes(std::size_t count, const TriangleAt& triangle,
     };
     std::pmr::memory_resource* memory = shape_of.get_allocator().resource();
     std::pmr::vector<std::uint64_t> keys(count, memory);
-    for (std::uint32_t t = 0; t < count; ++t)
-        keys[t] = (hash(coordinates(t)) & 0xffffffff00000000u) | t;
+    for_each_in_blocks(count, tasks, [&](std::size_t t) {
+        keys[t] = (hash(coordinates(std::uint32_t(t))) & 0xffffffff00000000u) | t;
+    });
     radix_sort(keys.data(), keys.data() + keys.size(), memory);
     auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
     shape_of.assign(count, 0);
@@ -193,7 +227,7 @@ void find_shapes(std::size_t count, const TriangleAt& triangle,
 template <class Scalar, class Index>
 SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                               const Eigen::Vector3d& reference, double size, const Shells* shells,
-                              std::pmr::memory_resource* memory) {
+                              TaskRunner& tasks, std::pmr::memory_resource* memory) {
     SurfaceOverlaps result(memory);
     SurfaceTriangles triangles = triangulate_faces(mesh, memory);
     // Each corner as the vertex it is welded to, in place: the test of shared
@@ -206,9 +240,10 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     // position of the vertex it was welded to, so that corners the surface
     // shares are the same point, not two points 1e-17 apart whose triangles
     // would seem to cross.
-    auto triangle = [&](std::size_t t) {
-        return Triangle{mesh.positions[ids[t][0]], mesh.positions[ids[t][1]],
-                        mesh.positions[ids[t][2]]};
+    // Corner `first` first, keeping the triangle's turn.
+    auto triangle = [&](std::size_t t, int first = 0) {
+        return Triangle{mesh.positions[ids[t][first]], mesh.positions[ids[t][(first + 1) % 3]],
+                        mesh.positions[ids[t][(first + 2) % 3]]};
     };
     // The tree's boxes are in a power-of-two unit near the surface's size, so
     // that single precision holds them for any size a double does.
@@ -219,56 +254,71 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
 
     // Degenerate triangles keep an empty box: they bound nothing and meet nothing.
     std::pmr::vector<FloatBox> boxes(triangles.size(), memory);
-    FloatBox everything;
-    for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for_each_in_blocks(triangles.size(), tasks, [&](std::size_t t) {
         const Triangle corners = triangle(t);
-        if (is_degenerate(corners)) continue;
+        if (is_degenerate(corners)) return;
         for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
-        everything.extend(boxes[t]);
-    }
+    });
+    FloatBox everything;
+    for (const FloatBox& box : boxes) everything.extend(box);
     const BoxTree tree(boxes, memory);
 
     std::pmr::vector<std::uint32_t> shape_of(memory), copies(memory);
-    find_shapes(triangles.size(), triangle, shape_of, copies);
-    // The contact of two shapes, once tested, for pairs of triangles that
-    // share no corner and of which one has copies.
-    std::pmr::unordered_map<std::uint64_t, Contact> contact_of_shapes(memory);
+    find_shapes(triangles.size(), triangle, tasks, shape_of, copies);
 
-    PairCollector crossing(memory), touching(memory);
-    tree.for_each_overlapping_pair([&](std::uint32_t i, std::uint32_t j) {
-        const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
-        if (face_i == face_j) return;  // pieces of one polygon
-        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-        if (!crossing.wants(pair) && !touching.wants(pair)) return;
-        int shared = 0, at_i = 0, at_j = 0;
-        for (int k = 0; k < 3; ++k)
-            for (int l = 0; l < 3; ++l)
-                if (ids[i][k] == ids[j][l]) {
-                    ++shared;
-                    at_i = k;
-                    at_j = l;
-                }
-        if (shared >= 2) return;  // neighbours across an edge
-        auto test = [&] {
-            const Triangle p = triangle(i), q = triangle(j);
-            // The shared corner first, keeping each triangle's turn.
-            const Triangle p_turned{p[at_i], p[(at_i + 1) % 3], p[(at_i + 2) % 3]};
-            const Triangle q_turned{q[at_j], q[(at_j + 1) % 3], q[(at_j + 2) % 3]};
-            return triangle_contact(p_turned, q_turned, shared == 1);
-        };
-        Contact contact;
-        if (shared == 0 && (copies[i] > 1 || copies[j] > 1)) {
-            const std::uint64_t key = std::uint64_t(shape_of[i]) << 32 | shape_of[j];
-            const auto known = contact_of_shapes.find(key);
-            contact = known != contact_of_shapes.end()
-                          ? known->second
-                          : contact_of_shapes.emplace(key, test()).first->second;
-        } else {
-            contact = test();
-        }
-        if (contact == Contact::none) return;
-        (contact == Contact::crossing ? crossing : touching).add(pair);
+    // The contacts of one piece of the search, found on any thread.
+    struct PieceContacts {
+        PairCollector crossing, touching;
+    };
+    const std::pmr::vector<BoxTree::PairTask> pieces = tree.pair_tasks();
+    std::pmr::vector<PieceContacts> found(memory);
+    found.reserve(pieces.size());
+    for (std::size_t piece = 0; piece < pieces.size(); ++piece)
+        found.push_back({PairCollector(memory), PairCollector(memory)});
+    tasks.run(pieces.size(), [&](std::size_t piece) {
+        PairCollector& crossing = found[piece].crossing;
+        PairCollector& touching = found[piece].touching;
+        // The contact of two shapes, once tested, for pairs of triangles that
+        // share no corner and of which one has copies.
+        std::pmr::unordered_map<std::uint64_t, Contact> contact_of_shapes(memory);
+        tree.for_each_overlapping_pair(pieces[piece], [&](std::uint32_t i, std::uint32_t j) {
+            const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
+            if (face_i == face_j) return;  // pieces of one polygon
+            const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+            if (!crossing.wants(pair) && !touching.wants(pair)) return;
+            int shared = 0, at_i = 0, at_j = 0;
+            for (int k = 0; k < 3; ++k)
+                for (int l = 0; l < 3; ++l)
+                    if (ids[i][k] == ids[j][l]) {
+                        ++shared;
+                        at_i = k;
+                        at_j = l;
+                    }
+            if (shared >= 2) return;  // neighbours across an edge
+            // The shared corner first.
+            auto test = [&] {
+                return triangle_contact(triangle(i, at_i), triangle(j, at_j), shared == 1);
+            };
+            Contact contact;
+            if (shared == 0 && (copies[i] > 1 || copies[j] > 1)) {
+                const std::uint64_t key = std::uint64_t(shape_of[i]) << 32 | shape_of[j];
+                const auto known = contact_of_shapes.find(key);
+                contact = known != contact_of_shapes.end()
+                              ? known->second
+                              : contact_of_shapes.emplace(key, test()).first->second;
+            } else {
+                contact = test();
+            }
+            if (contact == Contact::none) return;
+            (contact == Contact::crossing ? crossing : touching).add(pair);
+        });
     });
+    // In piece order, though the result does not depend on it.
+    PairCollector crossing(memory), touching(memory);
+    for (const PieceContacts& piece : found) {
+        crossing.merge(piece.crossing);
+        touching.merge(piece.touching);
+    }
     // Faces that cross somewhere are listed as crossing only.
     result.crossing = crossing.finding();
     result.touching = touching.finding(&crossing);
@@ -338,7 +388,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                                   \
     template SurfaceOverlaps find_overlaps<Scalar, Index>(                                    \
         const MeshView<Scalar, Index>&, const std::uint32_t*, const Eigen::Vector3d&, double, \
-        const Shells*, std::pmr::memory_resource*);
+        const Shells*, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -16,9 +16,8 @@ using Signs = std::array<int, 3>;
 
 // Sides of the corners of t relative to the plane of `plane` (orient3d signs).
 Signs sides(const Triangle& plane, const Triangle& t) {
-    return {orient3d(plane[0], plane[1], plane[2], t[0]),
-            orient3d(plane[0], plane[1], plane[2], t[1]),
-            orient3d(plane[0], plane[1], plane[2], t[2])};
+    const PlaneSide side(plane[0], plane[1], plane[2]);
+    return {side.of(t[0]), side.of(t[1]), side.of(t[2])};
 }
 
 bool all_strictly_one_side(const Signs& s) {
@@ -165,9 +164,11 @@ Contact straddling_contact(Triangle p, Signs p_sides, Triangle q, Signs q_sides)
 // almost every pair of neighbours around a vertex fails that at the first
 // two predicates, and the shared corner's own side (zero) costs none.
 Contact shared_corner_contact(const Triangle& p, const Triangle& q) {
-    const Signs p_sides{0, orient3d(q[0], q[1], q[2], p[1]), orient3d(q[0], q[1], q[2], p[2])};
+    const PlaneSide q_side(q[0], q[1], q[2]);
+    const Signs p_sides{0, q_side.of(p[1]), q_side.of(p[2])};
     if (p_sides[1] * p_sides[2] >= 0) return Contact::none;
-    const Signs q_sides{0, orient3d(p[0], p[1], p[2], q[1]), orient3d(p[0], p[1], p[2], q[2])};
+    const PlaneSide p_side(p[0], p[1], p[2]);
+    const Signs q_sides{0, p_side.of(q[1]), p_side.of(q[2])};
     if (q_sides[1] * q_sides[2] >= 0) return Contact::none;
     const Contact contact = straddling_contact(p, p_sides, q, q_sides);
     return contact == Contact::crossing ? contact : Contact::none;

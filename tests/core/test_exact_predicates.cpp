@@ -1,4 +1,4 @@
-// orient3d and orient2d against an exact reference: every double is an
+// orient3d, PlaneSide and orient2d against an exact reference: every double is an
 // integer times 2^-1074, so the determinants are evaluated here exactly with
 // a small arbitrary-precision integer type on those integers. The inputs are
 // chosen where double evaluation gets the sign wrong: coplanar (collinear)
@@ -23,6 +23,7 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 using polymass::core::orient2d;
 using polymass::core::orient3d;
+using polymass::core::PlaneSide;
 
 // Signed integer of any size: sign and magnitude in base 2^32, little-endian.
 struct BigInt {
@@ -167,6 +168,8 @@ void check_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c, con
     CHECK(orient3d(b, a, c, d) == -expected);
     CHECK(orient3d(d, b, c, a) == -expected);
     CHECK(orient3d(b, c, a, d) == expected);
+    CHECK(PlaneSide(a, b, c).of(d) == expected);
+    CHECK(PlaneSide(d, b, c).of(a) == -expected);
 }
 
 void check_orient2d(const Vector2d& a, const Vector2d& b, const Vector2d& c, Counts& counts) {

@@ -205,6 +205,78 @@ static void test_thread_counts_give_the_same_findings(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* The intersection check of `m` for every count: the same status,
+   diagnostics (counts, first face pairs) and message as with one thread.
+   Returns the one-thread diagnostics and message. */
+static polymass_diagnostics overlaps_for_every_count(const pm_mesh* m, int32_t status,
+                                                     char first_message[512]) {
+    const polymass_mesh_desc desc = pm_mesh_desc(m);
+    polymass_context* ctx = pm_context_new(0);
+    polymass_diagnostics first, report;
+    int k;
+    for (k = 0; k < THREAD_COUNTS; ++k) {
+        const polymass_options o =
+            options_with_threads(POLYMASS_OPTION_CHECK_INTERSECTIONS, thread_counts[k]);
+        pm_diagnostics_init(k == 0 ? &first : &report);
+        PM_ASSERT_STATUS(
+            ctx, status,
+            polymass_mesh_check_with_options(k == 0 ? &first : &report, ctx, &desc, &o));
+        if (k == 0) {
+            strcpy(first_message, polymass_context_message(ctx));
+        } else {
+            assert_memory_equal(&first, &report, sizeof report);
+            assert_string_equal(first_message, polymass_context_message(ctx));
+        }
+    }
+    polymass_context_destroy(ctx);
+    return first;
+}
+
+/* Faces that cross and faces that touch, found among many pieces of the
+   search (14,424 triangles), all counted: the same findings for every count. */
+static void test_thread_counts_give_the_same_overlaps(void** state) {
+    static const double centre[3] = {0, 0, 0}, beside[3] = {10, 0, 0.5};
+    static const double lo[3] = {30, 0, 0}, hi[3] = {31, 1, 1};
+    static const double lo_above[3] = {30.25, 0.25, 1}, hi_above[3] = {30.75, 0.75, 2};
+    pm_mesh m;
+    polymass_diagnostics d;
+    char message[512];
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 200, 30, 10.0, 3.0, centre);
+    pm_mesh_add_torus(&m, 60, 20, 10.0, 3.0, beside); /* its tube crosses the first's twice */
+    pm_mesh_add_box(&m, lo, hi, 1);
+    pm_mesh_add_box(&m, lo_above, hi_above, 1); /* resting on the box: they touch */
+    d = overlaps_for_every_count(&m, POLYMASS_ERROR_INTERSECTING, message);
+    assert_true(d.intersecting_face_pairs > POLYMASS_DIAGNOSTIC_LOCATIONS);
+    assert_true(d.touching_face_pairs > 0);
+    assert_null(strstr(message, "at least"));
+    pm_mesh_free(&m);
+}
+
+/* Piles past the count's stop: a torus and a copy of it moved a little
+   (its faces cross their neighbours'), and a torus with a coincident copy
+   (its faces touch): every kind stops at 2048 pairs, "at least", with the
+   same lowest pairs for every count. */
+static void test_thread_counts_give_the_same_piles(void** state) {
+    static const double centre[3] = {0, 0, 0}, moved[3] = {0.05, 0.07, 0.11};
+    static const double apart[3] = {40, 0, 0};
+    pm_mesh m;
+    polymass_diagnostics d;
+    char message[512];
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 400, 12, 10.0, 3.0, centre);
+    pm_mesh_add_torus(&m, 400, 12, 10.0, 3.0, moved);
+    pm_mesh_add_torus(&m, 60, 20, 10.0, 3.0, apart);
+    pm_mesh_add_torus(&m, 60, 20, 10.0, 3.0, apart);
+    d = overlaps_for_every_count(&m, POLYMASS_ERROR_INTERSECTING, message);
+    assert_non_null(strstr(message, "(at least 2048 "));
+    assert_int_equal(d.intersecting_face_pairs, 2048);
+    assert_int_equal(d.touching_face_pairs, 2048);
+    pm_mesh_free(&m);
+}
+
 /* A batch spread over the context's threads: each item's status, message
    and properties as with one thread, whatever the items' own options. */
 static void test_batch_thread_counts_give_the_same_bits(void** state) {
@@ -282,6 +354,8 @@ int main(void) {
         cmocka_unit_test(test_contexts_are_independent),
         cmocka_unit_test(test_thread_counts_give_the_same_bits),
         cmocka_unit_test(test_thread_counts_give_the_same_findings),
+        cmocka_unit_test(test_thread_counts_give_the_same_overlaps),
+        cmocka_unit_test(test_thread_counts_give_the_same_piles),
         cmocka_unit_test(test_batch_thread_counts_give_the_same_bits),
         cmocka_unit_test(test_threads_option),
     };
