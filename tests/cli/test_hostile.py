@@ -192,6 +192,16 @@ class Hostile(unittest.TestCase):
                 fixtures.write_gltf_document(path, document, bytes(buffer))
                 self.expect_unreadable(path, "")
 
+    def test_gltf_primitive_naming_an_accessor_that_does_not_exist(self):
+        # A fuzzer's find (tests/fuzz/gltf/regressions/): the reader looked
+        # the POSITION accessor up with vector::at, whose std::out_of_range
+        # escaped as "the reader failed (exit status 2)".
+        document, buffer = self.gltf_parts()
+        document["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 5
+        path = WORK / "no_such_accessor.gltf"
+        fixtures.write_gltf_document(path, document, bytes(buffer))
+        self.expect_unreadable(path, "accessor 5 does not exist")
+
     def test_gltf_nodes_nested_deeply(self):
         document, buffer = self.gltf_parts()
         depth = 10_000  # ten times the deepest tree the reader follows

@@ -65,12 +65,19 @@ struct AccessorBytes {
     size_t count = 0;
 };
 
+// Accessor number index, which a primitive names: a ReadError when there is
+// no such accessor.
+const tinygltf::Accessor& accessor_at(const tinygltf::Model& model, int index) {
+    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
+        throw ReadError("accessor " + std::to_string(index) + " does not exist (the file has " +
+                        std::to_string(model.accessors.size()) + ")");
+    }
+    return model.accessors[static_cast<size_t>(index)];
+}
+
 AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, size_t element_size) {
     const std::string name = "accessor " + std::to_string(index);
-    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size()) {
-        throw ReadError(name + " does not exist");
-    }
-    const tinygltf::Accessor& accessor = model.accessors[index];
+    const tinygltf::Accessor& accessor = accessor_at(model, index);
     if (accessor.sparse.isSparse) throw ReadError(name + " is sparse, which is not supported");
     if (accessor.bufferView < 0 ||
         static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size()) {
@@ -119,7 +126,7 @@ std::vector<uint32_t> primitive_indices(const tinygltf::Model& model,
         for (size_t v = 0; v < vertex_count; ++v) indices.push_back(static_cast<uint32_t>(v));
         return indices;
     }
-    const tinygltf::Accessor& accessor = model.accessors.at(primitive.indices);
+    const tinygltf::Accessor& accessor = accessor_at(model, primitive.indices);
     const int size = accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE    ? 1
                      : accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2
                      : accessor.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT   ? 4
@@ -170,7 +177,7 @@ void add_primitive(Model& model, Part& part, const tinygltf::Model& gltf,
     if (position == primitive.attributes.end()) {
         throw ReadError("a triangle primitive has no POSITION attribute");
     }
-    const tinygltf::Accessor& accessor = gltf.accessors.at(position->second);
+    const tinygltf::Accessor& accessor = accessor_at(gltf, position->second);
     if (accessor.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT ||
         accessor.type != TINYGLTF_TYPE_VEC3) {
         throw ReadError("accessor " + std::to_string(position->second) +
