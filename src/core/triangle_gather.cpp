@@ -118,31 +118,33 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
         _mm_maskload_ps(reinterpret_cast<const float*>(xyz), _mm_setr_epi32(-1, -1, -1, 0))));
 }
 
-template <bool listed, class Scalar, class Index>
-__attribute__((target("avx2"))) void gather_avx2(const TriangleBatch<Scalar, Index>& batch,
-                                                 GatheredTriangles& gathered) {
-    const CornerSource<listed, Scalar, Index> source(batch);
-    std::size_t slot = 0;
-    for (; slot + lane_count <= batch.count; slot += lane_count)
-#pragma GCC unroll 3
-        for (int corner = 0; corner < 3; ++corner) {
-            Lanes rows[lane_count];
-#pragma GCC unroll 4
-            for (int lane = 0; lane < lane_count; ++lane)
-                vertex_row_avx2(source.vertex(slot + lane, corner), Scalar{}, rows[lane]);
-            store_transposed(rows, gathered, corner, slot);
-        }
-    gather_one_by_one<listed>(batch, slot, gathered);
-}
+// The gathering loop for one instruction set: four vertex rows at a time,
+// loaded by vertex_row_<name>, transposed into the batch's lanes.
+#define POLYMASS_GATHER(name, target)                                                            \
+    template <bool listed, class Scalar, class Index>                                            \
+    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,                         \
+                              GatheredTriangles& gathered) {                                     \
+        const CornerSource<listed, Scalar, Index> source(batch);                                 \
+        std::size_t slot = 0;                                                                    \
+        for (; slot + lane_count <= batch.count; slot += lane_count)                             \
+            _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {                 \
+                Lanes rows[lane_count];                                                          \
+                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)            \
+                    vertex_row_##name(source.vertex(slot + lane, corner), Scalar{}, rows[lane]); \
+                store_transposed(rows, gathered, corner, slot);                                  \
+            }                                                                                    \
+        gather_one_by_one<listed>(batch, slot, gathered);                                        \
+    }                                                                                            \
+    template <class Scalar, class Index>                                                         \
+    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,                         \
+                              GatheredTriangles& gathered) {                                     \
+        if (batch.faces)                                                                         \
+            gather_##name<true>(batch, gathered);                                                \
+        else                                                                                     \
+            gather_##name<false>(batch, gathered);                                               \
+    }
 
-template <class Scalar, class Index>
-__attribute__((target("avx2"))) void gather_avx2(const TriangleBatch<Scalar, Index>& batch,
-                                                 GatheredTriangles& gathered) {
-    if (batch.faces)
-        gather_avx2<true>(batch, gathered);
-    else
-        gather_avx2<false>(batch, gathered);
-}
+POLYMASS_GATHER(avx2, __attribute__((target("avx2"))))
 
 #define POLYMASS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw"
 
@@ -156,31 +158,8 @@ __attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_a
     row = Lanes(_mm256_cvtps_pd(_mm_maskz_loadu_ps(0x7, xyz)));
 }
 
-template <bool listed, class Scalar, class Index>
-__attribute__((target(POLYMASS_AVX512))) void gather_avx512(
-    const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
-    const CornerSource<listed, Scalar, Index> source(batch);
-    std::size_t slot = 0;
-    for (; slot + lane_count <= batch.count; slot += lane_count)
-#pragma GCC unroll 3
-        for (int corner = 0; corner < 3; ++corner) {
-            Lanes rows[lane_count];
-#pragma GCC unroll 4
-            for (int lane = 0; lane < lane_count; ++lane)
-                vertex_row_avx512(source.vertex(slot + lane, corner), Scalar{}, rows[lane]);
-            store_transposed(rows, gathered, corner, slot);
-        }
-    gather_one_by_one<listed>(batch, slot, gathered);
-}
-
-template <class Scalar, class Index>
-__attribute__((target(POLYMASS_AVX512))) void gather_avx512(
-    const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
-    if (batch.faces)
-        gather_avx512<true>(batch, gathered);
-    else
-        gather_avx512<false>(batch, gathered);
-}
+POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))))
+#undef POLYMASS_GATHER
 #undef POLYMASS_AVX512
 #endif
 
