@@ -19,6 +19,10 @@ public:
     // only its own results. An exception thrown by a task is rethrown here
     // (the first one, after every started task has ended).
     virtual void run(std::size_t count, const std::function<void(std::size_t)>& task) = 0;
+    // How many tasks may run at the same time: a pass that cuts its work by
+    // this count, rather than in fixed blocks, must give the same result for
+    // every count.
+    virtual std::size_t concurrency() const = 0;
 };
 
 // Runs the tasks one after another on the calling thread.
@@ -27,6 +31,7 @@ public:
     void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
         for (std::size_t i = 0; i < count; ++i) task(i);
     }
+    std::size_t concurrency() const override { return 1; }
 };
 
 }  // namespace polymass::core

@@ -27,20 +27,13 @@ namespace {
 // Entry is 32 bits when every vertex number fits in 31 bits and the entries
 // fit 32-bit offsets; 64 bits otherwise (meshes of billions of indices).
 //
-// On several threads the faces are counted and filed in fixed blocks, each
-// bucket slot taken with an atomic increment: which thread files an edge
-// first changes the order within a bucket, on which neither the comparison
-// of all pairs nor the sort depends. The walk runs in fixed blocks of lower
-// vertices whose findings are joined in order.
+// On several threads each counts and files the edges whose lower vertex is
+// in its own range of vertices, going through every face in order: no two
+// threads touch one bucket, so no increment need be atomic (atomic ones made
+// two threads slower than one), and every bucket is filed in face order, as
+// on one thread. The walk runs in fixed blocks of lower vertices whose
+// findings are joined in order.
 constexpr std::size_t vertices_per_piece = std::size_t{1} << 15;
-
-template <bool concurrent, class Entry>
-Entry increment(Entry& counter) {
-    if constexpr (concurrent)
-        return __atomic_fetch_add(&counter, Entry{1}, __ATOMIC_RELAXED);
-    else
-        return counter++;
-}
 
 // The buckets hold about three entries: insertion beats a general sort.
 template <class Entry>
@@ -193,7 +186,7 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
     return report;
 }
 
-template <bool concurrent, class Entry, class Scalar, class Index, class VertexId>
+template <class Entry, class Scalar, class Index, class VertexId>
 TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, TaskRunner& tasks,
                            std::pmr::memory_resource* memory) {
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
@@ -203,23 +196,34 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     // The passes below write through copies of the arrays' addresses: read
     // through the containers, they were loaded again after every store.
     Entry* const bucket_end = end_of.data();
-    tasks.run(starts.size(), [&](std::size_t block) {
-        each_edge_of_block(mesh, block, starts[block], id,
-                           [bucket_end](std::uint32_t from, std::uint32_t to) {
-                               increment<concurrent>(bucket_end[std::min(from, to)]);
-                           });
+    // Each edge of every face whose lower vertex is in range `range` of the
+    // tasks' concurrency.
+    const std::size_t ranges = std::max<std::size_t>(1, tasks.concurrency());
+    const std::size_t per_range = (mesh.vertex_count + ranges - 1) / ranges;
+    auto each_edge_in_range = [&](std::size_t range, auto&& visit) {
+        const std::size_t low = range * per_range;
+        const std::size_t high = std::min(mesh.vertex_count, low + per_range);
+        for (std::size_t block = 0; block < starts.size(); ++block)
+            each_edge_of_block(mesh, block, starts[block], id,
+                               [&visit, low, high](std::uint32_t from, std::uint32_t to) {
+                                   const std::uint32_t lower = std::min(from, to);
+                                   if (lower >= low && lower < high) visit(from, to);
+                               });
+    };
+    tasks.run(ranges, [&](std::size_t range) {
+        each_edge_in_range(range, [bucket_end](std::uint32_t from, std::uint32_t to) {
+            ++bucket_end[std::min(from, to)];
+        });
     });
     Entry edge_total = 0;
     for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
     ScratchBuffer<Entry> entries(edge_total, memory);  // each slot filed once below
     Entry* const slots = entries.data();
-    tasks.run(starts.size(), [&](std::size_t block) {
-        each_edge_of_block(mesh, block, starts[block], id,
-                           [bucket_end, slots](std::uint32_t from, std::uint32_t to) {
-                               const bool down = from > to;
-                               slots[increment<concurrent>(bucket_end[down ? to : from])] =
-                                   (Entry(down ? from : to) << 1) | Entry(down);
-                           });
+    tasks.run(ranges, [&](std::size_t range) {
+        each_edge_in_range(range, [bucket_end, slots](std::uint32_t from, std::uint32_t to) {
+            const bool down = from > to;
+            slots[bucket_end[down ? to : from]++] = (Entry(down ? from : to) << 1) | Entry(down);
+        });
     });
 
     const std::size_t pieces = (mesh.vertex_count + vertices_per_piece - 1) / vertices_per_piece;
@@ -245,17 +249,11 @@ template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
                                 const std::uint32_t* vertex_ids, TaskRunner& tasks,
                                 std::pmr::memory_resource* memory) {
-    // Atomic increments cost several times plain ones: only when the pieces
-    // may run at the same time.
-    const bool concurrent = dynamic_cast<SerialTaskRunner*>(&tasks) == nullptr;
     auto analyse = [&](auto&& id) {
         const bool narrow = mesh.vertex_count <= (std::size_t{1} << 31) &&
                             mesh.index_count <= std::numeric_limits<std::uint32_t>::max();
-        if (concurrent)
-            return narrow ? match_edges<true, std::uint32_t>(mesh, id, tasks, memory)
-                          : match_edges<true, std::uint64_t>(mesh, id, tasks, memory);
-        return narrow ? match_edges<false, std::uint32_t>(mesh, id, tasks, memory)
-                      : match_edges<false, std::uint64_t>(mesh, id, tasks, memory);
+        return narrow ? match_edges<std::uint32_t>(mesh, id, tasks, memory)
+                      : match_edges<std::uint64_t>(mesh, id, tasks, memory);
     };
     if (vertex_ids)
         return analyse([&](std::size_t position) { return vertex_ids[mesh.indices[position]]; });

@@ -30,6 +30,7 @@ public:
     WorkerPool& operator=(const WorkerPool&) = delete;
 
     std::size_t thread_count() const { return workers_.size() + 1; }
+    std::size_t concurrency() const override { return thread_count(); }
 
     // A task that calls run on the pool it runs on gets its tasks run on its
     // own thread, one after another (the workers are all taken).

@@ -8,6 +8,7 @@
 #include "core/mesh_integration.hpp"
 
 #include "check.hpp"
+#include "reversed_task_runner.hpp"
 #include "test_mesh.hpp"
 
 #include <Eigen/Core>
@@ -55,14 +56,6 @@ bool same_result(const IntegrationResult& a, const IntegrationResult& b) {
     return same;
 }
 
-// Runs the tasks last first: a pool may finish them in any order.
-class ReversedTaskRunner final : public polymass::core::TaskRunner {
-public:
-    void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
-        for (std::size_t i = count; i-- > 0;) task(i);
-    }
-};
-
 template <class Scalar, class Index>
 struct TypedMesh {
     std::vector<Scalar> coordinates;
@@ -102,7 +95,7 @@ void check_all_sets(const char* name, const TestMesh& mesh, const Eigen::Vector3
         CHECK(same);
     }
     settings.instruction_set = polymass::core::widest_instruction_set();
-    ReversedTaskRunner reversed;
+    polymass_test::ReversedTaskRunner reversed;
     const bool same = same_result(integrate_mesh(typed.view, settings, reversed), expected);
     if (!same) std::fprintf(stderr, "%s: blocks run in reverse differ\n", name);
     CHECK(same);

@@ -8,6 +8,7 @@
 #include "core/mesh_scan.hpp"
 
 #include "check.hpp"
+#include "reversed_task_runner.hpp"
 
 #include <Eigen/Core>
 #include <cmath>
@@ -21,14 +22,6 @@
 namespace {
 
 bool same_bits(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
-
-// Runs the parts last first: the scan joins them in part order all the same.
-class ReversedTaskRunner final : public polymass::core::TaskRunner {
-public:
-    void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
-        for (std::size_t i = count; i-- > 0;) task(i);
-    }
-};
 
 // Positions (xyz per vertex, `stride` coordinates apart) and triangles over
 // every vertex but the unused ones.
@@ -66,7 +59,7 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
     view.index_count = indices.size();
     view.face_count = indices.size() / 3;
     polymass::core::SerialTaskRunner serial;
-    ReversedTaskRunner reversed;
+    polymass_test::ReversedTaskRunner reversed;
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
