@@ -201,6 +201,11 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     const std::size_t ranges = std::max<std::size_t>(1, tasks.concurrency());
     const std::size_t per_range = (mesh.vertex_count + ranges - 1) / ranges;
     auto each_edge_in_range = [&](std::size_t range, auto&& visit) {
+        if (ranges == 1) {  // every edge: no test per edge on one thread
+            for (std::size_t block = 0; block < starts.size(); ++block)
+                each_edge_of_block(mesh, block, starts[block], id, visit);
+            return;
+        }
         const std::size_t low = range * per_range;
         const std::size_t high = std::min(mesh.vertex_count, low + per_range);
         for (std::size_t block = 0; block < starts.size(); ++block)
