@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "position_hash.hpp"
 #include "smallest_index_sets.hpp"
 
 namespace polymass::core {
@@ -31,24 +32,6 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
     for (std::size_t vertex = 0; vertex < count; ++vertex)
         if (scan.is_used(vertex)) used.push_back(std::uint32_t(vertex));
     return used;
-}
-
-// The bits of a coordinate, +0 for -0 (the same position).
-std::uint64_t position_bits(double value) {
-    value += 0.0;
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    return bits;
-}
-
-// A 64-bit mix of a position's three bit patterns (splitmix64's finaliser).
-std::uint64_t position_hash(const std::array<std::uint64_t, 3>& bits) {
-    std::uint64_t h = bits[0] * 0x9E3779B97F4A7C15ull ^ bits[1] * 0xC2B2AE3D27D4EB4Full ^
-                      bits[2] * 0x165667B19E3779F9ull;
-    h ^= h >> 31;
-    h *= 0xBF58476D1CE4E5B9ull;
-    h ^= h >> 27;
-    return h;
 }
 
 // One hashing pass over the used vertices in index order (no list of them):
