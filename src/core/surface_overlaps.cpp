@@ -172,21 +172,19 @@ void find_shapes(std::size_t count, const TriangleAt& triangle, TaskRunner& task
             for (int c = 0; c < 3; ++c) flat[3 * k + c] = corners[k][c];
         return flat;
     };
-    // Each corner's position hash, turned by a third of a word per corner so
-    // that the order of the corners counts.
-    auto hash = [&](std::uint32_t t) {
-        const Triangle corners = triangle(t);
-        std::uint64_t h = 0;
-        for (const Eigen::Vector3d& corner : corners)
-            h = (h << 21 | h >> 43) ^
-                position_hash({position_bits(corner.x()), position_bits(corner.y()),
-                               position_bits(corner.z())});
+    // The nine coordinates' bits (position_hash.hpp: -0 as +0) mixed in order.
+    auto hash = [](const std::array<double, 9>& flat) {
+        std::uint64_t h = 0x9e3779b97f4a7c15u;
+        for (double x : flat) {
+            h = (h ^ position_bits(x)) * 0xff51afd7ed558ccdu;
+            h ^= h >> 32;
+        }
         return h;
     };
     std::pmr::memory_resource* memory = shape_of.get_allocator().resource();
     std::pmr::vector<std::uint64_t> keys(count, memory);
     for_each_in_blocks(count, tasks, [&](std::size_t t) {
-        keys[t] = (hash(std::uint32_t(t)) & 0xffffffff00000000u) | t;
+        keys[t] = (hash(coordinates(std::uint32_t(t))) & 0xffffffff00000000u) | t;
     });
     radix_sort(keys.data(), keys.data() + keys.size(), memory);
     auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
