@@ -37,6 +37,14 @@ git ls-files -z --cached --others --exclude-standard |
 echo "copied to $source_dir"
 
 step build
+# debhelper runs the build with HOME set to a scratch directory inside the
+# package tree, where ccache would keep (and lose with the tree) a cache of
+# its own: name the user's cache, so that the test command's compiler cache
+# serves this build too.
+if command -v ccache >/dev/null 2>&1 && [ -z "${CCACHE_DIR:-}" ]; then
+    CCACHE_DIR=$(ccache -k cache_dir)
+    export CCACHE_DIR
+fi
 (cd "$source_dir" && dpkg-buildpackage -us -uc -b -j"${CMAKE_BUILD_PARALLEL_LEVEL:-2}" </dev/null)
 changes=$(ls "$work"/polymass_"$version"_*.changes)
 ls -l "$work"/*.deb
