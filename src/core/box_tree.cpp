@@ -19,6 +19,8 @@ std::uint32_t spread_bits(std::uint32_t v) {
 
 bool FloatBox::may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                 double pad) const {
+    // An empty box meets nothing; its infinite bounds would pass every slab.
+    if (!(lo[0] <= hi[0])) return false;
     double enter = 0.0, leave = 1.0;
     for (int k = 0; k < 3; ++k) {
         const double low = double(lo[k]) - pad, high = double(hi[k]) + pad;
@@ -31,7 +33,7 @@ bool FloatBox::may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d&
         if (t0 > t1) std::swap(t0, t1);
         enter = std::max(enter, t0);
         leave = std::min(leave, t1);
-        if (!(enter <= leave)) return false;  // also when the box is empty (NaN)
+        if (!(enter <= leave)) return false;
     }
     return true;
 }

@@ -87,7 +87,8 @@ public:
     template <class Visit>
     void for_each_overlapping_pair(PairTask task, Visit&& visit) const;
 
-    // visit(i) for each item whose box may meet the segment from a to b.
+    // visit(i) for each item whose box may meet the segment from a to b,
+    // until a visit returns false.
     template <class Visit>
     void for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                     Visit&& visit) const;
@@ -191,7 +192,7 @@ void BoxTree::for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::
         if (!box(node).may_meet_segment(a, b, pad_)) continue;
         if (node.level == 0) {
             for (std::size_t i = leaf_first(node); i < leaf_last(node); ++i)
-                if (items_[order_[i]].may_meet_segment(a, b, pad_)) visit(order_[i]);
+                if (items_[order_[i]].may_meet_segment(a, b, pad_) && !visit(order_[i])) return;
         } else {
             for (std::size_t i = 0; i < child_count(node); ++i) nodes.push_back(child(node, i));
         }

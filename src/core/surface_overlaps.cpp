@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <memory_resource>
-#include <unordered_map>
+#include <utility>
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
@@ -50,8 +50,8 @@ constexpr std::size_t kProbeVertices = 4;
 // counted until kMostCountedPairs are; past that, the count is that many (a
 // lower bound) and only a pair that would be among the lowest kKeptLocations
 // is still wanted. Piles of coincident copies of a part meet in millions of
-// pairs, each an exact test: counting them all took minutes and told nothing
-// the first thousands do not.
+// pairs: counting them all took minutes and told nothing the first thousands
+// do not. wants() only grows stricter, and for larger pairs.
 //
 // The pieces of the search (BoxTree::pair_tasks) collect on their own and
 // are merged: the count is the number of distinct pairs, or
@@ -151,20 +151,30 @@ void for_each_in_blocks(std::size_t count, TaskRunner& tasks, const Visit& visit
     });
 }
 
-// For each triangle, the lowest triangle at the same three positions in the
-// same order (itself when none is lower), and how many share them: copies of a
-// part stacked in place, or a surface exported twice, meet every other
-// triangle alike, so a contact found for one copy holds for all.
-//
+// Triangles at the same three positions in the same order: copies of a part
+// stacked in place, or a surface exported twice. Copies meet every other
+// triangle alike, so the search for meeting faces holds one triangle of each
+// shape, and the copies of the two shapes of a pair it finds are paired
+// without it: a pile of k copies is then one pair of shapes, not k^2 pairs
+// of triangles each found through the tree.
+inline constexpr std::uint32_t kNoCopy = UINT32_MAX;
+
+struct Shapes {
+    // Per triangle: the lowest triangle of its shape (itself when it is
+    // alone), and the next copy above it, or kNoCopy.
+    std::pmr::vector<std::uint32_t> lowest, next;
+
+    explicit Shapes(std::pmr::memory_resource* memory) : lowest(memory), next(memory) {}
+};
+
 // Triangles are first sorted by a hash of their nine coordinates and then by
 // index (one 64-bit key each, sorted in linear time): copies hash alike, so
 // only triangles of one hash, nearly always alone, are compared coordinate by
 // coordinate. Sorting every triangle by its coordinates took 40 % of the
 // intersection check of a million-triangle sphere.
 template <class TriangleAt>
-void find_shapes(std::size_t count, const TriangleAt& triangle, TaskRunner& tasks,
-                 std::pmr::vector<std::uint32_t>& shape_of,
-                 std::pmr::vector<std::uint32_t>& copies) {
+Shapes find_shapes(std::size_t count, const TriangleAt& triangle, TaskRunner& tasks,
+                   std::pmr::memory_resource* memory) {
     auto coordinates = [&](std::uint32_t t) {
         const Triangle corners = triangle(t);
         std::array<double, 9> flat;
@@ -181,43 +191,46 @@ void find_shapes(std::size_t count, const TriangleAt& triangle, TaskRunner& task
         }
         return h;
     };
-    std::pmr::memory_resource* memory = shape_of.get_allocator().resource();
     std::pmr::vector<std::uint64_t> keys(count, memory);
     for_each_in_blocks(count, tasks, [&](std::size_t t) {
         keys[t] = (hash(coordinates(std::uint32_t(t))) & 0xffffffff00000000u) | t;
     });
     radix_sort(keys.data(), keys.data() + keys.size(), memory);
     auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
-    shape_of.assign(count, 0);
-    copies.assign(count, 1);
-    std::pmr::vector<std::uint32_t> order(memory);
+    Shapes shapes(memory);
+    shapes.lowest.resize(count);
+    shapes.next.assign(count, kNoCopy);
+    std::pmr::vector<std::pair<std::array<double, 9>, std::uint32_t>> group(memory);
     for (std::size_t k = 0; k < count;) {
         std::size_t end = k + 1;
         while (end < count && keys[end] >> 32 == keys[k] >> 32) ++end;
         if (end - k == 1) {
-            shape_of[triangle_of(k)] = triangle_of(k);
+            shapes.lowest[triangle_of(k)] = triangle_of(k);
             k = end;
             continue;
         }
-        // Triangles of one hash: by coordinates, then index.
-        order.clear();
-        for (std::size_t m = k; m < end; ++m) order.push_back(triangle_of(m));
-        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-            const auto ca = coordinates(a), cb = coordinates(b);
-            return ca < cb || (ca == cb && a < b);
+        // Triangles of one hash, in ascending index: nearly always copies
+        // of one shape, whose list is then that order. Otherwise (hashes
+        // that collide) by coordinates, then index.
+        group.clear();
+        for (std::size_t m = k; m < end; ++m)
+            group.push_back({coordinates(triangle_of(m)), triangle_of(m)});
+        const bool one_shape = std::all_of(group.begin(), group.end(), [&](const auto& member) {
+            return member.first == group.front().first;
         });
-        for (std::size_t first = 0; first < order.size();) {
+        if (!one_shape) std::sort(group.begin(), group.end());
+        for (std::size_t first = 0; first < group.size();) {
             std::size_t last = first + 1;
-            const auto at = coordinates(order[first]);
-            while (last < order.size() && coordinates(order[last]) == at) ++last;
+            while (last < group.size() && group[last].first == group[first].first) ++last;
             for (std::size_t m = first; m < last; ++m) {
-                shape_of[order[m]] = order[first];
-                copies[order[m]] = std::uint32_t(last - first);
+                shapes.lowest[group[m].second] = group[first].second;
+                if (m + 1 < last) shapes.next[group[m].second] = group[m + 1].second;
             }
             first = last;
         }
         k = end;
     }
+    return shapes;
 }
 
 }  // namespace
@@ -257,12 +270,92 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         if (is_degenerate(corners)) return;
         for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
     });
+    // The tree holds the lowest triangle of each shape: the copies above it
+    // keep an empty box too, and are met through it. (Found after the boxes,
+    // so that the tree's scratch reuses the search's: 8 MB less at the peak
+    // of a million triangles.)
+    const Shapes shapes = find_shapes(triangles.size(), triangle, tasks, memory);
+    for_each_in_blocks(triangles.size(), tasks, [&](std::size_t t) {
+        if (shapes.lowest[t] != t) boxes[t] = FloatBox();
+    });
+    auto meets_nothing = [&](std::size_t t) {
+        const FloatBox& box = boxes[shapes.lowest[t]];
+        return !(box.lo[0] <= box.hi[0]);
+    };
     FloatBox everything;
     for (const FloatBox& box : boxes) everything.extend(box);
     const BoxTree tree(boxes, memory);
 
-    std::pmr::vector<std::uint32_t> shape_of(memory), copies(memory);
-    find_shapes(triangles.size(), triangle, tasks, shape_of, copies);
+    // Triangles i and j, of different faces and not neighbours across an edge.
+    auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector& crossing,
+                         PairCollector& touching) {
+        const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
+        if (face_i == face_j) return;  // pieces of one polygon
+        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+        if (!crossing.wants(pair) && !touching.wants(pair)) return;
+        int shared = 0, at_i = 0, at_j = 0;
+        for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+                if (ids[i][k] == ids[j][l]) {
+                    ++shared;
+                    at_i = k;
+                    at_j = l;
+                }
+        if (shared >= 2) return;  // neighbours across an edge
+        // The shared corner first.
+        const Contact contact = triangle_contact(triangle(i, at_i), triangle(j, at_j), shared == 1);
+        if (contact != Contact::none)
+            (contact == Contact::crossing ? crossing : touching).add(pair);
+    };
+    // The pairs of copies of shapes r and s (r != s), or of two distinct
+    // copies of r (r == s). Which corners a pair shares decides its contact:
+    // none, or corner k of one with corner l of the other, which then lie at
+    // one position, so each such pattern is tested once. The copies of a
+    // shape ascend, and their faces with them, so along a row (j) the face
+    // pairs only grow: the first that no collector able to take it wants
+    // ends the row, and past the count's stop a pile costs a test per copy.
+    auto pair_copies = [&](std::uint32_t r, std::uint32_t s, PairCollector& crossing,
+                           PairCollector& touching) {
+        if (r != s && shapes.next[r] == kNoCopy && shapes.next[s] == kNoCopy) {
+            test_pair(r, s, crossing, touching);
+            return;
+        }
+        // [0]: no corner shared; [1 + 3 k + l]: corner k of r's copy is corner l of s's.
+        std::array<Contact, 10> contact_of;
+        contact_of.fill(Contact::none);
+        const Triangle first = triangle(r), second = triangle(s);
+        contact_of[0] = triangle_contact(first, second, false);
+        for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+                if (first[k] == second[l])
+                    contact_of[1 + 3 * k + l] =
+                        triangle_contact(triangle(r, k), triangle(s, l), true);
+        const auto may = [&](Contact kind) {
+            return std::find(contact_of.begin(), contact_of.end(), kind) != contact_of.end();
+        };
+        const bool may_cross = may(Contact::crossing), may_touch = may(Contact::touching);
+        if (!may_cross && !may_touch) return;
+        for (std::uint32_t i = r; i != kNoCopy; i = shapes.next[i]) {
+            for (std::uint32_t j = r == s ? shapes.next[i] : s; j != kNoCopy; j = shapes.next[j]) {
+                const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
+                if (face_i == face_j) continue;
+                const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+                if (!(may_cross && crossing.wants(pair)) && !(may_touch && touching.wants(pair)))
+                    break;
+                int shared = 0, pattern = 0;
+                for (int k = 0; k < 3; ++k)
+                    for (int l = 0; l < 3; ++l)
+                        if (ids[i][k] == ids[j][l]) {
+                            ++shared;
+                            pattern = 1 + 3 * k + l;
+                        }
+                if (shared >= 2) continue;
+                const Contact contact = contact_of[pattern];
+                if (contact != Contact::none)
+                    (contact == Contact::crossing ? crossing : touching).add(pair);
+            }
+        }
+    };
 
     // The contacts of one piece of the search, found on any thread.
     struct PieceContacts {
@@ -270,47 +363,18 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     };
     const std::pmr::vector<BoxTree::PairTask> pieces = tree.pair_tasks();
     std::pmr::vector<PieceContacts> found(memory);
-    found.reserve(pieces.size());
-    for (std::size_t piece = 0; piece < pieces.size(); ++piece)
+    found.reserve(pieces.size() + 1);
+    for (std::size_t piece = 0; piece <= pieces.size(); ++piece)
         found.push_back({PairCollector(memory), PairCollector(memory)});
     tasks.run(pieces.size(), [&](std::size_t piece) {
-        PairCollector& crossing = found[piece].crossing;
-        PairCollector& touching = found[piece].touching;
-        // The contact of two shapes, once tested, for pairs of triangles that
-        // share no corner and of which one has copies.
-        std::pmr::unordered_map<std::uint64_t, Contact> contact_of_shapes(memory);
-        tree.for_each_overlapping_pair(pieces[piece], [&](std::uint32_t i, std::uint32_t j) {
-            const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
-            if (face_i == face_j) return;  // pieces of one polygon
-            const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-            if (!crossing.wants(pair) && !touching.wants(pair)) return;
-            int shared = 0, at_i = 0, at_j = 0;
-            for (int k = 0; k < 3; ++k)
-                for (int l = 0; l < 3; ++l)
-                    if (ids[i][k] == ids[j][l]) {
-                        ++shared;
-                        at_i = k;
-                        at_j = l;
-                    }
-            if (shared >= 2) return;  // neighbours across an edge
-            // The shared corner first.
-            auto test = [&] {
-                return triangle_contact(triangle(i, at_i), triangle(j, at_j), shared == 1);
-            };
-            Contact contact;
-            if (shared == 0 && (copies[i] > 1 || copies[j] > 1)) {
-                const std::uint64_t key = std::uint64_t(shape_of[i]) << 32 | shape_of[j];
-                const auto known = contact_of_shapes.find(key);
-                contact = known != contact_of_shapes.end()
-                              ? known->second
-                              : contact_of_shapes.emplace(key, test()).first->second;
-            } else {
-                contact = test();
-            }
-            if (contact == Contact::none) return;
-            (contact == Contact::crossing ? crossing : touching).add(pair);
+        tree.for_each_overlapping_pair(pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
+            pair_copies(r, s, found[piece].crossing, found[piece].touching);
         });
     });
+    // The copies of one shape meet each other; the tree holds one of them.
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        if (shapes.lowest[t] == t && shapes.next[t] != kNoCopy && !meets_nothing(t))
+            pair_copies(t, t, found.back().crossing, found.back().touching);
     // In piece order, though the result does not depend on it.
     PairCollector crossing(memory), touching(memory);
     for (const PieceContacts& piece : found) {
@@ -340,24 +404,31 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         int winding = 0;
         bool counted = true;
         tree.for_each_item_near_segment(in_units(p), in_units(q), [&](std::uint32_t t) {
-            if (!counted || shell_of(t) == shell) return;
+            // t and its copies, of the other shells. The first graze ends
+            // the walk: a pile of k shells at one place then costs each
+            // probe a triangle, not k.
+            int others = 0;
+            for (std::uint32_t copy = t; copy != kNoCopy; copy = shapes.next[copy])
+                others += shell_of(copy) != shell;
+            if (others == 0) return true;
             const Triangle c = triangle(t);
             const int from = orient3d(c[0], c[1], c[2], p), to = orient3d(c[0], c[1], c[2], q);
             if (to == 0 || (from == 0 && lies_on(c, p))) {
                 counted = false;
-                return;
+                return false;
             }
-            if (from == 0 || from == to) return;
+            if (from == 0 || from == to) return true;
             const int e0 = orient3d(p, q, c[0], c[1]), e1 = orient3d(p, q, c[1], c[2]),
                       e2 = orient3d(p, q, c[2], c[0]);
             const bool some_positive = e0 > 0 || e1 > 0 || e2 > 0;
             const bool some_negative = e0 < 0 || e1 < 0 || e2 < 0;
-            if (some_positive && some_negative) return;  // passes beside the triangle
+            if (some_positive && some_negative) return true;  // passes beside the triangle
             if (e0 == 0 || e1 == 0 || e2 == 0) {
                 counted = false;  // through an edge or a corner
-                return;
+                return false;
             }
-            winding += from < 0 ? 1 : -1;  // leaving through the face's outer side
+            winding += from < 0 ? others : -others;  // leaving through the faces' outer side
+            return true;
         });
         return counted ? winding : kUnknownWinding;
     };
@@ -367,7 +438,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     std::pmr::vector<std::uint8_t> probe_count(shells->count, 0, memory);
     for (std::size_t t = 0; t < triangles.size(); ++t) {
         const std::uint32_t shell = shell_of(t);
-        if (boxes[t].lo[0] <= boxes[t].hi[0] && probe_count[shell] < kProbeVertices)
+        if (!meets_nothing(t) && probe_count[shell] < kProbeVertices)
             probes[shell][probe_count[shell]++] = std::uint32_t(t);
     }
     for (std::uint32_t shell = 0; shell < shells->count; ++shell) {

@@ -31,9 +31,9 @@ list(SORT seeds)
 list(JOIN seeds "," seed_inputs)
 
 # An input is a hang at 30 s of wall time. Instrumented code runs 20 to 40
-# times slower than a release build, and beside other tests on two cores a
-# legitimate slow input (a fuzzed pile of 150 welded cubes: 0.18 s in release,
-# 6 s here; ../open/README.md) passed 10 s.
+# times slower than a release build, and beside other tests on two cores an
+# input taking 0.18 s in release (a fuzzed pile of 150 welded cubes, 6 s here
+# before the check paired copies without the tree; regressions/) passed 10 s.
 set(common_options -rss_limit_mb=2048 -timeout=30 -artifact_prefix=${WORK_DIR}/)
 # The dictionary (a text format's keywords) guides the mutations only.
 set(dictionary_option)

@@ -415,6 +415,129 @@ static void test_piles_of_copies_stop_counting(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* A triangulated cube [0, size]^3 turned by `rotation` (row-major, NULL:
+   none) about its vertex 0, the origin, inside out with `inside_out`, whose
+   first `reused` vertices are m's vertices reuse[0..reused) (at the same
+   positions), and whose triangles list their corners from corner `first`. */
+static void add_cube(pm_mesh* m, double size, const double* rotation, int inside_out,
+                     const uint32_t* reuse, size_t reused, int first) {
+    const double lo[3] = {0, 0, 0}, hi[3] = {size, size, size};
+    pm_mesh cube;
+    uint32_t ids[8];
+    size_t v, f;
+    pm_mesh_init(&cube);
+    pm_mesh_add_box(&cube, lo, hi, 1);
+    if (inside_out) pm_mesh_reverse_all(&cube);
+    if (rotation) pm_mesh_transform(&cube, rotation, 1.0, lo);
+    for (v = 0; v < 8; ++v) {
+        const double* p = cube.positions + 3 * v;
+        ids[v] = v < reused ? reuse[v] : pm_mesh_add_vertex(m, p[0], p[1], p[2]);
+    }
+    for (f = 0; f < cube.face_count; ++f) {
+        const uint32_t* t = cube.indices + 3 * f;
+        pm_mesh_add_tri(m, ids[t[first]], ids[t[(first + 1) % 3]], ids[t[(first + 2) % 3]]);
+    }
+    pm_mesh_free(&cube);
+}
+
+static void assert_same_pairs(const polymass_diagnostics* a, const polymass_diagnostics* b) {
+    size_t i;
+    assert_int_equal(a->intersecting_face_pairs, b->intersecting_face_pairs);
+    assert_int_equal(a->touching_face_pairs, b->touching_face_pairs);
+    for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+        assert_int_equal(a->first_intersecting_face_pairs[i][0],
+                         b->first_intersecting_face_pairs[i][0]);
+        assert_int_equal(a->first_intersecting_face_pairs[i][1],
+                         b->first_intersecting_face_pairs[i][1]);
+        assert_int_equal(a->first_touching_face_pairs[i][0], b->first_touching_face_pairs[i][0]);
+        assert_int_equal(a->first_touching_face_pairs[i][1], b->first_touching_face_pairs[i][1]);
+    }
+}
+
+/* Copies of a triangle (same positions in the same order) are found once,
+   through the lowest of them, and paired with each other and with the
+   triangles they meet without the box tree. The pairs, counts and message
+   must be those of the same surface whose triangles are not copies (their
+   corners listed from another corner), however the copies share corners and
+   whichever of their corners is shared:
+   three unit cubes at one place, copy c with copy 0's first c vertices
+   (touching all over), and a fourth turned about their common corner,
+   which it shares with copy 0, so that faces meeting there cross. */
+static void test_copies_are_paired_as_triangles_are(void** state) {
+    static const uint32_t first_vertices[] = {0, 1, 2};
+    /* 0.4 radians about (1, 2, 3) / sqrt(14) */
+    static const double turn[9] = {0.92669949,  -0.30095229, 0.22506836, 0.32350629, 0.94361500,
+                                   -0.07024543, -0.19123736, 0.13790743, 0.97180750};
+    polymass_context* ctx =
+        pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_CHECK_INTERSECTIONS);
+    int turned_cube;
+    (void)state;
+    for (turned_cube = 0; turned_cube < 2; ++turned_cube) {
+        polymass_diagnostics d[2];
+        char message[512];
+        int32_t status = POLYMASS_OK;
+        int turned;
+        for (turned = 0; turned < 2; ++turned) {
+            pm_mesh m;
+            int c;
+            pm_mesh_init(&m);
+            for (c = 0; c < 3; ++c)
+                add_cube(&m, 1.0, NULL, 0, first_vertices, (size_t)c, turned ? c : 1);
+            if (turned_cube) add_cube(&m, 1.0, turn, 0, first_vertices, 1, 0);
+            pm_diagnostics_init(&d[turned]);
+            if (!turned) {
+                status = pm_check(&d[0], ctx, &m);
+                snprintf(message, sizeof message, "%s", polymass_context_message(ctx));
+            } else {
+                PM_ASSERT_STATUS(ctx, status, pm_check(&d[1], ctx, &m));
+                assert_string_equal(message, polymass_context_message(ctx));
+            }
+            pm_mesh_free(&m);
+        }
+        assert_true(d[0].touching_face_pairs > 0);
+        assert_true((d[0].intersecting_face_pairs > 0) == turned_cube);
+        assert_same_pairs(&d[0], &d[1]);
+    }
+    polymass_context_destroy(ctx);
+}
+
+/* A probe crossing a triangle with copies counts each copy of another
+   shell: a cube inside out within two coincident cubes lies inside two
+   solids (overlapping, not a cavity), as when the second cube's triangles
+   are not copies of the first's. */
+static void test_nesting_counts_every_copy(void** state) {
+    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_shell shells[2][3];
+    int turned;
+    size_t i;
+    (void)state;
+    for (turned = 0; turned < 2; ++turned) {
+        pm_mesh m, inner;
+        const double to_middle[3] = {1, 1, 1};
+        uint64_t count = 0;
+        polymass_mesh_desc desc;
+        pm_mesh_init(&m);
+        pm_mesh_init(&inner);
+        add_cube(&m, 4.0, NULL, 0, NULL, 0, 0);
+        add_cube(&m, 4.0, NULL, 0, NULL, 0, turned);
+        add_cube(&inner, 2.0, NULL, 1, NULL, 0, 0);
+        pm_mesh_transform(&inner, NULL, 1.0, to_middle);
+        pm_mesh_append(&m, &inner);
+        desc = pm_mesh_desc(&m);
+        for (i = 0; i < 3; ++i) {
+            memset(&shells[turned][i], 0, sizeof shells[turned][i]);
+            shells[turned][i].struct_size = sizeof shells[turned][i];
+        }
+        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells[turned], 3, &count, ctx, &desc));
+        assert_int_equal(count, 3);
+        pm_mesh_free(&inner);
+        pm_mesh_free(&m);
+    }
+    assert_int_equal(shells[0][2].kind, POLYMASS_SHELL_OVERLAPPING);
+    for (i = 0; i < 3; ++i) assert_int_equal(shells[0][i].kind, shells[1][i].kind);
+    polymass_context_destroy(ctx);
+}
+
 /* Reference solids whose faces touch by construction: four boxes face to
    face, and caps fanned into triangles that overlap outside the star. */
 static int touches_by_construction(const char* name) {
@@ -468,6 +591,8 @@ int main(void) {
         cmocka_unit_test(test_inside_out_shells),
         cmocka_unit_test(test_report_lists_pairs_and_shells),
         cmocka_unit_test(test_piles_of_copies_stop_counting),
+        cmocka_unit_test(test_copies_are_paired_as_triangles_are),
+        cmocka_unit_test(test_nesting_counts_every_copy),
         cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),
     };
