@@ -9,7 +9,7 @@
 #   scripts/coverage.sh
 #
 # Not a step of scripts/test.sh (a full extra build; about 10 minutes on two
-# cores). tests/fuzz/README.md says what stays uncovered and why.
+# cores). docs/coverage.md says what stays uncovered and why.
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -30,8 +30,10 @@ while IFS= read -r exe; do
     objects+=(-object "$exe")
 done < <(find "$OUT/tests" "$OUT/src/cli" -maxdepth 2 -type f -executable -name 'test_*' -o \
     -maxdepth 2 -type f -executable -name 'polymass' | sort)
-# Only src/: not the tests, headers of Eigen, CLI11 and the like.
-filter=(-ignore-filename-regex "^($ROOT/(tests|include|build)/|/usr/)")
+# Only src/: not the tests, the generated header, Eigen, CLI11 and the like.
+# Paths are relative to the build directory (where ninja runs every compile)
+# when ccache rewrote them (CCACHE_BASEDIR, which scripts/test.sh sets).
+filter=(-compilation-dir="$OUT" -ignore-filename-regex '(/tests/|/include/|^/usr/)')
 llvm-cov report -instr-profile "$OUT/coverage.profdata" "${objects[@]}" "${filter[@]}" \
     | tee "$OUT/report.txt"
 llvm-cov show -format=html -output-dir "$OUT/html" -instr-profile "$OUT/coverage.profdata" \

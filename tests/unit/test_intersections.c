@@ -538,6 +538,38 @@ static void test_nesting_counts_every_copy(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* The shell list refuses what it cannot fill or judge, saying why. */
+static void test_shell_list_refuses_bad_arguments(void** state) {
+    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_context* trusting = pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    polymass_shell shells[2];
+    uint64_t count = 0;
+    pm_mesh m;
+    polymass_mesh_desc desc;
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    desc = pm_mesh_desc(&m);
+    memset(shells, 0, sizeof shells);
+    shells[0].struct_size = sizeof shells[0];
+    shells[1].struct_size = sizeof shells[1] - 8;
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shell_list(shells, 1, NULL, ctx, &desc));
+    assert_non_null(strstr(polymass_context_message(ctx), "out_shell_count"));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shell_list(shells, 2, &count, ctx, &desc));
+    assert_non_null(strstr(polymass_context_message(ctx), "out_shells[1].struct_size"));
+    PM_ASSERT_STATUS(trusting, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shell_list(shells, 1, &count, trusting, &desc));
+    assert_non_null(strstr(polymass_context_message(trusting), "topology checks"));
+    PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 1, &count, ctx, &desc));
+    assert_int_equal(count, 1);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    pm_mesh_free(&m);
+    polymass_context_destroy(trusting);
+    polymass_context_destroy(ctx);
+}
+
 /* Reference solids whose faces touch by construction: four boxes face to
    face, and caps fanned into triangles that overlap outside the star. */
 static int touches_by_construction(const char* name) {
@@ -593,6 +625,7 @@ int main(void) {
         cmocka_unit_test(test_piles_of_copies_stop_counting),
         cmocka_unit_test(test_copies_are_paired_as_triangles_are),
         cmocka_unit_test(test_nesting_counts_every_copy),
+        cmocka_unit_test(test_shell_list_refuses_bad_arguments),
         cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),
     };

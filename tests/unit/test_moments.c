@@ -363,6 +363,25 @@ static void test_moments_refuse_bad_arguments(void** state) {
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
                      polymass_moments_scale(&moments, ctx, &moments, origin));
     moments.flags = 0;
+    {
+        const double nowhere[3] = {0, NAN, 0}, far_away[3] = {0, 0, INFINITY};
+        double turned[9];
+        memcpy(turned, identity, sizeof turned);
+        turned[4] = NAN;
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_moments_compute_faces(&partial, ctx, &desc, 0, 2, nowhere, NULL));
+        assert_non_null(strstr(polymass_context_message(ctx), "is not finite"));
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_moments_transform(&moments, ctx, &moments, turned, NULL));
+        assert_non_null(strstr(polymass_context_message(ctx), "NaN or infinite"));
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_moments_transform(&moments, ctx, &moments, identity, far_away));
+        moments.mass_error_bound = -1e-9;
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_moments_add(&moments, ctx, &moments, &moments));
+        assert_non_null(strstr(polymass_context_message(ctx), "negative or NaN error bound"));
+        moments.mass_error_bound = 0;
+    }
     moments.second[2] = NAN;
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE,
                      polymass_moments_add(&moments, ctx, &moments, &moments));

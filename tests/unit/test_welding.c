@@ -96,6 +96,50 @@ static void test_noisy_soup_closes(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* The exact weld's table grows past its first 4096 slots (2048 distinct
+ * positions) and keeps every position it held: a torus of 2,304 vertices as a
+ * soup of 13,824 welds each corner to the first corner at its position. */
+static void test_exact_weld_of_many_positions(void** state) {
+    static const double centre[3] = {1e6, 0, -1e6};
+    polymass_context* ctx = pm_context_new(0);
+    uint32_t *of_vertex, *first_of;
+    uint64_t distinct = 0;
+    polymass_mesh_desc d;
+    pm_mesh m;
+    size_t k, vertices;
+    (void)state;
+    pm_mesh_init(&m);
+    pm_mesh_add_torus(&m, 48, 48, 3.0, 1.0, centre);
+    vertices = m.vertex_count;
+    assert_true(vertices > 2048);
+    /* The soup's corner k was vertex indices[k]: its weld is the first
+       corner of that vertex. */
+    first_of = malloc(vertices * sizeof *first_of);
+    of_vertex = malloc(m.index_count * sizeof *of_vertex);
+    assert_non_null(first_of);
+    assert_non_null(of_vertex);
+    for (k = 0; k < vertices; ++k) first_of[k] = UINT32_MAX;
+    for (k = 0; k < m.index_count; ++k)
+        if (first_of[m.indices[k]] == UINT32_MAX) first_of[m.indices[k]] = (uint32_t)k;
+    {
+        uint32_t* was = malloc(m.index_count * sizeof *was);
+        assert_non_null(was);
+        memcpy(was, m.indices, m.index_count * sizeof *was);
+        pm_mesh_to_soup(&m);
+        assert_int_equal(m.vertex_count, m.index_count);
+        set_weld(ctx, 0.0);
+        d = pm_mesh_desc(&m);
+        PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+        assert_int_equal(distinct, vertices);
+        for (k = 0; k < m.vertex_count; ++k) assert_int_equal(of_vertex[k], first_of[was[k]]);
+        free(was);
+    }
+    free(of_vertex);
+    free(first_of);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
 /* Two closed boxes a gap of 1e-6 of the extent apart stay two solids under a
  * 1e-9 weld; a 1e-5 weld merges the facing vertices, and says so. */
 static void test_tolerance_is_a_distance(void** state) {
@@ -401,6 +445,7 @@ int main(void) {
         cmocka_unit_test(test_shells_of_used_vertices),
         cmocka_unit_test(test_shells_errors),
         cmocka_unit_test(test_weld_on_its_own),
+        cmocka_unit_test(test_exact_weld_of_many_positions),
     };
     return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
 }
