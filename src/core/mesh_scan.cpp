@@ -265,9 +265,9 @@ POLYMASS_SCAN_KERNELS(avx512, __attribute__((target("avx512f,avx512vl,avx512dq,a
 #undef POLYMASS_SCAN_KERNELS
 
 template <class Scalar, class Index>
-ScanKernels<Scalar, Index> scan_kernels() {
+ScanKernels<Scalar, Index> scan_kernels(InstructionSet set) {
 #if defined(__x86_64__)
-    switch (widest_instruction_set()) {
+    switch (set) {
         case InstructionSet::avx512:
             return {mark_indices_avx512<Scalar, Index>, bound_vertices_avx512<Scalar, Index>};
         case InstructionSet::avx2:
@@ -283,8 +283,8 @@ ScanKernels<Scalar, Index> scan_kernels() {
 
 template <class Scalar, class Index>
 MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
-                   TaskRunner& tasks) {
-    const ScanKernels<Scalar, Index> kernels = scan_kernels<Scalar, Index>();
+                   TaskRunner& tasks, InstructionSet set) {
+    const ScanKernels<Scalar, Index> kernels = scan_kernels<Scalar, Index>(set);
     MeshScan scan(memory);
     // No index can reach past this, however long the caller says the array is.
     const std::size_t addressable = std::min<std::size_t>(
@@ -339,9 +339,9 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     return scan;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
-    template MeshScan scan_mesh<Scalar, Index>(const MeshView<Scalar, Index>&, \
-                                               std::pmr::memory_resource*, TaskRunner&);
+#define POLYMASS_INSTANTIATE(Scalar, Index)     \
+    template MeshScan scan_mesh<Scalar, Index>( \
+        const MeshView<Scalar, Index>&, std::pmr::memory_resource*, TaskRunner&, InstructionSet);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

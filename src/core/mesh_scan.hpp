@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "findings.hpp"
+#include "instruction_sets.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
 
@@ -36,9 +37,11 @@ struct MeshScan {
     double diagonal() const { return bounds.isEmpty() ? 0.0 : bounds.diagonal().stableNorm(); }
 };
 
-// Runs in fixed parts on `tasks`: the same scan whatever runs them.
+// Runs in fixed parts on `tasks`: the same scan whatever runs them, and
+// whichever instruction set's kernels read the arrays (`set` must be one this
+// processor runs; tests compare them all).
 template <class Scalar, class Index>
 MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
-                   TaskRunner& tasks);
+                   TaskRunner& tasks, InstructionSet set = widest_instruction_set());
 
 }  // namespace polymass::core

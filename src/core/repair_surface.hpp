@@ -40,11 +40,6 @@ struct RepairSurface {
     explicit RepairSurface(std::pmr::memory_resource* memory) : points(memory), triangles(memory) {}
 
     const Eigen::Vector3d& point(std::uint32_t id) const { return points[id]; }
-    // Twice the triangle's vector area.
-    Eigen::Vector3d doubled_area(const RepairTriangle& t) const {
-        const Eigen::Vector3d& a = point(t.corners[0]);
-        return (point(t.corners[1]) - a).cross(point(t.corners[2]) - a);
-    }
 };
 
 // Two triangles sharing an edge of the surface (a manifold edge, or a pair

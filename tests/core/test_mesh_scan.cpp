@@ -4,7 +4,9 @@
 // maximum taken vertex by vertex, down to which zero a bound of zero is (the
 // first such coordinate's, as a running minimum that keeps its value on a tie
 // gives), for double and float, packed and strided positions, with unused and
-// non-finite vertices among them, in one part and in several.
+// non-finite vertices among them, in one part and in several, and with the
+// kernels of every instruction set this processor runs, which also agree on
+// the used vertices, the non-finite ones and indices past the array.
 #include "core/mesh_scan.hpp"
 
 #include "check.hpp"
@@ -22,6 +24,38 @@
 namespace {
 
 bool same_bits(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
+
+bool same_finding(const polymass::core::Finding& a, const polymass::core::Finding& b) {
+    return a.count == b.count && a.lowest == b.lowest;
+}
+
+// The scan with each instruction set's kernels is `expected`, bit for bit.
+template <class Scalar, class Index>
+void check_every_instruction_set(const char* name,
+                                 const polymass::core::MeshView<Scalar, Index>& view,
+                                 const polymass::core::MeshScan& expected) {
+    using polymass::core::InstructionSet;
+    polymass::core::SerialTaskRunner serial;
+    for (InstructionSet set :
+         {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
+        if (!polymass::core::runs_instruction_set(set)) continue;
+        const polymass::core::MeshScan scan =
+            polymass::core::scan_mesh(view, std::pmr::get_default_resource(), serial, set);
+        bool same = scan.out_of_range_indices == expected.out_of_range_indices &&
+                    same_finding(scan.out_of_range_faces, expected.out_of_range_faces) &&
+                    scan.first_out_of_range_index == expected.first_out_of_range_index &&
+                    same_finding(scan.non_finite, expected.non_finite) &&
+                    scan.used_vertex_count == expected.used_vertex_count &&
+                    scan.used == expected.used;
+        for (int axis = 0; axis < 3; ++axis)
+            same = same && same_bits(scan.bounds.min()[axis], expected.bounds.min()[axis]) &&
+                   same_bits(scan.bounds.max()[axis], expected.bounds.max()[axis]);
+        if (!same)
+            std::fprintf(stderr, "%s (%zu vertices): instruction set %d scans otherwise\n", name,
+                         std::size_t(view.vertex_count), int(set));
+        CHECK(same);
+    }
+}
 
 // Positions (xyz per vertex, `stride` coordinates apart) and triangles over
 // every vertex but the unused ones.
@@ -65,6 +99,7 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
         const polymass::core::MeshScan scan =
             polymass::core::scan_mesh(view, std::pmr::get_default_resource(), *runner);
+        check_every_instruction_set(name, view, scan);
         bool same = true;
         for (int axis = 0; axis < 3; ++axis)
             same = same && same_bits(scan.bounds.min()[axis], low[axis]) &&
@@ -76,6 +111,26 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
         std::size_t used = 0;
         for (std::size_t v = 0; v < vertices; ++v) used += !unused[v];
         CHECK(scan.used_vertex_count == used);
+    }
+
+    // 16-bit indices, and two past the vertex array in the last face.
+    std::vector<std::uint16_t> short_indices(indices.begin(), indices.end());
+    if (vertices + 2 <= 65536) {
+        short_indices.push_back(0);
+        short_indices.push_back(std::uint16_t(vertices + 1));
+        short_indices.push_back(std::uint16_t(vertices));
+    }
+    polymass::core::MeshView<Scalar, std::uint16_t> short_view;
+    short_view.positions = view.positions;
+    short_view.vertex_count = vertices;
+    short_view.indices.base = reinterpret_cast<const unsigned char*>(short_indices.data());
+    short_view.index_count = short_indices.size();
+    short_view.face_count = short_indices.size() / 3;
+    if (vertices <= 65536) {
+        const polymass::core::MeshScan scan =
+            polymass::core::scan_mesh(short_view, std::pmr::get_default_resource(), serial);
+        CHECK(scan.out_of_range_indices == (vertices + 2 <= 65536 ? 2u : 0u));
+        check_every_instruction_set(name, short_view, scan);
     }
 }
 
