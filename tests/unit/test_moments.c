@@ -381,10 +381,18 @@ static void test_moments_refuse_bad_arguments(void** state) {
                          polymass_moments_add(&moments, ctx, &moments, &moments));
         assert_non_null(strstr(polymass_context_message(ctx), "negative or NaN error bound"));
         moments.mass_error_bound = 0;
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                         polymass_moments_compute_faces(&partial, ctx, &desc, 2, 0, origin, NULL));
+        assert_non_null(strstr(polymass_context_message(ctx), "no faces"));
     }
     moments.second[2] = NAN;
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE,
                      polymass_moments_add(&moments, ctx, &moments, &moments));
+    /* A bent quad in a range: its planarity is checked as the solid's is. */
+    m.positions[3 * 7 + 2] = 1.25;
+    desc = pm_mesh_desc(&m);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_PLANAR_FACE,
+                     polymass_moments_compute_faces(&partial, ctx, &desc, 0, 6, origin, NULL));
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }

@@ -32,6 +32,9 @@ static void test_struct_sizes_match_c(void** state) {
     assert_int_equal(polymass_sizeof_mass_properties(), sizeof(polymass_mass_properties));
     assert_int_equal(polymass_sizeof_diagnostics(), sizeof(polymass_diagnostics));
     assert_int_equal(polymass_sizeof_polygon_properties(), sizeof(polymass_polygon_properties));
+    assert_int_equal(polymass_sizeof_batch_item(), sizeof(polymass_batch_item));
+    assert_int_equal(polymass_sizeof_moments(), sizeof(polymass_moments));
+    assert_int_equal(polymass_sizeof_shell(), sizeof(polymass_shell));
 }
 
 /* Each initialiser writes its struct's defaults up to the size given, accepts
