@@ -310,10 +310,12 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     // The pairs of copies of shapes r and s (r != s), or of two distinct
     // copies of r (r == s). Which corners a pair shares decides its contact:
     // none, or corner k of one with corner l of the other, which then lie at
-    // one position, so each such pattern is tested once. The copies of a
-    // shape ascend, and their faces with them, so along a row (j) the face
-    // pairs only grow: the first that no collector able to take it wants
-    // ends the row, and past the count's stop a pile costs a test per copy.
+    // one position, so each such pattern is tested once, when first met. The
+    // copies of a shape ascend, and their faces with them, so along a row (j)
+    // the face pairs only grow: the first that no collector wants ends the
+    // row, and so does the first that only collectors of kinds no pattern
+    // gives want: past the count's stop a pile costs a test per copy, not
+    // per pair of copies.
     auto pair_copies = [&](std::uint32_t r, std::uint32_t s, PairCollector& crossing,
                            PairCollector& touching) {
         if (r != s && shapes.next[r] == kNoCopy && shapes.next[s] == kNoCopy) {
@@ -322,37 +324,44 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         }
         // [0]: no corner shared; [1 + 3 k + l]: corner k of r's copy is corner l of s's.
         std::array<Contact, 10> contact_of;
-        contact_of.fill(Contact::none);
-        const Triangle first = triangle(r), second = triangle(s);
-        contact_of[0] = triangle_contact(first, second, false);
-        for (int k = 0; k < 3; ++k)
-            for (int l = 0; l < 3; ++l)
-                if (first[k] == second[l])
-                    contact_of[1 + 3 * k + l] =
-                        triangle_contact(triangle(r, k), triangle(s, l), true);
-        const auto may = [&](Contact kind) {
-            return std::find(contact_of.begin(), contact_of.end(), kind) != contact_of.end();
+        std::array<bool, 10> tested{};
+        auto contact = [&](int k, int l, bool shared_corner) {
+            const int pattern = shared_corner ? 1 + 3 * k + l : 0;
+            if (!tested[pattern]) {
+                contact_of[pattern] =
+                    triangle_contact(triangle(r, k), triangle(s, l), shared_corner);
+                tested[pattern] = true;
+            }
+            return contact_of[pattern];
         };
-        const bool may_cross = may(Contact::crossing), may_touch = may(Contact::touching);
-        if (!may_cross && !may_touch) return;
         for (std::uint32_t i = r; i != kNoCopy; i = shapes.next[i]) {
             for (std::uint32_t j = r == s ? shapes.next[i] : s; j != kNoCopy; j = shapes.next[j]) {
                 const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
                 if (face_i == face_j) continue;
                 const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-                if (!(may_cross && crossing.wants(pair)) && !(may_touch && touching.wants(pair)))
-                    break;
-                int shared = 0, pattern = 0;
+                const bool cross_wants = crossing.wants(pair), touch_wants = touching.wants(pair);
+                if (!cross_wants && !touch_wants) break;
+                if (!(cross_wants && touch_wants)) {
+                    // Any pattern's kind is that of no corner shared, or
+                    // none: a shared corner changes no crossing (the
+                    // triangles' places decide it) and only drops touching.
+                    const Contact apart = contact(0, 0, false);
+                    if (!(apart == Contact::crossing && cross_wants) &&
+                        !(apart == Contact::touching && touch_wants))
+                        break;
+                }
+                int shared = 0, at_i = 0, at_j = 0;
                 for (int k = 0; k < 3; ++k)
                     for (int l = 0; l < 3; ++l)
                         if (ids[i][k] == ids[j][l]) {
                             ++shared;
-                            pattern = 1 + 3 * k + l;
+                            at_i = k;
+                            at_j = l;
                         }
                 if (shared >= 2) continue;
-                const Contact contact = contact_of[pattern];
-                if (contact != Contact::none)
-                    (contact == Contact::crossing ? crossing : touching).add(pair);
+                const Contact found = contact(at_i, at_j, shared == 1);
+                if (found != Contact::none)
+                    (found == Contact::crossing ? crossing : touching).add(pair);
             }
         }
     };

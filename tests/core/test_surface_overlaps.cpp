@@ -1,0 +1,148 @@
+// The intersection check's face pairs are those of a test of every pair of
+// triangles, however many copies of a triangle the surface holds: the box
+// tree holds one triangle of each shape (same positions, same order) and the
+// copies are paired from the shape pair's tests, each row of copies ending
+// where no count can take its pairs (surface_overlaps.cpp). Piles of cubes
+// at one place, unwelded, sharing some corners with the first copy (in every
+// corner position), or all of them, with turned cubes crossing the pile at
+// a shared corner; past the count's stop (2048 pairs) and below it; with the
+// search's pieces in order and in reverse. The reference tests all pairs
+// with the same exact predicate (test_triangle_contact checks that one).
+#include "core/surface_overlaps.hpp"
+
+#include "check.hpp"
+#include "reversed_task_runner.hpp"
+#include "test_mesh.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory_resource>
+#include <vector>
+
+#include "core/triangle_contact.hpp"
+
+namespace {
+
+using polymass::core::Contact;
+using polymass::core::PairFinding;
+using polymass::core::Triangle;
+using polymass_test::TestMesh;
+
+constexpr std::size_t kMostCountedPairs = 2048;
+
+// A triangulated cube [0, 1]^3 turned by `turn` about the origin, its vertex
+// v taken as reuse[v] for v < reused, its triangles listing their corners
+// from corner `first`.
+void add_cube(TestMesh& mesh, const Eigen::Matrix3d& turn, const std::uint32_t* reuse,
+              std::size_t reused, int first) {
+    static const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    std::uint32_t ids[8];
+    for (int v = 0; v < 8; ++v) {
+        const Eigen::Vector3d corner(v & 1, (v >> 1) & 1, (v >> 2) & 1);
+        ids[v] = std::size_t(v) < reused ? reuse[v] : mesh.add_vertex(turn * corner);
+    }
+    for (const auto& q : quads)
+        for (const std::array<int, 3> t :
+             {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}})
+            mesh.add_face({ids[t[first]], ids[t[(first + 1) % 3]], ids[t[(first + 2) % 3]]});
+}
+
+// Every pair of triangles (each face is one) tested.
+struct Reference {
+    std::vector<std::array<std::uint64_t, 2>> crossing, touching;
+};
+
+Reference test_every_pair(const TestMesh& mesh) {
+    Reference found;
+    const std::size_t faces = mesh.indices.size() / 3;
+    auto corner = [&](std::size_t f, int k) { return mesh.indices[3 * f + k]; };
+    auto triangle = [&](std::size_t f, int first) {
+        return Triangle{mesh.vertex(corner(f, first)), mesh.vertex(corner(f, (first + 1) % 3)),
+                        mesh.vertex(corner(f, (first + 2) % 3))};
+    };
+    for (std::size_t f = 0; f < faces; ++f) {
+        if (polymass::core::is_degenerate(triangle(f, 0))) continue;
+        for (std::size_t g = f + 1; g < faces; ++g) {
+            if (polymass::core::is_degenerate(triangle(g, 0))) continue;
+            int shared = 0, at_f = 0, at_g = 0;
+            for (int k = 0; k < 3; ++k)
+                for (int l = 0; l < 3; ++l)
+                    if (corner(f, k) == corner(g, l)) ++shared, at_f = k, at_g = l;
+            if (shared >= 2) continue;
+            const Contact contact =
+                polymass::core::triangle_contact(triangle(f, at_f), triangle(g, at_g), shared == 1);
+            if (contact == Contact::crossing) found.crossing.push_back({f, g});
+            if (contact == Contact::touching) found.touching.push_back({f, g});
+        }
+    }
+    return found;
+}
+
+bool agrees(const PairFinding& found, const std::vector<std::array<std::uint64_t, 2>>& pairs) {
+    const bool stopped = pairs.size() >= kMostCountedPairs;
+    if (found.complete == stopped) return false;
+    if (found.count != (stopped ? kMostCountedPairs : pairs.size())) return false;
+    for (std::size_t i = 0; i < found.kept(); ++i)
+        if (found.lowest[i] != pairs[i]) return false;
+    return true;
+}
+
+void check_pile(const char* name, const TestMesh& mesh) {
+    const Reference expected = test_every_pair(mesh);
+    const auto view = mesh.view();
+    Eigen::AlignedBox3d box;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) box.extend(mesh.vertex(v));
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    for (polymass::core::TaskRunner* runner :
+         {static_cast<polymass::core::TaskRunner*>(&serial),
+          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
+        const polymass::core::SurfaceOverlaps found =
+            polymass::core::find_overlaps(view, nullptr, box.center(), box.diagonal().norm(),
+                                          nullptr, *runner, std::pmr::get_default_resource());
+        const bool crossing = agrees(found.crossing, expected.crossing);
+        const bool touching = agrees(found.touching, expected.touching);
+        if (!crossing || !touching)
+            std::fprintf(stderr,
+                         "%s: crossing %zu (expected %zu), touching %zu (expected %zu)%s%s\n", name,
+                         found.crossing.count, expected.crossing.size(), found.touching.count,
+                         expected.touching.size(), crossing ? "" : "; the crossing pairs differ",
+                         touching ? "" : "; the touching pairs differ");
+        CHECK(crossing);
+        CHECK(touching);
+    }
+}
+
+}  // namespace
+
+int main() {
+    const Eigen::Matrix3d none = Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d turned =
+        Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const Eigen::Matrix3d turned_more =
+        Eigen::AngleAxisd(0.7, Eigen::Vector3d(-2, 1, 3).normalized()).toRotationMatrix();
+    const std::uint32_t first_vertices[] = {0, 1, 2, 3, 4, 5, 6, 7};
+    // 4 copies stay below the count's stop; 24 pass it for touching pairs,
+    // while the crossing pairs (the turned cubes) stay below it.
+    for (std::size_t copies : {4, 24}) {
+        for (int first = 0; first < 2; ++first) {
+            for (std::size_t shared_vertices : {0, 1, 8}) {
+                TestMesh pile;
+                for (std::size_t c = 0; c < copies; ++c)
+                    add_cube(pile, none, first_vertices, c == 0 ? 0 : shared_vertices, first);
+                add_cube(pile, turned, first_vertices, 1, 0);
+                add_cube(pile, turned_more, first_vertices, 1, 2);
+                char name[96];
+                std::snprintf(name, sizeof name,
+                              "%zu cubes from corner %d sharing %zu vertices, 2 turned", copies,
+                              first, shared_vertices);
+                check_pile(name, pile);
+            }
+        }
+    }
+    return polymass_test::finish("test_surface_overlaps");
+}
