@@ -140,6 +140,21 @@ private:
     bool stopped_ = false;
 };
 
+// How many corners two triangles share (as vertices, not positions), and
+// where the last one found sits in each.
+struct SharedCorners {
+    int count = 0, at_first = 0, at_second = 0;
+};
+
+SharedCorners shared_corners(const std::array<std::uint32_t, 3>& first,
+                             const std::array<std::uint32_t, 3>& second) {
+    SharedCorners shared;
+    for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+            if (first[k] == second[l]) shared = {shared.count + 1, k, l};
+    return shared;
+}
+
 // visit(t) for each t in [0, count), in fixed blocks run as tasks: for
 // passes over the triangles whose items are independent of one another.
 template <class Visit>
@@ -293,17 +308,11 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
         if (!crossing.wants(pair) && !touching.wants(pair)) return;
-        int shared = 0, at_i = 0, at_j = 0;
-        for (int k = 0; k < 3; ++k)
-            for (int l = 0; l < 3; ++l)
-                if (ids[i][k] == ids[j][l]) {
-                    ++shared;
-                    at_i = k;
-                    at_j = l;
-                }
-        if (shared >= 2) return;  // neighbours across an edge
+        const SharedCorners shared = shared_corners(ids[i], ids[j]);
+        if (shared.count >= 2) return;  // neighbours across an edge
         // The shared corner first.
-        const Contact contact = triangle_contact(triangle(i, at_i), triangle(j, at_j), shared == 1);
+        const Contact contact = triangle_contact(triangle(i, shared.at_first),
+                                                 triangle(j, shared.at_second), shared.count == 1);
         if (contact != Contact::none)
             (contact == Contact::crossing ? crossing : touching).add(pair);
     };
@@ -350,16 +359,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                         !(apart == Contact::touching && touch_wants))
                         break;
                 }
-                int shared = 0, at_i = 0, at_j = 0;
-                for (int k = 0; k < 3; ++k)
-                    for (int l = 0; l < 3; ++l)
-                        if (ids[i][k] == ids[j][l]) {
-                            ++shared;
-                            at_i = k;
-                            at_j = l;
-                        }
-                if (shared >= 2) continue;
-                const Contact found = contact(at_i, at_j, shared == 1);
+                const SharedCorners shared = shared_corners(ids[i], ids[j]);
+                if (shared.count >= 2) continue;
+                const Contact found = contact(shared.at_first, shared.at_second, shared.count == 1);
                 if (found != Contact::none)
                     (found == Contact::crossing ? crossing : touching).add(pair);
             }
