@@ -301,6 +301,21 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     for (const FloatBox& box : boxes) everything.extend(box);
     const BoxTree tree(boxes, memory);
 
+    // Adds the face pair of triangles i and j as its contact says. Coinciding
+    // triangles of two shells bound the region behind both twice, as crossing
+    // ones do; within one shell they may be a fan over a non-convex polygon,
+    // whose overlaps cancel, and are taken as touching (so too without shells:
+    // the surface is then refused on other grounds).
+    auto add = [&](Contact contact, std::uint32_t i, std::uint32_t j, const FacePair& pair,
+                   PairCollector& crossing, PairCollector& touching) {
+        if (contact == Contact::coinciding)
+            contact =
+                shells && shells->of_face[triangles.face[i]] != shells->of_face[triangles.face[j]]
+                    ? Contact::crossing
+                    : Contact::touching;
+        if (contact != Contact::none)
+            (contact == Contact::crossing ? crossing : touching).add(pair);
+    };
     // Triangles i and j, of different faces and not neighbours across an edge.
     auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector& crossing,
                          PairCollector& touching) {
@@ -311,10 +326,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         const SharedCorners shared = shared_corners(ids[i], ids[j]);
         if (shared.count >= 2) return;  // neighbours across an edge
         // The shared corner first.
-        const Contact contact = triangle_contact(triangle(i, shared.at_first),
-                                                 triangle(j, shared.at_second), shared.count == 1);
-        if (contact != Contact::none)
-            (contact == Contact::crossing ? crossing : touching).add(pair);
+        add(triangle_contact(triangle(i, shared.at_first), triangle(j, shared.at_second),
+                             shared.count == 1),
+            i, j, pair, crossing, touching);
     };
     // The pairs of copies of shapes r and s (r != s), or of two distinct
     // copies of r (r == s). Which corners a pair shares decides its contact:
@@ -353,17 +367,20 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                 if (!(cross_wants && touch_wants)) {
                     // Any pattern's kind is that of no corner shared, or
                     // none: a shared corner changes no crossing (the
-                    // triangles' places decide it) and only drops touching.
+                    // triangles' places decide it) and only drops touching
+                    // and coinciding. Coinciding copies count as crossing
+                    // or touching, as their shells say.
                     const Contact apart = contact(0, 0, false);
-                    if (!(apart == Contact::crossing && cross_wants) &&
-                        !(apart == Contact::touching && touch_wants))
-                        break;
+                    const bool can_cross =
+                        apart == Contact::crossing || apart == Contact::coinciding;
+                    const bool can_touch =
+                        apart == Contact::touching || apart == Contact::coinciding;
+                    if (!(can_cross && cross_wants) && !(can_touch && touch_wants)) break;
                 }
                 const SharedCorners shared = shared_corners(ids[i], ids[j]);
                 if (shared.count >= 2) continue;
-                const Contact found = contact(shared.at_first, shared.at_second, shared.count == 1);
-                if (found != Contact::none)
-                    (found == Contact::crossing ? crossing : touching).add(pair);
+                add(contact(shared.at_first, shared.at_second, shared.count == 1), i, j, pair,
+                    crossing, touching);
             }
         }
     };

@@ -107,11 +107,30 @@ bool meets(const Triangle2d& p, const Triangle2d& q) {
     return true;
 }
 
-bool coplanar_overlap(const Triangle& p, const Triangle& q) {
+// Whether the open triangles overlap: no line through an edge of either
+// leaves the other on its outer side or on it (in the plane, convex figures
+// whose interiors are disjoint are separated by the line of an edge of one).
+bool interiors_overlap(const Triangle2d& p, const Triangle2d& q) {
+    auto beyond_edge = [](const Triangle2d& t, int i, const Triangle2d& other) {
+        for (const Eigen::Vector2d& x : other.corner)
+            if (orient2d(t.corner[i], t.corner[(i + 1) % 3], x) > 0) return false;
+        return true;
+    };
+    for (int i = 0; i < 3; ++i)
+        if (beyond_edge(p, i, q) || beyond_edge(q, i, p)) return false;
+    return true;
+}
+
+// Coplanar triangles: coinciding when they overlap over an area and face the
+// same way, touching when they face opposite ways (two parts resting on each
+// other) or meet along their boundaries only.
+Contact coplanar_contact(const Triangle& p, const Triangle& q) {
     Projection projection{};
-    const int orientation = plane_projection(q, projection);
-    return meets(Triangle2d(p, projection, projected_orientation(p, projection)),
-                 Triangle2d(q, projection, orientation));
+    const int q_turn = plane_projection(q, projection);
+    const int p_turn = projected_orientation(p, projection);
+    const Triangle2d p_flat(p, projection, p_turn), q_flat(q, projection, q_turn);
+    if (p_turn == q_turn && interiors_overlap(p_flat, q_flat)) return Contact::coinciding;
+    return meets(p_flat, q_flat) ? Contact::touching : Contact::none;
 }
 
 // t lies on one side of the plane of `other` with one corner or one edge on
@@ -130,7 +149,7 @@ bool touches_on_plane(const Triangle& t, const Signs& t_sides, const Triangle& o
     // signs can disagree; no index may then run past the corners.)
     if (count == 1) return contains(face, projection(t[on_plane[0]]));
     if (count == 2) return meets(face, projection(t[on_plane[0]]), projection(t[on_plane[1]]));
-    return count == 3 && coplanar_overlap(t, other);
+    return count == 3 && coplanar_contact(t, other) != Contact::none;
 }
 
 // Rotates t (keeping its orientation) so that t[0] is the corner alone on its
@@ -186,8 +205,7 @@ Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corne
     const bool p_straddles = straddles(p_sides);
     const bool q_straddles = straddles(q_sides);
     if (p_straddles && q_straddles) return straddling_contact(p, p_sides, q, q_sides);
-    if (p_sides == Signs{0, 0, 0})
-        return coplanar_overlap(p, q) ? Contact::touching : Contact::none;
+    if (p_sides == Signs{0, 0, 0}) return coplanar_contact(p, q);
     // One triangle lies on one side of the other's plane with a corner or an
     // edge on it: that corner or edge is all the two can have in common.
     const bool meet =

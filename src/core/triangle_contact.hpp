@@ -4,11 +4,15 @@
 // pass through each other along a segment of positive length (each one has
 // corners strictly on both sides of the other's plane, and the two pieces of
 // the planes' common line that the triangles cover overlap in more than a
-// point). Everything else where the closed triangles still meet is touching:
-// a corner or an edge lying on the other triangle, two edges meeting in a
-// point, or coplanar triangles that overlap (two parts resting on each
-// other). Decided with exact predicates (exact_predicates.hpp); the reasoning
-// is in docs/validity.md.
+// point). Coinciding triangles lie in one plane, overlap over an area and
+// face the same way: on two shells, the region behind both is bounded by
+// each (a surface written twice, coincident parts); within one shell it is
+// also how a fan over a non-convex polygon lies, whose overlaps cancel.
+// Everything else where the closed triangles still meet is touching: a
+// corner or an edge lying on the other triangle, two edges meeting in a
+// point, coplanar triangles facing opposite ways (two parts resting on each
+// other) or meeting along their boundaries only. Decided with exact
+// predicates (exact_predicates.hpp); the reasoning is in docs/validity.md.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,14 +20,16 @@
 
 namespace polymass::core {
 
-enum class Contact { none, touching, crossing };
+enum class Contact { none, touching, crossing, coinciding };
 
 using Triangle = std::array<Eigen::Vector3d, 3>;
 
 // Neither triangle may be degenerate (three collinear corners). shared_corner
 // says that p[0] and q[0] are the same vertex of the surface (the triangles
 // meet there by construction): then only crossing is reported, never
-// touching. Triangles sharing two corners (an edge) are not passed here.
+// touching nor coinciding. The answer depends on the triangles' orientations
+// only for coplanar triangles (coinciding or touching). Triangles sharing two corners (an edge) are
+// not passed here.
 Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corner);
 
 // True when the three corners are collinear (exactly).

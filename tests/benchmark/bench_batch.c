@@ -10,11 +10,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-static double now_seconds(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
+#include "bench_common.h"
 
 /* A closed sphere of 2 * rings * (segments - 1) triangles: poles + rings. */
 static size_t make_sphere(uint32_t rings, uint32_t segments, double cx, double* positions,

@@ -17,34 +17,7 @@
 #include <string.h>
 #include <time.h>
 
-static double now_seconds(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-/* A torus of rings x segments quads, two triangles each, far from the origin. */
-static void make_torus(uint32_t rings, uint32_t segments, double* positions, uint32_t* indices) {
-    const double pi = 3.14159265358979323846;
-    for (uint32_t i = 0; i < rings; ++i) {
-        for (uint32_t j = 0; j < segments; ++j) {
-            const double u = 2 * pi * i / rings, v = 2 * pi * j / segments;
-            double* p = positions + 3 * ((size_t)i * segments + j);
-            p[0] = 1e6 + (2 + cos(v)) * cos(u);
-            p[1] = 1e6 + (2 + cos(v)) * sin(u);
-            p[2] = 1e6 + sin(v);
-        }
-    }
-    for (uint32_t i = 0; i < rings; ++i) {
-        for (uint32_t j = 0; j < segments; ++j) {
-            const uint32_t a = i * segments + j, b = ((i + 1) % rings) * segments + j;
-            const uint32_t c = ((i + 1) % rings) * segments + (j + 1) % segments;
-            const uint32_t d = i * segments + (j + 1) % segments;
-            uint32_t* t = indices + 6 * ((size_t)i * segments + j);
-            t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
-        }
-    }
-}
+#include "bench_common.h"
 
 /* The read probe: one thread's share of the position and index arrays, summed
    (coordinates as their type, indices as integers) so that nothing is skipped. */
@@ -117,16 +90,6 @@ static double compute_seconds(polymass_context* context, const polymass_mesh_des
     }
     *checksum += out.volume;
     return elapsed;
-}
-
-static int by_value(const void* a, const void* b) {
-    const double x = *(const double*)a, y = *(const double*)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double* values, int count) {
-    qsort(values, (size_t)count, sizeof *values, by_value);
-    return count % 2 ? values[count / 2] : 0.5 * (values[count / 2 - 1] + values[count / 2]);
 }
 
 enum {

@@ -6,8 +6,10 @@
 // at one place, unwelded, sharing some corners with the first copy (in every
 // corner position), or all of them, with turned cubes crossing the pile at
 // a shared corner; past the count's stop (2048 pairs) and below it; with the
-// search's pieces in order and in reverse. The reference tests all pairs
-// with the same exact predicate (test_triangle_contact checks that one).
+// search's pieces in order and in reverse; without shells and with them
+// (coinciding copies on two shells cross, on one they touch). The reference
+// tests all pairs with the same exact predicate (test_triangle_contact
+// checks that one).
 #include "core/surface_overlaps.hpp"
 
 #include "check.hpp"
@@ -51,12 +53,34 @@ void add_cube(TestMesh& mesh, const Eigen::Matrix3d& turn, const std::uint32_t* 
             mesh.add_face({ids[t[first]], ids[t[(first + 1) % 3]], ids[t[(first + 2) % 3]]});
 }
 
+// The shells of a surface: faces joined through shared vertices.
+polymass::core::Shells shells_of(const TestMesh& mesh) {
+    std::vector<std::uint32_t> parent(mesh.vertex_count());
+    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    auto root = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v];
+        return v;
+    };
+    const std::size_t faces = mesh.indices.size() / 3;
+    for (std::size_t f = 0; f < faces; ++f)
+        for (int k = 1; k < 3; ++k)
+            parent[root(mesh.indices[3 * f + k])] = root(mesh.indices[3 * f]);
+    polymass::core::Shells shells(std::pmr::get_default_resource());
+    std::vector<std::uint32_t> number(mesh.vertex_count(), UINT32_MAX);
+    for (std::size_t f = 0; f < faces; ++f) {
+        std::uint32_t& shell = number[root(mesh.indices[3 * f])];
+        if (shell == UINT32_MAX) shell = std::uint32_t(shells.count++);
+        shells.of_face.push_back(shell);
+    }
+    return shells;
+}
+
 // Every pair of triangles (each face is one) tested.
 struct Reference {
     std::vector<std::array<std::uint64_t, 2>> crossing, touching;
 };
 
-Reference test_every_pair(const TestMesh& mesh) {
+Reference test_every_pair(const TestMesh& mesh, const polymass::core::Shells* shells) {
     Reference found;
     const std::size_t faces = mesh.indices.size() / 3;
     auto corner = [&](std::size_t f, int k) { return mesh.indices[3 * f + k]; };
@@ -73,8 +97,11 @@ Reference test_every_pair(const TestMesh& mesh) {
                 for (int l = 0; l < 3; ++l)
                     if (corner(f, k) == corner(g, l)) ++shared, at_f = k, at_g = l;
             if (shared >= 2) continue;
-            const Contact contact =
+            Contact contact =
                 polymass::core::triangle_contact(triangle(f, at_f), triangle(g, at_g), shared == 1);
+            if (contact == Contact::coinciding)
+                contact = shells && shells->of_face[f] != shells->of_face[g] ? Contact::crossing
+                                                                             : Contact::touching;
             if (contact == Contact::crossing) found.crossing.push_back({f, g});
             if (contact == Contact::touching) found.touching.push_back({f, g});
         }
@@ -91,8 +118,8 @@ bool agrees(const PairFinding& found, const std::vector<std::array<std::uint64_t
     return true;
 }
 
-void check_pile(const char* name, const TestMesh& mesh) {
-    const Reference expected = test_every_pair(mesh);
+void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Shells* shells) {
+    const Reference expected = test_every_pair(mesh, shells);
     const auto view = mesh.view();
     Eigen::AlignedBox3d box;
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) box.extend(mesh.vertex(v));
@@ -103,14 +130,15 @@ void check_pile(const char* name, const TestMesh& mesh) {
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
         const polymass::core::SurfaceOverlaps found =
             polymass::core::find_overlaps(view, nullptr, box.center(), box.diagonal().norm(),
-                                          nullptr, *runner, std::pmr::get_default_resource());
+                                          shells, *runner, std::pmr::get_default_resource());
         const bool crossing = agrees(found.crossing, expected.crossing);
         const bool touching = agrees(found.touching, expected.touching);
         if (!crossing || !touching)
             std::fprintf(stderr,
-                         "%s: crossing %zu (expected %zu), touching %zu (expected %zu)%s%s\n", name,
-                         found.crossing.count, expected.crossing.size(), found.touching.count,
-                         expected.touching.size(), crossing ? "" : "; the crossing pairs differ",
+                         "%s, %s: crossing %zu (expected %zu), touching %zu (expected %zu)%s%s\n",
+                         name, shells ? "with shells" : "without shells", found.crossing.count,
+                         expected.crossing.size(), found.touching.count, expected.touching.size(),
+                         crossing ? "" : "; the crossing pairs differ",
                          touching ? "" : "; the touching pairs differ");
         CHECK(crossing);
         CHECK(touching);
@@ -127,7 +155,9 @@ int main() {
         Eigen::AngleAxisd(0.7, Eigen::Vector3d(-2, 1, 3).normalized()).toRotationMatrix();
     const std::uint32_t first_vertices[] = {0, 1, 2, 3, 4, 5, 6, 7};
     // 4 copies stay below the count's stop; 24 pass it for touching pairs,
-    // while the crossing pairs (the turned cubes) stay below it.
+    // and with shells for crossing ones too when the cubes share no vertex
+    // (coinciding faces of two shells), which otherwise (the turned cubes)
+    // stay below it.
     for (std::size_t copies : {4, 24}) {
         for (int first = 0; first < 2; ++first) {
             for (std::size_t shared_vertices : {0, 1, 8}) {
@@ -140,7 +170,9 @@ int main() {
                 std::snprintf(name, sizeof name,
                               "%zu cubes from corner %d sharing %zu vertices, 2 turned", copies,
                               first, shared_vertices);
-                check_pile(name, pile);
+                const polymass::core::Shells shells = shells_of(pile);
+                check_pile(name, pile, nullptr);
+                check_pile(name, pile, &shells);
             }
         }
     }

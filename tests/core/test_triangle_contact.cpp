@@ -34,6 +34,8 @@ const char* name(Contact c) {
             return "touching";
         case Contact::crossing:
             return "crossing";
+        case Contact::coinciding:
+            return "coinciding";
     }
     return "?";
 }
@@ -50,8 +52,11 @@ Triangle reversed(Triangle t) {
 
 // The answer must not depend on which triangle comes first, on the corner the
 // triangles start at (except the shared corner, which stays first), or on
-// their orientations. Returns the number of variants that disagree.
-int variants_disagreeing(const Triangle& p, const Triangle& q, bool shared, Contact expected) {
+// their orientations but through whether they face the same way (expected)
+// or not (expected_opposite; the same for triangles in two planes). Returns
+// the number of variants that disagree.
+int variants_disagreeing(const Triangle& p, const Triangle& q, bool shared, Contact expected,
+                         Contact expected_opposite) {
     int wrong = 0;
     const int rotations = shared ? 1 : 3;
     for (int rp = 0; rp < rotations; ++rp) {
@@ -60,8 +65,9 @@ int variants_disagreeing(const Triangle& p, const Triangle& q, bool shared, Cont
                 Triangle a = rotated(p, rp), b = rotated(q, rq);
                 if (flip & 1) a = reversed(a);
                 if (flip & 2) b = reversed(b);
-                wrong += triangle_contact(a, b, shared) != expected;
-                wrong += triangle_contact(b, a, shared) != expected;
+                const Contact want = flip == 1 || flip == 2 ? expected_opposite : expected;
+                wrong += triangle_contact(a, b, shared) != want;
+                wrong += triangle_contact(b, a, shared) != want;
             }
         }
     }
@@ -70,12 +76,14 @@ int variants_disagreeing(const Triangle& p, const Triangle& q, bool shared, Cont
 
 Vector3d v(double x, double y, double z) { return {x, y, z}; }
 
-// Each configuration meets p = base with q.
+// Each configuration meets p = base with q; with one of them reversed the
+// answer is `opposite` (only coplanar triangles' answers change).
 struct Configuration {
     const char* what;
     Triangle q;
     bool shared;
     Contact expected;
+    Contact opposite = expected;
 };
 
 // The triangle (0,0,0), (4,0,0), (0,4,0) in the plane z = 0.
@@ -107,9 +115,23 @@ const Configuration configurations[] = {
      {v(-1, -1, -1), v(1, 1, 1), v(-3, -3, 1)},
      false,
      Contact::touching},
-    {"coplanar overlapping", {v(1, 1, 0), v(5, 1, 0), v(1, 5, 0)}, false, Contact::touching},
+    {"coplanar overlapping",
+     {v(1, 1, 0), v(5, 1, 0), v(1, 5, 0)},
+     false,
+     Contact::coinciding,
+     Contact::touching},
     {"coplanar, one inside the other",
      {v(1, 1, 0), v(2, 1, 0), v(1, 2, 0)},
+     false,
+     Contact::coinciding,
+     Contact::touching},
+    {"coplanar, the same triangle", base, false, Contact::coinciding, Contact::touching},
+    {"coplanar, along the same edge from the other side",
+     {v(4, 0, 0), v(4, 4, 0), v(0, 4, 0)},
+     false,
+     Contact::touching},
+    {"coplanar, a corner on the other's edge",
+     {v(2, 2, 0), v(6, 2, 0), v(2, 6, 0)},
      false,
      Contact::touching},
     {"coplanar, meeting at a corner",
@@ -172,7 +194,7 @@ void known_configurations() {
                 std::fprintf(stderr, "  %s, %s: got %s, expected %s\n", c.what, place.what,
                              name(got), name(c.expected));
             }
-            const int disagreeing = variants_disagreeing(p, q, c.shared, c.expected);
+            const int disagreeing = variants_disagreeing(p, q, c.shared, c.expected, c.opposite);
             CHECK(disagreeing == 0);
             if (disagreeing)
                 std::fprintf(stderr, "  %s, %s: %d variants disagree\n", c.what, place.what,
@@ -256,16 +278,20 @@ void random_triangles() {
     std::mt19937_64 random(9);
     std::uniform_int_distribution<int> coordinate(-2, 2);
     long pairs = 0, shared_pairs = 0, straddling = 0, disagreeing = 0, reference_wrong = 0;
-    long seen[3] = {0, 0, 0};
+    long seen[4] = {0, 0, 0, 0};
     while (pairs < 5000) {
         std::array<IntVector, 3> p, q;
         for (IntVector& x : p)
             x = IntVector(coordinate(random), coordinate(random), coordinate(random));
         for (IntVector& x : q)
             x = IntVector(coordinate(random), coordinate(random), coordinate(random));
-        // A third of the pairs share their first corner.
+        // A third of the pairs share their first corner; a fifth lie in
+        // the plane z = 0 (coplanar: touching or coinciding).
         const bool shared = pairs % 3 == 0;
         if (shared) q[0] = p[0];
+        if (pairs % 5 == 1)
+            for (std::array<IntVector, 3>* t : {&p, &q})
+                for (IntVector& x : *t) x.z() = 0;
         int common = 0;
         for (const IntVector& a : p) {
             for (const IntVector& b : q) common += a == b;
@@ -281,10 +307,14 @@ void random_triangles() {
         shared_pairs += shared;
         const Contact got = triangle_contact(tp, tq, shared);
         ++seen[static_cast<int>(got)];
-        disagreeing += variants_disagreeing(tp, tq, shared, got) != 0;
+        disagreeing += variants_disagreeing(tp, tq, shared, got,
+                                            triangle_contact(tp, reversed(tq), shared)) != 0;
 
         const IntVector np = (p[1] - p[0]).cross(p[2] - p[0]);
         const IntVector nq = (q[1] - q[0]).cross(q[2] - q[0]);
+        // Coinciding: in one plane, facing the same way, sharing no corner.
+        const bool coplanar = np.cross(nq).isZero() && np.dot(q[0] - p[0]) == 0;
+        if (got == Contact::coinciding) reference_wrong += !coplanar || np.dot(nq) < 0 || shared;
         if (!strictly_straddles(p, nq, q[0]) || !strictly_straddles(q, np, p[0])) {
             // Not straddling: never crossing.
             reference_wrong += got == Contact::crossing;
@@ -306,12 +336,13 @@ void random_triangles() {
     CHECK(disagreeing == 0);
     CHECK(reference_wrong == 0);
     // The sample must exercise every answer, or it proves little.
-    CHECK(seen[0] > 0 && seen[1] > 0 && seen[2] > 0);
+    CHECK(seen[0] > 0 && seen[1] > 0 && seen[2] > 0 && seen[3] > 0);
     std::printf(
         "  %ld random integer pairs (%ld sharing a corner, %ld straddling): "
-        "%ld none, %ld touching, %ld crossing; %ld inconsistent under symmetries, "
-        "%ld differ from the reference\n",
-        pairs, shared_pairs, straddling, seen[0], seen[1], seen[2], disagreeing, reference_wrong);
+        "%ld none, %ld touching, %ld crossing, %ld coinciding; %ld inconsistent under "
+        "symmetries, %ld differ from the reference\n",
+        pairs, shared_pairs, straddling, seen[0], seen[1], seen[2], seen[3], disagreeing,
+        reference_wrong);
 }
 
 }  // namespace

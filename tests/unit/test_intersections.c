@@ -501,41 +501,45 @@ static void test_copies_are_paired_as_triangles_are(void** state) {
     polymass_context_destroy(ctx);
 }
 
-/* A probe crossing a triangle with copies counts each copy of another
-   shell: a cube inside out within two coincident cubes lies inside two
-   solids (overlapping, not a cavity), as when the second cube's triangles
-   are not copies of the first's. */
-static void test_nesting_counts_every_copy(void** state) {
-    polymass_context* ctx = pm_context_new(CHECKED);
-    polymass_shell shells[2][3];
-    int turned;
-    size_t i;
+/* Faces of two shells lying in one plane, overlapping over an area and
+   facing the same way bound the region behind them twice, as crossing faces
+   do: a surface written twice, or parts overlapping flush with each other
+   (none of whose faces pass through another's, and whose corners all lie on
+   the other part or outside it, so that no probe sees the overlap). Facing
+   opposite ways they only touch. */
+static void test_coinciding_faces_of_two_shells(void** state) {
+    pm_mesh m;
+    int triangulate;
     (void)state;
-    for (turned = 0; turned < 2; ++turned) {
-        pm_mesh m, inner;
-        const double to_middle[3] = {1, 1, 1};
-        uint64_t count = 0;
-        polymass_mesh_desc desc;
+    for (triangulate = 0; triangulate < 2; ++triangulate) {
         pm_mesh_init(&m);
-        pm_mesh_init(&inner);
-        add_cube(&m, 4.0, NULL, 0, NULL, 0, 0);
-        add_cube(&m, 4.0, NULL, 0, NULL, 0, turned);
-        add_cube(&inner, 2.0, NULL, 1, NULL, 0, 0);
-        pm_mesh_transform(&inner, NULL, 1.0, to_middle);
-        pm_mesh_append(&m, &inner);
-        desc = pm_mesh_desc(&m);
-        for (i = 0; i < 3; ++i) {
-            memset(&shells[turned][i], 0, sizeof shells[turned][i]);
-            shells[turned][i].struct_size = sizeof shells[turned][i];
-        }
-        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells[turned], 3, &count, ctx, &desc));
-        assert_int_equal(count, 3);
-        pm_mesh_free(&inner);
+        box(&m, 0, 0, 0, 1, 1, 1, triangulate, 0);
+        box(&m, 0, 0, 0, 1, 1, 1, triangulate, 0);
+        expect_everywhere(
+            triangulate ? "a cube written twice, triangulated" : "a cube written twice (quads)", &m,
+            overlap);
+        pm_mesh_free(&m);
+        pm_mesh_init(&m);
+        box(&m, 0, 0, 0, 1, 1, 1, triangulate, 0);
+        box(&m, 0.5, 0, 0, 1.5, 1, 1, triangulate, 0);
+        expect_everywhere(triangulate ? "cubes overlapping by half, flush, triangulated"
+                                      : "cubes overlapping by half, flush (quads)",
+                          &m, overlap);
         pm_mesh_free(&m);
     }
-    assert_int_equal(shells[0][2].kind, POLYMASS_SHELL_OVERLAPPING);
-    for (i = 0; i < 3; ++i) assert_int_equal(shells[0][i].kind, shells[1][i].kind);
-    polymass_context_destroy(ctx);
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 2, 2, 2, 1, 0);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    expect_everywhere("a cube nested flush in a corner of another", &m, overlap);
+    pm_mesh_free(&m);
+    {
+        const expectation nothing = {POLYMASS_ERROR_ZERO_VOLUME, POLYMASS_ERROR_ZERO_VOLUME, 0, 0};
+        pm_mesh_init(&m);
+        box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+        box(&m, 0, 0, 0, 1, 1, 1, 1, 1);
+        expect_everywhere("a cube and its inside-out copy (touching)", &m, nothing);
+        pm_mesh_free(&m);
+    }
 }
 
 /* The shell list refuses what it cannot fill or judge, saying why. */
@@ -624,7 +628,7 @@ int main(void) {
         cmocka_unit_test(test_report_lists_pairs_and_shells),
         cmocka_unit_test(test_piles_of_copies_stop_counting),
         cmocka_unit_test(test_copies_are_paired_as_triangles_are),
-        cmocka_unit_test(test_nesting_counts_every_copy),
+        cmocka_unit_test(test_coinciding_faces_of_two_shells),
         cmocka_unit_test(test_shell_list_refuses_bad_arguments),
         cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),

@@ -1,0 +1,53 @@
+/* What the benchmarks share: a monotonic clock, the median of rounds, and the
+   torus they measure (a closed grid of triangles far from the origin). */
+#ifndef POLYMASS_BENCH_COMMON_H
+#define POLYMASS_BENCH_COMMON_H
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <time.h>
+
+static inline double now_seconds(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static inline int by_value(const void* a, const void* b) {
+    const double x = *(const double*)a, y = *(const double*)b;
+    return (x > y) - (x < y);
+}
+
+/* Sorts values. */
+static inline double median(double* values, int count) {
+    qsort(values, (size_t)count, sizeof *values, by_value);
+    return count % 2 ? values[count / 2] : 0.5 * (values[count / 2 - 1] + values[count / 2]);
+}
+
+/* A torus of rings x segments quads, two triangles each, 1e6 from the origin:
+   rings * segments vertices and 2 * rings * segments triangles. */
+static inline void make_torus(uint32_t rings, uint32_t segments, double* positions,
+                              uint32_t* indices) {
+    const double pi = 3.14159265358979323846;
+    for (uint32_t i = 0; i < rings; ++i) {
+        for (uint32_t j = 0; j < segments; ++j) {
+            const double u = 2 * pi * i / rings, v = 2 * pi * j / segments;
+            double* p = positions + 3 * ((size_t)i * segments + j);
+            p[0] = 1e6 + (2 + cos(v)) * cos(u);
+            p[1] = 1e6 + (2 + cos(v)) * sin(u);
+            p[2] = 1e6 + sin(v);
+        }
+    }
+    for (uint32_t i = 0; i < rings; ++i) {
+        for (uint32_t j = 0; j < segments; ++j) {
+            const uint32_t a = i * segments + j, b = ((i + 1) % rings) * segments + j;
+            const uint32_t c = ((i + 1) % rings) * segments + (j + 1) % segments;
+            const uint32_t d = i * segments + (j + 1) % segments;
+            uint32_t* t = indices + 6 * ((size_t)i * segments + j);
+            t[0] = a, t[1] = b, t[2] = c, t[3] = a, t[4] = c, t[5] = d;
+        }
+    }
+}
+
+#endif
