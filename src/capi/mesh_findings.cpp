@@ -156,7 +156,8 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
             return fail_on_shell(context, POLYMASS_ERROR_INTERSECTING, *analysis.shells,
                                  analysis.shells->overlapping,
                                  "lies inside another shell that already bounds the same "
-                                 "side: its region would be counted twice");
+                                 "side, or passes through its surface: its region would be "
+                                 "counted twice");
     }
     return context->fail(POLYMASS_ERROR_INTERNAL, "unknown verdict");
 }

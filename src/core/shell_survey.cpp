@@ -83,7 +83,9 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
         if (winding_of_shell[shell] == kUnknownWinding || summary.kind == ShellKind::no_volume)
             continue;
         const int around = outward * winding_of_shell[shell];
-        if (summary.signed_volume > 0)
+        if (winding_of_shell[shell] == kMixedWinding)
+            summary.kind = ShellKind::overlapping;
+        else if (summary.signed_volume > 0)
             summary.kind = around == 0 ? ShellKind::solid : ShellKind::overlapping;
         else
             summary.kind = around == 1   ? ShellKind::cavity

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <memory_resource>
 #include <utility>
 
@@ -25,16 +26,37 @@ void sort_unique(std::pmr::vector<FacePair>& pairs) {
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 }
 
-// Whether p, on the plane of t, lies on the closed triangle t: exact, in the
-// coordinate plane the triangle projects onto best.
-bool lies_on(const Triangle& t, const Eigen::Vector3d& p) {
+// Where a nesting probe starts: a vertex p of a shell, or inside a triangle
+// p, a, b of it, at p + e (a - p) + e^2 (b - p) for e -> 0+, a point of the
+// open triangle next to p. Every predicate of a probe is affine in its start
+// point, so its sign there is the first nonzero of its signs at p, a and b.
+struct ProbeStart {
+    Eigen::Vector3d p, a, b;
+    bool inside;
+};
+
+template <class Predicate>
+int sign_at(const ProbeStart& start, const Predicate& predicate) {
+    int sign = predicate(start.p);
+    if (sign != 0 || !start.inside) return sign;
+    sign = predicate(start.a);
+    return sign != 0 ? sign : predicate(start.b);
+}
+
+// Whether the start, on the plane of t, lies on the closed triangle t:
+// exact, in the coordinate plane the triangle projects onto best.
+bool lies_on(const Triangle& t, const ProbeStart& start) {
     int drop = 0;
     (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs().maxCoeff(&drop);
     const int u = (drop + 1) % 3, v = (drop + 2) % 3;
     auto flat = [&](const Eigen::Vector3d& x) { return Eigen::Vector2d(x[u], x[v]); };
     const int turn = orient2d(flat(t[0]), flat(t[1]), flat(t[2]));
-    for (int k = 0; k < 3; ++k)
-        if (orient2d(flat(t[k]), flat(t[(k + 1) % 3]), flat(p)) == -turn) return false;
+    for (int k = 0; k < 3; ++k) {
+        const int side = sign_at(start, [&](const Eigen::Vector3d& x) {
+            return orient2d(flat(t[k]), flat(t[(k + 1) % 3]), flat(x));
+        });
+        if (side == -turn) return false;
+    }
     return true;
 }
 
@@ -301,6 +323,29 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     for (const FloatBox& box : boxes) everything.extend(box);
     const BoxTree tree(boxes, memory);
 
+    const bool nesting = shells && shells->count >= 2;
+    const auto shell_of = [&](std::size_t t) { return shells->of_face[triangles.face[t]]; };
+    // Per shape (its lowest triangle): whether it touches a triangle of
+    // another shell, found whether or not the counts still want the pair.
+    // Only there can the rest of the surface wind around a shell otherwise
+    // than at its probe vertex (the nesting, below). Copies on two shells
+    // coincide, which is crossing and ends the check before the nesting, so
+    // the copies of a shape that matters lie on one shell.
+    std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell(nesting ? triangles.size() : 0,
+                                                                    memory);
+    // Whether a pair no count wants must still be tested to mark its triangles.
+    auto may_mark = [&](std::uint32_t i, std::uint32_t j) {
+        return nesting && shell_of(i) != shell_of(j) &&
+               !(touches_other_shell[shapes.lowest[i]].load(std::memory_order_relaxed) &&
+                 touches_other_shell[shapes.lowest[j]].load(std::memory_order_relaxed));
+    };
+    auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
+        if (contact == Contact::touching && nesting && shell_of(i) != shell_of(j)) {
+            touches_other_shell[shapes.lowest[i]].store(1, std::memory_order_relaxed);
+            touches_other_shell[shapes.lowest[j]].store(1, std::memory_order_relaxed);
+        }
+    };
+
     // Adds the face pair of triangles i and j as its contact says. Coinciding
     // triangles of two shells bound the region behind both twice, as crossing
     // ones do; within one shell they may be a fan over a non-convex polygon,
@@ -309,10 +354,8 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     auto add = [&](Contact contact, std::uint32_t i, std::uint32_t j, const FacePair& pair,
                    PairCollector& crossing, PairCollector& touching) {
         if (contact == Contact::coinciding)
-            contact =
-                shells && shells->of_face[triangles.face[i]] != shells->of_face[triangles.face[j]]
-                    ? Contact::crossing
-                    : Contact::touching;
+            contact = shells && shell_of(i) != shell_of(j) ? Contact::crossing : Contact::touching;
+        note_contact(contact, i, j);
         if (contact != Contact::none)
             (contact == Contact::crossing ? crossing : touching).add(pair);
     };
@@ -322,7 +365,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-        if (!crossing.wants(pair) && !touching.wants(pair)) return;
+        if (!crossing.wants(pair) && !touching.wants(pair) && !may_mark(i, j)) return;
         const SharedCorners shared = shared_corners(ids[i], ids[j]);
         if (shared.count >= 2) return;  // neighbours across an edge
         // The shared corner first.
@@ -357,6 +400,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
             }
             return contact_of[pattern];
         };
+        // Copies of shapes on two shells share no corner: all meet as r and s do.
+        if (r != s && nesting && shell_of(r) != shell_of(s))
+            note_contact(contact(0, 0, false), r, s);
         for (std::uint32_t i = r; i != kNoCopy; i = shapes.next[i]) {
             for (std::uint32_t j = r == s ? shapes.next[i] : s; j != kNoCopy; j = shapes.next[j]) {
                 const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
@@ -421,13 +467,13 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     span /= per_unit;
     result.winding_of_shell.assign(shells->count, kUnknownWinding);
     if (!(span > 0) || !std::isfinite(4 * span)) return result;
-    const auto shell_of = [&](std::size_t t) { return shells->of_face[triangles.face[t]]; };
 
-    // The winding number of every shell but `shell` at p, or kUnknownWinding
-    // when the segment from p to p + 4 span direction grazes an edge or a
-    // vertex, or p lies on another shell.
-    auto winding_at = [&](const Eigen::Vector3d& p, const Eigen::Vector3d& direction,
+    // The winding number of every shell but `shell` at the start, or
+    // kUnknownWinding when the segment from it to p + 4 span direction grazes
+    // an edge or a vertex, or the start lies on another shell.
+    auto winding_at = [&](const ProbeStart& start, const Eigen::Vector3d& direction,
                           std::uint32_t shell) {
+        const Eigen::Vector3d& p = start.p;
         const Eigen::Vector3d q = p + 4 * span * direction.normalized();
         int winding = 0;
         bool counted = true;
@@ -440,14 +486,20 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                 others += shell_of(copy) != shell;
             if (others == 0) return true;
             const Triangle c = triangle(t);
-            const int from = orient3d(c[0], c[1], c[2], p), to = orient3d(c[0], c[1], c[2], q);
-            if (to == 0 || (from == 0 && lies_on(c, p))) {
+            const int to = orient3d(c[0], c[1], c[2], q);
+            const int from = sign_at(
+                start, [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); });
+            if (to == 0 || (from == 0 && lies_on(c, start))) {
                 counted = false;
                 return false;
             }
             if (from == 0 || from == to) return true;
-            const int e0 = orient3d(p, q, c[0], c[1]), e1 = orient3d(p, q, c[1], c[2]),
-                      e2 = orient3d(p, q, c[2], c[0]);
+            auto edge_sign = [&](int k) {
+                return sign_at(start, [&](const Eigen::Vector3d& x) {
+                    return orient3d(x, q, c[k], c[(k + 1) % 3]);
+                });
+            };
+            const int e0 = edge_sign(0), e1 = edge_sign(1), e2 = edge_sign(2);
             const bool some_positive = e0 > 0 || e1 > 0 || e2 > 0;
             const bool some_negative = e0 < 0 || e1 < 0 || e2 < 0;
             if (some_positive && some_negative) return true;  // passes beside the triangle
@@ -469,15 +521,61 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         if (!meets_nothing(t) && probe_count[shell] < kProbeVertices)
             probes[shell][probe_count[shell]++] = std::uint32_t(t);
     }
+    auto probe = [&](const ProbeStart& start, std::uint32_t shell) {
+        int winding = kUnknownWinding;
+        for (const Eigen::Vector3d& direction : kProbeDirections) {
+            winding = winding_at(start, direction, shell);
+            if (winding != kUnknownWinding) break;
+        }
+        return winding;
+    };
+    // Whether the start lies on another shell's triangle: a look at the few
+    // triangles whose boxes hold it, before long probes that would only graze
+    // there. The vertices of parts resting on each other often do, and the
+    // starts next to the corners of faces resting flush always do.
+    auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell) {
+        bool on = false;
+        tree.for_each_item_near_segment(in_units(start.p), in_units(start.p), [&](std::uint32_t t) {
+            if (shell_of(t) == shell) return true;
+            const Triangle c = triangle(t);
+            on = sign_at(start,
+                         [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); }) ==
+                     0 &&
+                 lies_on(c, start);
+            return !on;
+        });
+        return on;
+    };
     for (std::uint32_t shell = 0; shell < shells->count; ++shell) {
         int& winding = result.winding_of_shell[shell];
         for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
             const Eigen::Vector3d p = mesh.positions[ids[probes[shell][k]][0]];
-            for (const Eigen::Vector3d& direction : kProbeDirections) {
-                winding = winding_at(p, direction, shell);
-                if (winding != kUnknownWinding) break;
-            }
+            const ProbeStart start{p, p, p, false};
+            if (!on_another_shell(start, shell)) winding = probe(start, shell);
         }
+    }
+    // Where a shell touches another, the rest of the surface may wind around
+    // its pieces differently: a surface passing through another's face
+    // exactly along its own edges crosses no face, yet lies partly inside
+    // the other part, and all its vertices may lie on that part or outside
+    // it. So each triangle touching another shell is probed from inside,
+    // next to its first corner whose probe does not graze (what touches a
+    // triangle from one side, along a segment or at a point of it, leaves
+    // the winding alike on both sides: a triangle's inside is one piece
+    // unless a face crosses it); a shell whose probes disagree bounds some
+    // region twice (or less than once), whatever its sense.
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+        if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
+        const std::uint32_t shell = shell_of(t);
+        int& winding = result.winding_of_shell[shell];
+        int here = kUnknownWinding;
+        for (int k = 0; k < 3 && here == kUnknownWinding && winding != kMixedWinding; ++k) {
+            const Triangle corners = triangle(t, k);
+            const ProbeStart start{corners[0], corners[1], corners[2], true};
+            if (!on_another_shell(start, shell)) here = probe(start, shell);
+        }
+        if (here != kUnknownWinding && winding != kMixedWinding)
+            winding = winding == kUnknownWinding || winding == here ? here : kMixedWinding;
     }
     return result;
 }

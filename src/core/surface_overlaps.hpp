@@ -14,7 +14,10 @@
 // with their orientation): it is counted exactly, as the signed crossings of a
 // segment from that vertex to a point outside everything, with exact
 // predicates; a segment that grazes an edge or a vertex, or starts on another
-// shell, is replaced by another. docs/validity.md has the reasoning.
+// shell, is replaced by another. Where shells touch, a shell may pass through
+// another along its own edges, so each triangle touching another shell is
+// also probed from a point inside it (symbolically perturbed), and a shell
+// whose probes disagree is marked mixed. docs/validity.md has the reasoning.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,13 +35,18 @@ namespace polymass::core {
 
 // A winding number that could not be counted (every probe was degenerate).
 inline constexpr int kUnknownWinding = INT_MIN;
+// Windings that differ between pieces of one shell: the shell passes
+// through another's surface (where the two touch) and bounds some region
+// twice, or less than once.
+inline constexpr int kMixedWinding = INT_MAX;
 
 struct SurfaceOverlaps {
     PairFinding crossing;  // face pairs (low, high) that cross
     PairFinding touching;  // face pairs that meet without crossing (and share no vertex)
     // With shells and nothing crossing: for each shell, the winding number of
     // every other shell at a point of it (kUnknownWinding where it could not
-    // be counted). Empty otherwise.
+    // be counted, kMixedWinding where it differs between points). Empty
+    // otherwise.
     std::pmr::vector<int> winding_of_shell;
 
     explicit SurfaceOverlaps(std::pmr::memory_resource* memory) : winding_of_shell(memory) {}

@@ -7,7 +7,10 @@
    - the same torus written twice in one mesh: two coincident shells, every
      triangle with a copy (copies are paired without the box tree);
    - a pile of coincident cubes: k copies of one part, whose face pairs in
-     contact grow as k squared (the count stops at its limit).
+     contact grow as k squared (the count stops at its limit);
+   - about as many cubes stacked in a cube, each resting against its
+     neighbours: many shells touching, each triangle that touches another
+     shell probed for how the others wind around it.
    Runs are interleaved (every measure once per round) and the median of the
    rounds is printed, with the status the check gave. Prints figures; asserts
    nothing about speed.
@@ -48,20 +51,23 @@ static bench_mesh make_tori(const char* name, size_t wanted, uint32_t times) {
     return mesh;
 }
 
-/* k unit cubes at one place, 1e6 from the origin, each its own 8 vertices and
-   12 outward triangles. */
-static bench_mesh make_pile(const char* name, uint32_t k) {
+/* k unit cubes, 1e6 from the origin, each its own 8 vertices and 12 outward
+   triangles: at one place (side 0), or stacked side x side x side, each
+   resting against its neighbours. */
+static bench_mesh make_cubes(const char* name, uint32_t k, uint32_t side) {
     static const uint32_t cube[36] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                                       1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
     double* positions = malloc((size_t)k * 24 * sizeof *positions);
     uint32_t* indices = malloc((size_t)k * 36 * sizeof *indices);
     if (!positions || !indices) exit(1);
     for (uint32_t c = 0; c < k; ++c) {
+        const uint32_t at[3] = {side ? c % side : 0, side ? c / side % side : 0,
+                                side ? c / side / side : 0};
         for (int v = 0; v < 8; ++v) {
             double* p = positions + 24 * (size_t)c + 3 * v;
-            p[0] = 1e6 + (double)((v == 1 || v == 2 || v == 5 || v == 6));
-            p[1] = 1e6 + (double)((v == 2 || v == 3 || v == 6 || v == 7));
-            p[2] = 1e6 + (double)(v >= 4);
+            p[0] = 1e6 + at[0] + (double)((v == 1 || v == 2 || v == 5 || v == 6));
+            p[1] = 1e6 + at[1] + (double)((v == 2 || v == 3 || v == 6 || v == 7));
+            p[2] = 1e6 + at[2] + (double)(v >= 4);
         }
         for (int i = 0; i < 36; ++i) indices[36 * (size_t)c + i] = cube[i] + 8 * c;
     }
@@ -141,6 +147,8 @@ int main(int argc, char** argv) {
     const int rounds = argc > 1 ? atoi(argv[1]) : 5;
     const double torus_triangles = argc > 2 ? atof(argv[2]) : 1e6;
     const double cubes = argc > 3 ? atof(argv[3]) : 1000;
+    /* The stack: about as many cubes as the pile. */
+    const uint32_t stack = (uint32_t)(cbrt(cubes) + 0.5) > 0 ? (uint32_t)(cbrt(cubes) + 0.5) : 1;
     polymass_context* context = NULL;
     if (rounds < 1 || torus_triangles < 1000 || cubes < 1 || cubes > 1e8 ||
         polymass_context_create(&context, NULL) != POLYMASS_OK) {
@@ -148,9 +156,11 @@ int main(int argc, char** argv) {
         return 1;
     }
     printf("libpolymass %s, median of %d interleaved rounds\n", polymass_version_string(), rounds);
-    const bench_mesh meshes[] = {make_tori("torus", (size_t)torus_triangles, 1),
-                                 make_tori("torus written twice", (size_t)torus_triangles / 2, 2),
-                                 make_pile("pile of coincident cubes", (uint32_t)cubes)};
+    const bench_mesh meshes[] = {
+        make_tori("torus", (size_t)torus_triangles, 1),
+        make_tori("torus written twice", (size_t)torus_triangles / 2, 2),
+        make_cubes("pile of coincident cubes", (uint32_t)cubes, 0),
+        make_cubes("stack of cubes resting on each other", stack * stack * stack, stack)};
     for (size_t i = 0; i < sizeof meshes / sizeof *meshes; ++i) {
         run(&meshes[i], rounds, context);
         free((void*)meshes[i].desc.positions);

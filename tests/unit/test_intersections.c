@@ -542,6 +542,65 @@ static void test_coinciding_faces_of_two_shells(void** state) {
     }
 }
 
+/* A double pyramid whose square waist lies on a face of a cube: lower_apex_z
+   below the waist's, its lower half lies in the cube, passing through the
+   cube's face exactly along its own edges (no faces cross, none coincide),
+   every vertex on the cube or outside it; above, it rests on the cube. */
+static void double_pyramid(pm_mesh* m, double lower_apex_z) {
+    const uint32_t top = pm_mesh_add_vertex(m, 0.5, 0.5, 2);
+    const uint32_t bottom = pm_mesh_add_vertex(m, 0.5, 0.5, lower_apex_z);
+    uint32_t waist[4];
+    int k;
+    waist[0] = pm_mesh_add_vertex(m, 0.25, 0.25, 1);
+    waist[1] = pm_mesh_add_vertex(m, 0.75, 0.25, 1);
+    waist[2] = pm_mesh_add_vertex(m, 0.75, 0.75, 1);
+    waist[3] = pm_mesh_add_vertex(m, 0.25, 0.75, 1);
+    for (k = 0; k < 4; ++k) {
+        pm_mesh_add_tri(m, top, waist[k], waist[(k + 1) % 4]);
+        pm_mesh_add_tri(m, bottom, waist[(k + 1) % 4], waist[k]);
+    }
+}
+
+/* A shell passing through another's face along its own edges lies partly
+   inside it, though no probe from a vertex sees it: probes from inside the
+   triangles that touch the other shell do. */
+static void test_shell_passing_through_a_face_along_its_edges(void** state) {
+    pm_mesh m;
+    const expectation resting = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES,
+                                 1.0 + 0.25 / 3.0};
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    double_pyramid(&m, 0.0);
+    expect_everywhere("a double pyramid through a cube's face, apex on its floor", &m, overlap);
+    pm_mesh_free(&m);
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    double_pyramid(&m, 0.5);
+    expect_everywhere("the same, triangulated, apex inside", &m, overlap);
+    pm_mesh_free(&m);
+    /* Its upper half alone, resting on the cube (its base on the cube's top
+       face, facing down): its triangles touch the cube too, and all their
+       probes agree. */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    {
+        const uint32_t top = pm_mesh_add_vertex(&m, 0.5, 0.5, 2);
+        const uint32_t a = pm_mesh_add_vertex(&m, 0.25, 0.25, 1);
+        const uint32_t b = pm_mesh_add_vertex(&m, 0.75, 0.25, 1);
+        const uint32_t c = pm_mesh_add_vertex(&m, 0.75, 0.75, 1);
+        const uint32_t d = pm_mesh_add_vertex(&m, 0.25, 0.75, 1);
+        pm_mesh_add_tri(&m, top, a, b);
+        pm_mesh_add_tri(&m, top, b, c);
+        pm_mesh_add_tri(&m, top, c, d);
+        pm_mesh_add_tri(&m, top, d, a);
+        pm_mesh_add_tri(&m, a, c, b);
+        pm_mesh_add_tri(&m, a, d, c);
+    }
+    expect_everywhere("a pyramid resting on a cube", &m, resting);
+    pm_mesh_free(&m);
+}
+
 /* The shell list refuses what it cannot fill or judge, saying why. */
 static void test_shell_list_refuses_bad_arguments(void** state) {
     polymass_context* ctx = pm_context_new(CHECKED);
@@ -629,6 +688,7 @@ int main(void) {
         cmocka_unit_test(test_piles_of_copies_stop_counting),
         cmocka_unit_test(test_copies_are_paired_as_triangles_are),
         cmocka_unit_test(test_coinciding_faces_of_two_shells),
+        cmocka_unit_test(test_shell_passing_through_a_face_along_its_edges),
         cmocka_unit_test(test_shell_list_refuses_bad_arguments),
         cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),
