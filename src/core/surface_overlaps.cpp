@@ -559,23 +559,23 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     // exactly along its own edges crosses no face, yet lies partly inside
     // the other part, and all its vertices may lie on that part or outside
     // it. So each triangle touching another shell is probed from inside,
-    // next to its first corner whose probe does not graze (what touches a
-    // triangle from one side, along a segment or at a point of it, leaves
-    // the winding alike on both sides: a triangle's inside is one piece
-    // unless a face crosses it); a shell whose probes disagree bounds some
-    // region twice (or less than once), whatever its sense.
+    // next to each corner that does not lie on another shell (a face lying
+    // flush on part of the triangle cuts its inside into pieces, each with a
+    // corner: what touches it from one side, along a segment or at a point,
+    // leaves the winding alike on both sides); a shell whose probes disagree
+    // bounds some region twice (or less than once), whatever its sense.
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
         if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
         const std::uint32_t shell = shell_of(t);
         int& winding = result.winding_of_shell[shell];
-        int here = kUnknownWinding;
-        for (int k = 0; k < 3 && here == kUnknownWinding && winding != kMixedWinding; ++k) {
+        for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
             const Triangle corners = triangle(t, k);
             const ProbeStart start{corners[0], corners[1], corners[2], true};
-            if (!on_another_shell(start, shell)) here = probe(start, shell);
+            if (on_another_shell(start, shell)) continue;
+            const int here = probe(start, shell);
+            if (here != kUnknownWinding)
+                winding = winding == kUnknownWinding || winding == here ? here : kMixedWinding;
         }
-        if (here != kUnknownWinding && winding != kMixedWinding)
-            winding = winding == kUnknownWinding || winding == here ? here : kMixedWinding;
     }
     return result;
 }
