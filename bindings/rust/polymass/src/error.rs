@@ -49,9 +49,11 @@ pub enum ErrorKind {
     InconsistentOrientation,
     /// A polygon face's vertices are off its plane by more than the tolerance.
     NonPlanarFace,
-    /// Faces cross each other, or a shell lies inside a solid of the same
-    /// sense: some region would be counted twice (overlapping parts exported
-    /// as one file, a surface folded through itself). Found with
+    /// Faces cross each other (or lie on another shell's faces, facing the
+    /// same way), or a shell lies inside a solid of the same sense or passes
+    /// through another's surface: some region would be counted twice
+    /// (overlapping parts exported as one file, a surface written twice, a
+    /// surface folded through itself). Found with
     /// [`Options::check_intersections`](crate::Options::check_intersections);
     /// the message names a pair of faces, or the shell.
     Intersecting,
