@@ -121,10 +121,11 @@ extern "C" {
 /* A polygon face's vertices are off its plane by more than the tolerance. */
 #define POLYMASS_ERROR_NON_PLANAR_FACE 23
 /* Faces cross each other (or lie on faces of another shell, facing the same
-   way), or a shell lies inside a solid of the same sense: the surface bounds
-   some region twice and its volume would be counted twice (two overlapping
-   parts exported as one file, a surface written twice, a surface folded
-   through itself). Found with POLYMASS_OPTION_CHECK_INTERSECTIONS. */
+   way), or a shell lies inside a solid of the same sense or passes through
+   another's surface where the two touch: the surface bounds some region twice
+   and its volume would be counted twice (two overlapping parts exported as
+   one file, a surface written twice, a surface folded through itself). Found
+   with POLYMASS_OPTION_CHECK_INTERSECTIONS. */
 #define POLYMASS_ERROR_INTERSECTING 24
 /* The enclosed volume is negative: every face is reversed - or one shell is
    inside out (negative volume) while lying inside no solid shell. */
@@ -398,7 +399,7 @@ typedef struct polymass_diagnostics {
     uint64_t shell_count;
     uint64_t inverted_shells; /* inside out, inside no solid shell */
     uint64_t first_inverted_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
-    uint64_t overlapping_shells; /* inside a solid of the same sense */
+    uint64_t overlapping_shells; /* inside a solid of the same sense, or through another */
     uint64_t first_overlapping_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t intersecting_face_pairs; /* faces that cross, or coincide facing the same way */
     uint64_t first_intersecting_face_pairs[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
