@@ -202,6 +202,32 @@ class Hostile(unittest.TestCase):
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_unreadable(path, "accessor 5 does not exist")
 
+    def test_gltf_buffer_that_is_not_a_file(self):
+        # A fuzzer's find (tests/fuzz/gltf/regressions/): a buffer's URI naming
+        # a directory made tinygltf ask for 2^63 bytes; a pipe would have kept
+        # it waiting for a writer forever.
+        directory = WORK / "buffer_directory"
+        directory.mkdir(exist_ok=True)
+        pipe = WORK / "buffer_pipe"
+        if not pipe.exists():
+            os.mkfifo(pipe)
+        device = WORK / "buffer_device"  # a URI is relative: a link to /dev/zero
+        if not device.is_symlink():
+            device.symlink_to("/dev/zero")
+        for name, uri, message in (
+            ("directory", directory.name, "it is a directory, not a file"),
+            # The fuzzer's URI: it decodes to a NUL byte, the glTF's own directory.
+            ("undecodable", "%%%%", "it is a directory, not a file"),
+            ("pipe", pipe.name, "not a regular file"),
+            ("device", device.name, "not a regular file"),
+        ):
+            with self.subTest(name):
+                document, buffer = self.gltf_parts()
+                document["buffers"][0]["uri"] = uri
+                path = WORK / f"buffer_{name}.gltf"
+                path.write_text(json.dumps(document))
+                self.expect_unreadable(path, message)
+
     def test_gltf_nodes_nested_deeply(self):
         document, buffer = self.gltf_parts()
         depth = 10_000  # ten times the deepest tree the reader follows
@@ -283,6 +309,18 @@ class Hostile(unittest.TestCase):
             self.assertIn("unreadable_mesh", kinds, entry)
         # A mesh file that is a device is refused by the reader itself too.
         self.expect_unreadable(zero, "not a regular file")
+
+    def test_files_that_are_pipes(self):
+        # Opening a pipe for reading waits for a writer: the tool must refuse
+        # it at once, as a mesh file and as a robot description.
+        for name, command in (("mesh.stl", []), ("robot.urdf", ["audit"])):
+            with self.subTest(name):
+                path = WORK / f"pipe_{name}"
+                if not path.exists():
+                    os.mkfifo(path)
+                outcome = self.bounded([*command, "--json", path])
+                self.assertEqual(outcome.returncode, EXIT_UNREADABLE, outcome.stderr)
+                self.assertIn("not a regular file", outcome.stdout)
 
     def test_description_that_is_dev_zero(self):
         path = WORK / "zero.urdf"

@@ -14,10 +14,13 @@
 namespace polymass_cli {
 namespace {
 
-// An open descriptor, closed on every way out.
+// An open descriptor, closed on every way out. Opened without blocking: a
+// pipe opened for reading waits for a writer, forever if none comes; opened
+// so, it is then refused as not a regular file (regular files ignore the flag).
 class Descriptor {
 public:
-    explicit Descriptor(const std::string& path) : fd_(open(path.c_str(), O_RDONLY | O_CLOEXEC)) {
+    explicit Descriptor(const std::string& path)
+        : fd_(open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)) {
         if (fd_ < 0) throw ReadError("cannot open the file");
     }
     ~Descriptor() { close(fd_); }

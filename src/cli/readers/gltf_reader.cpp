@@ -12,14 +12,17 @@
 // triangles' corners reversed, as the specification says the winding is then
 // clockwise. An index past the primitive's vertices is kept out of range, for
 // the library to report.
+#include <sys/stat.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string>
 
+#include "readers/file_bytes.hpp"
 #include "readers/format_readers.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/transform.hpp"
@@ -243,6 +246,32 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
     return true;
 }
 
+// Buffers in files of their own are read as the mesh file is: regular files
+// only. tinygltf's own reading asked for 2^63 bytes when a buffer's URI named
+// a directory (ext4 reports that size for one), and its test of existence
+// opens the file, which waits forever on a pipe. A fuzzer's find
+// (tests/fuzz/gltf/regressions/).
+// A buffer's path as written: tinygltf before 2.6 expanded it as a shell
+// word (wordexp), command substitutions included.
+std::string path_as_written(const std::string& path, void*) { return path; }
+
+bool buffer_file_exists(const std::string& path, void*) {
+    struct stat status {};
+    return ::stat(path.c_str(), &status) == 0;
+}
+
+bool read_buffer_file(std::vector<unsigned char>* out, std::string* error, const std::string& path,
+                      void*) {
+    try {
+        const FileBytes bytes(path);
+        out->assign(bytes.view().begin(), bytes.view().end());
+        return true;
+    } catch (const ReadError& failure) {
+        if (error) *error += "buffer file \"" + path + "\": " + failure.what() + "\n";
+        return false;
+    }
+}
+
 bool is_binary(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
     char magic[4] = {};
@@ -255,6 +284,8 @@ bool is_binary(const std::string& path) {
 Model read_gltf(const std::string& path) {
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);
+    loader.SetFsCallbacks(
+        {buffer_file_exists, path_as_written, read_buffer_file, tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model gltf;
     std::string error, warning;
     const bool loaded = is_binary(path) ? loader.LoadBinaryFromFile(&gltf, &error, &warning, path)
@@ -262,7 +293,9 @@ Model read_gltf(const std::string& path) {
     if (!loaded) {
         while (!error.empty() && error.back() == '\n') error.pop_back();
         // tinygltf's JSON errors quote the byte they stopped at, which may
-        // not be UTF-8 (nor text).
+        // not be UTF-8 (nor text), and a decoded URI ("%00") may hold NUL
+        // bytes, which would cut the message short.
+        std::replace(error.begin(), error.end(), '\0', '?');
         throw ReadError("not a readable glTF 2 file: " +
                         (error.empty() ? "no reason given" : valid_utf8(error)));
     }
