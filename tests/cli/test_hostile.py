@@ -222,7 +222,7 @@ class Hostile(unittest.TestCase):
             ("device", device.name, "not a regular file"),
         ):
             with self.subTest(name):
-                document, buffer = self.gltf_parts()
+                document, _ = self.gltf_parts()
                 document["buffers"][0]["uri"] = uri
                 path = WORK / f"buffer_{name}.gltf"
                 path.write_text(json.dumps(document))
