@@ -560,11 +560,11 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     // the other part, and all its vertices may lie on that part or outside
     // it. So each triangle touching another shell is probed from inside,
     // next to each of its corners, unless the start there lies on another
-    // shell (a face lying flush on part of the triangle cuts its inside into
-    // pieces, each next to a corner; what touches it from one side, along a
-    // segment or at a point, leaves the winding alike on both sides); a shell
-    // whose probes disagree bounds some region twice (or less than once),
-    // whatever its sense.
+    // shell (what touches it from one side, along a segment or at a point,
+    // leaves the winding alike on both sides; a face lying flush on part of
+    // it cuts its inside into pieces, which these probes reach unless flush
+    // faces cover every corner); a shell whose probes disagree bounds some
+    // region twice (or less than once), whatever its sense.
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
         if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
         const std::uint32_t shell = shell_of(t);
