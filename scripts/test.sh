@@ -43,11 +43,14 @@ STEPS=(deps format dev asan tsan fuzz python rust debian)
 # once it is installed (the deps step installs it), so a run after a small
 # change recompiles only what changed. Paths under the root are hashed as
 # relative ones, so a fresh clone in another directory hits the same cache.
-# POLYMASS_NO_CCACHE=1 compiles everything afresh.
+# The fuzz build's coverage ignore list is read by the compiler but not seen
+# by ccache, which is told to hash it. POLYMASS_NO_CCACHE=1 compiles
+# everything afresh.
 use_ccache() {
     if [ -z "${POLYMASS_NO_CCACHE:-}" ] && command -v ccache >/dev/null 2>&1; then
         export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
         export CCACHE_BASEDIR=$ROOT CCACHE_NOHASHDIR=true
+        export CCACHE_EXTRAFILES=$ROOT/tests/fuzz/coverage-ignorelist.txt
     fi
 }
 

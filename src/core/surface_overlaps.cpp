@@ -326,19 +326,12 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     const bool nesting = shells && shells->count >= 2;
     const auto shell_of = [&](std::size_t t) { return shells->of_face[triangles.face[t]]; };
     // Per shape (its lowest triangle): whether it touches a triangle of
-    // another shell, found whether or not the counts still want the pair.
-    // Only there can the rest of the surface wind around a shell otherwise
+    // another shell. Only there can the rest of the surface wind around a shell otherwise
     // than at its probe vertex (the nesting, below). Copies on two shells
     // coincide, which is crossing and ends the check before the nesting, so
     // the copies of a shape that matters lie on one shell.
     std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell(nesting ? triangles.size() : 0,
                                                                     memory);
-    // Whether a pair no count wants must still be tested to mark its triangles.
-    auto may_mark = [&](std::uint32_t i, std::uint32_t j) {
-        return nesting && shell_of(i) != shell_of(j) &&
-               !(touches_other_shell[shapes.lowest[i]].load(std::memory_order_relaxed) &&
-                 touches_other_shell[shapes.lowest[j]].load(std::memory_order_relaxed));
-    };
     auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
         if (contact == Contact::touching && nesting && shell_of(i) != shell_of(j)) {
             touches_other_shell[shapes.lowest[i]].store(1, std::memory_order_relaxed);
@@ -365,7 +358,10 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
-        if (!crossing.wants(pair) && !touching.wants(pair) && !may_mark(i, j)) return;
+        // Past the stop of touching pairs a pair is still tested while the
+        // count of crossing ones wants it, which it does until 2048 cross:
+        // every touching pair that the nesting needs is marked.
+        if (!crossing.wants(pair) && !touching.wants(pair)) return;
         const SharedCorners shared = shared_corners(ids[i], ids[j]);
         if (shared.count >= 2) return;  // neighbours across an edge
         // The shared corner first.
@@ -400,7 +396,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
             }
             return contact_of[pattern];
         };
-        // Copies of shapes on two shells share no corner: all meet as r and s do.
+        // Copies of shapes on two shells share no corner: all meet as r and
+        // s do. (A row breaks past the stop of touching pairs, and copies on
+        // one shell, welded and accepted as non-manifold, reach the nesting.)
         if (r != s && nesting && shell_of(r) != shell_of(s))
             note_contact(contact(0, 0, false), r, s);
         for (std::uint32_t i = r; i != kNoCopy; i = shapes.next[i]) {
@@ -468,9 +466,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     result.winding_of_shell.assign(shells->count, kUnknownWinding);
     if (!(span > 0) || !std::isfinite(4 * span)) return result;
 
-    // The winding number of every shell but `shell` at the start, or
-    // kUnknownWinding when the segment from it to p + 4 span direction grazes
-    // an edge or a vertex, or the start lies on another shell.
+    // The winding number of every shell but `shell` at a start that lies on
+    // no other shell, or kUnknownWinding when the segment from it to
+    // p + 4 span direction grazes an edge, a vertex or a plane.
     auto winding_at = [&](const ProbeStart& start, const Eigen::Vector3d& direction,
                           std::uint32_t shell) {
         const Eigen::Vector3d& p = start.p;
@@ -489,7 +487,9 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
             const int to = orient3d(c[0], c[1], c[2], q);
             const int from = sign_at(
                 start, [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); });
-            if (to == 0 || (from == 0 && lies_on(c, start))) {
+            // A start on c was turned away before (on_another_shell): from
+            // = 0 is a start in c's plane beside it.
+            if (to == 0) {
                 counted = false;
                 return false;
             }
@@ -521,14 +521,6 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         if (!meets_nothing(t) && probe_count[shell] < kProbeVertices)
             probes[shell][probe_count[shell]++] = std::uint32_t(t);
     }
-    auto probe = [&](const ProbeStart& start, std::uint32_t shell) {
-        int winding = kUnknownWinding;
-        for (const Eigen::Vector3d& direction : kProbeDirections) {
-            winding = winding_at(start, direction, shell);
-            if (winding != kUnknownWinding) break;
-        }
-        return winding;
-    };
     // Whether the start lies on another shell's triangle: a look at the few
     // triangles whose boxes hold it, before long probes that would only graze
     // there. The vertices of parts resting on each other often do, and the
@@ -546,12 +538,22 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         });
         return on;
     };
+    // The winding at the start, or kUnknownWinding when it lies on another
+    // shell or every direction grazes.
+    auto probe = [&](const ProbeStart& start, std::uint32_t shell) {
+        int winding = kUnknownWinding;
+        if (on_another_shell(start, shell)) return winding;
+        for (const Eigen::Vector3d& direction : kProbeDirections) {
+            winding = winding_at(start, direction, shell);
+            if (winding != kUnknownWinding) break;
+        }
+        return winding;
+    };
     for (std::uint32_t shell = 0; shell < shells->count; ++shell) {
         int& winding = result.winding_of_shell[shell];
         for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
             const Eigen::Vector3d p = mesh.positions[ids[probes[shell][k]][0]];
-            const ProbeStart start{p, p, p, false};
-            if (!on_another_shell(start, shell)) winding = probe(start, shell);
+            winding = probe({p, p, p, false}, shell);
         }
     }
     // Where a shell touches another, the rest of the surface may wind around
@@ -571,9 +573,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         int& winding = result.winding_of_shell[shell];
         for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
             const Triangle corners = triangle(t, k);
-            const ProbeStart start{corners[0], corners[1], corners[2], true};
-            if (on_another_shell(start, shell)) continue;
-            const int here = probe(start, shell);
+            const int here = probe({corners[0], corners[1], corners[2], true}, shell);
             if (here != kUnknownWinding)
                 winding = winding == kUnknownWinding || winding == here ? here : kMixedWinding;
         }

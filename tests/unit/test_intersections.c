@@ -214,6 +214,7 @@ static void test_cavities_and_parts_in_hollows(void** state) {
     const expectation nested = {POLYMASS_OK, POLYMASS_OK, 0, 216.0 - 64.0 + 8.0};
     const expectation touching_cavity = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES,
                                          64.0 - 4.0 / 3.0};
+    const expectation filled = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES, 64.0};
     (void)state;
     pm_mesh_init(&m);
     box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
@@ -233,6 +234,16 @@ static void test_cavities_and_parts_in_hollows(void** state) {
     box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
     octahedron(&m, centre, 1.0, 1);
     expect_everywhere("a cavity touching its outer wall in one point", &m, touching_cavity);
+    pm_mesh_free(&m);
+
+    /* A part filling its cavity exactly: every probe of both starts on the
+       other, so their nesting stays unknown and the boxes classify them (a
+       cavity, a solid), which is right: the whole cube. */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 4, 4, 4, 0, 0);
+    box(&m, 1, 1, 1, 3, 3, 3, 1, 1);
+    box(&m, 1, 1, 1, 3, 3, 3, 1, 0);
+    expect_everywhere("a part filling its cavity exactly", &m, filled);
     pm_mesh_free(&m);
 }
 
@@ -546,20 +557,22 @@ static void test_coinciding_faces_of_two_shells(void** state) {
    below the waist's, its lower half lies in the cube, passing through the
    cube's face exactly along its own edges (no faces cross, none coincide),
    every vertex on the cube or outside it; above, it rests on the cube. */
-static void double_pyramid(pm_mesh* m, double lower_apex_z) {
-    const uint32_t top = pm_mesh_add_vertex(m, 0.5, 0.5, 2);
-    const uint32_t bottom = pm_mesh_add_vertex(m, 0.5, 0.5, lower_apex_z);
+static void double_pyramid(pm_mesh* m, double x, double y, double waist_z, double lower_apex_z) {
+    const uint32_t top = pm_mesh_add_vertex(m, x + 0.5, y + 0.5, waist_z + 1);
+    const uint32_t bottom = pm_mesh_add_vertex(m, x + 0.5, y + 0.5, lower_apex_z);
     uint32_t waist[4];
     int k;
-    waist[0] = pm_mesh_add_vertex(m, 0.25, 0.25, 1);
-    waist[1] = pm_mesh_add_vertex(m, 0.75, 0.25, 1);
-    waist[2] = pm_mesh_add_vertex(m, 0.75, 0.75, 1);
-    waist[3] = pm_mesh_add_vertex(m, 0.25, 0.75, 1);
+    waist[0] = pm_mesh_add_vertex(m, x + 0.25, y + 0.25, waist_z);
+    waist[1] = pm_mesh_add_vertex(m, x + 0.75, y + 0.25, waist_z);
+    waist[2] = pm_mesh_add_vertex(m, x + 0.75, y + 0.75, waist_z);
+    waist[3] = pm_mesh_add_vertex(m, x + 0.25, y + 0.75, waist_z);
     for (k = 0; k < 4; ++k) {
         pm_mesh_add_tri(m, top, waist[k], waist[(k + 1) % 4]);
         pm_mesh_add_tri(m, bottom, waist[(k + 1) % 4], waist[k]);
     }
 }
+
+#define STACK 4 /* cubes along each side of the stack */
 
 /* A shell passing through another's face along its own edges lies partly
    inside it, though no probe from a vertex sees it: probes from inside the
@@ -571,12 +584,12 @@ static void test_shell_passing_through_a_face_along_its_edges(void** state) {
     (void)state;
     pm_mesh_init(&m);
     box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
-    double_pyramid(&m, 0.0);
+    double_pyramid(&m, 0, 0, 1.0, 0.0);
     expect_everywhere("a double pyramid through a cube's face, apex on its floor", &m, overlap);
     pm_mesh_free(&m);
     pm_mesh_init(&m);
     box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
-    double_pyramid(&m, 0.5);
+    double_pyramid(&m, 0, 0, 1.0, 0.5);
     expect_everywhere("the same, triangulated, apex inside", &m, overlap);
     pm_mesh_free(&m);
     /* Its upper half alone, resting on the cube (its base on the cube's top
@@ -599,6 +612,25 @@ static void test_shell_passing_through_a_face_along_its_edges(void** state) {
     }
     expect_everywhere("a pyramid resting on a cube", &m, resting);
     pm_mesh_free(&m);
+    /* The same pyramid through the top of a stack of cubes resting on each
+       other, listed last: past the count's stop of touching pairs, its pairs
+       are still tested and its triangles probed. */
+    {
+        polymass_context* ctx = pm_context_new(CHECKED);
+        polymass_diagnostics d;
+        int x, y, z;
+        pm_mesh_init(&m);
+        for (z = 0; z < STACK; ++z)
+            for (y = 0; y < STACK; ++y)
+                for (x = 0; x < STACK; ++x) box(&m, x, y, z, x + 1, y + 1, z + 1, 1, 0);
+        double_pyramid(&m, STACK - 1, STACK - 1, STACK, STACK - 1);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INTERSECTING, pm_check(&d, ctx, &m));
+        assert_int_equal(d.touching_face_pairs, 2048); /* stopped: "at least" */
+        assert_int_equal(d.overlapping_shells, 1);
+        assert_int_equal(d.first_overlapping_shells[0], STACK * STACK * STACK); /* the pyramid */
+        pm_mesh_free(&m);
+        polymass_context_destroy(ctx);
+    }
 }
 
 /* The shell list refuses what it cannot fill or judge, saying why. */
