@@ -53,7 +53,8 @@ public:
         while (!pending_.empty()) {
             const std::uint32_t face = pending_.back();
             pending_.pop_back();
-            if (faces_[face].alive && !faces_[face].outside.empty()) add_point_outside(face);
+            if (faces_[face].alive && !faces_[face].outside.empty() && !add_point_outside(face))
+                return HullStatus::beyond_exact_range;
         }
         return HullStatus::ok;
     }
@@ -155,8 +156,11 @@ private:
     // Adds the outside point of `face` farthest from its plane: removes every
     // face it lies strictly above (a disc bounded by the horizon), joins it to
     // the horizon's edges, and hands the removed faces' outside points to the
-    // new faces (a point above none of them is inside the new hull).
-    void add_point_outside(std::uint32_t face) {
+    // new faces (a point above none of them is inside the new hull). False
+    // when the horizon is not one loop, which exact tests never give: only
+    // coordinates beyond their range (convex_hull() refuses those first; the
+    // check keeps a bad sign from indexing past the faces).
+    bool add_point_outside(std::uint32_t face) {
         const std::uint32_t apex = farthest_outside(faces_[face]);
         ++visit_;
         visible_.clear();
@@ -188,11 +192,13 @@ private:
             Face& other = faces_[across];
             for (int k = 0; k < 3; ++k)
                 if (other.neighbour[k] == f) other.neighbour[k] = created;
+            if (starting_at_[a] != none) return false;  // the loop passes a twice
             starting_at_[a] = created;
         }
         // The horizon is one loop: the face from b is the one across b → apex.
         for (std::uint32_t created = first_new; created < faces_.size(); ++created) {
             const std::uint32_t next = starting_at_[faces_[created].vertex[1]];
+            if (next == none) return false;  // the loop breaks at b
             faces_[created].neighbour[1] = next;
             faces_[next].neighbour[2] = created;
         }
@@ -216,6 +222,7 @@ private:
         }
         for (std::uint32_t created = first_new; created < faces_.size(); ++created)
             if (!faces_[created].outside.empty()) pending_.push_back(created);
+        return true;
     }
 
     std::uint32_t farthest_outside(const Face& face) const {
@@ -290,6 +297,21 @@ ConvexHull convex_hull(const MeshView<Scalar, Index>& mesh, const MeshScan& scan
     hull.distinct_points = points.size();
     if (points.size() < 4) {
         hull.status = HullStatus::too_few_points;
+        return hull;
+    }
+    // Every decision is an orientation test, exact while the nonzero
+    // coordinates lie within 2^640 of one another; beyond, signs can
+    // disagree and the hull would be wrong or broken (fuzz_mesh found
+    // subnormal coordinates beside ones near 1 tearing the horizon).
+    double smallest = HUGE_VAL, largest = 0;
+    for (const Eigen::Vector3d& p : points)
+        for (int k = 0; k < 3; ++k)
+            if (p[k] != 0) {
+                smallest = std::min(smallest, std::abs(p[k]));
+                largest = std::max(largest, std::abs(p[k]));
+            }
+    if (largest > std::ldexp(smallest, 640)) {
+        hull.status = HullStatus::beyond_exact_range;
         return hull;
     }
 

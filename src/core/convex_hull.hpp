@@ -20,6 +20,9 @@ enum class HullStatus {
     too_few_points,  // fewer than 4 distinct used vertices
     collinear,       // all used vertices on one line
     coplanar,        // all used vertices in one plane: the hull has no volume
+    // nonzero coordinates more than 2^640 apart in magnitude: beyond the
+    // range where the orientation tests are exact (exact_predicates.hpp)
+    beyond_exact_range,
 };
 
 struct ConvexHull {
