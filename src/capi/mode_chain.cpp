@@ -223,9 +223,9 @@ int32_t build_hull(polymass_context* context, const MeshInput& input,
         const core::ConvexHull hull = core::convex_hull(view, scan, &context->memory);
         if (hull.status == core::HullStatus::beyond_exact_range)
             return context->fail(POLYMASS_ERROR_OVERFLOW,
-                                 "the convex hull cannot be built exactly: nonzero coordinates "
-                                 "more than 2^640 apart in magnitude are beyond the range of "
-                                 "its exact orientation tests");
+                                 "the convex hull cannot be built exactly: its orientation "
+                                 "tests disagreed, as they can for nonzero coordinates more "
+                                 "than 2^640 apart in magnitude, beyond their exact range");
         if (hull.status != core::HullStatus::ok)
             return context->fail(POLYMASS_ERROR_ZERO_VOLUME, "the convex hull has no volume: %s",
                                  hull_failure(hull.status));

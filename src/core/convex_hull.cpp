@@ -157,9 +157,11 @@ private:
     // face it lies strictly above (a disc bounded by the horizon), joins it to
     // the horizon's edges, and hands the removed faces' outside points to the
     // new faces (a point above none of them is inside the new hull). False
-    // when the horizon is not one loop, which exact tests never give: only
-    // coordinates beyond their range (convex_hull() refuses those first; the
-    // check keeps a bad sign from indexing past the faces).
+    // when the horizon is not one loop, which exact signs never give: only
+    // coordinates beyond the tests' exact range (nonzero ones more than 2^640
+    // apart, exact_predicates.hpp), where signs can disagree. Signs beyond it
+    // are still right unless a determinant vanishes at the level of the bits
+    // lost, so such clouds are hulled, and refused only when they tear.
     bool add_point_outside(std::uint32_t face) {
         const std::uint32_t apex = farthest_outside(faces_[face]);
         ++visit_;
@@ -297,21 +299,6 @@ ConvexHull convex_hull(const MeshView<Scalar, Index>& mesh, const MeshScan& scan
     hull.distinct_points = points.size();
     if (points.size() < 4) {
         hull.status = HullStatus::too_few_points;
-        return hull;
-    }
-    // Every decision is an orientation test, exact while the nonzero
-    // coordinates lie within 2^640 of one another; beyond, signs can
-    // disagree and the hull would be wrong or broken (fuzz_mesh found
-    // subnormal coordinates beside ones near 1 tearing the horizon).
-    double smallest = HUGE_VAL, largest = 0;
-    for (const Eigen::Vector3d& p : points)
-        for (int k = 0; k < 3; ++k)
-            if (p[k] != 0) {
-                smallest = std::min(smallest, std::abs(p[k]));
-                largest = std::max(largest, std::abs(p[k]));
-            }
-    if (largest > std::ldexp(smallest, 640)) {
-        hull.status = HullStatus::beyond_exact_range;
         return hull;
     }
 

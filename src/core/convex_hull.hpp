@@ -20,8 +20,9 @@ enum class HullStatus {
     too_few_points,  // fewer than 4 distinct used vertices
     collinear,       // all used vertices on one line
     coplanar,        // all used vertices in one plane: the hull has no volume
-    // nonzero coordinates more than 2^640 apart in magnitude: beyond the
-    // range where the orientation tests are exact (exact_predicates.hpp)
+    // the orientation tests' signs disagreed (a horizon that is not one
+    // loop): nonzero coordinates beyond their exact range, more than 2^640
+    // apart in magnitude (exact_predicates.hpp)
     beyond_exact_range,
 };
 
