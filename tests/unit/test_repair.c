@@ -510,6 +510,32 @@ static void test_hull(void** state) {
     assert_int_equal(compute_with(&got, &provenance, ctx, &l_prism, &hull), POLYMASS_OK);
     assert_true(got.volume > solid.volume);
     check_within_bound("L prism's hull", &solid, &got, pm_mesh_size(&l_prism));
+    /* A fuzzed cloud of subnormal and unit coordinates, beyond the exact
+       tests' range: their signs disagree and the hull is refused, saying
+       so (it indexed past its faces before: tests/fuzz/regressions/). */
+    {
+        static const double cloud[8][3] = {
+            {0x0p+0, 0x0.03ffp-1022, 0x0.03ffp-1022},
+            {-0x1.00000001ep-31, 0x0.0000000000004p-1022, 0x0p+0},
+            {0x0.03ffp-1022, 0x0p+0, 0x0.000003ffp-1022},
+            {0x0.03ffp-1022, 0x0.00000001ep-1022, 0x0p+0},
+            {0x0.600000002p-1022, 0x0.200000007p-1022, 0x1.000000007p+0},
+            {0x0.0003fp-1022, 0x0.00000000000fp-1022, 0x0.0f03fp-1022},
+            {0x0p+0, 0x1p+0, 0x1p+0},
+            {0x1p+0, 0x1.0000000a8p+0, 0x0.00007p-1022},
+        };
+        pm_mesh torn;
+        int v;
+        pm_mesh_init(&torn);
+        for (v = 0; v < 8; ++v) pm_mesh_add_vertex(&torn, cloud[v][0], cloud[v][1], cloud[v][2]);
+        pm_mesh_add_tri(&torn, 0, 1, 2);
+        pm_mesh_add_tri(&torn, 3, 4, 5);
+        pm_mesh_add_tri(&torn, 6, 7, 0);
+        assert_int_equal(compute_with(&got, &provenance, ctx, &torn, &hull),
+                         POLYMASS_ERROR_OVERFLOW);
+        message_says(ctx, "orientation tests disagreed");
+        pm_mesh_free(&torn);
+    }
     pm_mesh_free(&l_prism);
     pm_mesh_free(&cube);
     polymass_context_destroy(ctx);
