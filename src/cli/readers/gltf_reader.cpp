@@ -246,15 +246,15 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
     return true;
 }
 
+// A buffer's path as written: tinygltf before 2.6 expanded it as a shell
+// word (wordexp), command substitutions included.
+std::string path_as_written(const std::string& path, void*) { return path; }
+
 // Buffers in files of their own are read as the mesh file is: regular files
 // only. tinygltf's own reading asked for 2^63 bytes when a buffer's URI named
 // a directory (ext4 reports that size for one), and its test of existence
 // opens the file, which waits forever on a pipe. A fuzzer's find
 // (tests/fuzz/gltf/regressions/).
-// A buffer's path as written: tinygltf before 2.6 expanded it as a shell
-// word (wordexp), command substitutions included.
-std::string path_as_written(const std::string& path, void*) { return path; }
-
 bool buffer_file_exists(const std::string& path, void*) {
     struct stat status {};
     return ::stat(path.c_str(), &status) == 0;
