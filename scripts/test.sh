@@ -43,14 +43,11 @@ STEPS=(deps format dev asan tsan fuzz python rust debian)
 # once it is installed (the deps step installs it), so a run after a small
 # change recompiles only what changed. Paths under the root are hashed as
 # relative ones, so a fresh clone in another directory hits the same cache.
-# The fuzz build's coverage ignore list is read by the compiler but not seen
-# by ccache, which is told to hash it. POLYMASS_NO_CCACHE=1 compiles
-# everything afresh.
+# POLYMASS_NO_CCACHE=1 compiles everything afresh.
 use_ccache() {
     if [ -z "${POLYMASS_NO_CCACHE:-}" ] && command -v ccache >/dev/null 2>&1; then
         export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
         export CCACHE_BASEDIR=$ROOT CCACHE_NOHASHDIR=true
-        export CCACHE_EXTRAFILES=$ROOT/tests/fuzz/coverage-ignorelist.txt
     fi
 }
 
@@ -129,8 +126,11 @@ step_asan() {
     preset_workflow asan
 }
 
+# The fuzz build's coverage ignore list is read by the compiler, unseen by
+# ccache, which is told to hash it (for this step only: the others' objects
+# would all change key).
 step_fuzz() {
-    preset_workflow fuzz
+    CCACHE_EXTRAFILES=$ROOT/tests/fuzz/coverage-ignorelist.txt preset_workflow fuzz
 }
 
 step_tsan() {
