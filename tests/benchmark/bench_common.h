@@ -25,6 +25,17 @@ static inline double median(double* values, int count) {
     return count % 2 ? values[count / 2] : 0.5 * (values[count / 2 - 1] + values[count / 2]);
 }
 
+/* The median over the rounds of each measure, seconds[round * measures + m]. */
+static inline void medians_of(const double* seconds, int rounds, int measures, double* medians) {
+    double* column = malloc((size_t)rounds * sizeof *column);
+    if (!column) exit(1);
+    for (int m = 0; m < measures; ++m) {
+        for (int r = 0; r < rounds; ++r) column[r] = seconds[(size_t)r * measures + m];
+        medians[m] = median(column, rounds);
+    }
+    free(column);
+}
+
 /* A torus of rings x segments quads, two triangles each, 1e6 from the origin:
    rings * segments vertices and 2 * rings * segments triangles. */
 static inline void make_torus(uint32_t rings, uint32_t segments, double* positions,

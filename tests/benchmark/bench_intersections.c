@@ -116,13 +116,7 @@ static void run(const bench_mesh* mesh, int rounds, polymass_context* context) {
             check_seconds(context, &mesh->desc, check, 2, &reports[intersections_2]);
     }
     double medians[measures];
-    for (int m = 0; m < measures; ++m) {
-        double* column = malloc((size_t)rounds * sizeof *column);
-        if (!column) exit(1);
-        for (int r = 0; r < rounds; ++r) column[r] = seconds[(size_t)r * measures + m];
-        medians[m] = median(column, rounds);
-        free(column);
-    }
+    medians_of(seconds, rounds, measures, medians);
     const polymass_diagnostics* found = &reports[intersections_1];
     printf(
         "%s, %zu triangles: %s (%llu shells, %llu overlapping; %llu face pairs crossing, "

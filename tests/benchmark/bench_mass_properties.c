@@ -160,13 +160,7 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
         s[checked_2] = compute_seconds(context, &desc, 0, 2, &checksum);
     }
     double medians[measures];
-    for (int m = 0; m < measures; ++m) {
-        double* column = malloc((size_t)rounds * sizeof *column);
-        if (!column) exit(1);
-        for (int r = 0; r < rounds; ++r) column[r] = seconds[(size_t)r * measures + m];
-        medians[m] = median(column, rounds);
-        free(column);
-    }
+    medians_of(seconds, rounds, measures, medians);
     printf("%zu triangles (median of %d interleaved rounds; checksum %.6g)\n", triangles, rounds,
            checksum);
     for (int m = 0; m < measures; ++m) {
