@@ -71,14 +71,17 @@ Verdict judge(const MeshAnalysis& analysis, const Policy& policy) {
         verdict.outward = -1;
     }
 
+    // A shell inside out by the boxes is known before the faces are compared
+    // (the analysis stops there when asked to), so it comes first; with
+    // faces crossing, the kinds are still the boxes', as nesting is not
+    // counted then, and every caller gets the same verdict.
+    const auto& shells = analysis.shells;
+    if (shells && shells->inverted.count > 0) return refuse(Defect::inverted_shell);
     if (const auto& overlaps = analysis.overlaps) {
         if (overlaps->crossing.count > 0) return refuse(Defect::crossing);
         if (overlaps->touching.count > 0) verdict.warnings |= kWarningTouching;
     }
-    if (const auto& shells = analysis.shells) {
-        if (shells->inverted.count > 0) return refuse(Defect::inverted_shell);
-        if (shells->overlapping.count > 0) return refuse(Defect::overlapping_shells);
-    }
+    if (shells && shells->overlapping.count > 0) return refuse(Defect::overlapping_shells);
     return verdict;
 }
 
