@@ -82,10 +82,12 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
         ShellSummary& summary = survey.summary[shell];
         if (winding_of_shell[shell] == kUnknownWinding || summary.kind == ShellKind::no_volume)
             continue;
-        const int around = outward * winding_of_shell[shell];
-        if (winding_of_shell[shell] == kMixedWinding)
+        if (winding_of_shell[shell] == kMixedWinding) {
             summary.kind = ShellKind::overlapping;
-        else if (summary.signed_volume > 0)
+            continue;
+        }
+        const int around = outward * winding_of_shell[shell];
+        if (summary.signed_volume > 0)
             summary.kind = around == 0 ? ShellKind::solid : ShellKind::overlapping;
         else
             summary.kind = around == 1   ? ShellKind::cavity

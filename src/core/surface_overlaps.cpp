@@ -326,10 +326,10 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     const bool nesting = shells && shells->count >= 2;
     const auto shell_of = [&](std::size_t t) { return shells->of_face[triangles.face[t]]; };
     // Per shape (its lowest triangle): whether it touches a triangle of
-    // another shell. Only there can the rest of the surface wind around a shell otherwise
-    // than at its probe vertex (the nesting, below). Copies on two shells
-    // coincide, which is crossing and ends the check before the nesting, so
-    // the copies of a shape that matters lie on one shell.
+    // another shell. Only there can the rest of the surface wind around a
+    // shell otherwise than at its probe vertex (the nesting, below). Copies
+    // on two shells coincide, which is crossing and ends the check before the
+    // nesting, so the copies of a shape that matters lie on one shell.
     std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell(nesting ? triangles.size() : 0,
                                                                     memory);
     auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
