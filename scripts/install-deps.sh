@@ -20,7 +20,7 @@ packages=(
     libclang-dev                           # Rust binding: bindgen's libclang
     libcli11-dev nlohmann-json3-dev libpugixml-dev   # the polymass CLI: arguments, JSON, XML
     libtinygltf-dev lib3mf-dev             # the polymass CLI: glTF/GLB and 3MF readers
-    libminizip-dev                         # the polymass CLI: a 3MF's declared sizes (zip bombs)
+    libzip-dev                             # the polymass CLI: a 3MF's declared sizes (zip bombs)
     libassimp-dev                          # the polymass CLI: Collada (.dae) reader
     debhelper lintian help2man             # the Debian package (debian/): dh, lintian, its man page
     "$@"

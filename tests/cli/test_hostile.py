@@ -268,6 +268,19 @@ class Hostile(unittest.TestCase):
         self.append_deflated(path, model_name, head, block, repeats, tail, crc, size)
         self.expect_unreadable(path, "inflate to more than")
 
+    def test_3mf_part_declaring_more_than_a_size_can_hold(self):
+        # A part that declares 2^64 - 1 bytes (zip64) beside the model's:
+        # summed without saturating, the declared sizes wrap past zero to
+        # less than the model alone.
+        path = WORK / "declares_2_64.3mf"
+        fixtures.write_3mf(path, self.vertices, self.faces)
+        compressor = zlib.compressobj(9, zlib.DEFLATED, -15)
+        data = compressor.compress(b"x") + compressor.flush()
+        self.append_deflated(
+            path, "Metadata/huge.bin", data, b"", 0, b"", zlib.crc32(b"x"), 2**64 - 1
+        )
+        self.expect_unreadable(path, "inflate to more than")
+
     # -- Collada ------------------------------------------------------------
 
     @unittest.skipIf(
@@ -359,7 +372,7 @@ class Hostile(unittest.TestCase):
             package.fp.seek(package.start_dir)
             info.header_offset = package.fp.tell()
             info.flag_bits = 0
-            package.fp.write(info.FileHeader(False))
+            package.fp.write(info.FileHeader(None))  # zip64 when a size needs it
             package.fp.write(head)
             for _ in range(repeats):
                 package.fp.write(block)

@@ -21,10 +21,10 @@ Model read_stl(FileBytes file);
 // glTF 2 (.gltf with embedded or external buffers, .glb) through tinygltf:
 // node transforms applied, one part per node with a mesh.
 Model read_gltf(const std::string& path);
-// 3MF through lib3mf: transforms applied, one part per build item; a package
-// whose parts inflate past reader_memory_budget(packed_size) (its size) is
-// refused.
-Model read_3mf(const std::string& path, uint64_t packed_size);
+// 3MF through lib3mf, from the package's bytes: transforms applied, one part
+// per build item; a package whose parts inflate past
+// reader_memory_budget(package.size()) is refused.
+Model read_3mf(std::string_view package);
 // Collada through assimp: its <unit> and <up_axis> applied (metres, Z up),
 // node transforms applied, one part per node with meshes.
 Model read_collada(const std::string& path);

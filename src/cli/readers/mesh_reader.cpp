@@ -83,8 +83,8 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         regular_file_size(path);  // a device, a pipe or an empty file is refused here
         model = read_isolated([&] { return read_gltf(path); });
     } else if (name == "3mf") {
-        const uint64_t size = regular_file_size(path);
-        model = read_isolated([&] { return read_3mf(path, size); }, size);
+        const FileBytes package(path);
+        model = read_isolated([&] { return read_3mf(package.view()); }, package.view().size());
     } else if (name == "dae") {
         // assimp trusts a Collada accessor's count (or fills gigabytes when it
         // is missing): its memory is bounded as a 3MF's.

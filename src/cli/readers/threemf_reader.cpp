@@ -11,10 +11,12 @@
 // coordinate is exact here when it is a float (as those of CAD exports in
 // micrometre steps of a few millimetres are not). The README says so.
 #include <Model/COM/NMR_DLLInterfaces.h>
-#include <minizip/unzip.h>
+#include <zip.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "readers/format_readers.hpp"
@@ -134,42 +136,55 @@ void add_object(Model& model, Part& part, Instance object, const Transform& tran
 }
 
 // A zip bomb is refused before lib3mf inflates it: the sizes the package's
-// central directory declares for its parts (minizip reads them without
-// inflating anything) add up to no more than its reader's memory budget
-// (the same bound read_isolated sets). A package that declares less than it
-// holds fails its sizes and checksums in lib3mf, within that budget. A
-// package minizip cannot open is left to lib3mf's error.
-void check_declared_sizes(const std::string& path, uint64_t packed_size) {
-    const unzFile package = unzOpen64(path.c_str());
-    if (package == nullptr) return;
-    const uint64_t most = reader_memory_budget(packed_size);
-    uint64_t declared = 0;
-    for (int at = unzGoToFirstFile(package); at == UNZ_OK; at = unzGoToNextFile(package)) {
-        unz_file_info64 part{};
-        if (unzGetCurrentFileInfo64(package, &part, nullptr, 0, nullptr, 0, nullptr, 0) != UNZ_OK)
-            break;
-        declared += part.uncompressed_size;
-        if (declared > most) break;
+// central directory declares for its parts add up to no more than its
+// reader's memory budget (the same bound read_isolated sets). They are read
+// by libzip, the zip library lib3mf reads the package with, from the same
+// bytes, so the check and the reading cannot see two different packages.
+// Reading the directory inflates nothing. A package that declares less than
+// it holds fails its sizes and checksums in lib3mf, within that budget. A
+// package libzip cannot open is left to lib3mf's error.
+void check_declared_sizes(std::string_view package) {
+    zip_error_t error;
+    zip_error_init(&error);
+    zip_source_t* source = zip_source_buffer_create(package.data(), package.size(), 0, &error);
+    zip_t* archive = source == nullptr ? nullptr : zip_open_from_source(source, ZIP_RDONLY, &error);
+    zip_error_fini(&error);
+    if (archive == nullptr) {
+        if (source != nullptr) zip_source_free(source);
+        return;
     }
-    unzClose(package);
+    const uint64_t most = reader_memory_budget(package.size());
+    uint64_t declared = 0;
+    const zip_int64_t entries = zip_get_num_entries(archive, 0);
+    for (zip_int64_t i = 0; i < entries && declared <= most; ++i) {
+        zip_stat_t part;
+        if (zip_stat_index(archive, static_cast<zip_uint64_t>(i), 0, &part) == 0 &&
+            (part.valid & ZIP_STAT_SIZE) != 0) {
+            // Saturates: two parts declaring 2^63 bytes each do not wrap.
+            declared += std::min<uint64_t>(part.size, most + 1);
+        }
+    }
+    zip_discard(archive);  // frees the source too; the bytes are the caller's
     if (declared > most) {
         throw ReadError("not a readable 3MF file: its parts inflate to more than " +
-                        std::to_string(most >> 20) + " MiB from " + std::to_string(packed_size) +
+                        std::to_string(most >> 20) + " MiB from " + std::to_string(package.size()) +
                         " bytes, more than a mesh of that size can hold (a zip bomb?)");
     }
 }
 
 }  // namespace
 
-Model read_3mf(const std::string& path, uint64_t packed_size) {
-    check_declared_sizes(path, packed_size);
+Model read_3mf(std::string_view package) {
+    check_declared_sizes(package);
     Instance raw = nullptr;
     check(NMR::lib3mf_createmodel(&raw), nullptr, "creating a 3MF model");
     const Handle model3mf(raw);
     check(NMR::lib3mf_model_queryreader(model3mf.get(), "3mf", &raw), model3mf.get(),
           "creating a 3MF reader");
     const Handle reader(raw);
-    check(NMR::lib3mf_reader_readfromfileutf8(reader.get(), path.c_str()), reader.get(),
+    // lib3mf only reads the buffer (its interface predates const).
+    BYTE* const bytes = reinterpret_cast<BYTE*>(const_cast<char*>(package.data()));
+    check(NMR::lib3mf_reader_readfrombuffer(reader.get(), bytes, package.size()), reader.get(),
           "not a readable 3MF file");
 
     Model model;
