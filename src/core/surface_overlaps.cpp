@@ -352,7 +352,22 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         if (contact != Contact::none)
             (contact == Contact::crossing ? crossing : touching).add(pair);
     };
-    // Triangles i and j, of different faces and not neighbours across an edge.
+    // Triangles sharing two corners are neighbours across an edge and meet
+    // nothing more, and so are those sharing three in opposite turns (a face
+    // beside its reverse: a sheet of no thickness, which cancels). Three in
+    // one turn are one triangle written twice, which bounds the region behind
+    // it twice (a surface welded to its copy and accepted as non-manifold):
+    // crossing, whatever the shells. Returns false for every other pair,
+    // which the contact test decides.
+    auto sharing_an_edge = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared,
+                               const FacePair& pair, PairCollector& crossing) {
+        if (shared.count < 2) return false;
+        if (shared.count == 3 &&
+            ids[i][(shared.at_first + 1) % 3] == ids[j][(shared.at_second + 1) % 3])
+            crossing.add(pair);
+        return true;
+    };
+    // Triangles i and j, of different faces.
     auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector& crossing,
                          PairCollector& touching) {
         const std::uint32_t face_i = triangles.face[i], face_j = triangles.face[j];
@@ -363,7 +378,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         // every touching pair that the nesting needs is marked.
         if (!crossing.wants(pair) && !touching.wants(pair)) return;
         const SharedCorners shared = shared_corners(ids[i], ids[j]);
-        if (shared.count >= 2) return;  // neighbours across an edge
+        if (sharing_an_edge(i, j, shared, pair, crossing)) return;
         // The shared corner first.
         add(triangle_contact(triangle(i, shared.at_first), triangle(j, shared.at_second),
                              shared.count == 1),
@@ -398,7 +413,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         };
         // Copies of shapes on two shells share no corner: all meet as r and
         // s do. (A row breaks past the stop of touching pairs, and copies on
-        // one shell, welded and accepted as non-manifold, reach the nesting.)
+        // one shell, on distinct vertices, reach the nesting.)
         if (r != s && nesting && shell_of(r) != shell_of(s))
             note_contact(contact(0, 0, false), r, s);
         for (std::uint32_t i = r; i != kNoCopy; i = shapes.next[i]) {
@@ -422,7 +437,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                     if (!(can_cross && cross_wants) && !(can_touch && touch_wants)) break;
                 }
                 const SharedCorners shared = shared_corners(ids[i], ids[j]);
-                if (shared.count >= 2) continue;
+                if (sharing_an_edge(i, j, shared, pair, crossing)) continue;
                 add(contact(shared.at_first, shared.at_second, shared.count == 1), i, j, pair,
                     crossing, touching);
             }

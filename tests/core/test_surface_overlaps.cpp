@@ -7,7 +7,8 @@
 // corner position), or all of them, with turned cubes crossing the pile at
 // a shared corner; past the count's stop (2048 pairs) and below it; with the
 // search's pieces in order and in reverse; without shells and with them
-// (coinciding copies on two shells cross, on one they touch). The reference
+// (coinciding copies on two shells cross, on one they touch, and copies on
+// the same vertices in the same turn cross wherever they are). The reference
 // tests all pairs with the same exact predicate (test_triangle_contact
 // checks that one).
 #include "core/surface_overlaps.hpp"
@@ -96,7 +97,13 @@ Reference test_every_pair(const TestMesh& mesh, const polymass::core::Shells* sh
             for (int k = 0; k < 3; ++k)
                 for (int l = 0; l < 3; ++l)
                     if (corner(f, k) == corner(g, l)) ++shared, at_f = k, at_g = l;
-            if (shared >= 2) continue;
+            if (shared >= 2) {
+                // Neighbours across an edge, or one triangle written twice:
+                // in one turn that bounds its region twice, and crosses.
+                if (shared == 3 && corner(f, (at_f + 1) % 3) == corner(g, (at_g + 1) % 3))
+                    found.crossing.push_back({f, g});
+                continue;
+            }
             Contact contact =
                 polymass::core::triangle_contact(triangle(f, at_f), triangle(g, at_g), shared == 1);
             if (contact == Contact::coinciding)

@@ -553,6 +553,54 @@ static void test_coinciding_faces_of_two_shells(void** state) {
     }
 }
 
+/* A surface welded to a copy of itself: every face listed twice on the same
+   vertices, so every edge is used four times, balanced, and the surface is
+   accepted as non-manifold. It bounds its solid twice: a face written twice
+   in one turn is crossing, whatever the shells. A face beside its reverse
+   (a sheet of no thickness) cancels instead, and so does a cube beside its
+   inside-out copy on the same vertices. */
+static void test_surface_welded_to_its_copy(void** state) {
+    const int32_t flags = CHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
+    polymass_context* checked = pm_context_new(flags);
+    polymass_context* plain = pm_context_new(POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+    int triangulate, reversed;
+    (void)state;
+    for (triangulate = 0; triangulate < 2; ++triangulate) {
+        for (reversed = 0; reversed < 2; ++reversed) {
+            pm_mesh m, copy;
+            polymass_mass_properties p;
+            polymass_diagnostics d;
+            size_t f;
+            pm_mesh_init(&m);
+            box(&m, 0, 0, 0, 1, 1, 1, triangulate, 0);
+            pm_mesh_copy(&copy, &m);
+            if (reversed) pm_mesh_reverse_all(&copy);
+            for (f = 0; f < copy.face_count; ++f) {
+                pm_mesh_add_face(&m, copy.face_sizes[f],
+                                 copy.indices + pm_mesh_face_offset(&copy, f));
+            }
+            pm_props_init(&p);
+            pm_diagnostics_init(&d);
+            if (reversed) {
+                /* Nothing bounded: no face pair crosses. */
+                PM_ASSERT_STATUS(checked, POLYMASS_ERROR_ZERO_VOLUME, pm_check(&d, checked, &m));
+                assert_int_equal(d.intersecting_face_pairs, 0);
+            } else {
+                PM_ASSERT_STATUS(checked, POLYMASS_ERROR_INTERSECTING, pm_check(&d, checked, &m));
+                /* each face with its copy (quads: with both halves' copies) */
+                assert_true(d.intersecting_face_pairs >= copy.face_count);
+                /* Without the check the solid counts twice, as documented. */
+                PM_ASSERT_OK(plain, pm_compute(&p, plain, &m, NULL));
+                PM_ASSERT_REL("volume counted twice", 2.0, p.volume, 1e-15);
+            }
+            pm_mesh_free(&copy);
+            pm_mesh_free(&m);
+        }
+    }
+    polymass_context_destroy(checked);
+    polymass_context_destroy(plain);
+}
+
 /* A double pyramid whose square waist lies on a face of a cube: lower_apex_z
    below the waist's, its lower half lies in the cube, passing through the
    cube's face exactly along its own edges (no faces cross, none coincide),
@@ -720,6 +768,7 @@ int main(void) {
         cmocka_unit_test(test_piles_of_copies_stop_counting),
         cmocka_unit_test(test_copies_are_paired_as_triangles_are),
         cmocka_unit_test(test_coinciding_faces_of_two_shells),
+        cmocka_unit_test(test_surface_welded_to_its_copy),
         cmocka_unit_test(test_shell_passing_through_a_face_along_its_edges),
         cmocka_unit_test(test_shell_list_refuses_bad_arguments),
         cmocka_unit_test(test_subnormal_surfaces),
