@@ -251,9 +251,13 @@ def write_3mf(path, vertices, faces, component=None, item=None):
         'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>'
     )
     with zipfile.ZipFile(path, "w") as archive:
-        archive.writestr("[Content_Types].xml", content_types)
-        archive.writestr("_rels/.rels", rels)
-        archive.writestr("3D/3dmodel.model", model)
+        for name, data in (
+            ("[Content_Types].xml", content_types),
+            ("_rels/.rels", rels),
+            ("3D/3dmodel.model", model),
+        ):
+            # A fixed time: the same solid gives the same bytes (committed seeds).
+            archive.writestr(zipfile.ZipInfo(name, date_time=(2020, 1, 1, 0, 0, 0)), data)
 
 
 WRITERS = {

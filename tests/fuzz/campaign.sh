@@ -24,7 +24,7 @@ SECONDS_PER_TARGET=${1:-600}
 shift || true
 TARGETS=("$@")
 if [ ${#TARGETS[@]} -eq 0 ]; then
-    TARGETS=(mesh moments obj stl ply off gltf glb 3mf dae audit arguments)
+    TARGETS=(mesh moments obj stl ply off gltf glb 3mf 3mf_model dae audit arguments)
 fi
 
 # The committed inputs of a target: seeds, regressions, dictionary.
@@ -56,10 +56,14 @@ for target in "${TARGETS[@]}"; do
     [ -n "$dict" ] && [ -f "$dict" ] && options+=(-dict="$dict")
     # lib3mf leaks libzip's buffers on every package it reads (lsan.supp), so
     # libFuzzer would scan the whole heap for leaks after each input: four
-    # fifths of the 3MF target's time. Its campaign runs without that scan,
-    # and the corpus it leaves (every input that reached new coverage) is
-    # replayed with leak detection after it (below).
-    [ "$target" = 3mf ] && options+=(-detect_leaks=0)
+    # fifths of the 3MF target's time. The 3MF targets' campaigns run
+    # without that scan, and the corpus each leaves (every input that reached
+    # new coverage) is replayed with leak detection after it (below).
+    replay_for_leaks=false
+    if [ "$target" = 3mf ] || [ "$target" = 3mf_model ]; then
+        replay_for_leaks=true
+        options+=(-detect_leaks=0)
+    fi
     log=$STORE/$target/last.log
     # Fork mode runs its jobs in the working directory: the target's own.
     # ASan records no allocation stacks (malloc_context_size=0): a third of
@@ -68,7 +72,7 @@ for target in "${TARGETS[@]}"; do
     (cd "$STORE/$target" &&
         ASAN_OPTIONS=malloc_context_size=0 LSAN_OPTIONS=suppressions=$ROOT/tests/fuzz/lsan.supp \
             "$fuzzer" "${options[@]}" "$corpus" >"$log" 2>&1) || true
-    if [ "$target" = 3mf ]; then
+    if $replay_for_leaks; then
         # Each input of the corpus once, in a process of its own, with
         # LeakSanitizer at exit; a leaking one is a finding.
         while IFS= read -r -d '' input; do

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the seed corpora of the fuzz targets of the tool (tests/fuzz/<name>/
-corpus/ for obj, stl, ply, off, gltf, glb, 3mf, dae, audit, arguments) and of
-fuzz_moments.c, from the solids of tests/cli/fixtures.py (a cube and the
-L-bracket, also as triangles).
+corpus/ for obj, stl, ply, off, gltf, glb, 3mf, 3mf_model, dae, audit,
+arguments) and of fuzz_moments.c, from the solids of tests/cli/fixtures.py (a
+cube and the L-bracket, also as triangles).
 
 The output is deterministic and committed; run this again only after changing
 it (the mesh target's own seeds are make_corpus.py's):
@@ -14,6 +14,7 @@ import math
 import pathlib
 import struct
 import sys
+import zipfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "cli"))
@@ -54,6 +55,11 @@ def write_meshes():
     fixtures.write_gltf(
         corpus("gltf") / "cube_copies.gltf", vertices, faces, copy_shifts=[(3, 0, 0)]
     )
+    # fuzz_3mf_model's seeds: the model part of each 3MF seed.
+    for package in sorted(corpus("3mf").glob("*.3mf")):
+        with zipfile.ZipFile(package) as archive:
+            model = archive.read("3D/3dmodel.model")
+        (corpus("3mf_model") / f"{package.stem}.model").write_bytes(model)
     # OBJ with negative indices, texture and normal references, two objects.
     (corpus("obj") / "cube_relative.obj").write_text(
         "o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
