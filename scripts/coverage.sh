@@ -4,6 +4,7 @@
 # llvm-cov's report of every file under src/ written:
 #
 #   build/coverage/report.txt   lines, functions and regions per file
+#   build/coverage/summary.txt  lines run and not run per part (core, capi, cli)
 #   build/coverage/html/        each file annotated (index.html)
 #
 #   scripts/coverage.sh
@@ -38,4 +39,15 @@ llvm-cov report -instr-profile "$OUT/coverage.profdata" "${objects[@]}" "${filte
     | tee "$OUT/report.txt"
 llvm-cov show -format=html -output-dir "$OUT/html" -instr-profile "$OUT/coverage.profdata" \
     "${objects[@]}" "${filter[@]}" >/dev/null
-echo "coverage: $OUT/report.txt, $OUT/html/index.html"
+# Lines with code per part of src/ (core, capi, cli), as docs/coverage.md
+# gives them: the lcov export's LF (lines found) and LH (lines hit) summed
+# over each directory's files.
+llvm-cov export -format=lcov -instr-profile "$OUT/coverage.profdata" "${objects[@]}" "${filter[@]}" |
+    awk -F: '/^SF:/ { match($2, /src\/[a-z]+\//); part = substr($2, RSTART + 4, RLENGTH - 5) }
+             /^LF:/ { found[part] += $2 }
+             /^LH:/ { hit[part] += $2 }
+             END { for (part in found)
+                       printf "src/%s: %d lines, %d not run, %.1f %%\n", part, found[part],
+                              found[part] - hit[part], 100 * hit[part] / found[part] }' |
+    sort | tee "$OUT/summary.txt"
+echo "coverage: $OUT/report.txt, $OUT/summary.txt, $OUT/html/index.html"
