@@ -8,7 +8,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace polymass::core {
 
@@ -61,9 +63,16 @@ struct IntegralBounds {
 
 // A power of two near `length`: coordinates divided by it keep every bit and
 // are of order one, so no intermediate product (up to the sixth power of a
-// coordinate) overflows or underflows for any mesh whose results fit.
+// coordinate) overflows or underflows for any mesh whose results fit. Never
+// below the smallest normal power of two, 2^-1022: callers multiply by the
+// inverse, and that of a subnormal unit overflows to infinity (a mesh of
+// size 1e-313 was refused as too large, and the intersection check's boxes
+// became NaN). Coordinates of a subnormal mesh are then far below one in
+// units, which no result of such a mesh fits anyway.
 inline double unit_length_near(double length) {
-    return length > 0 && std::isfinite(length) ? std::ldexp(1.0, std::ilogb(length)) : 1.0;
+    if (!(length > 0) || !std::isfinite(length)) return 1.0;
+    return std::ldexp(1.0,
+                      std::max(std::ilogb(length), std::numeric_limits<double>::min_exponent - 1));
 }
 
 // value · unit^power for a power-of-two unit, exactly and with no

@@ -183,5 +183,20 @@ int main() {
             }
         }
     }
+    // A pile of subnormal size, whose boxes are in units of 2^-1022 (the
+    // unit stops there: the inverse of a subnormal unit is infinite, which
+    // made every box NaN and the search test every pair, slowly).
+    for (int first = 0; first < 2; ++first) {
+        const double tiny = 0x1p-1050;
+        TestMesh pile;
+        for (std::size_t c = 0; c < 4; ++c)
+            add_cube(pile, tiny * none, first_vertices, c == 0 ? 0 : 1, first);
+        add_cube(pile, tiny * turned, first_vertices, 1, 0);
+        char name[96];
+        std::snprintf(name, sizeof name, "4 cubes of side 2^-1050 from corner %d, 1 turned", first);
+        const polymass::core::Shells shells = shells_of(pile);
+        check_pile(name, pile, nullptr);
+        check_pile(name, pile, &shells);
+    }
     return polymass_test::finish("test_surface_overlaps");
 }
