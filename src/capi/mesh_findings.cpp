@@ -122,7 +122,9 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
             return context->fail(POLYMASS_ERROR_OVERFLOW,
                                  "the volume %g is too small for a double (below %g): the mesh "
                                  "is too small (size %.3g); scale its coordinates up",
-                                 analysis.integration->integrals.volume, DBL_MIN, scan.diagonal());
+                                 // its magnitude: an underflow to -0 reads as "-0"
+                                 std::fabs(analysis.integration->integrals.volume), DBL_MIN,
+                                 scan.diagonal());
         case Defect::inverted:
             return context->fail(POLYMASS_ERROR_INVERTED,
                                  "the signed volume is %.17g: every face is reversed (faces "
