@@ -357,10 +357,11 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     // beside its reverse: a sheet of no thickness, which cancels). Three in
     // one turn are one triangle written twice, which bounds the region behind
     // it twice (a surface welded to its copy and accepted as non-manifold):
-    // crossing, whatever the shells. Returns false for every other pair,
-    // which the contact test decides.
-    auto sharing_an_edge = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared,
-                               const FacePair& pair, PairCollector& crossing) {
+    // crossing, whatever the shells. Returns whether the shared corners
+    // decided the pair; the contact test decides every other.
+    auto decided_by_shared_corners = [&](std::uint32_t i, std::uint32_t j,
+                                         const SharedCorners& shared, const FacePair& pair,
+                                         PairCollector& crossing) {
         if (shared.count < 2) return false;
         if (shared.count == 3 &&
             ids[i][(shared.at_first + 1) % 3] == ids[j][(shared.at_second + 1) % 3])
@@ -378,7 +379,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
         // every touching pair that the nesting needs is marked.
         if (!crossing.wants(pair) && !touching.wants(pair)) return;
         const SharedCorners shared = shared_corners(ids[i], ids[j]);
-        if (sharing_an_edge(i, j, shared, pair, crossing)) return;
+        if (decided_by_shared_corners(i, j, shared, pair, crossing)) return;
         // The shared corner first.
         add(triangle_contact(triangle(i, shared.at_first), triangle(j, shared.at_second),
                              shared.count == 1),
@@ -437,7 +438,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
                     if (!(can_cross && cross_wants) && !(can_touch && touch_wants)) break;
                 }
                 const SharedCorners shared = shared_corners(ids[i], ids[j]);
-                if (sharing_an_edge(i, j, shared, pair, crossing)) continue;
+                if (decided_by_shared_corners(i, j, shared, pair, crossing)) continue;
                 add(contact(shared.at_first, shared.at_second, shared.count == 1), i, j, pair,
                     crossing, touching);
             }

@@ -65,10 +65,10 @@ struct IntegralBounds {
 // are of order one, so no intermediate product (up to the sixth power of a
 // coordinate) overflows or underflows for any mesh whose results fit. Never
 // below the smallest normal power of two, 2^-1022: callers multiply by the
-// inverse, and that of a subnormal unit overflows to infinity (a mesh of
-// size 1e-313 was refused as too large, and the intersection check's boxes
-// became NaN). Coordinates of a subnormal mesh are then far below one in
-// units, which no result of such a mesh fits anyway.
+// inverse, and that of a subnormal unit overflows to infinity (NaN boxes in
+// the intersection check, a tiny mesh's integrals taken as overflowing).
+// Coordinates of a subnormal mesh are then far below one in units, which
+// loses nothing: no result of such a mesh fits a double anyway.
 inline double unit_length_near(double length) {
     if (!(length > 0) || !std::isfinite(length)) return 1.0;
     return std::ldexp(1.0,

@@ -144,11 +144,9 @@ void add_object(Model& model, Part& part, Instance object, const Transform& tran
 // it holds fails its sizes and checksums in lib3mf, within that budget. A
 // package libzip cannot open is left to lib3mf's error.
 void check_declared_sizes(std::string_view package) {
-    zip_error_t error;
-    zip_error_init(&error);
-    zip_source_t* source = zip_source_buffer_create(package.data(), package.size(), 0, &error);
-    zip_t* archive = source == nullptr ? nullptr : zip_open_from_source(source, ZIP_RDONLY, &error);
-    zip_error_fini(&error);
+    zip_source_t* source = zip_source_buffer_create(package.data(), package.size(), 0, nullptr);
+    zip_t* archive =
+        source == nullptr ? nullptr : zip_open_from_source(source, ZIP_RDONLY, nullptr);
     if (archive == nullptr) {
         if (source != nullptr) zip_source_free(source);
         return;
