@@ -1,8 +1,6 @@
 // polymass: mass properties of mesh files from the command line.
 // Parses the arguments and hands over to the command; every failure ends in a
 // message on stderr and a distinct exit status (exit_codes.hpp).
-#include <polymass/polymass.h>
-
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -10,27 +8,13 @@
 #include "arguments.hpp"
 #include "commands/commands.hpp"
 #include "exit_codes.hpp"
+#include "out_of_memory.hpp"
 
 int main(int argc, char** argv) {
     using namespace polymass_cli;
+    end_out_of_memory_terminations_as_exit_4();
     try {
-        const Arguments arguments = parse_arguments(argc, argv);
-        switch (arguments.command) {
-            case Command::kHelp:
-                std::cout << help_text();
-                return kExitOk;
-            case Command::kVersion:
-                std::cout << "polymass " << polymass_version_string() << '\n';
-                return kExitOk;
-            case Command::kCheck:
-                return run_check(arguments);
-            case Command::kProperties:
-                return run_properties(arguments);
-            case Command::kAssembly:
-                return run_assembly(arguments);
-            case Command::kAudit:
-                return run_audit(arguments);
-        }
+        return run_command(parse_arguments(argc, argv));
     } catch (const UsageError& error) {
         std::cerr << "polymass: " << error.what() << '\n';
         return kExitUsage;
@@ -45,5 +29,4 @@ int main(int argc, char** argv) {
         std::cerr << "polymass: internal error: " << error.what() << '\n';
         return kExitInternal;
     }
-    return kExitInternal;
 }

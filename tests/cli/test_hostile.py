@@ -325,8 +325,12 @@ class Hostile(unittest.TestCase):
 
     def test_files_that_are_pipes(self):
         # Opening a pipe for reading waits for a writer: the tool must refuse
-        # it at once, as a mesh file and as a robot description.
-        for name, command in (("mesh.stl", []), ("robot.urdf", ["audit"])):
+        # it at once, as a mesh file, a robot description and an assembly.
+        for name, command in (
+            ("mesh.stl", []),
+            ("robot.urdf", ["audit"]),
+            ("parts.json", ["assembly"]),
+        ):
             with self.subTest(name):
                 path = WORK / f"pipe_{name}"
                 if not path.exists():
@@ -342,6 +346,17 @@ class Hostile(unittest.TestCase):
         outcome = self.bounded(["audit", "--json", path])
         self.assertEqual(outcome.returncode, EXIT_UNREADABLE, outcome.stderr)
         self.assertIn("not a regular file", json.loads(outcome.stdout)["error"])
+
+    def test_assembly_file_that_is_dev_zero(self):
+        # Read to its end, /dev/zero would fill the memory.
+        path = WORK / "zero.json"
+        if not path.is_symlink():
+            path.symlink_to("/dev/zero")
+        outcome = self.bounded(["assembly", "--json", path])
+        self.assertEqual(outcome.returncode, EXIT_UNREADABLE, outcome.stderr)
+        error = json.loads(outcome.stdout)["error"]
+        self.assertEqual(error["category"], "unreadable", error)
+        self.assertIn("not a regular file", error["message"])
 
     def test_mjcf_that_includes_itself(self):
         directory = WORK / "mjcf"

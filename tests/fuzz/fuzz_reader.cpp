@@ -10,12 +10,11 @@
 // the two parts every 3MF has, which reaches lib3mf's parsing and the
 // reader's objects, components and transforms.
 //
-// The tool's own readers and the 3MF reader take the bytes; glTF/GLB and
-// Collada are read by their libraries from a file, written at each execution
-// into a sandbox directory of this process (external glTF buffers resolve
-// there). The libraries' readers are called directly, not in the child
-// process the tool runs them in (readers/isolated_reader), so that the fuzzer
-// sees their coverage and their crashes.
+// The tool's own readers and the 3MF and Collada readers take the bytes;
+// glTF/GLB is read by tinygltf from a file, written at each execution into a
+// sandbox directory of this process (external glTF buffers resolve there). The libraries' readers
+// are called directly, not in the child process the tool runs them in (readers/isolated_reader), so
+// that the fuzzer sees their coverage and their crashes.
 //
 // A reader either throws ReadError or returns a Model the rest of the tool
 // relies on: every part's face sizes add up to its indices, and there are
@@ -108,13 +107,13 @@ Model read(const std::string& bytes) {
     if (format == "off") return polymass_cli::read_off(bytes);
     if (format == "3mf") return polymass_cli::read_3mf(bytes);
     if (format == "3mf_model") return polymass_cli::read_3mf(package_of(bytes));
+    if (format == "dae") return polymass_cli::read_collada(bytes);
     {
         std::ofstream file(sandbox_file(), std::ios::binary | std::ios::trunc);
         file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         if (!file) std::abort();
     }
     if (format == "gltf" || format == "glb") return polymass_cli::read_gltf(sandbox_file());
-    if (format == "dae") return polymass_cli::read_collada(sandbox_file());
     fail("unknown POLYMASS_FUZZ_FORMAT");
 }
 

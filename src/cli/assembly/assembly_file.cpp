@@ -5,13 +5,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "assembly/rotation.hpp"
 #include "model/units.hpp"
+#include "readers/file_bytes.hpp"
+#include "readers/mesh_reader.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -184,12 +184,16 @@ AssemblyPart read_part(const Json& value, size_t index, const std::string& file,
 }
 
 // The document, with a key repeated in one object refused (nlohmann-json
-// would keep the last one silently).
+// would keep the last one silently). The file is mapped as mesh files are: a
+// device (/dev/zero) or a pipe, which has no end to read to, is refused
+// rather than read without bound.
 Json parse_document(const std::string& path, const Place& place) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) place.fail("cannot open the file");
-    std::ostringstream content;
-    content << file.rdbuf();
+    std::string content;
+    try {
+        content = std::string(FileBytes(path).view());
+    } catch (const ReadError& error) {
+        place.fail(error.what());
+    }
     std::vector<std::set<std::string>> keys;  // of each object being read
     std::string repeated;
     const Json::parser_callback_t check_keys = [&](int, Json::parse_event_t event, Json& parsed) {
@@ -202,7 +206,7 @@ Json parse_document(const std::string& path, const Place& place) {
     };
     Json document;
     try {
-        document = Json::parse(content.str(), check_keys);
+        document = Json::parse(content, check_keys);
     } catch (const Json::exception& error) {
         place.fail(std::string("not valid JSON: ") + error.what());
     }

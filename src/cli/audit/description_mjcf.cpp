@@ -27,6 +27,7 @@
 
 #include "audit/description_parsers.hpp"
 #include "audit/frames.hpp"
+#include "out_of_memory.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -125,6 +126,7 @@ private:
     static std::string same_file(const std::string& path) {
         std::error_code error;
         const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+        throw_if_out_of_memory(error);
         return error ? path : canonical.string();
     }
 

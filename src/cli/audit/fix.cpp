@@ -6,9 +6,9 @@
 #include "audit/fix.hpp"
 
 #include <algorithm>
-#include <sstream>
 
 #include "reports/number_format.hpp"
+#include "text_streams.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -27,7 +27,7 @@ std::string inertial_text(Format format, const Written& w, const std::string& in
     const std::string step = indent.find('\t') != std::string::npos ? "\t" : "  ";
     const std::string inner = indent + step;
     const Eigen::Matrix3d& i = w.inertia;
-    std::ostringstream out;
+    OutputText out;
     switch (format) {
         case Format::kUrdf:
             out << "<inertial>\n"

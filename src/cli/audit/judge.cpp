@@ -16,9 +16,9 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
-#include <sstream>
 
 #include "reports/number_format.hpp"
+#include "text_streams.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -37,7 +37,7 @@ constexpr double kTriangleTolerance = 1e-9;
 // difference by.
 std::string percent(double fraction) {
     const double value = 100.0 * fraction;
-    std::ostringstream text;
+    OutputText text;
     if (std::abs(value) >= 100.0)
         text << std::fixed << std::setprecision(0);
     else
@@ -197,7 +197,7 @@ std::vector<Finding> judge_against_geometry(const Inertial& declared, const Comp
                                         computed.principal_axes);
         if (difference > kMomentWarning || angle > kAxisWarningDegrees) {
             const bool error = difference > kMomentError || angle > kAxisErrorDegrees;
-            std::ostringstream message;
+            OutputText message;
             message << std::setprecision(3);
             if (difference > kMomentWarning) {
                 message << "principal moments differ by up to " << percent(difference);

@@ -29,7 +29,7 @@ Json computed_json(const Computed& computed) {
 }
 
 Json file_json(const FileAudit& file) {
-    Json object;
+    Json object = Json::object();
     object["file"] = file.path;
     if (!file.error.empty()) {
         object["error"] = file.error;
@@ -38,7 +38,7 @@ Json file_json(const FileAudit& file) {
     object["format"] = format_name(file.format);
     Json links = Json::array();
     for (const LinkAudit& link : file.links) {
-        Json entry;
+        Json entry = Json::object();
         entry["name"] = link.name;
         entry["geometry"] = link.geometry;
         entry["declared"] = link.declared ? declared_json(*link.declared) : Json();
@@ -74,7 +74,7 @@ void write_audit_json(std::ostream& out, const std::vector<FileAudit>& files) {
             for (const Finding& finding : link.findings) ++kinds[finding.kind];
         }
     }
-    Json document;
+    Json document = Json::object();
     document["files"] = all;
     document["summary"] = {
         {"files", files.size()}, {"unreadable", unreadable}, {"links", links}, {"findings", kinds}};

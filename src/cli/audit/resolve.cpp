@@ -4,12 +4,13 @@
 #include <filesystem>
 #include <optional>
 #include <regex>
-#include <sstream>
 #include <system_error>
 #include <vector>
 
+#include "out_of_memory.hpp"
 #include "readers/file_bytes.hpp"
 #include "readers/mesh_reader.hpp"
+#include "text_streams.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -18,19 +19,23 @@ namespace fs = std::filesystem;
 
 bool file_exists(const fs::path& path) {
     std::error_code error;
-    return fs::is_regular_file(path, error);
+    const bool exists = fs::is_regular_file(path, error);
+    throw_if_out_of_memory(error);
+    return exists;
 }
 
 bool directory_exists(const fs::path& path) {
     std::error_code error;
-    return fs::is_directory(path, error);
+    const bool exists = fs::is_directory(path, error);
+    throw_if_out_of_memory(error);
+    return exists;
 }
 
 std::vector<fs::path> search_path(const char* variable) {
     std::vector<fs::path> roots;
     const char* value = std::getenv(variable);
     if (value == nullptr) return roots;
-    std::istringstream entries(value);
+    InputText entries(value);
     std::string entry;
     while (std::getline(entries, entry, ':')) {
         if (!entry.empty()) roots.emplace_back(entry);
@@ -64,7 +69,10 @@ std::optional<fs::path> package_under(const fs::path& root, const std::string& n
     std::error_code error;
     for (fs::directory_iterator level1(root, error), end; !error && level1 != end;
          level1.increment(error)) {
-        if (!level1->is_directory(error)) continue;
+        if (!level1->is_directory(error)) {
+            throw_if_out_of_memory(error);
+            continue;
+        }
         if (is_package(level1->path(), name)) return level1->path();
         for (fs::directory_iterator level2(level1->path(), error); !error && level2 != end;
              level2.increment(error)) {
@@ -72,8 +80,10 @@ std::optional<fs::path> package_under(const fs::path& root, const std::string& n
                 return level2->path();
             }
         }
+        throw_if_out_of_memory(error);
         error.clear();
     }
+    throw_if_out_of_memory(error);
     return std::nullopt;
 }
 
@@ -82,6 +92,7 @@ std::vector<fs::path> upward(const std::string& description_path) {
     std::vector<fs::path> dirs;
     std::error_code error;
     fs::path dir = fs::absolute(fs::path(description_path), error).parent_path();
+    throw_if_out_of_memory(error);
     while (!dir.empty()) {
         dirs.push_back(dir);
         if (dir == dir.parent_path()) break;

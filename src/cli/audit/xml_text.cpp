@@ -5,6 +5,8 @@
 #include "readers/file_bytes.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/text_lines.hpp"
+#include "text_streams.hpp"
+#include "xml_memory.hpp"
 
 namespace polymass_cli::audit {
 namespace {
@@ -72,6 +74,7 @@ void load_xml(XmlFile& file, const std::string& path) {
         throw DescriptionError(path + ": " + error.what());
     }
     file.path = path;
+    pugixml_allocates_with_new();
     // Parsed as UTF-8 from a copy of text, so that offsets are text's.
     const pugi::xml_parse_result parsed = file.document.load_buffer(
         file.text.data(), file.text.size(), pugi::parse_default, pugi::encoding_utf8);
@@ -100,7 +103,7 @@ std::optional<TextRange> element_range(const XmlFile& file, const pugi::xml_node
 std::vector<double> parse_numbers(const std::string& text, std::size_t count,
                                   const std::string& what) {
     std::vector<double> numbers;
-    std::istringstream fields(text);
+    InputText fields(text);
     std::string field;
     while (fields >> field) {
         double value = 0.0;

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 #include <vector>
 
 #include "commands/commands.hpp"
@@ -18,6 +17,7 @@
 #include "reports/json_output.hpp"
 #include "reports/number_format.hpp"
 #include "reports/provenance.hpp"
+#include "text_streams.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -173,7 +173,7 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
 Json json_report(const std::string& path, const Model& model, const CheckResult& check,
                  const ShellView& shells) {
     const polymass_diagnostics& d = check.diagnostics;
-    Json report;
+    Json report = Json::object();
     report["file"] = path;
     report["format"] = model.format;
     report["valid"] = d.status == POLYMASS_OK;
@@ -185,7 +185,7 @@ Json json_report(const std::string& path, const Model& model, const CheckResult&
     report["shells"] = shells.list.empty() ? d.shell_count : uint64_t(shells.list.size());
     Json shell_list = Json::array();
     for (const polymass_shell& shell : shells.list) {
-        Json entry;
+        Json entry = Json::object();
         entry["faces"] = shell.face_count;
         entry["first_face"] = shell.first_face;
         entry["signed_volume"] = json_number(shell.signed_volume);
@@ -256,7 +256,7 @@ Json answer_json(const SolidResult& answer) {
 ExitCode run_check(const Arguments& arguments) {
     const Library library(options_for(arguments));
     const bool as_json = arguments.output == OutputFormat::kJson;
-    std::ostringstream body;
+    OutputText body;
     Json reports = Json::array();
     ExitCode worst = kExitOk;
     for (const std::string& path : arguments.files) {
@@ -268,7 +268,7 @@ ExitCode run_check(const Arguments& arguments) {
             std::cerr << "polymass: " << path << ": " << kUnreadableCategory << ": " << error.what()
                       << '\n';
             if (as_json) {
-                Json failure;
+                Json failure = Json::object();
                 failure["file"] = path;
                 failure["error"] = {{"category", kUnreadableCategory}, {"message", error.what()}};
                 reports.push_back(failure);

@@ -10,6 +10,11 @@
 
 namespace polymass_cli {
 
+// The command the command line names (help and version printed here), run;
+// returns the exit status. Exceptions escape to main: std::bad_alloc when
+// memory runs out.
+ExitCode run_command(const Arguments& arguments);
+
 // polymass FILE...: mass properties in the chosen output format.
 ExitCode run_properties(const Arguments& arguments);
 

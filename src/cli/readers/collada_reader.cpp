@@ -19,20 +19,24 @@
 #include <assimp/Importer.hpp>
 #include <pugixml.hpp>
 #include <string>
+#include <string_view>
 
 #include "readers/format_readers.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/transform.hpp"
 #include "reports/utf8.hpp"
+#include "xml_memory.hpp"
 
 namespace polymass_cli {
 namespace {
 
 // The file's <unit meter> and <up_axis> as one transform (Collada's
 // defaults: 1 metre, Y_UP); a value that is neither is a ReadError.
-Transform asset_transform(const std::string& path) {
+Transform asset_transform(std::string_view bytes) {
+    pugixml_allocates_with_new();
     pugi::xml_document document;
-    if (!document.load_file(path.c_str())) throw ReadError("not a readable Collada (XML) file");
+    if (!document.load_buffer(bytes.data(), bytes.size()))
+        throw ReadError("not a readable Collada (XML) file");
     const pugi::xml_node asset = document.child("COLLADA").child("asset");
     const pugi::xml_attribute meter = asset.child("unit").attribute("meter");
     const double unit = meter ? meter.as_double(0.0) : 1.0;
@@ -99,12 +103,15 @@ void append_node(Model& model, const aiScene& scene, const aiNode& node, const T
 
 }  // namespace
 
-Model read_collada(const std::string& path) {
-    const Transform placement = asset_transform(path);
+Model read_collada(std::string_view document) {
+    const Transform placement = asset_transform(document);
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
-    // Only the geometry: no post-processing that would change the faces.
-    const aiScene* scene = importer.ReadFile(path, 0);
+    // Only the geometry: no post-processing that would change the faces. The
+    // bytes already read, rather than the file opened again: a second reading
+    // could see another file, and assimp's file layer reports a failed
+    // allocation as a file it cannot open.
+    const aiScene* scene = importer.ReadFileFromMemory(document.data(), document.size(), 0, "dae");
     if (scene == nullptr || scene->mRootNode == nullptr) {
         throw ReadError("not a readable Collada file: " + valid_utf8(importer.GetErrorString()));
     }

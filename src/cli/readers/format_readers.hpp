@@ -25,8 +25,9 @@ Model read_gltf(const std::string& path);
 // per build item; a package whose parts inflate past
 // reader_memory_budget(package.size()) is refused.
 Model read_3mf(std::string_view package);
-// Collada through assimp: its <unit> and <up_axis> applied (metres, Z up),
-// node transforms applied, one part per node with meshes.
-Model read_collada(const std::string& path);
+// Collada through assimp, from the document's bytes: its <unit> and
+// <up_axis> applied (metres, Z up), node transforms applied, one part per
+// node with meshes.
+Model read_collada(std::string_view document);
 
 }  // namespace polymass_cli

@@ -19,7 +19,6 @@
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <string>
 
 #include "readers/file_bytes.hpp"
@@ -272,12 +271,9 @@ bool read_buffer_file(std::vector<unsigned char>* out, std::string* error, const
     }
 }
 
-bool is_binary(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    char magic[4] = {};
-    file.read(magic, sizeof magic);
-    return file.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
-}
+// A stream would take a failed allocation of its buffer for a file too short
+// to hold the magic, and the GLB would be parsed as JSON.
+bool is_binary(const std::string& path) { return FileBytes(path).view().substr(0, 4) == "glTF"; }
 
 }  // namespace
 

@@ -88,8 +88,9 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     } else if (name == "dae") {
         // assimp trusts a Collada accessor's count (or fills gigabytes when it
         // is missing): its memory is bounded as a 3MF's.
-        const uint64_t size = regular_file_size(path);
-        model = read_isolated([&] { return read_collada(path); }, size);
+        const FileBytes document(path);
+        model =
+            read_isolated([&] { return read_collada(document.view()); }, document.view().size());
     } else if (name.empty()) {
         throw ReadError(std::string("no file extension to tell the format by: name it "
                                     "with one, or give --format (") +

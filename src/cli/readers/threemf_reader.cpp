@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -142,13 +143,20 @@ void add_object(Model& model, Part& part, Instance object, const Transform& tran
 // bytes, so the check and the reading cannot see two different packages.
 // Reading the directory inflates nothing. A package that declares less than
 // it holds fails its sizes and checksums in lib3mf, within that budget. A
-// package libzip cannot open is left to lib3mf's error.
+// package libzip cannot open is left to lib3mf's error, unless memory ran out
+// (std::bad_alloc: the check must not be skipped for want of memory).
 void check_declared_sizes(std::string_view package) {
+    // Fails only when it cannot allocate (the bytes are never NULL).
     zip_source_t* source = zip_source_buffer_create(package.data(), package.size(), 0, nullptr);
-    zip_t* archive =
-        source == nullptr ? nullptr : zip_open_from_source(source, ZIP_RDONLY, nullptr);
+    if (source == nullptr) throw std::bad_alloc();
+    zip_error_t error;
+    zip_error_init(&error);
+    zip_t* archive = zip_open_from_source(source, ZIP_RDONLY, &error);
+    const bool out_of_memory = zip_error_code_zip(&error) == ZIP_ER_MEMORY;
+    zip_error_fini(&error);
     if (archive == nullptr) {
-        if (source != nullptr) zip_source_free(source);
+        zip_source_free(source);
+        if (out_of_memory) throw std::bad_alloc();
         return;
     }
     const uint64_t most = reader_memory_budget(package.size());
@@ -156,7 +164,9 @@ void check_declared_sizes(std::string_view package) {
     const zip_int64_t entries = zip_get_num_entries(archive, 0);
     for (zip_int64_t i = 0; i < entries && declared <= most; ++i) {
         zip_stat_t part;
-        if (zip_stat_index(archive, static_cast<zip_uint64_t>(i), 0, &part) == 0 &&
+        // The name as stored (ZIP_FL_ENC_RAW): converting it would allocate,
+        // and only the size is wanted.
+        if (zip_stat_index(archive, static_cast<zip_uint64_t>(i), ZIP_FL_ENC_RAW, &part) == 0 &&
             (part.valid & ZIP_STAT_SIZE) != 0) {
             // Saturates: two parts declaring 2^63 bytes each do not wrap.
             declared += std::min<uint64_t>(part.size, most + 1);

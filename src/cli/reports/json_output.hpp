@@ -10,6 +10,10 @@
 namespace polymass_cli {
 
 // Objects keep their keys in the order they are set: the README's order.
+// Objects are made with Json::object(), never by indexing a null value:
+// nlohmann-json 3.11.2's operator[] marks a null value an object before it
+// allocates the object, and when that allocation fails, the value's
+// destructor follows a null pointer (found by tests/cli/out_of_memory.cpp).
 using Json = nlohmann::ordered_json;
 
 // A number as the outputs write it: -0 is 0 (a zero has no sign worth

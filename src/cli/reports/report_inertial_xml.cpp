@@ -22,6 +22,7 @@
 #include "reports/provenance.hpp"
 #include "reports/report.hpp"
 #include "reports/utf8.hpp"
+#include "xml_memory.hpp"
 
 namespace polymass_cli {
 namespace {
@@ -88,6 +89,7 @@ void add_comment(pugi::xml_node parent, const std::string& text) {
 
 void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
                         OutputFormat format, const OutputSettings& settings) {
+    pugixml_allocates_with_new();
     pugi::xml_document document;
     for (const FileReport& file : files) {
         // With one valid file the output is its comments and the element,

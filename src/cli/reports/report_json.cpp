@@ -89,7 +89,7 @@ void add_solid_members(Json& solid, const PartReport& part, const OutputSettings
 }
 
 Json file_object(const FileReport& file, const OutputSettings& settings) {
-    Json object;
+    Json object = Json::object();
     object["file"] = file.path;
     if (!file.readable) {
         object["error"] = error_object(kUnreadableCategory, file.read_error);
@@ -102,7 +102,7 @@ Json file_object(const FileReport& file, const OutputSettings& settings) {
     if (!file.parts.empty()) {
         Json parts = Json::array();
         for (const PartReport& part : file.parts) {
-            Json entry;
+            Json entry = Json::object();
             entry["name"] = part.name;
             if (part.computed) {
                 add_solid_members(entry, part, settings);
@@ -128,7 +128,7 @@ void write_json(std::ostream& out, const std::vector<FileReport>& files,
     Json all = Json::array();
     for (const FileReport& file : files) all.push_back(file_object(file, settings));
     const Summary summary = summarize(files);
-    Json document;
+    Json document = Json::object();
     document["files"] = all;
     document["summary"] = {{"files", summary.files},
                            {"valid", summary.valid},
