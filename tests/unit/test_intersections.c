@@ -681,6 +681,86 @@ static void test_shell_passing_through_a_face_along_its_edges(void** state) {
     }
 }
 
+/* A box [0,4]^2 x [0,1] whose top is split around the triangle t of corners
+   (0.5,0.5), (3.5,0.5), (2,3.5); resting on it, a slab [0.25,3.75]^2 x [1,2]
+   whose bottom lies flush on t around all three of t's corners and has a
+   window [1.5,2.5] x [1,2] over t's middle, closed by a pyramid of apex
+   (2, 1.5, apex_z): down into the box (apex_z < 1) or up into the slab, a
+   pocket (apex_z > 1). */
+static void slab_over_a_window(pm_mesh* m, double apex_z) {
+    uint32_t c[4], k[3], d[4], o[4], w[4], u[4], apex;
+    int i;
+    c[0] = pm_mesh_add_vertex(m, 0, 0, 1);
+    c[1] = pm_mesh_add_vertex(m, 4, 0, 1);
+    c[2] = pm_mesh_add_vertex(m, 4, 4, 1);
+    c[3] = pm_mesh_add_vertex(m, 0, 4, 1);
+    k[0] = pm_mesh_add_vertex(m, 0.5, 0.5, 1);
+    k[1] = pm_mesh_add_vertex(m, 3.5, 0.5, 1);
+    k[2] = pm_mesh_add_vertex(m, 2, 3.5, 1);
+    for (i = 0; i < 4; ++i)
+        d[i] = pm_mesh_add_vertex(m, i == 1 || i == 2 ? 4 : 0, i >= 2 ? 4 : 0, 0);
+    /* The box: its top (t and the ring around it), bottom and sides. */
+    pm_mesh_add_tri(m, k[0], k[1], k[2]);
+    pm_mesh_add_tri(m, c[0], c[1], k[1]);
+    pm_mesh_add_tri(m, c[0], k[1], k[0]);
+    pm_mesh_add_tri(m, c[1], c[2], k[1]);
+    pm_mesh_add_tri(m, k[1], c[2], k[2]);
+    pm_mesh_add_tri(m, c[2], c[3], k[2]);
+    pm_mesh_add_tri(m, c[3], k[0], k[2]);
+    pm_mesh_add_tri(m, c[3], c[0], k[0]);
+    pm_mesh_add_tri(m, d[0], d[3], d[2]);
+    pm_mesh_add_tri(m, d[0], d[2], d[1]);
+    for (i = 0; i < 4; ++i) {
+        pm_mesh_add_tri(m, d[i], d[(i + 1) % 4], c[(i + 1) % 4]);
+        pm_mesh_add_tri(m, d[i], c[(i + 1) % 4], c[i]);
+    }
+    /* The slab: its bottom ring around the window, top, sides, and the pyramid. */
+    o[0] = pm_mesh_add_vertex(m, 0.25, 0.25, 1);
+    o[1] = pm_mesh_add_vertex(m, 3.75, 0.25, 1);
+    o[2] = pm_mesh_add_vertex(m, 3.75, 3.75, 1);
+    o[3] = pm_mesh_add_vertex(m, 0.25, 3.75, 1);
+    w[0] = pm_mesh_add_vertex(m, 1.5, 1, 1);
+    w[1] = pm_mesh_add_vertex(m, 2.5, 1, 1);
+    w[2] = pm_mesh_add_vertex(m, 2.5, 2, 1);
+    w[3] = pm_mesh_add_vertex(m, 1.5, 2, 1);
+    for (i = 0; i < 4; ++i)
+        u[i] = pm_mesh_add_vertex(m, i == 1 || i == 2 ? 3.75 : 0.25, i >= 2 ? 3.75 : 0.25, 2);
+    apex = pm_mesh_add_vertex(m, 2, 1.5, apex_z);
+    pm_mesh_add_tri(m, u[0], u[1], u[2]);
+    pm_mesh_add_tri(m, u[0], u[2], u[3]);
+    for (i = 0; i < 4; ++i) {
+        const int j = (i + 1) % 4;
+        pm_mesh_add_tri(m, o[i], o[j], u[j]);
+        pm_mesh_add_tri(m, o[i], u[j], u[i]);
+        pm_mesh_add_tri(m, o[i], w[j], o[j]);
+        pm_mesh_add_tri(m, o[i], w[i], w[j]);
+        pm_mesh_add_tri(m, w[i], apex, w[j]);
+    }
+}
+
+/* Flush faces covering all three corners of a triangle with a piece between
+   them (docs/validity.md): the triangle's own probes start on the other
+   shell and are skipped, but the other shell's triangles that leave the
+   plane along the piece's edges start theirs inside the box. */
+static void test_flush_faces_around_a_window(void** state) {
+    const expectation pocket = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES,
+                                16.0 + 3.5 * 3.5 - 0.5 / 3.0};
+    pm_mesh m;
+    (void)state;
+    pm_mesh_init(&m);
+    slab_over_a_window(&m, 0.0);
+    expect_everywhere("a slab through a window, its apex on the box's floor", &m, overlap);
+    pm_mesh_free(&m);
+    pm_mesh_init(&m);
+    slab_over_a_window(&m, 0.5);
+    expect_everywhere("a slab through a window, its apex inside the box", &m, overlap);
+    pm_mesh_free(&m);
+    pm_mesh_init(&m);
+    slab_over_a_window(&m, 1.5);
+    expect_everywhere("a slab with a pocket over the window, resting", &m, pocket);
+    pm_mesh_free(&m);
+}
+
 /* The shell list refuses what it cannot fill or judge, saying why. */
 static void test_shell_list_refuses_bad_arguments(void** state) {
     polymass_context* ctx = pm_context_new(CHECKED);
@@ -770,6 +850,7 @@ int main(void) {
         cmocka_unit_test(test_coinciding_faces_of_two_shells),
         cmocka_unit_test(test_surface_welded_to_its_copy),
         cmocka_unit_test(test_shell_passing_through_a_face_along_its_edges),
+        cmocka_unit_test(test_flush_faces_around_a_window),
         cmocka_unit_test(test_shell_list_refuses_bad_arguments),
         cmocka_unit_test(test_subnormal_surfaces),
         cmocka_unit_test(test_reference_solids_do_not_intersect),
