@@ -4,19 +4,25 @@
 // line given. For each N = 1, 2, ... the Nth allocation fails, until a run
 // makes fewer than N allocations. An allocation is operator new's (which then
 // calls the new handler or throws std::bad_alloc, as it does when memory runs
-// out) and, where the tool replaces malloc (src/cli/c_allocation.hpp: not
-// under a sanitizer), also malloc's, calloc's and realloc's, which then note
-// the failure as the tool's malloc does and return NULL: the C libraries
+// out) and, in a build without a sanitizer (whose runtime owns malloc), also
+// malloc's, calloc's and realloc's, which then return NULL: the C libraries
 // under the readers (libzip, zlib, assimp's XML parser) allocate so.
 //
 // Every failing run must end as the tool ends on exhausted memory:
 // std::bad_alloc reaching main ("polymass: out of memory", exit 4), or exit 4
 // itself - never another category (a file "unreadable" or a mesh "not a
 // solid" because memory ran out), a different answer, a crash, or (under
-// ASan) a leak. One exception, by design: a reader that runs under the file's
-// memory budget (3MF, Collada: a zip or an element count can expand without
-// end) reports a failed allocation as the file's - unreadable, with the
-// budget's message.
+// ASan) a leak. Two exceptions, by design. A reader that runs under the
+// file's memory budget (3MF, Collada: a zip or an element count can expand
+// without end) reports a failed allocation as the file's: unreadable, with
+// the budget's message. And a C library under such a reader reports a failed
+// malloc as a file it cannot read ("Could not read ZIP file", "malformed
+// XML"), which the tool cannot tell from one: in a reader's child process a
+// failed C allocation may end as unreadable, with the library's message -
+// under the budget, the category the tool gives a file that needs more. A run
+// whose failed allocation was done without (a C library falling back, glibc
+// reading /proc without a buffer) passes when its exit status and its whole
+// output are those of the run without a failure.
 //
 // The readers of glTF, 3MF and Collada run in a forked child (isolated_reader):
 // the count and the fact that an allocation failed are kept in shared memory,
@@ -53,17 +59,46 @@
 #include <vector>
 
 #include "arguments.hpp"
-#include "c_allocation.hpp"
 #include "commands/commands.hpp"
 #include "exit_codes.hpp"
 #include "out_of_memory.hpp"
-#include "readers/isolated_reader.hpp"
+
+// Whether malloc can be replaced here: with glibc, which allows it ("Replacing
+// malloc"), and not under a sanitizer, whose runtime owns malloc.
+#include <cstddef>  // defines __GLIBC__ where glibc is the C library
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define INJECT_INTO_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer)
+#define INJECT_INTO_MALLOC 0
+#endif
+#endif
+#if !defined(INJECT_INTO_MALLOC)
+#if defined(__GLIBC__)
+#define INJECT_INTO_MALLOC 1
+#else
+#define INJECT_INTO_MALLOC 0
+#endif
+#endif
+
+#if INJECT_INTO_MALLOC
+// glibc's allocator under its own names, which replacing malloc leaves in place.
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* memory, std::size_t size);
+void __libc_free(void* memory);
+}
+#endif
 
 namespace {
 
 struct Injection {
     std::atomic<long> countdown{-1};  // allocations left before the one that fails; < 0: none
     std::atomic<int> failed{0};       // an allocation was made to fail
+    std::atomic<int> failed_c_in_reader{0};  // ... a C one, in a reader's child process
+    std::atomic<pid_t> worker{0};            // the process running the tool
 };
 
 // A command line's progress, kept by its worker process (main) where the
@@ -73,7 +108,7 @@ struct Progress {
     bool expected_done;   // the run without a failure is behind
     int expected_status;  // its exit status
     bool complete;        // a run made fewer than n + 1 allocations: the line is done
-    long failures, over_budget, terminated;
+    long failures, over_budget, c_in_reader, done_without, terminated;
 };
 
 // In shared memory, so that a forked reader or worker counts on the same
@@ -101,7 +136,7 @@ bool allocation_fails() {
 
 // Memory from the system's allocator, counted by the caller only.
 void* raw_allocate(std::size_t size) {
-#if POLYMASS_REPLACES_MALLOC
+#if INJECT_INTO_MALLOC
     return __libc_malloc(size ? size : 1);
 #else
     return std::malloc(size ? size : 1);
@@ -175,6 +210,7 @@ Run run_tool(const std::vector<std::string>& words, long n) {
     std::streambuf* err = std::cerr.rdbuf(&errors);
     int status;
     injection()->failed.store(0);
+    injection()->failed_c_in_reader.store(0);
     injection()->countdown.store(n);
     try {
         status = run_command(arguments);
@@ -247,15 +283,14 @@ void operator delete[](void* memory) noexcept { std::free(memory); }
 void operator delete(void* memory, std::size_t) noexcept { std::free(memory); }
 void operator delete[](void* memory, std::size_t) noexcept { std::free(memory); }
 
-#if POLYMASS_REPLACES_MALLOC
+#if INJECT_INTO_MALLOC
 // Replacing these four replaces the C allocator for every library of the
 // process (glibc's "Replacing malloc"); the other entry points (memalign,
 // posix_memalign, ...) stay glibc's and their memory is freed by __libc_free
-// all the same. A failure is as the C standard has it, NULL and ENOMEM, and
-// noted as the tool's own malloc notes it (src/cli/c_allocation.cpp).
+// all the same. A failure is as the C standard has it: NULL and ENOMEM.
 namespace {
 void* failed_c_allocation() {
-    polymass_cli::note_failed_c_allocation();
+    if (getpid() != injection()->worker.load()) injection()->failed_c_in_reader.store(1);
     errno = ENOMEM;
     return nullptr;
 }
@@ -285,6 +320,7 @@ namespace {
 [[noreturn]] void work_through(const std::vector<std::string>& words, Progress* progress) {
     using polymass_cli::kExitInternal, polymass_cli::kExitUnreadable;
     polymass_cli::end_out_of_memory_terminations_as_exit_4();
+    injection()->worker.store(getpid());
     const std::string line = joined(words);
     const Run expected = run_tool(words, -1);
     progress->expected_status = expected.status;
@@ -304,6 +340,10 @@ namespace {
         if (run.status == kExitInternal) continue;
         if (run.status == kExitUnreadable && run.over_budget) {
             ++progress->over_budget;
+        } else if (run.status == kExitUnreadable && injection()->failed_c_in_reader.load()) {
+            ++progress->c_in_reader;
+        } else if (run.status == expected.status && run.output == expected.output) {
+            ++progress->done_without;
         } else {
             std::printf("%s: allocation %ld failed: exit %d, not %d (out of memory)\n%s",
                         line.c_str(), progress->n + 1, run.status, int(kExitInternal),
@@ -360,9 +400,10 @@ int main(int argc, char** argv) {
         }
         std::printf(
             "%s: exit %d; each of its %ld allocations failed in turn (%ld of them inside the "
-            "file's memory budget, %ld ended in std::terminate as out of memory)\n",
+            "file's memory budget, %ld C allocations in a reader's process reported as the "
+            "file's, %ld done without, %ld ended in std::terminate as out of memory)\n",
             line.c_str(), progress->expected_status, progress->n, progress->over_budget,
-            progress->terminated);
+            progress->c_in_reader, progress->done_without, progress->terminated);
         failures += progress->failures;
     }
     return failures == 0 ? 0 : 1;

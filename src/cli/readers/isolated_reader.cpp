@@ -225,10 +225,6 @@ private:
 
 }  // namespace
 
-void note_failed_c_allocation() noexcept {
-    if (child_state != nullptr) child_state->allocation_failed.store(1);
-}
-
 uint64_t reader_memory_budget(uint64_t file_size) {
     constexpr uint64_t kBase = uint64_t(256) << 20;
     constexpr uint64_t kBytesPerFileByte = 64;

@@ -32,14 +32,4 @@ Model read_isolated(const std::function<Model()>& read, uint64_t file_size = 0);
 // That memory (beyond what the tool had) for a file of file_size bytes.
 uint64_t reader_memory_budget(uint64_t file_size);
 
-// To be called when a C allocation (malloc, calloc, realloc) fails. In a
-// reader's child, the read then ran out of memory, as when operator new
-// fails: the C libraries under the readers report a failed malloc as a file
-// they cannot read (libzip under lib3mf: "Could not read ZIP file"; assimp's
-// XML parser: "malformed XML"), which would otherwise reach the user as the
-// file's fault. Elsewhere it does nothing. The tool's malloc calls it
-// (c_allocation.cpp), and so does the out-of-memory test's. It allocates
-// nothing and throws nothing.
-void note_failed_c_allocation() noexcept;
-
 }  // namespace polymass_cli
