@@ -687,18 +687,24 @@ static void test_shell_passing_through_a_face_along_its_edges(void** state) {
    window [1.5,2.5] x [1,2] over t's middle, closed by a pyramid of apex
    (2, 1.5, apex_z): down into the box (apex_z < 1) or up into the slab, a
    pocket (apex_z > 1). */
+/* The corners of the rectangle [x0, x1] x [y0, y1] at height z, counter-clockwise
+   seen from above. */
+static void rectangle(pm_mesh* m, uint32_t corner[4], double x0, double y0, double x1, double y1,
+                      double z) {
+    corner[0] = pm_mesh_add_vertex(m, x0, y0, z);
+    corner[1] = pm_mesh_add_vertex(m, x1, y0, z);
+    corner[2] = pm_mesh_add_vertex(m, x1, y1, z);
+    corner[3] = pm_mesh_add_vertex(m, x0, y1, z);
+}
+
 static void slab_over_a_window(pm_mesh* m, double apex_z) {
     uint32_t c[4], k[3], d[4], o[4], w[4], u[4], apex;
     int i;
-    c[0] = pm_mesh_add_vertex(m, 0, 0, 1);
-    c[1] = pm_mesh_add_vertex(m, 4, 0, 1);
-    c[2] = pm_mesh_add_vertex(m, 4, 4, 1);
-    c[3] = pm_mesh_add_vertex(m, 0, 4, 1);
+    rectangle(m, c, 0, 0, 4, 4, 1);
+    rectangle(m, d, 0, 0, 4, 4, 0);
     k[0] = pm_mesh_add_vertex(m, 0.5, 0.5, 1);
     k[1] = pm_mesh_add_vertex(m, 3.5, 0.5, 1);
     k[2] = pm_mesh_add_vertex(m, 2, 3.5, 1);
-    for (i = 0; i < 4; ++i)
-        d[i] = pm_mesh_add_vertex(m, i == 1 || i == 2 ? 4 : 0, i >= 2 ? 4 : 0, 0);
     /* The box: its top (t and the ring around it), bottom and sides. */
     pm_mesh_add_tri(m, k[0], k[1], k[2]);
     pm_mesh_add_tri(m, c[0], c[1], k[1]);
@@ -715,16 +721,9 @@ static void slab_over_a_window(pm_mesh* m, double apex_z) {
         pm_mesh_add_tri(m, d[i], c[(i + 1) % 4], c[i]);
     }
     /* The slab: its bottom ring around the window, top, sides, and the pyramid. */
-    o[0] = pm_mesh_add_vertex(m, 0.25, 0.25, 1);
-    o[1] = pm_mesh_add_vertex(m, 3.75, 0.25, 1);
-    o[2] = pm_mesh_add_vertex(m, 3.75, 3.75, 1);
-    o[3] = pm_mesh_add_vertex(m, 0.25, 3.75, 1);
-    w[0] = pm_mesh_add_vertex(m, 1.5, 1, 1);
-    w[1] = pm_mesh_add_vertex(m, 2.5, 1, 1);
-    w[2] = pm_mesh_add_vertex(m, 2.5, 2, 1);
-    w[3] = pm_mesh_add_vertex(m, 1.5, 2, 1);
-    for (i = 0; i < 4; ++i)
-        u[i] = pm_mesh_add_vertex(m, i == 1 || i == 2 ? 3.75 : 0.25, i >= 2 ? 3.75 : 0.25, 2);
+    rectangle(m, o, 0.25, 0.25, 3.75, 3.75, 1);
+    rectangle(m, w, 1.5, 1, 2.5, 2, 1);
+    rectangle(m, u, 0.25, 0.25, 3.75, 3.75, 2);
     apex = pm_mesh_add_vertex(m, 2, 1.5, apex_z);
     pm_mesh_add_tri(m, u[0], u[1], u[2]);
     pm_mesh_add_tri(m, u[0], u[2], u[3]);
