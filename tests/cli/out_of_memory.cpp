@@ -101,7 +101,7 @@ struct Injection {
     std::atomic<pid_t> worker{0};            // the process running the tool
 };
 
-// A command line's progress, kept by its worker process (main) where the
+// A command line's progress, kept by its worker process (work_through) where the
 // supervisor finds it when the worker ends early.
 struct Progress {
     long n;               // the allocation failing in the run under way (0-based)
