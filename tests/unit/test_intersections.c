@@ -681,12 +681,6 @@ static void test_shell_passing_through_a_face_along_its_edges(void** state) {
     }
 }
 
-/* A box [0,4]^2 x [0,1] whose top is split around the triangle t of corners
-   (0.5,0.5), (3.5,0.5), (2,3.5); resting on it, a slab [0.25,3.75]^2 x [1,2]
-   whose bottom lies flush on t around all three of t's corners and has a
-   window [1.5,2.5] x [1,2] over t's middle, closed by a pyramid of apex
-   (2, 1.5, apex_z): down into the box (apex_z < 1) or up into the slab, a
-   pocket (apex_z > 1). */
 /* The corners of the rectangle [x0, x1] x [y0, y1] at height z, counter-clockwise
    seen from above. */
 static void rectangle(pm_mesh* m, uint32_t corner[4], double x0, double y0, double x1, double y1,
@@ -697,6 +691,12 @@ static void rectangle(pm_mesh* m, uint32_t corner[4], double x0, double y0, doub
     corner[3] = pm_mesh_add_vertex(m, x0, y1, z);
 }
 
+/* A box [0,4]^2 x [0,1] whose top is split around the triangle t of corners
+   (0.5,0.5), (3.5,0.5), (2,3.5); resting on it, a slab [0.25,3.75]^2 x [1,2]
+   whose bottom lies flush on t around all three of t's corners and has a
+   window [1.5,2.5] x [1,2] over t's middle, closed by a pyramid of apex
+   (2, 1.5, apex_z): down into the box (apex_z < 1) or up into the slab, a
+   pocket (apex_z > 1). */
 static void slab_over_a_window(pm_mesh* m, double apex_z) {
     uint32_t c[4], k[3], d[4], o[4], w[4], u[4], apex;
     int i;
