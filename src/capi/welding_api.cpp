@@ -44,7 +44,8 @@ POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_d
             }
             const std::pmr::vector<std::uint32_t> welded =
                 core::weld_vertices(view, scanned.scan, tolerance, memory);
-            // Past the last used vertex, welded stops: the rest are unused.
+            // welded stops at the index type's reach (65,536 vertices for
+            // 16-bit indices): the vertices past it are used by no face.
             std::copy(welded.begin(), welded.end(), out_vertex_of);
             for (std::size_t vertex = welded.size(); vertex < input.vertex_count; ++vertex)
                 out_vertex_of[vertex] = std::uint32_t(vertex);

@@ -20,7 +20,9 @@
 namespace polymass::core {
 
 // For every vertex the faces use, the smallest used vertex index welded to it
-// (unused vertices map to themselves). scan must say the mesh is in range, and
+// (unused vertices map to themselves), over the vertices the index type can
+// reach (scan.used's bits; fewer than the mesh's when 16-bit indices meet
+// more than 65,536 vertices). scan must say the mesh is in range, and
 // finite when tolerance > 0 (an exact weld compares bits: copies of one NaN
 // are one vertex); tolerance is relative, >= 0. Exact welding is one hashing
 // pass; within a tolerance, a sort by grid cell.

@@ -372,6 +372,32 @@ static void test_report_lists_pairs_and_shells(void** state) {
     assert_int_equal(shells[2].kind, POLYMASS_SHELL_INVERTED);
     PM_ASSERT_REL("cavity volume", -8.0, shells[1].signed_volume, 1e-14);
     pm_mesh_free(&m);
+
+    /* A flat pillow beside a cube (a triangle and its reverse: closed, with
+       no volume): valid, and its shell described as having none. */
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
+    {
+        const uint32_t a = pm_mesh_add_vertex(&m, 5, 0, 0);
+        const uint32_t b = pm_mesh_add_vertex(&m, 6, 0, 0);
+        const uint32_t c = pm_mesh_add_vertex(&m, 5, 1, 0);
+        pm_mesh_add_tri(&m, a, b, c);
+        pm_mesh_add_tri(&m, a, c, b);
+    }
+    pm_diagnostics_init(&d);
+    PM_ASSERT_OK(ctx, pm_check(&d, ctx, &m));
+    assert_int_equal(d.shell_count, 2);
+    {
+        polymass_mesh_desc desc = pm_mesh_desc(&m);
+        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 3, &count, ctx, &desc));
+    }
+    assert_int_equal(count, 2);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    assert_int_equal(shells[1].kind, POLYMASS_SHELL_NO_VOLUME);
+    assert_int_equal(shells[1].first_face, 6);
+    assert_int_equal(shells[1].face_count, 2);
+    assert_true(shells[1].signed_volume == 0.0);
+    pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }
 

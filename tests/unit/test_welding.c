@@ -435,6 +435,41 @@ static void test_weld_on_its_own(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* 16-bit indices reach the first 65,536 vertices only: the ones past them,
+ * which no face can use, map to themselves (the core's map stops at the
+ * index type's reach, the C API fills in the rest), with and without a
+ * tolerance. */
+static void test_weld_past_sixteen_bit_reach(void** state) {
+    static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+    static const pm_layout sixteen_bit = {POLYMASS_POSITION_FLOAT64, 0, 0, POLYMASS_INDEX_UINT16};
+    const size_t vertex_count = 65536 + 100;
+    polymass_context* ctx = pm_context_new(0);
+    uint32_t* of_vertex = malloc(vertex_count * sizeof *of_vertex);
+    uint64_t distinct = 0;
+    pm_laid_out_mesh laid_out;
+    pm_mesh m;
+    size_t v;
+    int pass;
+    (void)state;
+    assert_non_null(of_vertex);
+    pm_mesh_box(&m, lo, hi, 1);
+    pm_mesh_to_soup(&m);
+    while (m.vertex_count < vertex_count) /* unused, all at one point */
+        pm_mesh_add_vertex(&m, 5, 5, 5);
+    pm_lay_out(&laid_out, &m, &sixteen_bit);
+    for (pass = 0; pass < 2; ++pass) {
+        set_weld(ctx, pass == 0 ? 0.0 : 1e-6);
+        memset(of_vertex, 0xFF, vertex_count * sizeof *of_vertex);
+        PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &laid_out.desc));
+        assert_int_equal(distinct, 8);
+        for (v = 36; v < vertex_count; ++v) assert_int_equal(of_vertex[v], v);
+    }
+    pm_laid_out_free(&laid_out);
+    pm_mesh_free(&m);
+    free(of_vertex);
+    polymass_context_destroy(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_noisy_soup_closes),
@@ -445,6 +480,7 @@ int main(void) {
         cmocka_unit_test(test_shells_of_used_vertices),
         cmocka_unit_test(test_shells_errors),
         cmocka_unit_test(test_weld_on_its_own),
+        cmocka_unit_test(test_weld_past_sixteen_bit_reach),
         cmocka_unit_test(test_exact_weld_of_many_positions),
     };
     return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
