@@ -454,7 +454,7 @@ static void test_weld_past_sixteen_bit_reach(void** state) {
     assert_non_null(of_vertex);
     pm_mesh_box(&m, lo, hi, 1);
     pm_mesh_to_soup(&m);
-    while (m.vertex_count < vertex_count) /* unused, all at one point */
+    while (m.vertex_count < vertex_count) /* unused, all at one point: none welded */
         pm_mesh_add_vertex(&m, 5, 5, 5);
     pm_lay_out(&laid_out, &m, &sixteen_bit);
     for (pass = 0; pass < 2; ++pass) {
