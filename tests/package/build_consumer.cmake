@@ -8,6 +8,9 @@
 #   `pkg-config --cflags --libs polymass` (shared) and of
 #   `pkg-config --static --cflags --libs polymass` with -lpolymass pinned to the
 #   archive (static), PKG_CONFIG_LIBDIR=PREFIX/PKGCONFIGDIR only.
+# MODE=add_subdirectory: configures subproject/CMakeLists.txt, which builds
+#   the library from POLYMASS_SOURCE_DIR with add_subdirectory() (so without
+#   the tool and its libraries) and links the same consumer to it.
 # Each program is run and must print "volume 1".
 #
 # C_FLAGS / LINK_FLAGS (space-separated) are the build's sanitizer flags: an
@@ -76,6 +79,28 @@ if(MODE STREQUAL "find_package")
         # Only the scratch prefix: never a polymass installed on the machine.
         -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
         -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF)
+    if(GENERATOR)
+        list(APPEND configure -G "${GENERATOR}")
+    endif()
+    run(${configure})
+    run("${CMAKE_COMMAND}" --build "${WORK_DIR}")
+    expect_needed("${WORK_DIR}/consumer_shared" TRUE)
+    expect_needed("${WORK_DIR}/consumer_static" FALSE)
+    run_consumer("${WORK_DIR}/consumer_shared")
+    run_consumer("${WORK_DIR}/consumer_static")
+
+elseif(MODE STREQUAL "add_subdirectory")
+    # PREFIX is unused: the library is built from the checkout, in WORK_DIR.
+    polymass_require_args(build_consumer.cmake CXX_COMPILER POLYMASS_SOURCE_DIR)
+    set(configure "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}"
+        "-DPOLYMASS_SOURCE_DIR=${POLYMASS_SOURCE_DIR}"
+        "-DCMAKE_C_COMPILER=${C_COMPILER}"
+        "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}"
+        "-DCMAKE_C_FLAGS=${C_FLAGS}"
+        "-DCMAKE_CXX_FLAGS=${C_FLAGS}"
+        "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}"
+        "-DCMAKE_SHARED_LINKER_FLAGS=${LINK_FLAGS}"
+        -DCMAKE_BUILD_TYPE=Release)
     if(GENERATOR)
         list(APPEND configure -G "${GENERATOR}")
     endif()
