@@ -11,6 +11,7 @@ packages=(
     ccache                                 # test command: compiles cached across runs and clones
     libeigen3-dev                          # the library's (private) dependency
     libcmocka-dev                          # unit tests
+    libbullet-dev                          # examples/bullet: a rigid body for Bullet
     clang-format                           # style check
     clang libclang-rt-14-dev               # fuzz preset: clang, libFuzzer + sanitizer runtimes
     llvm                                   # coverage preset: llvm-profdata, llvm-cov
