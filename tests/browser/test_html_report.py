@@ -95,6 +95,78 @@ def rotated(vertices, angle, axis_point=(0.0, 0.0, 0.0)):
     return out
 
 
+# ---- a robot for polymass audit -------------------------------------------------
+
+LINKS = 13
+LINK_BOX = (0.1, 0.2, 0.3)  # each link's geometry: a box on its link's z axis
+JOINT_XYZ = (0.1, 0.0, 0.3)
+JOINT_YAW = 0.5
+LINK_MASS = 2.0
+WRONG_LINK = "link_7"  # its declared inertia 23 times too large
+WRONG_FACTOR = 23.0
+
+
+def matmul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+
+def yaw(angle):
+    c, s = math.cos(angle), math.sin(angle)
+    return [[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]
+
+
+def link_frames():
+    """Each link's rotation and position with every joint at zero."""
+    frames = [([[1.0, 0, 0], [0, 1.0, 0], [0, 0, 1.0]], [0.0, 0.0, 0.0])]
+    for _ in range(LINKS - 1):
+        rotation, position = frames[-1]
+        step = [sum(rotation[i][k] * JOINT_XYZ[k] for k in range(3)) for i in range(3)]
+        frames.append((matmul(rotation, yaw(JOINT_YAW)), [p + d for p, d in zip(position, step)]))
+    return frames
+
+
+def box_moments(mass, size):
+    a, b, c = size
+    return [mass * (b * b + c * c) / 12, mass * (a * a + c * c) / 12, mass * (a * a + b * b) / 12]
+
+
+def write_robot(folder):
+    """A chain of LINKS links, each a box (link_3 a mesh file), each joint
+    turning the next link by JOINT_YAW; WRONG_LINK's inertia planted wrong."""
+    corners = box_vertices([-s / 2 for s in LINK_BOX], [s / 2 for s in LINK_BOX])
+    write_obj(folder / "link_3.obj", corners, CUBE_FACES)
+    parts = ['<robot name="chain">']
+    for k in range(LINKS):
+        name = f"link_{k}"
+        moments = box_moments(LINK_MASS, LINK_BOX)
+        if name == WRONG_LINK:
+            moments = [m * WRONG_FACTOR for m in moments]
+        ixx, iyy, izz = moments
+        shape = (
+            '<mesh filename="link_3.obj"/>'
+            if k == 3
+            else '<box size="{} {} {}"/>'.format(*LINK_BOX)
+        )
+        parts.append(
+            f'<link name="{name}"><inertial><origin xyz="0 0 0.15"/>'
+            f'<mass value="{LINK_MASS}"/><inertia ixx="{ixx!r}" iyy="{iyy!r}" izz="{izz!r}"'
+            ' ixy="0" ixz="0" iyz="0"/></inertial>'
+            f'<collision><origin xyz="0 0 0.15"/><geometry>{shape}</geometry></collision>'
+            "</link>"
+        )
+        if k:
+            parts.append(
+                f'<joint name="joint_{k}" type="revolute"><parent link="link_{k - 1}"/>'
+                f'<child link="{name}"/><origin xyz="{JOINT_XYZ[0]} {JOINT_XYZ[1]} {JOINT_XYZ[2]}"'
+                f' rpy="0 0 {JOINT_YAW}"/><axis xyz="0 0 1"/>'
+                '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+            )
+    parts.append("</robot>")
+    path = folder / "chain.urdf"
+    path.write_text("\n".join(parts) + "\n")
+    return path
+
+
 # JavaScript: the check page's findings table as shown (a kind's row, then
 # its locations' rows) and the "... and N more" rows.
 TABLE_ROWS = """[...document.querySelectorAll(
@@ -308,6 +380,48 @@ class ReportPages(unittest.TestCase):
         shown = page.evaluate("document.getElementById('details').textContent")
         self.assertIn("equivalent inertia box", shown)
         self.screenshot(page, "properties_box.png")
+
+    # ---- polymass audit --html ---------------------------------------------------
+
+    def test_audit_page_shows_the_wrong_inertial(self):
+        description = write_robot(WORK)
+        page_path = WORK / "audit_chain.html"
+        run("audit", "--html", page_path, description, expect=1)
+        report = json.loads(run("audit", "--json", description, expect=1).stdout)
+        page = self.load(page_path)
+        self.assert_drawn(page)
+        # Every link listed, each with the findings --json gives it.
+        shown = page.evaluate(
+            """[...document.querySelectorAll('#links tr.link-row')].map((row) => ({
+                 name: row.dataset.link,
+                 kinds: [...row.querySelectorAll('.finding')]
+                          .map((f) => f.dataset.kind).sort()}))"""
+        )
+        expected = {
+            link["name"]: sorted(f["kind"] for f in link["findings"]) for link in report["links"]
+        }
+        self.assertEqual({row["name"]: row["kinds"] for row in shown}, expected)
+        self.assertEqual(len(shown), LINKS)
+        # The most severe first: the planted link's errors head the list.
+        self.assertEqual(shown[0]["name"], WRONG_LINK)
+
+        boxes = {(b["link"], b["which"]): b for b in page.evaluate("window.polymass.boxes")}
+        self.assertEqual(len(boxes), 2 * LINKS)
+        frames = link_frames()
+        for k in range(LINKS):
+            name = f"link_{k}"
+            declared, computed = boxes[(name, "declared")], boxes[(name, "computed")]
+            factor = math.sqrt(WRONG_FACTOR) if name == WRONG_LINK else 1.0
+            for d, c in zip(sorted(declared["sides"]), sorted(computed["sides"])):
+                self.assertAlmostEqual(d, factor * c, delta=1e-9 * factor)
+            self.assertEqual(sorted(round(s, 9) for s in computed["sides"]), sorted(LINK_BOX))
+            # Both centres where the link's frame puts (0, 0, 0.15).
+            rotation, position = frames[k]
+            want = [position[i] + rotation[i][2] * 0.15 for i in range(3)]
+            for box in (declared, computed):
+                for got, expect in zip(box["center"], want):
+                    self.assertAlmostEqual(got, expect, places=9)
+        self.screenshot(page, "audit_chain.png")
 
 
 if __name__ == "__main__":

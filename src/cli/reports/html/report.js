@@ -794,6 +794,162 @@
     setNotes(decimationNote(mesh));
   }
 
+
+  // ---- polymass audit -------------------------------------------------------
+
+  const SEVERITY_RANK = { error: 2, warning: 1, info: 0 };
+  const DECLARED_COLOUR = '#e8590c';
+  const COMPUTED_COLOUR = '#1f6fd1';
+  const LINK_COLOURS = [0xb4c0cc, 0xc9bfa8, 0xa8c3b5, 0xc3b0c9, 0xb0bdd8, 0xd1b8b0];
+
+  const worstSeverity = (link) => Math.max(-1, ...link.findings.map((f) => SEVERITY_RANK[f.severity]));
+
+  // A 4x4 matrix from a pose ({rotation: rows, position}).
+  function poseMatrix(pose) {
+    const r = pose.rotation;
+    const p = pose.position;
+    return new THREE.Matrix4().set(r[0][0], r[0][1], r[0][2], p[0], r[1][0], r[1][1], r[1][2], p[1], r[2][0], r[2][1], r[2][2], p[2], 0, 0, 0, 1);
+  }
+  const applyPose = (pose, point) => new THREE.Vector3(...point).applyMatrix4(poseMatrix(pose)).toArray();
+  const rotate = (pose, axis) => new THREE.Vector3(...axis).applyMatrix3(new THREE.Matrix3().setFromMatrix4(poseMatrix(pose))).toArray();
+
+  // A shape of the audit (audit/description.hpp) as three.js geometries
+  // (one, or a capsule's three), about its centre, its axis along z.
+  function shapeGeometry(geometry) {
+    const [a, b, c] = geometry.size;
+    const upright = (g) => g.rotateX(Math.PI / 2);
+    switch (geometry.shape) {
+      case 'box':
+        return new THREE.BoxBufferGeometry(a, b, c);
+      case 'cylinder':
+        return upright(new THREE.CylinderBufferGeometry(a, a, b, 32));
+      case 'sphere':
+        return new THREE.SphereBufferGeometry(a, 32, 16);
+      case 'ellipsoid':
+        return new THREE.SphereBufferGeometry(1, 32, 16).scale(a, b, c);
+      case 'capsule': {
+        // The cylinder with a half sphere on each end: r111 has no capsule.
+        const sphere = new THREE.SphereBufferGeometry(a, 32, 16);
+        return [upright(new THREE.CylinderBufferGeometry(a, a, b, 32, 1, true)), sphere.clone().translate(0, 0, b / 2), sphere.translate(0, 0, -b / 2)];
+      }
+      default:
+        return null;
+    }
+  }
+
+  function linkGeometryObjects(link, colour) {
+    const objects = [];
+    const notes = [];
+    for (const geometry of link.geometries) {
+      let object = null;
+      if (geometry.shape === 'mesh') {
+        if (!geometry.mesh || geometry.mesh.error) {
+          notes.push(geometry.uri + ': ' + (geometry.mesh ? geometry.mesh.error : 'not drawn'));
+          continue;
+        }
+        const view = buildMesh(geometry.mesh, { colour });
+        showMesh(view);
+        object = new THREE.Group();
+        object.add(view.solid, view.wireframe);
+        object.scale.set(...geometry.scale);
+        notes.push(...decimationNote(geometry.mesh).map((note) => geometry.uri + ': ' + note));
+      } else {
+        const shapes = shapeGeometry(geometry);
+        object = new THREE.Group();
+        for (const shape of [].concat(shapes)) {
+          object.add(new THREE.Mesh(shape, new THREE.MeshPhongMaterial({ color: colour, flatShading: false })));
+        }
+      }
+      const placed = new THREE.Group();
+      placed.matrixAutoUpdate = false;
+      placed.matrix.copy(poseMatrix(link.frame || IDENTITY_POSE).multiply(poseMatrix(geometry.pose)));
+      placed.add(object);
+      objects.push(placed);
+    }
+    return { objects, notes };
+  }
+  const IDENTITY_POSE = { rotation: [[1, 0, 0], [0, 1, 0], [0, 0, 1]], position: [0, 0, 0] };
+
+  // A link's declared or computed inertial drawn in the world: its centre
+  // of mass and equivalent inertia box.
+  function inertialObjects(name, which, inertial, frame, colour, size) {
+    const { moments, axes } = principalOf(inertial.inertia);
+    const box = equivalentBox(inertial.mass, moments);
+    const center = applyPose(frame, inertial.center_of_mass);
+    const group = new THREE.Group();
+    group.add(boxObject(box, center, axes.map((axis) => rotate(frame, axis)), colour, { link: name, which, moments }));
+    group.add(centreMarker(center, size, colour));
+    return group;
+  }
+
+  function linkRow(link, report, onSelect) {
+    const findings = [...link.findings].sort((a, b) => SEVERITY_RANK[b.severity] - SEVERITY_RANK[a.severity]);
+    const declared = link.declared;
+    const computed = link.computed;
+    return el(
+      'tr',
+      { class: 'link-row', dataset: { link: link.name } },
+      el('td', {}, el('b', {}, link.name), el('br'), el('span', { class: 'mono' }, link.geometry)),
+      el('td', { class: 'number' }, declared ? number(declared.mass) : '—', el('br'), computed ? number(computed.mass) : '—'),
+      el(
+        'td',
+        {},
+        findings.length
+          ? findings.map((finding) => el('div', { class: 'finding', dataset: { kind: finding.kind, severity: finding.severity } }, el('span', { class: 'severity-' + finding.severity }, finding.severity), ' ', el('code', {}, finding.kind), ': ', finding.message))
+          : el('span', { class: 'severity-info' }, 'no finding')
+      )
+    );
+  }
+
+  function showAudit(file, index) {
+    const summary = document.getElementById('summary');
+    const details = document.getElementById('details');
+    if (file.error) {
+      summary.replaceChildren(el('div', { class: 'status bad' }, file.error));
+      details.replaceChildren();
+      return;
+    }
+    const robot = data.robots[index];
+    const counts = { error: 0, warning: 0, info: 0 };
+    file.links.forEach((link) => link.findings.forEach((finding) => counts[finding.severity]++));
+    summary.replaceChildren(
+      el('div', { class: 'status ' + (counts.error ? 'bad' : counts.warning ? 'warning' : 'good') }, file.format.toUpperCase() + ', ' + plural(file.links.length, 'link') + ': ' + plural(counts.error, 'error') + ', ' + plural(counts.warning, 'warning') + ', ' + counts.info + ' info'),
+      el('p', {}, 'Zero pose (every joint at 0). Declared inertials in ', el('b', { style: 'color:' + DECLARED_COLOUR }, 'orange'), ', computed from the geometry in ', el('b', { style: 'color:' + COMPUTED_COLOUR }, 'blue'), ': each a centre of mass and its equivalent inertia box (the uniform box with the same mass and principal moments). Where they differ, the declared inertial is wrong or the geometry is not the link.')
+    );
+    const notes = [];
+    const order = file.links.map((link, i) => i).sort((a, b) => worstSeverity(file.links[b]) - worstSeverity(file.links[a]) || a - b);
+    // Sizes of the markers: a share of the robot's extent, known once its
+    // links are placed.
+    const placed = [];
+    file.links.forEach((link, i) => {
+      const drawn = robot ? robot.links[i] : { frame: null, geometries: [] };
+      if (!drawn.frame) notes.push(link.name + ': its pose is not known; drawn at the origin');
+      const { objects, notes: geometryNotes } = linkGeometryObjects(drawn, LINK_COLOURS[i % LINK_COLOURS.length]);
+      notes.push(...geometryNotes.map((note) => link.name + ': ' + note));
+      objects.forEach((object) => viewer.content.add(object));
+      placed[i] = { link, drawn, objects };
+    });
+    const extent = new THREE.Box3().setFromObject(viewer.content).getBoundingSphere(new THREE.Sphere()).radius || 1;
+    const rows = [];
+    for (const i of order) {
+      const { link, drawn, objects } = placed[i];
+      const frame = drawn.frame || IDENTITY_POSE;
+      const inertials = [];
+      if (link.declared && link.declared.mass > 0) inertials.push(inertialObjects(link.name, 'declared', link.declared, frame, DECLARED_COLOUR, 0.012 * extent));
+      if (link.computed) inertials.push(inertialObjects(link.name, 'computed', link.computed, frame, COMPUTED_COLOUR, 0.012 * extent));
+      inertials.forEach((object) => viewer.content.add(object));
+      const row = linkRow(link);
+      const all = [...objects, ...inertials];
+      makeSelectable(row, all, all.length ? sphereOf(all, 0.05 * extent) : null);
+      rows.push(row);
+    }
+    const linkTable = table(['Link (geometry)', 'Mass: declared, computed', 'Findings (most severe first)'], rows);
+    linkTable.id = 'links';
+    details.replaceChildren(el('h2', {}, 'Links, the most severe findings first'), linkTable);
+    setLegend([[DECLARED_COLOUR, 'declared: centre of mass, inertia box'], [COMPUTED_COLOUR, 'computed from the geometry']]);
+    setNotes(notes);
+  }
+
   // ---- the page -----------------------------------------------------------
 
   function fileList() {
@@ -817,7 +973,7 @@
     document.getElementById('title').textContent = file.file;
     if (data.kind === 'check') showCheck(file, mesh);
     else if (data.kind === 'properties') showProperties(file, mesh);
-    else if (window.polymassAudit) window.polymassAudit(file, index);
+    else showAudit(file, index);
     const box = new THREE.Box3().setFromObject(viewer.content);
     viewer.home = box.isEmpty() ? new THREE.Sphere(new THREE.Vector3(), 1) : box.getBoundingSphere(new THREE.Sphere());
     viewer.resize();
@@ -836,7 +992,6 @@
     chooser.addEventListener('change', () => show(Number(chooser.value)));
   }
   state.show = show;
-  state.helpers = { el, number, numberCell, vectorText, table, setLegend, setNotes, buildMesh, showMesh, equivalentBox, principalOf, boxObject, centreMarker, makeSelectable, sphereOf, select, viewer, vector, setOrigin: (o) => (origin = o) };
   show(0);
   state.ready = true;
 })();
