@@ -16,6 +16,7 @@ screenshots are kept in the work folder (the test's artefacts).
 import json
 import math
 import os
+import struct
 import subprocess
 import sys
 import time
@@ -51,6 +52,33 @@ def write_obj(path, vertices, faces):
     lines = [f"v {x!r} {y!r} {z!r}" for x, y, z in vertices]
     lines += ["f " + " ".join(str(v + 1) for v in face) for face in faces]
     path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def sphere_triangles(rings, segments):
+    """A unit sphere's triangles, counter-clockwise seen from outside."""
+
+    def point(i, j):
+        theta, phi = math.pi * i / rings, 2 * math.pi * j / segments
+        return (math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta))
+
+    triangles = []
+    for i in range(rings):
+        for j in range(segments):
+            a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
+            if i > 0:
+                triangles.append((a, b, d))
+            if i < rings - 1:
+                triangles.append((b, c, d))
+    return triangles
+
+
+def write_binary_stl(path, triangles):
+    record = struct.Struct("<12fH")
+    with open(path, "wb") as out:
+        out.write(b"\0" * 80 + struct.pack("<I", len(triangles)))
+        for a, b, c in triangles:
+            out.write(record.pack(0.0, 0.0, 0.0, *a, *b, *c, 0))
     return path
 
 
@@ -380,6 +408,22 @@ class ReportPages(unittest.TestCase):
         shown = page.evaluate("document.getElementById('details').textContent")
         self.assertIn("equivalent inertia box", shown)
         self.screenshot(page, "properties_box.png")
+
+    def test_large_mesh_is_drawn_decimated(self):
+        # A sphere of 208,656 triangles: past the 200,000 the page draws.
+        triangles = sphere_triangles(323, 324)
+        mesh = write_binary_stl(WORK / "sphere.stl", triangles)
+        page_path = WORK / "properties_sphere.html"
+        # The topology checks (slow in a Debug build) are not what is tested.
+        run("--no-check", "--html", page_path, mesh, expect=0)
+        page = self.load(page_path)
+        self.assert_drawn(page)
+        (note,) = page.evaluate("window.polymass.notes")
+        self.assertIn(f"of {len(triangles):,} triangles", note)
+        shown = int(note.split(" ")[2].replace(",", ""))
+        self.assertLessEqual(shown, 200000)
+        self.assertGreater(shown, 50000)
+        self.screenshot(page, "properties_sphere.png")
 
     # ---- polymass audit --html ---------------------------------------------------
 

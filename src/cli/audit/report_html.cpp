@@ -53,7 +53,7 @@ public:
         Json view;
         try {
             const Model model = read_mesh_file(resolved.path, "");
-            view = mesh_view(page_, model, combined_part(model), {}, {});
+            view = mesh_view(page_, model, combined_part(model), {}, Located{});
         } catch (const ReadError& error) {
             view = {{"error", error.what()}};
         }

@@ -253,17 +253,22 @@ Json answer_json(const SolidResult& answer) {
             {"option", answer.answering_option}};
 }
 
-// The faces the findings name, which the --html page draws exactly.
-std::vector<uint64_t> located_faces(const polymass_diagnostics& d) {
-    std::vector<uint64_t> faces;
+// The edges' vertices and the faces the findings name, which the --html
+// page draws exactly.
+Located located_by(const polymass_diagnostics& d) {
+    Located located;
     for (const Finding& finding : findings_of(d)) {
-        if (finding.where != Where::kFace && finding.where != Where::kFacePair) continue;
+        std::vector<uint64_t>& list =
+            finding.where == Where::kEdge ? located.vertices : located.faces;
+        if (finding.where != Where::kEdge && finding.where != Where::kFace &&
+            finding.where != Where::kFacePair)
+            continue;
         for (const auto& location : finding.locations) {
-            faces.push_back(location[0]);
-            if (finding.where == Where::kFacePair) faces.push_back(location[1]);
+            list.push_back(location[0]);
+            if (finding.where != Where::kFace) list.push_back(location[1]);
         }
     }
-    return faces;
+    return located;
 }
 
 }  // namespace
@@ -312,8 +317,10 @@ ExitCode run_check(const Arguments& arguments) {
             reports.back()["answer"] = answer_json(answer);
         }
         if (html) {
-            meshes.push_back(
-                mesh_view(page, model, all, shells.of_face, located_faces(check.diagnostics)));
+            // Each face's shell only when there are several to tell apart.
+            meshes.push_back(mesh_view(page, model, all,
+                                       shell_count > 1 ? shells.of_face : std::vector<uint32_t>(),
+                                       located_by(check.diagnostics)));
         }
         if (!as_json) {
             write_text(body, path, model, check, shells);

@@ -63,6 +63,15 @@ FileReport process_file(const Library& library, const std::string& path, const A
     return report;
 }
 
+// The holes a repair capped, each located by its lowest vertex: drawn on
+// the --html page.
+Located capped_holes(const polymass_provenance& provenance) {
+    Located located;
+    for (const uint64_t vertex : provenance.first_holes)
+        if (vertex != POLYMASS_NONE) located.vertices.push_back(vertex);
+    return located;
+}
+
 }  // namespace
 
 void prepare_model(Model& model, const Arguments& arguments) {
@@ -112,7 +121,8 @@ ExitCode run_properties(const Arguments& arguments) {
         files.push_back(process_file(library, path, arguments, mass, model));
         const FileReport& file = files.back();
         if (!arguments.html.empty())
-            meshes.push_back(file.readable ? mesh_view(page, model, combined_part(model), {}, {})
+            meshes.push_back(file.readable ? mesh_view(page, model, combined_part(model), {},
+                                                       capped_holes(file.solid.result.provenance))
                                            : Json());
         if (arguments.timings && file.readable) {
             std::cerr << "polymass: " << path << ": read " << file.read_seconds << " s, compute "

@@ -107,8 +107,7 @@ Triangles decimated(const Model& model, const Triangles& triangles, const Box& b
 }  // namespace
 
 Json mesh_view(HtmlPage& page, const Model& model, const Part& part,
-               const std::vector<uint32_t>& shell_of_face,
-               const std::vector<uint64_t>& located_faces) {
+               const std::vector<uint32_t>& shell_of_face, const Located& located) {
     Triangles triangles = fan_triangles(model, part);
     const uint64_t triangle_count = triangles.faces.size();
     const Box box = bounds(model, triangles);
@@ -117,9 +116,18 @@ Json mesh_view(HtmlPage& page, const Model& model, const Part& part,
 
     std::array<double, 3> origin{};
     for (int axis = 0; axis < 3; ++axis) origin[axis] = 0.5 * (box.min[axis] + box.max[axis]);
-    std::vector<float> positions(model.positions.size());
-    for (size_t i = 0; i < positions.size(); ++i)
-        positions[i] = float(model.positions[i] - origin[i % 3]);
+    // The corners renumbered in the order the triangles first use them.
+    std::unordered_map<uint32_t, uint32_t> shown;
+    std::vector<float> positions;
+    for (uint32_t& corner : triangles.corners) {
+        const auto [at, added] = shown.emplace(corner, uint32_t(shown.size()));
+        if (added) {
+            for (int axis = 0; axis < 3; ++axis)
+                positions.push_back(
+                    float(model.positions[3 * size_t(corner) + axis] - origin[axis]));
+        }
+        corner = at->second;
+    }
 
     Json view = Json::object();
     view["origin"] = json_numbers(origin.data(), 3);
@@ -136,13 +144,24 @@ Json mesh_view(HtmlPage& page, const Model& model, const Part& part,
     std::vector<size_t> face_start(part.face_sizes.size() + 1, 0);
     for (size_t face = 0; face < part.face_sizes.size(); ++face)
         face_start[face + 1] = face_start[face] + part.face_sizes[face];
-    Json located = Json::object();
-    for (const uint64_t face : located_faces) {
+    Json faces = Json::object();
+    std::vector<uint64_t> vertices = located.vertices;
+    for (const uint64_t face : located.faces) {
         if (face >= part.face_sizes.size()) continue;
-        located[std::to_string(face)] = std::vector<uint32_t>(
-            part.indices.begin() + face_start[face], part.indices.begin() + face_start[face + 1]);
+        const std::vector<uint32_t> corners(part.indices.begin() + face_start[face],
+                                            part.indices.begin() + face_start[face + 1]);
+        faces[std::to_string(face)] = corners;
+        vertices.insert(vertices.end(), corners.begin(), corners.end());
     }
-    view["located_faces"] = located;
+    Json points = Json::object();
+    for (const uint64_t v : vertices) {
+        if (v >= model.vertex_count()) continue;
+        const double* p = &model.positions[3 * v];
+        const double relative[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
+        points[std::to_string(v)] = json_numbers(relative, 3);
+    }
+    view["located_faces"] = faces;
+    view["located_vertices"] = points;
     return view;
 }
 

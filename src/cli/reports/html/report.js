@@ -255,9 +255,15 @@
       wireframe,
       triangleFaces: uint32s(mesh.triangle_faces),
       faceShells: mesh.face_shells ? uint32s(mesh.face_shells) : null,
+      // A shown corner (a triangles index), in scene coordinates.
+      corner(i) {
+        return [positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]];
+      },
+      // A vertex a finding names (by the file's number), in scene
+      // coordinates; null for one the page was not given.
       point(v) {
-        const i = 3 * v;
-        return i + 2 < positions.length ? [positions[i], positions[i + 1], positions[i + 2]] : null;
+        const p = mesh.located_vertices[String(v)];
+        return p ? p.map((x, axis) => x + shift[axis]) : null;
       },
     };
   }
@@ -308,7 +314,7 @@
   // ConvexBufferGeometry), drawn over the mesh when the hull answered.
   function hullObject(view) {
     const used = new Set(view.geometry.index.array);
-    const points = [...used].map((v) => new THREE.Vector3(...view.point(v)));
+    const points = [...used].map((i) => new THREE.Vector3(...view.corner(i)));
     const group = new THREE.Group();
     const geometry = new THREE.ConvexBufferGeometry(points);
     group.add(
@@ -368,12 +374,13 @@
     return sphere;
   }
 
-  // Triangles (fans of the polygons given as corner lists) as one mesh;
-  // polygons with a corner the mesh lacks are left out.
-  function polygons(view, corners, material) {
+  // Triangles (fans of the polygons given as corner lists, each corner's
+  // point by pointOf) as one mesh; polygons with a corner the mesh lacks are
+  // left out.
+  function polygons(pointOf, corners, material) {
     const vertices = [];
     for (const polygon of corners) {
-      const points = polygon.map((v) => view.point(v));
+      const points = polygon.map(pointOf);
       if (points.length < 3 || points.some((p) => !p || p.some((x) => !Number.isFinite(x)))) continue;
       for (let k = 1; k + 1 < points.length; k++) vertices.push(...points[0], ...points[k], ...points[k + 1]);
     }
@@ -382,7 +389,7 @@
     return new THREE.Mesh(geometry, material);
   }
 
-  // The shown triangles of a shell.
+  // The shown triangles of a shell, as corners.
   function shellTriangles(view, shell) {
     const index = view.geometry.index.array;
     const corners = [];
@@ -513,13 +520,13 @@
     } else if (finding.where === 'face' || finding.where === 'pair') {
       const faces = finding.where === 'pair' ? location : [location];
       faces.forEach((face, i) => {
-        const mesh = polygons(view, [located(face)], overlayMaterial(i === 0 ? colour : SECOND_FACE_COLOUR, 0.8));
+        const mesh = polygons(view.point, [located(face)], overlayMaterial(i === 0 ? colour : SECOND_FACE_COLOUR, 0.8));
         if (mesh.geometry.attributes.position.count > 0) objects.push(mesh);
       });
       points = faces.flatMap((face) => located(face).map((v) => view.point(v)).filter(Boolean));
     } else if (finding.where === 'shell' && view.faceShells) {
       const material = overlayMaterial(colour, 0.45);
-      objects.push(polygons(view, shellTriangles(view, location), material));
+      objects.push(polygons(view.corner, shellTriangles(view, location), material));
     }
     const sceneToFile = (p) => p.map((x, axis) => x + origin[axis]);
     state.drawn.push({ key: finding.key, index: state.drawn.filter((d) => d.key === finding.key).length, what: finding.where, location, points: points.map(sceneToFile) });
@@ -610,7 +617,7 @@
           numberCell(shell.first_face),
           numberCell(shell.signed_volume)
         );
-        const objects = view && view.faceShells ? [polygons(view, shellTriangles(view, index), overlayMaterial('#1f6fd1', 0.35))] : [];
+        const objects = view && view.faceShells ? [polygons(view.corner, shellTriangles(view, index), overlayMaterial('#1f6fd1', 0.35))] : [];
         objects.forEach((object) => {
           object.visible = false; // shown when its row is selected
           viewer.content.add(object);
