@@ -16,7 +16,6 @@ screenshots are kept in the work folder (the test's artefacts).
 import json
 import math
 import os
-import struct
 import subprocess
 import sys
 import time
@@ -25,6 +24,7 @@ from pathlib import Path
 from typing import ClassVar
 
 from chromium import Chromium
+from meshes import sphere_triangles, write_binary_stl
 
 EXE = os.environ["POLYMASS_EXE"]
 WORK = Path(os.environ["POLYMASS_WORK_DIR"])
@@ -36,8 +36,11 @@ OPEN_EDGE_RGB = (0xE6, 0x19, 0x4B)
 
 
 def run(*args, expect=None):
+    """polymass in the work folder, its files named from there (the pages,
+    and their screenshots, show short names)."""
+    names = [str(a.relative_to(WORK)) if isinstance(a, Path) else str(a) for a in args]
     result = subprocess.run(
-        [EXE, *map(str, args)], capture_output=True, text=True, timeout=120, check=False
+        [EXE, *names], capture_output=True, text=True, timeout=120, check=False, cwd=WORK
     )
     assert result.returncode >= 0, f"polymass {args} crashed: {result.returncode}\n{result.stderr}"
     if expect is not None:
@@ -52,33 +55,6 @@ def write_obj(path, vertices, faces):
     lines = [f"v {x!r} {y!r} {z!r}" for x, y, z in vertices]
     lines += ["f " + " ".join(str(v + 1) for v in face) for face in faces]
     path.write_text("\n".join(lines) + "\n")
-    return path
-
-
-def sphere_triangles(rings, segments):
-    """A unit sphere's triangles, counter-clockwise seen from outside."""
-
-    def point(i, j):
-        theta, phi = math.pi * i / rings, 2 * math.pi * j / segments
-        return (math.sin(theta) * math.cos(phi), math.sin(theta) * math.sin(phi), math.cos(theta))
-
-    triangles = []
-    for i in range(rings):
-        for j in range(segments):
-            a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
-            if i > 0:
-                triangles.append((a, b, d))
-            if i < rings - 1:
-                triangles.append((b, c, d))
-    return triangles
-
-
-def write_binary_stl(path, triangles):
-    record = struct.Struct("<12fH")
-    with open(path, "wb") as out:
-        out.write(b"\0" * 80 + struct.pack("<I", len(triangles)))
-        for a, b, c in triangles:
-            out.write(record.pack(0.0, 0.0, 0.0, *a, *b, *c, 0))
     return path
 
 
@@ -408,6 +384,17 @@ class ReportPages(unittest.TestCase):
         shown = page.evaluate("document.getElementById('details').textContent")
         self.assertIn("equivalent inertia box", shown)
         self.screenshot(page, "properties_box.png")
+
+    def test_properties_page_of_an_open_mesh_says_why(self):
+        vertices, faces = boxes(((0, 0, 0), (1, 1, 1)))
+        mesh = write_obj(WORK / "open_cube.obj", vertices, faces[1:])
+        page_path = WORK / "properties_open.html"
+        run("--html", page_path, mesh, expect=1)
+        page = self.load(page_path)
+        self.assert_drawn(page)  # the mesh, with no answer to draw
+        self.assertEqual(page.evaluate("window.polymass.boxes"), [])
+        status = page.evaluate("document.getElementById('summary').textContent")
+        self.assertIn("open: ", status)
 
     def test_large_mesh_is_drawn_decimated(self):
         # A sphere of 208,656 triangles: past the 200,000 the page draws.

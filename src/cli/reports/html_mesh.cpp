@@ -95,7 +95,8 @@ Triangles clustered(const Model& model, const Triangles& triangles, const Box& b
 Triangles decimated(const Model& model, const Triangles& triangles, const Box& box) {
     double extent = 0.0;
     for (int axis = 0; axis < 3; ++axis) extent = std::max(extent, box.max[axis] - box.min[axis]);
-    double cell = extent / std::sqrt(double(kMaxShownTriangles) / 4.0);
+    // A mesh of one point (every vertex in one place) is one cell.
+    double cell = (extent > 0.0 ? extent : 1.0) / std::sqrt(double(kMaxShownTriangles) / 4.0);
     Triangles kept = clustered(model, triangles, box, cell);
     while (kept.faces.size() > kMaxShownTriangles) {
         cell *= std::max(1.1, std::sqrt(double(kept.faces.size()) / kMaxShownTriangles));

@@ -746,13 +746,15 @@
   function showProperties(file, mesh) {
     const summary = document.getElementById('summary');
     const details = document.getElementById('details');
+    const view = mesh ? buildMesh(mesh, { opacity: file.error ? 1 : 0.4 }) : null;
+    if (view) showMesh(view);
+    setNotes(decimationNote(mesh));
     if (file.error) {
-      summary.replaceChildren(el('div', { class: 'status bad' }, (file.error.category || 'error') + ': ' + file.error.message));
+      // Unreadable, or not a valid solid: the mesh (when read) and why.
+      summary.replaceChildren(el('div', { class: 'status bad' }, file.error.category + ': ' + file.error.message));
       details.replaceChildren();
       return;
     }
-    const view = mesh ? buildMesh(mesh, { opacity: 0.4 }) : null;
-    if (view) showMesh(view);
     const radius = view ? view.geometry.boundingSphere.radius : 1;
     summary.replaceChildren(
       el('div', { class: 'status good' }, plural(file.faces, 'face') + ', mass ' + number(file.mass) + ', volume ' + number(file.volume)),
@@ -767,11 +769,6 @@
           el('tr', {}, el('td', {}, part.name), numberCell(part.faces), numberCell(part.mass), el('td', { class: 'mono' }, part.center_of_mass ? vectorText(part.center_of_mass) : (part.error ? part.error.message : '—'))))
         )
       );
-    }
-    if (file.error_bound === undefined) {
-      // The whole file is not a solid: its error, nothing to draw but the mesh.
-      details.replaceChildren(el('div', { class: 'status bad' }, file.error ? file.error.message : ''), ...parts);
-      return;
     }
     const box = equivalentBox(file.mass, file.principal_moments);
     const boxObjectDrawn = boxObject(box, file.center_of_mass, file.principal_axes, '#1f6fd1', { which: 'computed' });
@@ -798,7 +795,6 @@
     }
     details.replaceChildren(el('h2', {}, 'Mass properties'), propertiesTable(file, box, file.length_unit), ...parts);
     setLegend(legend);
-    setNotes(decimationNote(mesh));
   }
 
 
