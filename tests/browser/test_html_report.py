@@ -396,6 +396,24 @@ class ReportPages(unittest.TestCase):
         status = page.evaluate("document.getElementById('summary').textContent")
         self.assertIn("open: ", status)
 
+    def test_repaired_and_hull_answers_are_drawn(self):
+        # A box with a side missing: --repair caps the hole, --hull covers it.
+        vertices, faces = boxes(((0, 0, 0), (1, 2, 3)))
+        mesh = write_obj(WORK / "open_box_2.obj", vertices, faces[:-1])
+        repaired, hull = WORK / "properties_repaired.html", WORK / "check_hull.html"
+        run("--repair", "--html", repaired, mesh, expect=0)
+        run("check", "--hull", "--html", hull, mesh, expect=1)
+        report = json.loads(run("--repair", "--json", mesh, expect=0).stdout)
+        holes = report["provenance"]["repairs"]["holes"]
+        self.assertEqual(holes["count"], 1)
+        page = self.load(repaired)
+        legend = page.evaluate("document.getElementById('legend').textContent")
+        self.assertIn("capped hole", legend)
+        page = self.load(hull)
+        self.assertIn("convex hull", page.evaluate("document.getElementById('legend').textContent"))
+        self.assertIn("Hull", page.evaluate("document.getElementById('toolbar').textContent"))
+        self.assert_drawn(page)
+
     def test_large_mesh_is_drawn_decimated(self):
         # A sphere of 208,656 triangles: past the 200,000 the page draws.
         triangles = sphere_triangles(323, 324)

@@ -784,10 +784,10 @@
       toggle('Hull (the answer)', hull, true);
       legend.push(['#2e9e5b', 'convex hull (the answer)']);
     }
-    if (view && provenance.mode === 'repair' && provenance.repairs.holes && provenance.repairs.holes.count > 0) {
+    if (view && provenance.mode === 'repaired' && provenance.repairs.holes) {
       // The library locates each capped hole by its lowest vertex.
       const material = overlayMaterial('#e6194b');
-      for (const v of provenance.repairs.holes.first) {
+      for (const [v] of provenance.repairs.holes.first) {
         const p = view.point(v);
         if (p) viewer.content.add(dot(new THREE.Vector3(...p), 0.025 * radius, material));
       }
