@@ -480,7 +480,7 @@
     return view && view.faceShells && face < view.faceShells.length ? view.faceShells[face] : null;
   }
 
-  function locationText(finding, location, index, view) {
+  function locationText(finding, location, view) {
     const vertexText = (v) => {
       const p = view && view.point(v);
       return 'vertex ' + v + (p ? ' ' + vectorText(p.map((x, axis) => x + origin[axis])) : '');
@@ -581,7 +581,7 @@
       );
       rows.push(kindRow);
       const all = [];
-      finding.locations.forEach((location, index) => {
+      finding.locations.forEach((location) => {
         const objects = view ? drawLocation(view, finding, location, 0.006 * radius) : [];
         objects.forEach((object) => viewer.content.add(object));
         all.push(...objects);
@@ -590,7 +590,7 @@
           { class: 'location-row', dataset: { key: finding.key, location: JSON.stringify(location) } },
           el('td', {}),
           el('td', {}),
-          el('td', { class: 'mono' }, locationText(finding, location, index, view))
+          el('td', { class: 'mono' }, locationText(finding, location, view))
         );
         rows.push(row);
         makeSelectable(row, objects, objects.length ? sphereOf(objects, 0.12 * radius) : null);
@@ -771,8 +771,7 @@
       );
     }
     const box = equivalentBox(file.mass, file.principal_moments);
-    const boxObjectDrawn = boxObject(box, file.center_of_mass, file.principal_axes, '#1f6fd1', { which: 'computed' });
-    viewer.content.add(boxObjectDrawn);
+    viewer.content.add(boxObject(box, file.center_of_mass, file.principal_axes, '#1f6fd1', { which: 'computed' }));
     viewer.content.add(centreMarker(file.center_of_mass, 0.02 * radius, '#111111'));
     const lengths = box.sides.map((s) => Math.max(0.75 * s, 0.25 * radius));
     viewer.content.add(axesObject(file.center_of_mass, file.principal_axes, lengths));
@@ -885,7 +884,7 @@
     return group;
   }
 
-  function linkRow(link, report, onSelect) {
+  function linkRow(link) {
     const findings = [...link.findings].sort((a, b) => SEVERITY_RANK[b.severity] - SEVERITY_RANK[a.severity]);
     const declared = link.declared;
     const computed = link.computed;
