@@ -105,6 +105,16 @@
 
   // ---- the 3D view --------------------------------------------------------
 
+  const DEFAULT_DIRECTION = new THREE.Vector3(1.0, -1.4, 0.9).normalize();
+
+  // The default view, turned towards a side of the model where there is
+  // something to see (the findings' middle, seen from outside).
+  function lookTowards(point, center) {
+    const side = point.clone().sub(center);
+    if (side.length() === 0) return DEFAULT_DIRECTION.clone();
+    return side.normalize().add(DEFAULT_DIRECTION.clone().multiplyScalar(0.6)).normalize();
+  }
+
   class Viewer {
     constructor(canvas) {
       this.canvas = canvas;
@@ -124,6 +134,7 @@
       this.controls = new THREE.OrbitControls(this.camera, canvas);
       this.controls.addEventListener('change', () => this.render());
       this.home = new THREE.Sphere(new THREE.Vector3(), 1);
+      this.homeDirection = DEFAULT_DIRECTION.clone();
       new ResizeObserver(() => this.resize()).observe(canvas);
       window.addEventListener('keydown', (event) => {
         if (event.key === 'r' && event.target === document.body) this.frame(this.home, true);
@@ -152,9 +163,7 @@
     // Points the camera at sphere, from the default direction when reset.
     frame(sphere, reset) {
       const radius = Math.max(sphere.radius, 1e-9);
-      const direction = reset
-        ? new THREE.Vector3(1.0, -1.4, 0.9).normalize()
-        : this.camera.position.clone().sub(this.controls.target).normalize();
+      const direction = reset ? this.homeDirection.clone() : this.camera.position.clone().sub(this.controls.target).normalize();
       const fov = (this.camera.fov * Math.PI) / 180;
       const distance = (1.15 * radius) / Math.sin(fov / 2) / Math.min(1, this.camera.aspect);
       this.controls.target.copy(sphere.center);
@@ -639,6 +648,8 @@
     legend.push(['#' + BACK_COLOUR.toString(16), 'inside of the surface']);
     setLegend(legend);
     setNotes(decimationNote(mesh));
+    const found = selectable.flatMap((entry) => (entry.row.classList.contains('kind-row') ? entry.objects : []));
+    if (view && found.length) viewer.homeDirection = lookTowards(sphereOf(found, 0).center, view.geometry.boundingSphere.center);
   }
 
   // ---- equivalent inertia boxes -------------------------------------------
@@ -968,6 +979,7 @@
     meshViews.length = 0;
     viewer.clear();
     document.getElementById('toolbar-extra').replaceChildren();
+    viewer.homeDirection = DEFAULT_DIRECTION.clone();
     const files = fileList();
     const file = files[index];
     const mesh = data.meshes ? data.meshes[index] : null;
