@@ -472,6 +472,24 @@ class ReportPages(unittest.TestCase):
                     self.assertAlmostEqual(got, expect, places=9)
         self.screenshot(page, "audit_chain.png")
 
+    def test_audit_page_says_a_box_side_is_clamped(self):
+        # Declared moments 0.1, 0.1, 1: 0.1 + 0.1 < 1, no box has them.
+        description = WORK / "unphysical.urdf"
+        description.write_text(
+            '<robot name="r"><link name="base"><inertial><mass value="1"/>'
+            '<inertia ixx="0.1" iyy="0.1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>'
+            '<collision><geometry><box size="1 1 1"/></geometry></collision></link></robot>\n'
+        )
+        page_path = WORK / "audit_unphysical.html"
+        run("audit", "--html", page_path, description, expect=1)
+        page = self.load(page_path)
+        boxes = {b["which"]: b for b in page.evaluate("window.polymass.boxes")}
+        self.assertEqual(boxes["declared"]["clamped"], [False, False, True])
+        self.assertEqual(boxes["declared"]["sides"][2], 0)
+        self.assertEqual(boxes["computed"]["clamped"], [False, False, False])
+        (note,) = page.evaluate("window.polymass.notes")
+        self.assertIn("base: the declared inertia box has a side clamped to 0", note)
+
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

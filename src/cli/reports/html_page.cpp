@@ -2,6 +2,7 @@
 
 #include <polymass/polymass.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <iostream>

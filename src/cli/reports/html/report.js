@@ -885,9 +885,12 @@
 
   // A link's declared or computed inertial drawn in the world: its centre
   // of mass and equivalent inertia box.
-  function inertialObjects(name, which, inertial, frame, colour, size) {
+  function inertialObjects(name, which, inertial, frame, colour, size, notes) {
     const { moments, axes } = principalOf(inertial.inertia);
     const box = equivalentBox(inertial.mass, moments);
+    if (box.clamped.some(Boolean)) {
+      notes.push(name + ': the ' + which + ' inertia box has a side clamped to 0: its principal moments break the triangle inequality (Iⱼ + Iₖ < Iᵢ)');
+    }
     const center = applyPose(frame, inertial.center_of_mass);
     const group = new THREE.Group();
     group.add(boxObject(box, center, axes.map((axis) => rotate(frame, axis)), colour, { link: name, which, moments }));
@@ -948,8 +951,8 @@
       const { link, drawn, objects } = placed[i];
       const frame = drawn.frame || IDENTITY_POSE;
       const inertials = [];
-      if (link.declared && link.declared.mass > 0) inertials.push(inertialObjects(link.name, 'declared', link.declared, frame, DECLARED_COLOUR, 0.012 * extent));
-      if (link.computed) inertials.push(inertialObjects(link.name, 'computed', link.computed, frame, COMPUTED_COLOUR, 0.012 * extent));
+      if (link.declared && link.declared.mass > 0) inertials.push(inertialObjects(link.name, 'declared', link.declared, frame, DECLARED_COLOUR, 0.012 * extent, notes));
+      if (link.computed) inertials.push(inertialObjects(link.name, 'computed', link.computed, frame, COMPUTED_COLOUR, 0.012 * extent, notes));
       inertials.forEach((object) => viewer.content.add(object));
       const row = linkRow(link);
       const all = [...objects, ...inertials];
