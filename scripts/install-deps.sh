@@ -23,6 +23,8 @@ packages=(
     libtinygltf-dev lib3mf-dev             # the polymass CLI: glTF/GLB and 3MF readers
     libzip-dev                             # the polymass CLI: a 3MF's declared sizes (zip bombs)
     libassimp-dev                          # the polymass CLI: Collada (.dae) reader
+    libjs-three                            # the polymass CLI: three.js, embedded in --html pages
+    chromium                               # tests/browser: the --html pages in headless Chromium
     debhelper lintian help2man             # the Debian package (debian/): dh, lintian, its man page
     "$@"
 )

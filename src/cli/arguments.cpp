@@ -117,6 +117,11 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
         ->group(kOutput);
     app.add_flag("--sdf", raw.sdf, "SDFormat <inertial> with <pose>")->group(kOutput);
     app.add_flag("--mjcf", raw.mjcf, "MuJoCo <inertial pos mass fullinertia>")->group(kOutput);
+    app.add_option("--html", arguments.html,
+                   "also write a page that draws the result (one file that opens\n"
+                   "offline in a browser: the mesh, what check found, the inertia)")
+        ->group(kOutput)
+        ->option_text("REPORT.html");
     app.add_option("--origin", raw.origin,
                    "--urdf/--sdf/--mjcf: the link frame's origin in the file's frame\n"
                    "(output units); the inertial's origin is the centre of mass minus it")
@@ -300,6 +305,7 @@ void refuse_assembly_settings(const RawOptions& raw, const Arguments& arguments)
                                                      {!raw.units.empty(), "--units"},
                                                      {!raw.scale.empty(), "--scale"},
                                                      {!arguments.format.empty(), "--format"}};
+    if (!arguments.html.empty()) throw UsageError("polymass assembly writes no --html page");
     for (const auto& [given, option] : per_part) {
         if (given) {
             throw UsageError(std::string("polymass assembly: ") + option +
@@ -310,9 +316,14 @@ void refuse_assembly_settings(const RawOptions& raw, const Arguments& arguments)
 
 // polymass audit's options: its own, and --json and --density shared with
 // the other commands' RawOptions.
-void add_audit_options(CLI::App& app, RawOptions& raw, AuditArguments& audit) {
+void add_audit_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
+    AuditArguments& audit = arguments.audit;
     app.add_option("FILE", raw.files, "URDF, SDFormat or MJCF files")->option_text(" ");
     app.add_flag("--json", raw.json, "JSON (schema in the README)");
+    app.add_option("--html", arguments.html,
+                   "also write a page that draws each robot: its links' geometry,\n"
+                   "declared and computed inertia boxes, findings (opens offline)")
+        ->option_text("REPORT.html");
     app.add_option("--from", raw.from, "the geometry measured (default collision)")
         ->check(CLI::IsMember({"collision", "visual"}))
         ->option_text("collision|visual");
@@ -403,7 +414,7 @@ struct CommandLine {
                                    "check (and --fix) the inertials of URDF, SDFormat and MJCF "
                                    "robot descriptions against their geometry");
         audit->footer(kAuditFooter);
-        add_audit_options(*audit, raw, arguments.audit);
+        add_audit_options(*audit, raw, arguments);
     }
 };
 

@@ -51,6 +51,7 @@ struct Arguments {
     bool no_check = false;
     bool no_intersection_check = false;
     bool timings = false;
+    std::string html;  // --html REPORT.html: empty for none
     double weld_tolerance = 1e-9;
     double planarity_tolerance = 0.0;  // 0: the library's default
     uint32_t threads = 0;              // --threads N; 0: all cores

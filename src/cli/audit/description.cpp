@@ -5,6 +5,10 @@
 
 namespace polymass_cli::audit {
 
+Pose compose(const Pose& parent, const Pose& child) {
+    return {parent.rotation * child.rotation, parent.rotation * child.position + parent.position};
+}
+
 const char* format_name(Format format) {
     switch (format) {
         case Format::kUrdf:

@@ -20,6 +20,9 @@ struct Pose {
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
 };
 
+// The placement of a frame placed by child in a frame placed by parent.
+Pose compose(const Pose& parent, const Pose& child);
+
 enum class Shape { kMesh, kBox, kCylinder, kSphere, kCapsule, kEllipsoid };
 
 struct Geometry {
@@ -59,6 +62,12 @@ struct Link {
     // Geometries the description has but the audit cannot measure (an
     // MJCF plane or height field, a pose relative to another frame): said.
     std::vector<std::string> unsupported;
+    // The link frame in the description's frame with every joint at zero
+    // (URDF: its joints' origins from the root; SDFormat: the link's pose in
+    // its model; MJCF: the bodies' pos and orientation), for the --html
+    // page; empty when the description does not say (a pose relative to
+    // another frame, a link no joint reaches from the root).
+    std::optional<Pose> frame;
 };
 
 enum class Format { kUrdf, kSdf, kMjcf };

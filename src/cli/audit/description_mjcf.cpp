@@ -79,7 +79,8 @@ public:
             }
         });
         for_each_child(root, main_, 0, [&](const pugi::xml_node& node, const XmlFile& source) {
-            if (std::string(node.name()) == "worldbody") read_bodies(node, source, "main", 0);
+            if (std::string(node.name()) == "worldbody")
+                read_bodies(node, source, "main", 0, Pose{});
         });
         return std::move(description_);
     }
@@ -242,8 +243,10 @@ private:
         meshes_[name] = mesh;
     }
 
+    // frame: the parent body's frame in the world's, at zero joint
+    // positions (empty when a pos or orientation above cannot be read).
     void read_bodies(const pugi::xml_node& parent, const XmlFile& source, const std::string& cls,
-                     int depth) {
+                     int depth, const std::optional<Pose>& frame) {
         for_each_child(parent, source, depth, [&](const pugi::xml_node& node, const XmlFile& in) {
             const std::string name = node.name();
             if (name != "body" && name != "frame") return;
@@ -253,15 +256,32 @@ private:
                 throw DescriptionError(main_.path + ": bodies and frames nested more than " +
                                        std::to_string(kDeepestBody) + " deep");
             }
-            if (name == "body") read_body(node, in, child_class, depth);
-            read_bodies(node, in, child_class, depth);
+            const std::optional<Pose> placed = placed_in(node, frame, child_class);
+            if (name == "body") read_body(node, in, child_class, depth, placed);
+            read_bodies(node, in, child_class, depth, placed);
             --body_depth_;
         });
     }
 
+    // A body's or frame's placement in frame by its pos and orientation.
+    std::optional<Pose> placed_in(const pugi::xml_node& node, const std::optional<Pose>& frame,
+                                  const std::string& cls) const {
+        if (!frame) return std::nullopt;
+        Pose pose;
+        try {
+            pose.rotation = orientation(node, cls, describe(node));
+            pose.position =
+                vector(lookup(node, "pos", cls), Eigen::Vector3d::Zero(), describe(node) + " pos");
+        } catch (const DescriptionError&) {
+            return std::nullopt;  // the audit reads no body placement: the page draws it unplaced
+        }
+        return compose(*frame, pose);
+    }
+
     void read_body(const pugi::xml_node& node, const XmlFile& source, const std::string& cls,
-                   int depth) {
+                   int depth, const std::optional<Pose>& frame) {
         Link link;
+        link.frame = frame;
         link.name = node.attribute("name").value();
         if (link.name.empty()) link.name = "body " + std::to_string(++unnamed_);
         const std::string what = "body '" + link.name + "'";

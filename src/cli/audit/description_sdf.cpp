@@ -121,12 +121,28 @@ bool geometry_of(const pugi::xml_node& element, const std::string& link, const s
     return true;
 }
 
+// The frame of a link or model whose <pose> is in the frame placed by
+// parent (its model's); empty when either is not known.
+std::optional<Pose> placed(const pugi::xml_node& element, const std::optional<Pose>& parent,
+                           const std::string& what) {
+    Pose pose;
+    try {
+        if (!parent || !pose_of(element, "", what, pose)) return std::nullopt;
+    } catch (const DescriptionError&) {
+        return std::nullopt;  // the link's own elements say what is wrong with them
+    }
+    return compose(*parent, pose);
+}
+
+// placement: the model frame in the description's (empty: not known, a
+// pose relative to another frame).
 void parse_model(const XmlFile& file, const pugi::xml_node& model, const std::string& prefix,
-                 Description& description) {
+                 const std::optional<Pose>& placement, Description& description) {
     for (const pugi::xml_node element : model.children("link")) {
         Link link;
         const std::string name = element.attribute("name").value();
         link.name = prefix + name;
+        link.frame = placed(element, placement, prefix + name);
         read_link_children(
             element,
             [&](const pugi::xml_node& inertial, const std::string& what) {
@@ -140,7 +156,9 @@ void parse_model(const XmlFile& file, const pugi::xml_node& model, const std::st
         description.links.push_back(std::move(link));
     }
     for (const pugi::xml_node nested : model.children("model")) {
-        parse_model(file, nested, prefix + nested.attribute("name").value() + "::", description);
+        const std::string name = nested.attribute("name").value();
+        parse_model(file, nested, prefix + name + "::", placed(nested, placement, name),
+                    description);
     }
 }
 
@@ -158,7 +176,7 @@ Description parse_sdf(const XmlFile& file) {
     for (const pugi::xml_node& model : models) {
         const std::string prefix =
             models.size() > 1 ? std::string(model.attribute("name").value()) + "::" : "";
-        parse_model(file, model, prefix, description);
+        parse_model(file, model, prefix, placed(model, Pose{}, prefix), description);
     }
     return description;
 }

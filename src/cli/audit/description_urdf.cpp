@@ -7,6 +7,10 @@
 #include "audit/description_parsers.hpp"
 #include "audit/frames.hpp"
 
+#include <map>
+#include <set>
+#include <utility>
+
 namespace polymass_cli::audit {
 namespace {
 
@@ -99,6 +103,44 @@ bool geometry_of(const pugi::xml_node& element, const std::string& what, Geometr
     return true;
 }
 
+// Each link's frame with every joint at zero: the joints' origins composed
+// from the root (a link no joint names as a child). A link reached twice, or
+// by no chain from a root, keeps no frame.
+void place_links(const pugi::xml_node& robot, Description& description) {
+    std::map<std::string, std::vector<std::pair<std::string, Pose>>> children;
+    std::set<std::string> child_links;
+    for (const pugi::xml_node joint : robot.children("joint")) {
+        const std::string parent = joint.child("parent").attribute("link").value();
+        const std::string child = joint.child("child").attribute("link").value();
+        Pose origin;
+        try {
+            origin = origin_of(joint, "joint");
+        } catch (const DescriptionError&) {
+            continue;  // the audit does not read joints: a bad one leaves its child unplaced
+        }
+        if (!child_links.insert(child).second) continue;
+        children[parent].emplace_back(child, origin);
+    }
+    std::map<std::string, Pose> frames;
+    std::vector<std::string> pending;
+    for (const Link& link : description.links) {
+        if (child_links.count(link.name) == 0 && frames.emplace(link.name, Pose{}).second)
+            pending.push_back(link.name);
+    }
+    while (!pending.empty()) {
+        const std::string parent = pending.back();
+        pending.pop_back();
+        for (const auto& [child, origin] : children[parent]) {
+            if (frames.emplace(child, compose(frames[parent], origin)).second)
+                pending.push_back(child);
+        }
+    }
+    for (Link& link : description.links) {
+        const auto found = frames.find(link.name);
+        if (found != frames.end()) link.frame = found->second;
+    }
+}
+
 }  // namespace
 
 Description parse_urdf(const XmlFile& file) {
@@ -115,6 +157,7 @@ Description parse_urdf(const XmlFile& file) {
             geometry_of, link);
         description.links.push_back(std::move(link));
     }
+    place_links(file.document.document_element(), description);
     return description;
 }
 

@@ -59,10 +59,11 @@ Json file_json(const FileAudit& file) {
 }  // namespace
 
 void write_audit_json(std::ostream& out, const std::vector<FileAudit>& files) {
-    if (files.size() == 1) {
-        print_json(out, file_json(files.front()));
-        return;
-    }
+    print_json(out, audit_json_document(files));
+}
+
+Json audit_json_document(const std::vector<FileAudit>& files) {
+    if (files.size() == 1) return file_json(files.front());
     Json all = Json::array();
     std::map<std::string, int> kinds;
     std::size_t links = 0, unreadable = 0;
@@ -78,7 +79,7 @@ void write_audit_json(std::ostream& out, const std::vector<FileAudit>& files) {
     document["files"] = all;
     document["summary"] = {
         {"files", files.size()}, {"unreadable", unreadable}, {"links", links}, {"findings", kinds}};
-    print_json(out, document);
+    return document;
 }
 
 }  // namespace polymass_cli::audit

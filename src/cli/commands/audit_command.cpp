@@ -39,6 +39,7 @@ ExitCode run_audit(const Arguments& arguments) {
     } else {
         write_audit_table(std::cout, files);
     }
+    if (!arguments.html.empty()) worst = std::max(worst, write_audit_html(arguments.html, files));
     if (!arguments.audit.fix.empty() && files.front().error.empty()) {
         FixSettings fix;
         if (arguments.density || arguments.audit.mass_from_geometry) fix.density = settings.density;

@@ -14,6 +14,8 @@
 #include "library/categories.hpp"
 #include "library/solid.hpp"
 #include "readers/mesh_reader.hpp"
+#include "reports/html_mesh.hpp"
+#include "reports/html_page.hpp"
 #include "reports/json_output.hpp"
 #include "reports/number_format.hpp"
 #include "reports/provenance.hpp"
@@ -251,11 +253,33 @@ Json answer_json(const SolidResult& answer) {
             {"option", answer.answering_option}};
 }
 
+// The edges' vertices and the faces the findings name, which the --html
+// page draws exactly.
+Located located_by(const polymass_diagnostics& d) {
+    Located located;
+    for (const Finding& finding : findings_of(d)) {
+        std::vector<uint64_t>& list =
+            finding.where == Where::kEdge ? located.vertices : located.faces;
+        if (finding.where != Where::kEdge && finding.where != Where::kFace &&
+            finding.where != Where::kFacePair)
+            continue;
+        for (const auto& location : finding.locations) {
+            list.push_back(location[0]);
+            if (finding.where != Where::kFace) list.push_back(location[1]);
+        }
+    }
+    return located;
+}
+
 }  // namespace
 
 ExitCode run_check(const Arguments& arguments) {
     const Library library(options_for(arguments));
     const bool as_json = arguments.output == OutputFormat::kJson;
+    // --html: the page draws each file's mesh beside what --json reports.
+    const bool html = !arguments.html.empty();
+    HtmlPage page("check");
+    Json meshes = Json::array();
     OutputText body;
     Json reports = Json::array();
     ExitCode worst = kExitOk;
@@ -267,11 +291,12 @@ ExitCode run_check(const Arguments& arguments) {
             worst = std::max(worst, kExitUnreadable);
             std::cerr << "polymass: " << path << ": " << kUnreadableCategory << ": " << error.what()
                       << '\n';
-            if (as_json) {
+            if (as_json || html) {
                 Json failure = Json::object();
                 failure["file"] = path;
                 failure["error"] = {{"category", kUnreadableCategory}, {"message", error.what()}};
                 reports.push_back(failure);
+                meshes.push_back(nullptr);
             }
             continue;
         }
@@ -287,19 +312,30 @@ ExitCode run_check(const Arguments& arguments) {
                                shell_list(library, model, all, shell_count)};
         const SolidResult answer = answer_of(library, model, all);
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
-        if (as_json) {
+        if (as_json || html) {
             reports.push_back(json_report(path, model, check, shells));
             reports.back()["answer"] = answer_json(answer);
-        } else {
+        }
+        if (html) {
+            // Each face's shell only when there are several to tell apart.
+            meshes.push_back(mesh_view(page, model, all,
+                                       shell_count > 1 ? shells.of_face : std::vector<uint32_t>(),
+                                       located_by(check.diagnostics)));
+        }
+        if (!as_json) {
             write_text(body, path, model, check, shells);
             body << "  " << answer_text(answer) << '\n';
         }
     }
-    if (as_json) {
-        // One file: its object; several: an array of them.
-        print_json(std::cout, arguments.files.size() == 1 ? reports.front() : reports);
-    } else {
-        std::cout << body.str();
+    if (!as_json) std::cout << body.str();
+    if (!as_json && !html) return worst;
+    // One file: its object; several: an array of them.
+    const Json& document = arguments.files.size() == 1 ? reports.front() : reports;
+    if (as_json) print_json(std::cout, document);
+    if (html) {
+        page.data()["report"] = document;
+        page.data()["meshes"] = meshes;
+        worst = std::max(worst, page.write(arguments.html));
     }
     return worst;
 }

@@ -8,6 +8,8 @@
 #include "commands/parts_report.hpp"
 #include "library/categories.hpp"
 #include "readers/mesh_reader.hpp"
+#include "reports/html_mesh.hpp"
+#include "reports/html_page.hpp"
 #include "reports/report.hpp"
 
 namespace polymass_cli {
@@ -28,12 +30,12 @@ PartReport solid_report(const Library& library, const Model& model, const Part& 
     return report;
 }
 
+// The file's report; model is the mesh as read (for the --html page).
 FileReport process_file(const Library& library, const std::string& path, const Arguments& arguments,
-                        const polymass_mass_desc& mass) {
+                        const polymass_mass_desc& mass, Model& model) {
     FileReport report;
     report.path = path;
     const auto read_start = std::chrono::steady_clock::now();
-    Model model;
     try {
         model = read_mesh_file(path, arguments.format);
     } catch (const ReadError& error) {
@@ -59,6 +61,15 @@ FileReport process_file(const Library& library, const std::string& path, const A
     }
     report.compute_seconds = seconds_since(compute_start);
     return report;
+}
+
+// The holes a repair capped, each located by its lowest vertex: drawn on
+// the --html page.
+Located capped_holes(const polymass_provenance& provenance) {
+    Located located;
+    for (const uint64_t vertex : provenance.first_holes)
+        if (vertex != POLYMASS_NONE) located.vertices.push_back(vertex);
+    return located;
 }
 
 }  // namespace
@@ -102,15 +113,38 @@ ExitCode run_properties(const Arguments& arguments) {
     }
 
     std::vector<FileReport> files;
+    // --html: the page draws each mesh with what --json reports of it.
+    HtmlPage page("properties");
+    Json meshes = Json::array();
     for (const std::string& path : arguments.files) {
-        files.push_back(process_file(library, path, arguments, mass));
+        Model model;
+        files.push_back(process_file(library, path, arguments, mass, model));
         const FileReport& file = files.back();
+        if (!arguments.html.empty())
+            meshes.push_back(file.readable ? mesh_view(page, model, combined_part(model), {},
+                                                       capped_holes(file.solid.result.provenance))
+                                           : Json());
         if (arguments.timings && file.readable) {
             std::cerr << "polymass: " << path << ": read " << file.read_seconds << " s, compute "
                       << file.compute_seconds << " s\n";
         }
     }
-    return write_reports(files, arguments);
+    ExitCode worst = write_reports(files, arguments);
+    if (!arguments.html.empty()) {
+        page.data()["report"] = json_document(files, output_settings(arguments));
+        page.data()["meshes"] = meshes;
+        worst = std::max(worst, page.write(arguments.html));
+    }
+    return worst;
+}
+
+OutputSettings output_settings(const Arguments& arguments) {
+    OutputSettings settings;
+    settings.about = arguments.about;
+    settings.point = arguments.point;
+    if (arguments.metres_per_unit) settings.length_unit = "m";
+    settings.link_origin = arguments.link_origin;
+    return settings;
 }
 
 ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& arguments) {
@@ -140,11 +174,7 @@ ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& ar
                   << " (give the file's unit with --units)\n";
     }
 
-    OutputSettings settings;
-    settings.about = arguments.about;
-    settings.point = arguments.point;
-    if (arguments.metres_per_unit) settings.length_unit = "m";
-    settings.link_origin = arguments.link_origin;
+    const OutputSettings settings = output_settings(arguments);
     switch (arguments.output) {
         case OutputFormat::kTable:
             write_table(std::cout, files, settings);

@@ -10,6 +10,7 @@
 #include "arguments.hpp"
 #include "exit_codes.hpp"
 #include "library/solid.hpp"
+#include "reports/json_output.hpp"
 
 namespace polymass_cli {
 
@@ -47,6 +48,8 @@ void write_table(std::ostream& out, const std::vector<FileReport>& files,
                  const OutputSettings& settings);
 void write_json(std::ostream& out, const std::vector<FileReport>& files,
                 const OutputSettings& settings);
+// The document write_json prints (the --html page carries it too).
+Json json_document(const std::vector<FileReport>& files, const OutputSettings& settings);
 // URDF, SDFormat or MJCF <inertial> elements, one per readable, valid file,
 // with comments saying what the numbers cannot (file, warnings, units).
 void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,

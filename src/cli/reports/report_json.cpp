@@ -121,10 +121,11 @@ Json file_object(const FileReport& file, const OutputSettings& settings) {
 
 void write_json(std::ostream& out, const std::vector<FileReport>& files,
                 const OutputSettings& settings) {
-    if (files.size() == 1) {
-        print_json(out, file_object(files.front(), settings));
-        return;
-    }
+    print_json(out, json_document(files, settings));
+}
+
+Json json_document(const std::vector<FileReport>& files, const OutputSettings& settings) {
+    if (files.size() == 1) return file_object(files.front(), settings);
     Json all = Json::array();
     for (const FileReport& file : files) all.push_back(file_object(file, settings));
     const Summary summary = summarize(files);
@@ -135,7 +136,7 @@ void write_json(std::ostream& out, const std::vector<FileReport>& files,
                            {"failed", summary.files - summary.valid},
                            {"total_volume", json_number(summary.total_volume)},
                            {"total_mass", json_number(summary.total_mass)}};
-    print_json(out, document);
+    return document;
 }
 
 }  // namespace polymass_cli
