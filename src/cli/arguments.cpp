@@ -24,7 +24,7 @@ struct RawOptions {
     std::vector<std::string> densities, masses;  // D or NAME=D, repeatable
     std::string scale, units, about, origin, weld_tolerance, planarity_tolerance;
     std::string threads;
-    bool json = false, urdf = false, sdf = false, mjcf = false;
+    bool json = false, urdf = false, sdf = false, mjcf = false, usda = false;
     std::string from, mass_from;  // polymass audit
     bool repair = false, hull = false;
     std::string shell;
@@ -117,8 +117,12 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
         ->group(kOutput);
     app.add_flag("--sdf", raw.sdf, "SDFormat <inertial> with <pose>")->group(kOutput);
     app.add_flag("--mjcf", raw.mjcf, "MuJoCo <inertial pos mass fullinertia>")->group(kOutput);
+    app.add_flag("--usda", raw.usda,
+                 "USD text layer: UsdPhysics rigid bodies with PhysicsMassAPI\n"
+                 "(32-bit floats; stage metersPerUnit/kilogramsPerUnit from --units)")
+        ->group(kOutput);
     app.add_option("--origin", raw.origin,
-                   "--urdf/--sdf/--mjcf: the link frame's origin in the file's frame\n"
+                   "--urdf/--sdf/--mjcf/--usda: the link frame's origin in the file's frame\n"
                    "(output units); the inertial's origin is the centre of mass minus it")
         ->group(kOutput)
         ->option_text("X,Y,Z");
@@ -223,13 +227,14 @@ void read_modes(const RawOptions& raw, Arguments& arguments) {
 // Reads the option values CLI11 collected into arguments.
 void read_values(const RawOptions& raw, Arguments& arguments) {
     arguments.files = raw.files;
-    if (raw.json + raw.urdf + raw.sdf + raw.mjcf > 1) {
-        throw UsageError("choose one of --json, --urdf, --sdf, --mjcf");
+    if (raw.json + raw.urdf + raw.sdf + raw.mjcf + raw.usda > 1) {
+        throw UsageError("choose one of --json, --urdf, --sdf, --mjcf, --usda");
     }
     if (raw.json) arguments.output = OutputFormat::kJson;
     if (raw.urdf) arguments.output = OutputFormat::kUrdf;
     if (raw.sdf) arguments.output = OutputFormat::kSdf;
     if (raw.mjcf) arguments.output = OutputFormat::kMjcf;
+    if (raw.usda) arguments.output = OutputFormat::kUsda;
     for (const std::string& text : raw.densities)
         read_mass_value("--density", text, false, arguments.density, arguments.part_materials);
     for (const std::string& text : raw.masses)
@@ -254,7 +259,7 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
     }
     if (!raw.origin.empty()) {
         if (arguments.output == OutputFormat::kTable || arguments.output == OutputFormat::kJson) {
-            throw UsageError("--origin places the inertial of --urdf, --sdf or --mjcf");
+            throw UsageError("--origin places the inertial of --urdf, --sdf, --mjcf or --usda");
         }
         arguments.link_origin = parse_point("--origin", "", raw.origin);
     }
@@ -452,7 +457,8 @@ Arguments parse_arguments(int argc, const char* const* argv) {
     }
     if (arguments.command == Command::kCheck && arguments.output != OutputFormat::kTable &&
         arguments.output != OutputFormat::kJson) {
-        throw UsageError("polymass check prints a report or --json, not --urdf/--sdf/--mjcf");
+        throw UsageError(
+            "polymass check prints a report or --json, not --urdf/--sdf/--mjcf/--usda");
     }
     return arguments;
 }

@@ -13,7 +13,7 @@
 namespace polymass_cli {
 
 enum class Command { kProperties, kCheck, kHelp, kVersion, kAssembly, kAudit };
-enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf };
+enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf, kUsda };
 enum class About { kCenterOfMass, kOrigin, kPoint };
 
 // --density NAME=D or --mass NAME=M: the material of the parts named NAME.
@@ -45,7 +45,7 @@ struct Arguments {
     About about = About::kCenterOfMass;
     std::array<double, 3> point{0.0, 0.0, 0.0};  // --about X,Y,Z
     // --origin X,Y,Z: the link frame's origin in the file's frame (output
-    // units), subtracted from the centre of mass in --urdf/--sdf/--mjcf.
+    // units), subtracted from the centre of mass in --urdf/--sdf/--mjcf/--usda.
     std::array<double, 3> link_origin{0.0, 0.0, 0.0};
     bool accept_inverted = false;
     bool no_check = false;

@@ -569,6 +569,28 @@ class BadInput(Case):
             EXIT_INVALID_MESH,
         )
 
+    def test_usd_refuses_what_float_cannot_hold(self):
+        # USD's attributes are 32-bit floats: a mass past 3.4e38 or moments
+        # below float's normal range leave the prim out, with the reason; the
+        # same cube in a float's range is a prim. (tests/cli/test_usd.py reads
+        # the layers back with OpenUSD.)
+        vertices, faces = fixtures.cube()
+        path = WORK / "usd_cube.obj"
+        fixtures.write_obj(path, vertices, faces)
+        result = run("--usda", path, "--scale", "1e13")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stderr)
+        self.assertIn(
+            "the whole: no USD prim: the mass 1e+39 is not a normal 32-bit float", result.stderr
+        )
+        self.assertNotIn("def Xform", result.stdout)
+        self.assertIn("# the whole: no prim: the mass", result.stdout)
+        result = run("--usda", path, "--scale", "1e-8")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stderr)
+        self.assertIn("a principal moment", result.stderr)
+        result = run("--usda", path, "--scale", "1e6")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertIn("float physics:mass = 1e+18", result.stdout)
+
     def test_xml_outputs_are_utf8_whatever_the_paths(self):
         # Several files: each element follows a comment naming its file.
         latin1 = bytes(WORK) + b"/br\xfcket.obj"
@@ -660,6 +682,8 @@ class BadInput(Case):
             ["--about", "1,2", "x.obj"],
             ["--frobnicate", "x.obj"],
             ["--json", "--urdf", "x.obj"],
+            ["--usda", "--mjcf", "x.obj"],
+            ["check", "--usda", "x.obj"],
             ["--weld-tolerance", "1", "x.obj"],
         ):
             with self.subTest(args=args):

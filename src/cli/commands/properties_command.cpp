@@ -152,6 +152,11 @@ ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& ar
         case OutputFormat::kJson:
             write_json(std::cout, files, settings);
             break;
+        case OutputFormat::kUsda:
+            // A prim float cannot hold is a result the output cannot carry.
+            if (!write_usda(std::cout, std::cerr, files, settings))
+                worst = std::max(worst, exit_code_of(POLYMASS_ERROR_OVERFLOW));
+            break;
         default:
             write_inertial_xml(std::cout, files, arguments.output, settings);
     }

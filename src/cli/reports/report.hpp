@@ -52,6 +52,13 @@ void write_json(std::ostream& out, const std::vector<FileReport>& files,
 void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
                         OutputFormat format, const OutputSettings& settings);
 
+// --usda: a USD text layer with a UsdPhysics rigid body per readable, valid
+// file (its parts as child prims). Problems only USD has (a value past 32-bit
+// floats, a centre of mass float rounds more than its error bound) go to
+// diagnostics too; returns false when a value left a prim out.
+bool write_usda(std::ostream& out, std::ostream& diagnostics, const std::vector<FileReport>& files,
+                const OutputSettings& settings);
+
 // The files together, for the summary the table and --json give of several.
 struct Summary {
     uint64_t files = 0;
