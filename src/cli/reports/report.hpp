@@ -18,6 +18,7 @@ struct PartReport {
     uint64_t vertices = 0;  // distinct vertices its faces use
     uint64_t faces = 0;
     bool computed = false;  // false: not attempted (see FileReport)
+    std::string material;   // the materials table's name of its density, if it has one
     SolidResult result;
 };
 
@@ -83,6 +84,10 @@ std::string warning_text(uint32_t warnings);
 inline constexpr const char* kFileUnitsNote =
     "lengths are in the file's units, not converted to metres: the mass is the density times "
     "the volume in those units, the inertia the mass times length squared";
+
+// The material as the XML and USD comments name it: "aluminium-6061, density
+// 2700 kg/m^3 (source)".
+std::string material_text(const PartReport& part);
 
 // A symmetric tensor (row-major 3x3) made from its upper triangle, so that
 // every output prints one number for [i][j] and [j][i], and -0 made 0.

@@ -189,6 +189,7 @@ public:
         if (p.warnings) comment(indent, "warning: " + warning_text(p.warnings));
         comment(indent, "provenance: " + provenance_text(part.result.provenance));
         comment(indent, "error bound: " + error_bound_text(p));
+        if (!part.material.empty()) comment(indent, "material: " + material_text(part));
         if (!values.far_from_origin.empty()) {
             comment(indent, "warning: " + values.far_from_origin);
             diagnostics_ << "polymass: " << path << ": " << label
@@ -199,6 +200,8 @@ public:
              << indent << "    customData = {\n";
         if (depth == 0) out_ << indent << "        string file = " << quoted(path) << '\n';
         if (depth != 0) out_ << indent << "        string name = " << quoted(part.name) << '\n';
+        if (!part.material.empty())
+            out_ << indent << "        string material = " << quoted(part.material) << '\n';
         out_ << indent << "        double density = " << exact_number(p.density) << '\n'
              << indent << "    }\n"
              << indent << ")\n"
