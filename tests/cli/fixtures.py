@@ -104,6 +104,21 @@ def write_off(path, vertices, faces):
     path.write_text("\n".join(lines) + "\n")
 
 
+def msh_bytes(vertices, faces, normals=0, texcoords=0):
+    """MuJoCo's binary .msh: int32 nvertex, nnormal, ntexcoord, nface, then
+    float32 positions, normals, texture coordinates and int32 triangles (the
+    given counts of normals and texture coordinates, zeros)."""
+    triangle_list = triangles(faces)
+    data = struct.pack("<4i", len(vertices), normals, texcoords, len(triangle_list))
+    data += struct.pack(f"<{3 * len(vertices)}f", *[c for v in vertices for c in v])
+    data += bytes(12 * normals + 8 * texcoords)
+    return data + struct.pack(f"<{3 * len(triangle_list)}i", *[i for t in triangle_list for i in t])
+
+
+def write_msh(path, vertices, faces):
+    path.write_bytes(msh_bytes(vertices, faces, normals=len(vertices), texcoords=len(vertices)))
+
+
 # The glTF scene: a parent node whose matrix (column-major, as glTF stores
 # it) turns a quarter about z and scales by 2, (x, y, z) -> (-2y, 2x, 2z), and
 # under it a child node translated by CHILD_SHIFT that holds the mesh. Both are
@@ -267,6 +282,7 @@ WRITERS = {
     "bracket_ascii.ply": write_ascii_ply,
     "bracket_binary.ply": write_binary_ply,
     "bracket.off": write_off,
+    "bracket.msh": write_msh,
     "bracket.gltf": write_gltf,
     "bracket.glb": write_glb,
     "bracket.3mf": write_3mf,

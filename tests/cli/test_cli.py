@@ -116,6 +116,20 @@ class EveryFormat(Case):
                 self.assert_properties(out, self.expected, what=name)
                 self.assertEqual(out["warnings"], [])
 
+    def test_audit_measures_an_msh_mesh(self):
+        # MuJoCo models name .msh meshes: the audit reads them as the tool does.
+        model = WORK / "msh_robot.xml"
+        model.write_text(
+            '<mujoco><asset><mesh file="bracket.msh"/></asset><worldbody><body name="b">'
+            '<geom type="mesh" mesh="bracket"/></body></worldbody></mujoco>'
+        )
+        result = run("audit", model, "--json", "--density", 1)
+        (link,) = json.loads(result.stdout)["links"]
+        self.assertNotIn("unreadable_mesh", [f["kind"] for f in link["findings"]], result.stdout)
+        self.assert_close(
+            link["computed"]["mass"], self.expected["volume"], self.expected["volume"], "mass"
+        )
+
     def test_gltf_mirrored_node_keeps_the_solid(self):
         # A node scaled by -1 along x mirrors the mesh: glTF says its triangles
         # then wind clockwise, so the reader reverses them and the solid is
@@ -452,6 +466,27 @@ class BadInput(Case):
         self.expect_error(
             self.write("truncated.stl", data[:-30]), "unreadable", EXIT_UNREADABLE, "truncated"
         )
+
+    def test_msh_that_is_not_one(self):
+        data = fixtures.msh_bytes(self.vertices, self.faces, normals=len(self.vertices))
+        for name, content, message in [
+            ("truncated.msh", data[:-4], "counts (nvertex 12, nnormal 12, ntexcoord 0, nface 20)"),
+            ("longer.msh", data + b"\0", "make 544 bytes, but the file has 545"),
+            ("short.msh", data[:15], "four int32 counts (16 bytes), but the file has 15"),
+            ("negative.msh", struct.pack("<4i", 3, -1, 0, 1) + data[16:], "negative count"),
+            ("points.msh", struct.pack("<4i", 2, 0, 0, 0) + data[16:40], "no faces"),
+            ("gmsh.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n", "a Gmsh mesh"),
+        ]:
+            with self.subTest(file=name):
+                self.expect_error(self.write(name, content), "unreadable", EXIT_UNREADABLE, message)
+        # A corner naming no vertex (negative, or past the last) is the library's finding.
+        corners = len(data) - 12 * len(fixtures.triangles(self.faces))
+        for index in (-1, 12):
+            with self.subTest(index=index):
+                bad = data[:corners] + struct.pack("<i", index) + data[corners + 4 :]
+                self.expect_error(
+                    self.write("index.msh", bad), "index_out_of_range", EXIT_INVALID_MESH
+                )
 
     def test_garbage(self):
         garbage = bytes((i * 7919 + 13) % 256 for i in range(3000))

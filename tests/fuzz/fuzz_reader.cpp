@@ -1,7 +1,7 @@
 // libFuzzer target: arbitrary bytes as a mesh file of one format, read by the
 // tool's reader of that format (src/cli/readers). Built once per format, the
-// format named by POLYMASS_FUZZ_FORMAT ("obj", "stl", "ply", "off", "gltf",
-// "glb", "3mf", "3mf_model", "dae").
+// format named by POLYMASS_FUZZ_FORMAT ("obj", "stl", "ply", "off", "msh",
+// "gltf", "glb", "3mf", "3mf_model", "dae").
 //
 // A 3MF package is a zip whose checksums keep a byte-level mutation from ever
 // changing the model lib3mf reads: "3mf" fuzzes the package (libzip's
@@ -105,6 +105,7 @@ Model read(const std::string& bytes) {
     if (format == "stl") return polymass_cli::read_stl(bytes);
     if (format == "ply") return polymass_cli::read_ply(bytes);
     if (format == "off") return polymass_cli::read_off(bytes);
+    if (format == "msh") return polymass_cli::read_msh(bytes);
     if (format == "3mf") return polymass_cli::read_3mf(bytes);
     if (format == "3mf_model") return polymass_cli::read_3mf(package_of(bytes));
     if (format == "dae") return polymass_cli::read_collada(bytes);

@@ -14,6 +14,8 @@ namespace polymass_cli {
 
 Model read_obj(std::string_view bytes);
 Model read_off(std::string_view bytes);
+// MuJoCo's binary mesh: its counts checked against the file's length.
+Model read_msh(std::string_view bytes);
 Model read_ply(std::string_view bytes);
 Model read_stl(std::string_view bytes);
 // The same from the file itself, let go as its triangles are decoded.
