@@ -250,6 +250,15 @@ def write_3mf(path, vertices, faces, component=None, item=None):
         f"</mesh></object>{components}</resources>"
         f'<build><item objectid="{built}"{item_transform}/></build></model>'
     )
+    write_3mf_package(path, model)
+
+
+MODEL_RELATIONSHIP = "http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"
+
+
+def write_3mf_package(path, model, target="/3D/3dmodel.model", relationship=MODEL_RELATIONSHIP):
+    """A 3MF package of the model part's XML text, named by the root
+    relationships as target with the relationship type given."""
     content_types = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">'
@@ -262,8 +271,7 @@ def write_3mf(path, vertices, faces, component=None, item=None):
     rels = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">'
-        '<Relationship Target="/3D/3dmodel.model" Id="rel0" '
-        'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>'
+        f'<Relationship Target="{target}" Id="rel0" Type="{relationship}"/></Relationships>'
     )
     with zipfile.ZipFile(path, "w") as archive:
         for name, data in (

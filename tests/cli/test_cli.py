@@ -161,8 +161,19 @@ class EveryFormat(Case):
             generate.exact_properties(placed, fixtures.triangles(self.faces)),
             what="components",
         )
-        self.assertIn("the file declares its unit: millimeter", out["notes"])
-        self.assertIn("32-bit floats", result.stderr)
+        self.assertEqual(out["notes"], ["the file declares its unit: millimeter"])
+
+    def test_3mf_decimals_are_read_in_double_precision(self):
+        # Coordinates no 32-bit float holds, a thousand units out: the volume
+        # and the rest are those of the decimals as doubles (lib3mf 1.x, read
+        # before, rounded each to a float: about 1e-4 of this volume).
+        placed = [(x * 0.1 + 1000.3, y * 0.7 - 20.1, z * 0.3 + 5.7) for x, y, z in self.vertices]
+        path = WORK / "decimals.3mf"
+        fixtures.write_3mf(path, placed, self.faces)
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        expected = generate.exact_properties(placed, fixtures.triangles(self.faces))
+        self.assert_properties(out, expected, what="decimals")
 
     def test_error_bound_contains_the_error(self):
         result, out = run_json(WORK / "bracket.obj")
@@ -555,14 +566,14 @@ class BadInput(Case):
     def test_a_3mf_with_a_bad_checksum_is_an_unreadable_file(self):
         # A 3MF whose zip checksum no longer matches its (still valid) XML: the
         # assimp Debian ships aborted on it (the tool read it in a child
-        # process, which it still does); lib3mf refuses it.
+        # process, which it still does); libzip's checksum refuses it.
         path = WORK / "bad_checksum.3mf"
         fixtures.write_3mf(path, self.vertices, self.faces)
         data = bytearray(path.read_bytes())
         digit = data.index(b'<vertex x="') + len(b'<vertex x="')
         data[digit] = ord("7") if data[digit] != ord("7") else ord("6")
         path.write_bytes(bytes(data))
-        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "not a readable 3MF file")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "3dmodel.model: CRC error")
 
     def test_stl_keywords_out_of_place_in_a_facet(self):
         # Corners read before a second `outer loop` or a new `solid` belonged
@@ -767,6 +778,74 @@ class BadInput(Case):
         path = WORK / "shared_node.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_error(path, "unreadable", EXIT_UNREADABLE, "reached twice")
+
+    def test_malformed_3mf_models(self):
+        mesh = (
+            '<mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/>'
+            '<vertex x="0" y="1" z="0"/><vertex x="0" y="0" z="1"/></vertices><triangles>'
+            '<triangle v1="0" v2="2" v3="1"/><triangle v1="0" v2="1" v3="3"/>'
+            '<triangle v1="0" v2="3" v3="2"/><triangle v1="1" v2="2" v3="3"/></triangles></mesh>'
+        )
+
+        def model(resources, build='<item objectid="1"/>', unit="millimeter"):
+            return (
+                f'<model unit="{unit}" xmlns="http://schemas.microsoft.com/3dmanufacturing/'
+                f'core/2015/02"><resources>{resources}</resources><build>{build}</build></model>'
+            )
+
+        tetrahedron = f'<object id="1">{mesh}</object>'
+        path = WORK / "tetrahedron.3mf"
+        fixtures.write_3mf_package(path, model(tetrahedron, unit="inch"))
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 1 / 6)
+        self.assertEqual(out["notes"], ["the file declares its unit: inch"])
+        component = '<object id="{}"><components><component objectid="{}"{}/></components></object>'
+        for name, content, message in [
+            ("cycle", model(component.format(1, 1, "")), "object 1: a component names object 1"),
+            (
+                "later",
+                model(component.format(2, 1, "") + tetrahedron, '<item objectid="2"/>'),
+                "object 2: a component names object 1, which is not defined before it",
+            ),
+            (
+                "transform",
+                model(
+                    tetrahedron + component.format(2, 1, ' transform="1 0 0 0 1 0"'),
+                    '<item objectid="2"/>',
+                ),
+                "the transform is not 12 numbers",
+            ),
+            (
+                # A token that is no number, then more than 12 tokens in all.
+                "transform token",
+                model(
+                    tetrahedron + component.format(2, 1, ' transform="1 x' + " 0" * 12 + '"'),
+                    '<item objectid="2"/>',
+                ),
+                "the transform is not 12 numbers",
+            ),
+            ("twice", model(tetrahedron + tetrahedron), "object id 1 is used twice"),
+            ("no object", model(tetrahedron, '<item objectid="7"/>'), "names object 7"),
+            ("unit", model(tetrahedron, unit="furlong"), "<model unit='furlong'> is none of"),
+            ("number", model(tetrahedron.replace('x="1"', 'x="1,5"')), "x is not a number"),
+            ("index", model(tetrahedron.replace('v3="3"', 'v3="4"', 1)), "vertex index 4"),
+            ("not xml", "<model", "not well-formed XML"),
+            (
+                "production",
+                model(tetrahedron + component.format(2, 1, ' p:path="/3D/other.model"')),
+                "3MF production extension",
+            ),
+        ]:
+            with self.subTest(case=name):
+                path = WORK / (name.replace(" ", "_") + ".3mf")
+                fixtures.write_3mf_package(path, content)
+                self.expect_error(path, "unreadable", EXIT_UNREADABLE, message)
+        path = WORK / "no_model.3mf"
+        fixtures.write_3mf_package(path, model(tetrahedron), relationship="thumbnail")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "names no 3D model part")
+        fixtures.write_3mf_package(path, model(tetrahedron), target="/3D/elsewhere.model")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "no part 3D/elsewhere.model")
 
     def test_3mf_index_out_of_range_and_nan(self):
         path = WORK / "index.3mf"

@@ -4,11 +4,11 @@
 // "gltf", "glb", "3mf", "3mf_model", "dae").
 //
 // A 3MF package is a zip whose checksums keep a byte-level mutation from ever
-// changing the model lib3mf reads: "3mf" fuzzes the package (libzip's
-// reading, the declared sizes, lib3mf's refusals), and "3mf_model" takes the
+// changing the model the reader parses: "3mf" fuzzes the package (libzip's
+// reading, the declared sizes, the relationships), and "3mf_model" takes the
 // bytes as the model part (3D/3dmodel.model), stored in a package beside
-// the two parts every 3MF has, which reaches lib3mf's parsing and the
-// reader's objects, components and transforms.
+// the two parts every 3MF has, which reaches the model's parsing (pugixml)
+// and the reader's objects, components and transforms.
 //
 // The tool's own readers and the 3MF and Collada readers take the bytes;
 // glTF/GLB is read by tinygltf from a file, written at each execution into a
