@@ -20,8 +20,8 @@ packages=(
     python3 python3-venv                   # Python binding: a venv with cffi, pytest from PyPI
     libclang-dev                           # Rust binding: bindgen's libclang
     libcli11-dev nlohmann-json3-dev libpugixml-dev   # the polymass CLI: arguments, JSON, XML
-    libtinygltf-dev lib3mf-dev             # the polymass CLI: glTF/GLB and 3MF readers
-    libzip-dev                             # the polymass CLI: a 3MF's declared sizes (zip bombs)
+    libtinygltf-dev                        # the polymass CLI: glTF/GLB reader
+    libzip-dev                             # the polymass CLI: 3MF packages (their model through pugixml)
     libassimp-dev                          # the polymass CLI: Collada (.dae) reader
     libjs-three                            # the polymass CLI: three.js, embedded in --html pages
     chromium                               # tests/browser: the --html pages in headless Chromium

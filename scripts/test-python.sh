@@ -16,7 +16,9 @@
 #      then its pytest on a distributed.LocalCluster;
 #   7. polymass audit --fix read back by yourdfpy and MuJoCo (from PyPI):
 #      tests/cli/test_audit_consumers.py, with the tool of build/dev (or
-#      $POLYMASS_EXE; scripts/test.sh builds dev before this step).
+#      $POLYMASS_EXE; scripts/test.sh builds dev before this step);
+#   8. polymass --usda read back by OpenUSD (usd-core from PyPI):
+#      tests/cli/test_usd.py, with the same tool.
 # The library under test is the wheel's own copy: POLYMASS_LIBRARY is unset.
 #
 #   scripts/test-python.sh            PYTHON=python3.12 scripts/test-python.sh
@@ -125,6 +127,11 @@ fi
 "$venv/bin/python" -m pip "${pip_options[@]}" install yourdfpy mujoco </dev/null
 POLYMASS_EXE=$polymass_exe "$venv/bin/python" -m pytest -q -p no:cacheprovider \
     tests/cli/test_audit_consumers.py </dev/null
+
+step usd
+"$venv/bin/python" -m pip "${pip_options[@]}" install usd-core </dev/null
+POLYMASS_EXE=$polymass_exe "$venv/bin/python" -m pytest -q -p no:cacheprovider \
+    tests/cli/test_usd.py </dev/null
 
 echo
 echo "test-python: all passed"

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <utility>
 
+#include "model/materials.hpp"
 #include "model/units.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/text_lines.hpp"
@@ -22,9 +23,10 @@ namespace {
 struct RawOptions {
     std::vector<std::string> files;
     std::vector<std::string> densities, masses;  // D or NAME=D, repeatable
+    std::vector<std::string> materials;          // MATERIAL or NAME=MATERIAL
     std::string scale, units, about, origin, weld_tolerance, planarity_tolerance;
     std::string threads;
-    bool json = false, urdf = false, sdf = false, mjcf = false;
+    bool json = false, urdf = false, sdf = false, mjcf = false, usda = false;
     std::string from, mass_from;  // polymass audit
     bool repair = false, hull = false;
     std::string shell;
@@ -57,6 +59,19 @@ std::array<double, 3> parse_point(std::string_view option, std::string_view what
     return point;
 }
 
+// NAME of NAME=V (the '=' at `equals`), a part no other option named.
+std::string part_name(const std::string& option, const std::string& text,
+                      std::string::size_type equals, const std::vector<PartMaterial>& parts) {
+    const std::string name = text.substr(0, equals);
+    if (name.empty()) {
+        throw UsageError(option + " NAME=V wants a part's name before '=', not '" + text + "'");
+    }
+    for (const PartMaterial& given : parts) {
+        if (given.part == name) throw UsageError("the part '" + name + "' is given twice");
+    }
+    return name;
+}
+
 // --density or --mass: V gives the whole file's (once), NAME=V a part's.
 void read_mass_value(const std::string& option, const std::string& text, bool by_mass,
                      std::optional<double>& whole, std::vector<PartMaterial>& parts) {
@@ -69,15 +84,33 @@ void read_mass_value(const std::string& option, const std::string& text, bool by
         whole = positive_number(option, text);
         return;
     }
-    const std::string name = text.substr(0, equals);
-    if (name.empty()) {
-        throw UsageError(option + " NAME=V wants a part's name before '=', not '" + text + "'");
-    }
-    for (const PartMaterial& given : parts) {
-        if (given.part == name) throw UsageError("the part '" + name + "' is given twice");
-    }
+    const std::string name = part_name(option, text, equals, parts);
     const std::string_view value = std::string_view(text).substr(equals + 1);
-    parts.push_back({name, by_mass, positive_number(option + " " + name + "=", value)});
+    parts.push_back({name, by_mass, positive_number(option + " " + name + "=", value), ""});
+}
+
+// --material: MATERIAL gives the whole file's density (once), NAME=MATERIAL
+// a part's, from the table of model/materials.hpp.
+void read_material(const std::string& text, Arguments& arguments) {
+    const std::string::size_type equals = text.rfind('=');
+    const std::string name = equals == std::string::npos ? text : text.substr(equals + 1);
+    const Material* material = find_material(name);
+    if (!material) {
+        throw UsageError("--material: '" + name + "' is not a known material; the known ones are " +
+                         known_materials() + " (docs/materials.md; or give --density D)");
+    }
+    if (equals != std::string::npos) {
+        const std::string part = part_name("--material", text, equals, arguments.part_materials);
+        arguments.part_materials.push_back({part, false, material->density, material->name});
+        return;
+    }
+    if (arguments.density || arguments.mass) {
+        throw UsageError(
+            "give the whole's --density, --mass or --material once (NAME=V gives the parts "
+            "named NAME theirs)");
+    }
+    arguments.density = material->density;
+    arguments.material = material->name;
 }
 
 // The options of both polymass and polymass check, bound to raw. Help is
@@ -96,6 +129,13 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                    "named NAME, the others keeping --density (repeatable)")
         ->group("Mass")
         ->option_text("M|NAME=M")
+        ->allow_extra_args(false);
+    app.add_option("--material", raw.materials,
+                   "the density of a named material (kg/m^3; needs --units), e.g.\n"
+                   "aluminium-6061, stainless-316, pla: the table and its sources\n"
+                   "are in docs/materials.md; NAME=MATERIAL: the parts named NAME")
+        ->group("Mass")
+        ->option_text("MATERIAL|NAME=MATERIAL")
         ->allow_extra_args(false);
     app.add_option("--units", raw.units,
                    std::string("the file's length unit, converted to metres: ") + known_units() +
@@ -117,13 +157,17 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
         ->group(kOutput);
     app.add_flag("--sdf", raw.sdf, "SDFormat <inertial> with <pose>")->group(kOutput);
     app.add_flag("--mjcf", raw.mjcf, "MuJoCo <inertial pos mass fullinertia>")->group(kOutput);
+    app.add_flag("--usda", raw.usda,
+                 "USD text layer: UsdPhysics rigid bodies with PhysicsMassAPI\n"
+                 "(32-bit floats; stage metersPerUnit/kilogramsPerUnit from --units)")
+        ->group(kOutput);
     app.add_option("--html", arguments.html,
                    "also write a page that draws the result (one file that opens\n"
                    "offline in a browser: the mesh, what check found, the inertia)")
         ->group(kOutput)
         ->option_text("REPORT.html");
     app.add_option("--origin", raw.origin,
-                   "--urdf/--sdf/--mjcf: the link frame's origin in the file's frame\n"
+                   "--urdf/--sdf/--mjcf/--usda: the link frame's origin in the file's frame\n"
                    "(output units); the inertial's origin is the centre of mass minus it")
         ->group(kOutput)
         ->option_text("X,Y,Z");
@@ -228,17 +272,26 @@ void read_modes(const RawOptions& raw, Arguments& arguments) {
 // Reads the option values CLI11 collected into arguments.
 void read_values(const RawOptions& raw, Arguments& arguments) {
     arguments.files = raw.files;
-    if (raw.json + raw.urdf + raw.sdf + raw.mjcf > 1) {
-        throw UsageError("choose one of --json, --urdf, --sdf, --mjcf");
+    if (raw.json + raw.urdf + raw.sdf + raw.mjcf + raw.usda > 1) {
+        throw UsageError("choose one of --json, --urdf, --sdf, --mjcf, --usda");
     }
     if (raw.json) arguments.output = OutputFormat::kJson;
     if (raw.urdf) arguments.output = OutputFormat::kUrdf;
     if (raw.sdf) arguments.output = OutputFormat::kSdf;
     if (raw.mjcf) arguments.output = OutputFormat::kMjcf;
+    if (raw.usda) arguments.output = OutputFormat::kUsda;
     for (const std::string& text : raw.densities)
         read_mass_value("--density", text, false, arguments.density, arguments.part_materials);
     for (const std::string& text : raw.masses)
         read_mass_value("--mass", text, true, arguments.mass, arguments.part_materials);
+    for (const std::string& text : raw.materials) read_material(text, arguments);
+    // A material's density is in kg/m^3: with lengths of unknown unit the
+    // mass would be off by the cube of that unit in metres.
+    if (!raw.materials.empty() && raw.units.empty() && arguments.command != Command::kAssembly) {
+        throw UsageError(
+            "--material gives a density in kg/m^3: give the file's length unit with --units "
+            "(m for a file in metres)");
+    }
     if (arguments.mass && !arguments.part_materials.empty()) {
         throw UsageError("give the whole's --mass M or parts' --density/--mass NAME=V, not both");
     }
@@ -259,7 +312,7 @@ void read_values(const RawOptions& raw, Arguments& arguments) {
     }
     if (!raw.origin.empty()) {
         if (arguments.output == OutputFormat::kTable || arguments.output == OutputFormat::kJson) {
-            throw UsageError("--origin places the inertial of --urdf, --sdf or --mjcf");
+            throw UsageError("--origin places the inertial of --urdf, --sdf, --mjcf or --usda");
         }
         arguments.link_origin = parse_point("--origin", "", raw.origin);
     }
@@ -300,11 +353,10 @@ void refuse_assembly_settings(const RawOptions& raw, const Arguments& arguments)
         throw UsageError("polymass assembly reads one assembly file, not " +
                          std::to_string(arguments.files.size()));
     }
-    const std::pair<bool, const char*> per_part[] = {{!raw.densities.empty(), "--density"},
-                                                     {!raw.masses.empty(), "--mass"},
-                                                     {!raw.units.empty(), "--units"},
-                                                     {!raw.scale.empty(), "--scale"},
-                                                     {!arguments.format.empty(), "--format"}};
+    const std::pair<bool, const char*> per_part[] = {
+        {!raw.densities.empty(), "--density"},  {!raw.masses.empty(), "--mass"},
+        {!raw.materials.empty(), "--material"}, {!raw.units.empty(), "--units"},
+        {!raw.scale.empty(), "--scale"},        {!arguments.format.empty(), "--format"}};
     if (!arguments.html.empty()) throw UsageError("polymass assembly writes no --html page");
     for (const auto& [given, option] : per_part) {
         if (given) {
@@ -463,7 +515,8 @@ Arguments parse_arguments(int argc, const char* const* argv) {
     }
     if (arguments.command == Command::kCheck && arguments.output != OutputFormat::kTable &&
         arguments.output != OutputFormat::kJson) {
-        throw UsageError("polymass check prints a report or --json, not --urdf/--sdf/--mjcf");
+        throw UsageError(
+            "polymass check prints a report or --json, not --urdf/--sdf/--mjcf/--usda");
     }
     return arguments;
 }

@@ -13,14 +13,16 @@
 namespace polymass_cli {
 
 enum class Command { kProperties, kCheck, kHelp, kVersion, kAssembly, kAudit };
-enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf };
+enum class OutputFormat { kTable, kJson, kUrdf, kSdf, kMjcf, kUsda };
 enum class About { kCenterOfMass, kOrigin, kPoint };
 
-// --density NAME=D or --mass NAME=M: the material of the parts named NAME.
+// --density NAME=D, --mass NAME=M or --material NAME=MATERIAL: the material
+// of the parts named NAME.
 struct PartMaterial {
     std::string part;
     bool by_mass = false;  // value is the part's mass, not its density
     double value = 1.0;
+    std::string material;  // --material: the table's name; value is its density
 };
 
 // polymass audit's own options.
@@ -38,6 +40,7 @@ struct Arguments {
     std::string format;  // --format: empty means by extension
     std::optional<double> density;
     std::optional<double> mass;
+    std::string material;                      // --material NAME: density is then the table's
     std::vector<PartMaterial> part_materials;  // in the order given
     double scale = 1.0;                        // --scale alone
     // --units resolved: metres per file unit; empty: lengths are the file's.
@@ -45,7 +48,7 @@ struct Arguments {
     About about = About::kCenterOfMass;
     std::array<double, 3> point{0.0, 0.0, 0.0};  // --about X,Y,Z
     // --origin X,Y,Z: the link frame's origin in the file's frame (output
-    // units), subtracted from the centre of mass in --urdf/--sdf/--mjcf.
+    // units), subtracted from the centre of mass in --urdf/--sdf/--mjcf/--usda.
     std::array<double, 3> link_origin{0.0, 0.0, 0.0};
     bool accept_inverted = false;
     bool no_check = false;

@@ -104,6 +104,21 @@ def write_off(path, vertices, faces):
     path.write_text("\n".join(lines) + "\n")
 
 
+def msh_bytes(vertices, faces, normals=0, texcoords=0):
+    """MuJoCo's binary .msh: int32 nvertex, nnormal, ntexcoord, nface, then
+    float32 positions, normals, texture coordinates and int32 triangles (the
+    given counts of normals and texture coordinates, zeros)."""
+    triangle_list = triangles(faces)
+    data = struct.pack("<4i", len(vertices), normals, texcoords, len(triangle_list))
+    data += struct.pack(f"<{3 * len(vertices)}f", *[c for v in vertices for c in v])
+    data += bytes(12 * normals + 8 * texcoords)
+    return data + struct.pack(f"<{3 * len(triangle_list)}i", *[i for t in triangle_list for i in t])
+
+
+def write_msh(path, vertices, faces):
+    path.write_bytes(msh_bytes(vertices, faces, normals=len(vertices), texcoords=len(vertices)))
+
+
 # The glTF scene: a parent node whose matrix (column-major, as glTF stores
 # it) turns a quarter about z and scales by 2, (x, y, z) -> (-2y, 2x, 2z), and
 # under it a child node translated by CHILD_SHIFT that holds the mesh. Both are
@@ -235,6 +250,15 @@ def write_3mf(path, vertices, faces, component=None, item=None):
         f"</mesh></object>{components}</resources>"
         f'<build><item objectid="{built}"{item_transform}/></build></model>'
     )
+    write_3mf_package(path, model)
+
+
+MODEL_RELATIONSHIP = "http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"
+
+
+def write_3mf_package(path, model, target="/3D/3dmodel.model", relationship=MODEL_RELATIONSHIP):
+    """A 3MF package of the model part's XML text, named by the root
+    relationships as target with the relationship type given."""
     content_types = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">'
@@ -247,8 +271,7 @@ def write_3mf(path, vertices, faces, component=None, item=None):
     rels = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">'
-        '<Relationship Target="/3D/3dmodel.model" Id="rel0" '
-        'Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>'
+        f'<Relationship Target="{target}" Id="rel0" Type="{relationship}"/></Relationships>'
     )
     with zipfile.ZipFile(path, "w") as archive:
         for name, data in (
@@ -267,6 +290,7 @@ WRITERS = {
     "bracket_ascii.ply": write_ascii_ply,
     "bracket_binary.ply": write_binary_ply,
     "bracket.off": write_off,
+    "bracket.msh": write_msh,
     "bracket.gltf": write_gltf,
     "bracket.glb": write_glb,
     "bracket.3mf": write_3mf,

@@ -235,7 +235,7 @@ BAD_FIELDS = [
     (
         "typo",
         {"parts": [{"mesh": "cube.obj", "densty": 2}]},
-        'parts[0] "cube.obj": give exactly one of "density" and "mass"',
+        'parts[0] "cube.obj": give exactly one of "density", "material" and "mass"',
     ),
     (
         "unknown key",
@@ -245,7 +245,7 @@ BAD_FIELDS = [
     (
         "both",
         {"parts": [{"mesh": "cube.obj", "density": 2, "mass": 1}]},
-        'exactly one of "density" and "mass"',
+        'exactly one of "density", "material" and "mass"',
     ),
     ("negative", {"parts": [{"mesh": "cube.obj", "mass": -1}]}, "mass: a positive number"),
     ("text density", {"parts": [{"mesh": "cube.obj", "density": "2"}]}, "density: a number"),

@@ -116,6 +116,20 @@ class EveryFormat(Case):
                 self.assert_properties(out, self.expected, what=name)
                 self.assertEqual(out["warnings"], [])
 
+    def test_audit_measures_an_msh_mesh(self):
+        # MuJoCo models name .msh meshes: the audit reads them as the tool does.
+        model = WORK / "msh_robot.xml"
+        model.write_text(
+            '<mujoco><asset><mesh file="bracket.msh"/></asset><worldbody><body name="b">'
+            '<geom type="mesh" mesh="bracket"/></body></worldbody></mujoco>'
+        )
+        result = run("audit", model, "--json", "--density", 1)
+        (link,) = json.loads(result.stdout)["links"]
+        self.assertNotIn("unreadable_mesh", [f["kind"] for f in link["findings"]], result.stdout)
+        self.assert_close(
+            link["computed"]["mass"], self.expected["volume"], self.expected["volume"], "mass"
+        )
+
     def test_gltf_mirrored_node_keeps_the_solid(self):
         # A node scaled by -1 along x mirrors the mesh: glTF says its triangles
         # then wind clockwise, so the reader reverses them and the solid is
@@ -147,8 +161,19 @@ class EveryFormat(Case):
             generate.exact_properties(placed, fixtures.triangles(self.faces)),
             what="components",
         )
-        self.assertIn("the file declares its unit: millimeter", out["notes"])
-        self.assertIn("32-bit floats", result.stderr)
+        self.assertEqual(out["notes"], ["the file declares its unit: millimeter"])
+
+    def test_3mf_decimals_are_read_in_double_precision(self):
+        # Coordinates no 32-bit float holds, a thousand units out: the volume
+        # and the rest are those of the decimals as doubles (lib3mf 1.x, read
+        # before, rounded each to a float: about 1e-4 of this volume).
+        placed = [(x * 0.1 + 1000.3, y * 0.7 - 20.1, z * 0.3 + 5.7) for x, y, z in self.vertices]
+        path = WORK / "decimals.3mf"
+        fixtures.write_3mf(path, placed, self.faces)
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        expected = generate.exact_properties(placed, fixtures.triangles(self.faces))
+        self.assert_properties(out, expected, what="decimals")
 
     def test_error_bound_contains_the_error(self):
         result, out = run_json(WORK / "bracket.obj")
@@ -453,6 +478,27 @@ class BadInput(Case):
             self.write("truncated.stl", data[:-30]), "unreadable", EXIT_UNREADABLE, "truncated"
         )
 
+    def test_msh_that_is_not_one(self):
+        data = fixtures.msh_bytes(self.vertices, self.faces, normals=len(self.vertices))
+        for name, content, message in [
+            ("truncated.msh", data[:-4], "counts (nvertex 12, nnormal 12, ntexcoord 0, nface 20)"),
+            ("longer.msh", data + b"\0", "make 544 bytes, but the file has 545"),
+            ("short.msh", data[:15], "four int32 counts (16 bytes), but the file has 15"),
+            ("negative.msh", struct.pack("<4i", 3, -1, 0, 1) + data[16:], "negative count"),
+            ("points.msh", struct.pack("<4i", 2, 0, 0, 0) + data[16:40], "no faces"),
+            ("gmsh.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n", "a Gmsh mesh"),
+        ]:
+            with self.subTest(file=name):
+                self.expect_error(self.write(name, content), "unreadable", EXIT_UNREADABLE, message)
+        # A corner naming no vertex (negative, or past the last) is the library's finding.
+        corners = len(data) - 12 * len(fixtures.triangles(self.faces))
+        for index in (-1, 12):
+            with self.subTest(index=index):
+                bad = data[:corners] + struct.pack("<i", index) + data[corners + 4 :]
+                self.expect_error(
+                    self.write("index.msh", bad), "index_out_of_range", EXIT_INVALID_MESH
+                )
+
     def test_garbage(self):
         garbage = bytes((i * 7919 + 13) % 256 for i in range(3000))
         for name in (
@@ -520,14 +566,14 @@ class BadInput(Case):
     def test_a_3mf_with_a_bad_checksum_is_an_unreadable_file(self):
         # A 3MF whose zip checksum no longer matches its (still valid) XML: the
         # assimp Debian ships aborted on it (the tool read it in a child
-        # process, which it still does); lib3mf refuses it.
+        # process, which it still does); libzip's checksum refuses it.
         path = WORK / "bad_checksum.3mf"
         fixtures.write_3mf(path, self.vertices, self.faces)
         data = bytearray(path.read_bytes())
         digit = data.index(b'<vertex x="') + len(b'<vertex x="')
         data[digit] = ord("7") if data[digit] != ord("7") else ord("6")
         path.write_bytes(bytes(data))
-        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "not a readable 3MF file")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "3dmodel.model: CRC error")
 
     def test_stl_keywords_out_of_place_in_a_facet(self):
         # Corners read before a second `outer loop` or a new `solid` belonged
@@ -568,6 +614,28 @@ class BadInput(Case):
             "non_finite",
             EXIT_INVALID_MESH,
         )
+
+    def test_usd_refuses_what_float_cannot_hold(self):
+        # USD's attributes are 32-bit floats: a mass past 3.4e38 or moments
+        # below float's normal range leave the prim out, with the reason; the
+        # same cube in a float's range is a prim. (tests/cli/test_usd.py reads
+        # the layers back with OpenUSD.)
+        vertices, faces = fixtures.cube()
+        path = WORK / "usd_cube.obj"
+        fixtures.write_obj(path, vertices, faces)
+        result = run("--usda", path, "--scale", "1e13")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stderr)
+        self.assertIn(
+            "the whole: no USD prim: the mass 1e+39 is not a normal 32-bit float", result.stderr
+        )
+        self.assertNotIn("def Xform", result.stdout)
+        self.assertIn("# the whole: no prim: the mass", result.stdout)
+        result = run("--usda", path, "--scale", "1e-8")
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH, result.stderr)
+        self.assertIn("a principal moment", result.stderr)
+        result = run("--usda", path, "--scale", "1e6")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertIn("float physics:mass = 1e+18", result.stdout)
 
     def test_xml_outputs_are_utf8_whatever_the_paths(self):
         # Several files: each element follows a comment naming its file.
@@ -660,6 +728,8 @@ class BadInput(Case):
             ["--about", "1,2", "x.obj"],
             ["--frobnicate", "x.obj"],
             ["--json", "--urdf", "x.obj"],
+            ["--usda", "--mjcf", "x.obj"],
+            ["check", "--usda", "x.obj"],
             ["--weld-tolerance", "1", "x.obj"],
         ):
             with self.subTest(args=args):
@@ -708,6 +778,74 @@ class BadInput(Case):
         path = WORK / "shared_node.gltf"
         fixtures.write_gltf_document(path, document, bytes(buffer))
         self.expect_error(path, "unreadable", EXIT_UNREADABLE, "reached twice")
+
+    def test_malformed_3mf_models(self):
+        mesh = (
+            '<mesh><vertices><vertex x="0" y="0" z="0"/><vertex x="1" y="0" z="0"/>'
+            '<vertex x="0" y="1" z="0"/><vertex x="0" y="0" z="1"/></vertices><triangles>'
+            '<triangle v1="0" v2="2" v3="1"/><triangle v1="0" v2="1" v3="3"/>'
+            '<triangle v1="0" v2="3" v3="2"/><triangle v1="1" v2="2" v3="3"/></triangles></mesh>'
+        )
+
+        def model(resources, build='<item objectid="1"/>', unit="millimeter"):
+            return (
+                f'<model unit="{unit}" xmlns="http://schemas.microsoft.com/3dmanufacturing/'
+                f'core/2015/02"><resources>{resources}</resources><build>{build}</build></model>'
+            )
+
+        tetrahedron = f'<object id="1">{mesh}</object>'
+        path = WORK / "tetrahedron.3mf"
+        fixtures.write_3mf_package(path, model(tetrahedron, unit="inch"))
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 1 / 6)
+        self.assertEqual(out["notes"], ["the file declares its unit: inch"])
+        component = '<object id="{}"><components><component objectid="{}"{}/></components></object>'
+        for name, content, message in [
+            ("cycle", model(component.format(1, 1, "")), "object 1: a component names object 1"),
+            (
+                "later",
+                model(component.format(2, 1, "") + tetrahedron, '<item objectid="2"/>'),
+                "object 2: a component names object 1, which is not defined before it",
+            ),
+            (
+                "transform",
+                model(
+                    tetrahedron + component.format(2, 1, ' transform="1 0 0 0 1 0"'),
+                    '<item objectid="2"/>',
+                ),
+                "the transform is not 12 numbers",
+            ),
+            (
+                # A token that is no number, then more than 12 tokens in all.
+                "transform token",
+                model(
+                    tetrahedron + component.format(2, 1, ' transform="1 x' + " 0" * 12 + '"'),
+                    '<item objectid="2"/>',
+                ),
+                "the transform is not 12 numbers",
+            ),
+            ("twice", model(tetrahedron + tetrahedron), "object id 1 is used twice"),
+            ("no object", model(tetrahedron, '<item objectid="7"/>'), "names object 7"),
+            ("unit", model(tetrahedron, unit="furlong"), "<model unit='furlong'> is none of"),
+            ("number", model(tetrahedron.replace('x="1"', 'x="1,5"')), "x is not a number"),
+            ("index", model(tetrahedron.replace('v3="3"', 'v3="4"', 1)), "vertex index 4"),
+            ("not xml", "<model", "not well-formed XML"),
+            (
+                "production",
+                model(tetrahedron + component.format(2, 1, ' p:path="/3D/other.model"')),
+                "3MF production extension",
+            ),
+        ]:
+            with self.subTest(case=name):
+                path = WORK / (name.replace(" ", "_") + ".3mf")
+                fixtures.write_3mf_package(path, content)
+                self.expect_error(path, "unreadable", EXIT_UNREADABLE, message)
+        path = WORK / "no_model.3mf"
+        fixtures.write_3mf_package(path, model(tetrahedron), relationship="thumbnail")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "names no 3D model part")
+        fixtures.write_3mf_package(path, model(tetrahedron), target="/3D/elsewhere.model")
+        self.expect_error(path, "unreadable", EXIT_UNREADABLE, "no part 3D/elsewhere.model")
 
     def test_3mf_index_out_of_range_and_nan(self):
         path = WORK / "index.3mf"

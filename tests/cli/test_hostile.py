@@ -154,6 +154,12 @@ class Hostile(unittest.TestCase):
         path = self.write("many.off", "OFF\n100000000 1 0\n" + "0 0 0\n" * 1000)
         self.expect_unreadable(path, "impossible vertex count 100000000")
 
+    def test_msh_claiming_the_largest_counts(self):
+        # Every count 2^31 - 1 over a real bracket's bytes: refused by its length.
+        body = fixtures.msh_bytes(self.vertices, self.faces)[16:]
+        path = self.write("claims_2e9.msh", struct.pack("<4i", *[2**31 - 1] * 4) + body)
+        self.expect_unreadable(path, "make 94489280484 bytes, but the file has 400")
+
     def test_obj_face_of_a_hundred_million_corners_on_one_line(self):
         # f 1 2 3 1 2 3 ...: one polygon of 10^8 corners naming 3 vertices, a
         # 200 MB line written in chunks. The rest of the file has room for 3

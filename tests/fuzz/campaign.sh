@@ -24,7 +24,7 @@ SECONDS_PER_TARGET=${1:-600}
 shift || true
 TARGETS=("$@")
 if [ ${#TARGETS[@]} -eq 0 ]; then
-    TARGETS=(mesh moments obj stl ply off gltf glb 3mf 3mf_model dae audit arguments)
+    TARGETS=(mesh moments obj stl ply off msh gltf glb 3mf 3mf_model dae audit arguments)
 fi
 
 # The committed inputs of a target: seeds, regressions, dictionary.
@@ -54,16 +54,6 @@ for target in "${TARGETS[@]}"; do
         -max_total_time="$SECONDS_PER_TARGET" -rss_limit_mb=2048 -timeout=30
         -artifact_prefix="$findings/")
     [ -n "$dict" ] && [ -f "$dict" ] && options+=(-dict="$dict")
-    # lib3mf leaks libzip's buffers on every package it reads (lsan.supp), so
-    # libFuzzer would scan the whole heap for leaks after each input: four
-    # fifths of the 3MF target's time. The 3MF targets' campaigns run
-    # without that scan, and the corpus each leaves (every input that reached
-    # new coverage) is replayed with leak detection after it (below).
-    replay_for_leaks=false
-    if [ "$target" = 3mf ] || [ "$target" = 3mf_model ]; then
-        replay_for_leaks=true
-        options+=(-detect_leaks=0)
-    fi
     log=$STORE/$target/last.log
     # Fork mode runs its jobs in the working directory: the target's own.
     # ASan records no allocation stacks (malloc_context_size=0): a third of
@@ -72,17 +62,6 @@ for target in "${TARGETS[@]}"; do
     (cd "$STORE/$target" &&
         ASAN_OPTIONS=malloc_context_size=0 LSAN_OPTIONS=suppressions=$ROOT/tests/fuzz/lsan.supp \
             "$fuzzer" "${options[@]}" "$corpus" >"$log" 2>&1) || true
-    if $replay_for_leaks; then
-        # Each input of the corpus once, in a process of its own, with
-        # LeakSanitizer at exit; a leaking one is a finding.
-        while IFS= read -r -d '' input; do
-            if ! LSAN_OPTIONS=suppressions=$ROOT/tests/fuzz/lsan.supp \
-                "$fuzzer" "$input" >"$STORE/$target/replay.log" 2>&1 &&
-                grep -q 'LeakSanitizer' "$STORE/$target/replay.log"; then
-                cp "$input" "$findings/leak-$(basename "$input")"
-            fi
-        done < <(find "$corpus" -type f -print0)
-    fi
     # Fork mode's progress lines: "#<executions>: cov: C ft: F corp: N exec/s: ..."
     last=$(grep -E '^#[0-9]+: cov: ' "$log" | tail -n 1)
     executions=$(sed -E 's/^#([0-9]+):.*/\1/' <<<"$last")

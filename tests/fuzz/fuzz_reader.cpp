@@ -1,14 +1,14 @@
 // libFuzzer target: arbitrary bytes as a mesh file of one format, read by the
 // tool's reader of that format (src/cli/readers). Built once per format, the
-// format named by POLYMASS_FUZZ_FORMAT ("obj", "stl", "ply", "off", "gltf",
-// "glb", "3mf", "3mf_model", "dae").
+// format named by POLYMASS_FUZZ_FORMAT ("obj", "stl", "ply", "off", "msh",
+// "gltf", "glb", "3mf", "3mf_model", "dae").
 //
 // A 3MF package is a zip whose checksums keep a byte-level mutation from ever
-// changing the model lib3mf reads: "3mf" fuzzes the package (libzip's
-// reading, the declared sizes, lib3mf's refusals), and "3mf_model" takes the
+// changing the model the reader parses: "3mf" fuzzes the package (libzip's
+// reading, the declared sizes, the relationships), and "3mf_model" takes the
 // bytes as the model part (3D/3dmodel.model), stored in a package beside
-// the two parts every 3MF has, which reaches lib3mf's parsing and the
-// reader's objects, components and transforms.
+// the two parts every 3MF has, which reaches the model's parsing (pugixml)
+// and the reader's objects, components and transforms.
 //
 // The tool's own readers and the 3MF and Collada readers take the bytes;
 // glTF/GLB is read by tinygltf from a file, written at each execution into a
@@ -105,6 +105,7 @@ Model read(const std::string& bytes) {
     if (format == "stl") return polymass_cli::read_stl(bytes);
     if (format == "ply") return polymass_cli::read_ply(bytes);
     if (format == "off") return polymass_cli::read_off(bytes);
+    if (format == "msh") return polymass_cli::read_msh(bytes);
     if (format == "3mf") return polymass_cli::read_3mf(bytes);
     if (format == "3mf_model") return polymass_cli::read_3mf(package_of(bytes));
     if (format == "dae") return polymass_cli::read_collada(bytes);

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the seed corpora of the fuzz targets of the tool (tests/fuzz/<name>/
-corpus/ for obj, stl, ply, off, gltf, glb, 3mf, 3mf_model, dae, audit,
+corpus/ for obj, stl, ply, off, msh, gltf, glb, 3mf, 3mf_model, dae, audit,
 arguments) and of fuzz_moments.c, from the solids of tests/cli/fixtures.py (a
 cube and the L-bracket, also as triangles).
 
@@ -35,6 +35,7 @@ def write_meshes():
         "stl": [("_ascii", fixtures.write_ascii_stl), ("_binary", fixtures.write_binary_stl)],
         "ply": [("_ascii", fixtures.write_ascii_ply), ("_binary", fixtures.write_binary_ply)],
         "off": [("", fixtures.write_off)],
+        "msh": [("", fixtures.write_msh)],
         "gltf": [("", fixtures.write_gltf)],
         "glb": [("", fixtures.write_glb)],
         "3mf": [("", fixtures.write_3mf)],

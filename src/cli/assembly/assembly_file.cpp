@@ -9,6 +9,7 @@
 #include <set>
 
 #include "assembly/rotation.hpp"
+#include "model/materials.hpp"
 #include "model/units.hpp"
 #include "readers/file_bytes.hpp"
 #include "readers/mesh_reader.hpp"
@@ -160,10 +161,26 @@ AssemblyPart read_part(const Json& value, size_t index, const std::string& file,
     }
     const Json* density = members.take("density");
     const Json* mass = members.take("mass");
-    if ((density != nullptr) == (mass != nullptr))
-        place.fail("give exactly one of \"density\" and \"mass\"");
+    const Json* material = members.take("material");
+    if ((density != nullptr) + (mass != nullptr) + (material != nullptr) != 1)
+        place.fail("give exactly one of \"density\", \"material\" and \"mass\"");
     part.by_mass = mass != nullptr;
-    part.value = positive_number(mass ? *mass : *density, place.member(mass ? "mass" : "density"));
+    if (material) {
+        const Place field = place.member("material");
+        const std::string name = text(*material, field);
+        const Material* known = find_material(name);
+        if (!known)
+            field.fail("\"" + name + "\" is not a known material; the known ones are " +
+                       known_materials() + " (docs/materials.md)");
+        // Its density is in kg/m^3, which lengths of unknown unit would misread.
+        if (!part.metres_per_unit)
+            field.fail("a material's density is in kg/m^3: the part needs its \"units\"");
+        part.material = known->name;
+        part.value = known->density;
+    } else {
+        part.value =
+            positive_number(mass ? *mass : *density, place.member(mass ? "mass" : "density"));
+    }
     if (const Json* translation = members.take("translation"))
         part.translation = numbers<3>(*translation, place.member("translation"));
     bool mirror = false;
@@ -177,7 +194,8 @@ AssemblyPart read_part(const Json& value, size_t index, const std::string& file,
         place.member("mirror").fail("a mirror needs a \"rotation\" matrix of determinant -1");
     }
     members.finish(
-        "a part has \"name\", \"mesh\", \"format\", \"units\", \"density\" or \"mass\", "
+        "a part has \"name\", \"mesh\", \"format\", \"units\", \"density\", \"material\" "
+        "or \"mass\", "
         "\"translation\", \"rotation\" and \"mirror\"",
         &place);
     return part;

@@ -1,5 +1,6 @@
 // An assembly file (JSON, schema in the README): parts, each a mesh file
-// placed in the assembly's frame with its units and its density or mass.
+// placed in the assembly's frame with its units and its density, material
+// or mass.
 // Every field is checked; an unknown or repeated key, a missing or ill-typed
 // value, an ambiguous or improper rotation is an error naming the part and
 // the JSON path of the field.
@@ -22,6 +23,7 @@ struct AssemblyPart {
     std::optional<double> metres_per_unit;
     bool by_mass = false;  // value is "mass", else "density"
     double value = 1.0;
+    std::string material;  // "material": the table's name, value its density
     // x_assembly = rotation x_part + translation (row-major; orthonormal).
     std::array<double, 9> rotation{1, 0, 0, 0, 1, 0, 0, 0, 1};
     std::array<double, 3> translation{0, 0, 0};

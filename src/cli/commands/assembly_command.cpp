@@ -10,6 +10,7 @@
 
 #include "assembly/assembly_file.hpp"
 #include "commands/commands.hpp"
+#include "commands/part_materials.hpp"
 #include "library/solid_moments.hpp"
 #include "readers/mesh_reader.hpp"
 
@@ -41,6 +42,7 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
     placed.report.vertices = used_vertices(model, whole);
     placed.report.faces = whole.face_sizes.size();
     placed.report.computed = true;
+    placed.report.material = part.material;
     const IntegratedSolid solid(library, model, whole, options_for(arguments));
     if (!solid.valid()) {
         placed.report.result = solid.failure();
@@ -107,6 +109,7 @@ FileReport assembly_report(const Library& library, const std::string& path,
     report.readable = true;
     if (assembly.parts.size() > 1) report.notes.push_back(kNotCheckedNote);
     report.solid.name = "assembly";
+    report.solid.material = common_material(report.parts);
     for (const PartReport& part : report.parts) {
         report.solid.vertices += part.vertices;
         report.solid.faces += part.faces;

@@ -24,11 +24,27 @@ std::vector<polymass_mass_desc> part_masses(const Arguments& arguments, const st
             if (known.find(quoted) != std::string::npos) continue;  // names may repeat
             known += (known.empty() ? "" : ", ") + quoted;
         }
-        throw UsageError(std::string(material.by_mass ? "--mass " : "--density ") + material.part +
-                         "=...: " + path + " has no part named '" + material.part +
-                         "'; its parts are " + known);
+        const char* option = !material.material.empty() ? "--material "
+                             : material.by_mass         ? "--mass "
+                                                        : "--density ";
+        throw UsageError(option + material.part + "=...: " + path + " has no part named '" +
+                         material.part + "'; its parts are " + known);
     }
     return masses;
+}
+
+std::string material_of(const Arguments& arguments, const std::string& part) {
+    for (const PartMaterial& material : arguments.part_materials) {
+        if (material.part == part) return material.material;
+    }
+    return arguments.material;
+}
+
+std::string common_material(const std::vector<PartReport>& parts) {
+    for (const PartReport& part : parts) {
+        if (part.material != parts.front().material) return "";
+    }
+    return parts.empty() ? "" : parts.front().material;
 }
 
 }  // namespace polymass_cli

@@ -1,6 +1,7 @@
-// Per-part materials of a file with several parts: --density NAME=D and
-// --mass NAME=M give the parts named NAME their density or mass; the other
-// parts take the file's --density (or 1).
+// Per-part materials of a file with several parts: --density NAME=D,
+// --mass NAME=M and --material NAME=MATERIAL give the parts named NAME their
+// density or mass; the other parts take the file's --density or --material
+// (or 1).
 #pragma once
 
 #include <polymass/polymass.h>
@@ -10,6 +11,7 @@
 
 #include "arguments.hpp"
 #include "model/model.hpp"
+#include "reports/report.hpp"
 
 namespace polymass_cli {
 
@@ -20,5 +22,13 @@ namespace polymass_cli {
 std::vector<polymass_mass_desc> part_masses(const Arguments& arguments, const std::string& path,
                                             const Model& model,
                                             const polymass_mass_desc& file_mass);
+
+// The table's name of the material the command line gives the parts named
+// `part` (--material NAME=MATERIAL, else the whole's --material), or "" when
+// their density or mass is a number.
+std::string material_of(const Arguments& arguments, const std::string& part);
+
+// The material of a whole made of `parts`: the one they all share, else "".
+std::string common_material(const std::vector<PartReport>& parts);
 
 }  // namespace polymass_cli

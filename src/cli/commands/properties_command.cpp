@@ -54,10 +54,13 @@ FileReport process_file(const Library& library, const std::string& path, const A
     const auto compute_start = std::chrono::steady_clock::now();
     if (model.parts.size() > 1) {
         report_parts(library, path, model, arguments, mass, report);
+        for (PartReport& part : report.parts) part.material = material_of(arguments, part.name);
+        report.solid.material = common_material(report.parts);
     } else {
-        // One part: --density/--mass NAME=V may still name it.
+        // One part: --density/--mass/--material NAME=V may still name it.
         report.solid = solid_report(library, model, model.parts.front(),
                                     part_masses(arguments, path, model, mass).front());
+        report.solid.material = material_of(arguments, report.solid.name);
     }
     report.compute_seconds = seconds_since(compute_start);
     return report;
@@ -181,6 +184,11 @@ ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& ar
             break;
         case OutputFormat::kJson:
             write_json(std::cout, files, settings);
+            break;
+        case OutputFormat::kUsda:
+            // A prim float cannot hold is a result the output cannot carry.
+            if (!write_usda(std::cout, std::cerr, files, settings))
+                worst = std::max(worst, exit_code_of(POLYMASS_ERROR_OVERFLOW));
             break;
         default:
             write_inertial_xml(std::cout, files, arguments.output, settings);

@@ -23,7 +23,7 @@ struct Part {
 };
 
 struct Model {
-    std::string format;             // "obj", "stl", "ply", "off", "gltf", "glb", "3mf"
+    std::string format;  // "obj", "stl", "ply", "off", "msh", "gltf", "glb", "3mf", "dae"
     std::vector<double> positions;  // x, y, z of each vertex
     std::vector<Part> parts;        // at least one
     // What the reader must tell the user about the numbers (a unit the file

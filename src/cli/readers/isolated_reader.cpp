@@ -136,9 +136,9 @@ std::string read_all(int fd) {
 // budget. The libraries behind these readers catch std::bad_alloc inside
 // their parsers and report a parse error of their own, carry on with what
 // they have, or let it escape a noexcept function and abort (tinygltf,
-// lib3mf, assimp): however the child ends after an allocation failed, its
-// answer says nothing about the file, and the parent reports the failed
-// allocation instead.
+// assimp; libzip reports a failed malloc as an error of its own): however
+// the child ends after an allocation failed, its answer says nothing about
+// the file, and the parent reports the failed allocation instead.
 struct ChildState {
     std::atomic<int> allocation_failed{0};
     std::atomic<int> budgeted{0};  // a failed allocation then means the file's, not the machine's

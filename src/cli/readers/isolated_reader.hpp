@@ -1,9 +1,10 @@
 // Running a reader in a child process, so that a crash inside it is a
 // ReadError, not the end of the tool.
 //
-// The readers built on other libraries (tinygltf, lib3mf; assimp, which the
-// tool used before, aborted on a 3MF with a bad zip checksum) parse untrusted
-// JSON, buffers and zip packages with code the project cannot fix. They run in
+// The readers built on other libraries (tinygltf, assimp; the 3MF reader's
+// libzip and pugixml) parse untrusted JSON, buffers and zip packages with
+// code the project cannot fix (assimp, which once read 3MF, aborted on a bad
+// zip checksum). They run in
 // a forked child that sends the Model back through a pipe; the parent turns a
 // child killed by a signal into a ReadError saying so. The memory of a 3MF or
 // Collada reader is bounded by the file's size (see read_isolated), so that a

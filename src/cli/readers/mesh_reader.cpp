@@ -66,7 +66,7 @@ uint64_t most_face_corners(uint64_t vertex_count) {
     return std::max(uint64_t(1) << 16, 2 * vertex_count);
 }
 
-const char* supported_formats() { return "obj, stl, ply, off, gltf, glb, 3mf, dae"; }
+const char* supported_formats() { return "obj, stl, ply, off, msh, gltf, glb, 3mf, dae"; }
 
 Model read_mesh_file(const std::string& path, const std::string& format) {
     const std::string name = format.empty() ? format_from_extension(path) : lowercase(format);
@@ -79,6 +79,8 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         model = read_ply(FileBytes(path).view());
     } else if (name == "off") {
         model = read_off(FileBytes(path).view());
+    } else if (name == "msh") {
+        model = read_msh(FileBytes(path).view());
     } else if (name == "gltf" || name == "glb") {
         regular_file_size(path);  // a device, a pipe or an empty file is refused here
         model = read_isolated([&] { return read_gltf(path); });

@@ -1,10 +1,11 @@
-// Reading a mesh file into a Model. OBJ, STL, PLY and OFF are read by the
-// project's own readers (obj_reader, stl_reader, ply_reader, off_reader): they keep
+// Reading a mesh file into a Model. OBJ, STL, PLY, OFF and MuJoCo's .msh are
+// read by the project's own readers (obj_reader, ..., msh_reader): they keep
 // polygon faces and every index as written, so a bad index or a NaN reaches the
 // library's checks instead of being dropped or clamped, and a truncated file is
-// an error, not a read past its end. glTF/GLB go through tinygltf and 3MF
-// through lib3mf, each in a child process (isolated_reader), since they parse
-// untrusted JSON, binary buffers and zip packages with code not ours.
+// an error, not a read past its end. glTF/GLB go through tinygltf, 3MF
+// through libzip and pugixml, Collada through assimp, each in a child process
+// (isolated_reader), since they parse untrusted JSON, binary buffers and zip
+// packages with code not ours.
 #pragma once
 
 #include <cstdint>

@@ -5,12 +5,12 @@
 // part. Normals are ignored (the vertex order says which side is out) and equal
 // positions are welded exactly, since STL stores every triangle's corners.
 #include <cstdint>
-#include <cstring>
 #include <string>
 #include <vector>
 
 #include "library/corner_welding.hpp"
 #include "readers/format_readers.hpp"
+#include "readers/little_endian.hpp"
 #include "readers/mesh_reader.hpp"
 #include "readers/text_lines.hpp"
 
@@ -19,18 +19,6 @@ namespace {
 
 constexpr uint64_t kBinaryHeaderBytes = 84;
 constexpr uint64_t kBinaryTriangleBytes = 50;
-
-uint32_t little_endian_u32(const unsigned char* bytes) {
-    return static_cast<uint32_t>(bytes[0]) | static_cast<uint32_t>(bytes[1]) << 8 |
-           static_cast<uint32_t>(bytes[2]) << 16 | static_cast<uint32_t>(bytes[3]) << 24;
-}
-
-float little_endian_f32(const unsigned char* bytes) {
-    const uint32_t bits = little_endian_u32(bytes);
-    float value = 0.0f;
-    std::memcpy(&value, &bits, sizeof value);
-    return value;
-}
 
 bool starts_with_solid(std::string_view bytes) {
     const std::string::size_type first = bytes.find_first_not_of(" \t\r\n");

@@ -1,21 +1,34 @@
-// 3MF through the 3MF Consortium's lib3mf (its version 1 C interface, as
-// Debian ships it), which opens the package, parses the model and checks it
-// against the specification (an index out of range, a malformed number or a
-// missing object is its error, passed on with its message). Each build item
-// is a part: its object's meshes, through components to any depth, placed by
-// the item's and the components' transforms composed in double precision; a
-// mirroring placement has its triangles' corners reversed so the solid stays
-// outside-out.
+// 3MF (3MF Consortium, 3MF Core Specification 1.3), read here with libzip
+// (the package) and pugixml (its model), in double precision: the
+// specification writes coordinates and transforms as decimal numbers, and
+// each is parsed to the nearest double (lib3mf 1.x, read before, rounded them
+// to 32-bit floats: a public sample's volume 195037.7183 where its decimals
+// give 195037.7039).
 //
-// lib3mf 1.x keeps coordinates and transforms as 32-bit floats: a 3MF
-// coordinate is exact here when it is a float (as those of CAD exports in
-// micrometre steps of a few millimetres are not). The README says so.
-#include <Model/COM/NMR_DLLInterfaces.h>
+// The package's root relationships (_rels/.rels) name the model part (the
+// relationship of type .../3dmanufacturing/2013/01/3dmodel). Its <model
+// unit> is reported in a note; its <resources> hold <object>s, each a
+// <mesh> (<vertices><vertex x y z/>..., <triangles><triangle v1 v2 v3/>...)
+// or <components> (<component objectid transform/>...) naming objects
+// defined before it (the specification's rule, which also rules out cycles);
+// each <build><item objectid transform/> is a part: its object's meshes,
+// through components to any depth, placed by the item's and the components'
+// transforms composed in double precision. A mirroring placement has its
+// triangles' corners reversed so the solid stays outside-out. A transform
+// is 12 numbers m00 m01 m02 m10 m11 m12 m20 m21 m22 m30 m31 m32 acting on row
+// vectors: (x y z 1) times the 4x3 matrix.
+//
+// Hostile packages: a zip bomb is refused by the sizes its central directory
+// declares, before anything is inflated; a part read is never larger than its
+// declared size (libzip stops there, and a checksum that does not match is an
+// error); the mesh reader runs this in a child process with a memory budget.
 #include <zip.h>
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <new>
+#include <pugixml.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -23,208 +36,300 @@
 #include "readers/format_readers.hpp"
 #include "readers/isolated_reader.hpp"
 #include "readers/mesh_reader.hpp"
+#include "readers/text_lines.hpp"
 #include "readers/transform.hpp"
+#include "reports/utf8.hpp"
+#include "xml_memory.hpp"
 
 namespace polymass_cli {
 namespace {
 
-// A lib3mf instance (its interface's handle), released when it goes out of
-// scope.
-using Instance = NMR::PLib3MFBase*;
-struct Release {
-    void operator()(Instance instance) const { NMR::lib3mf_release(instance); }
-};
-using Handle = std::unique_ptr<NMR::PLib3MFBase, Release>;
+constexpr const char* kModelRelationship =
+    "http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel";
 
-// Throws the instance's last error when result is a failure.
-void check(LIB3MFRESULT result, Instance instance, const char* doing) {
-    if (result == LIB3MF_OK) return;
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    std::string text = doing;
-    if (instance != nullptr && NMR::lib3mf_getlasterror(instance, &code, &message) == LIB3MF_OK &&
-        message != nullptr) {
-        text += ": ";
-        text += message;
-    }
-    throw ReadError(text + " (lib3mf error " + std::to_string(result) + ")");
+[[noreturn]] void fail(const std::string& what) {
+    throw ReadError("not a readable 3MF file: " + what);
 }
 
-Transform transform_of(const NMR::MODELTRANSFORM& m) {
+// The package, opened by libzip from the bytes (which stay the caller's).
+class Package {
+public:
+    explicit Package(std::string_view bytes) : size_(bytes.size()) {
+        // Fails only when it cannot allocate (the bytes are never NULL).
+        zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, nullptr);
+        if (source == nullptr) throw std::bad_alloc();
+        zip_error_t error;
+        zip_error_init(&error);
+        archive_ = zip_open_from_source(source, ZIP_RDONLY, &error);
+        const bool out_of_memory = zip_error_code_zip(&error) == ZIP_ER_MEMORY;
+        const std::string why = zip_error_strerror(&error);
+        zip_error_fini(&error);
+        if (archive_ == nullptr) {
+            zip_source_free(source);
+            if (out_of_memory) throw std::bad_alloc();
+            fail("not a zip package (" + why + ")");
+        }
+    }
+    ~Package() { zip_discard(archive_); }  // frees the source too
+    Package(const Package&) = delete;
+    Package& operator=(const Package&) = delete;
+
+    // A zip bomb is refused before it inflates: the sizes the central
+    // directory declares for the parts add up to no more than the reader's
+    // memory budget (the same bound read_isolated sets). Reading the
+    // directory inflates nothing.
+    void check_declared_sizes() const {
+        const uint64_t most = reader_memory_budget(size_);
+        uint64_t declared = 0;
+        const zip_int64_t entries = zip_get_num_entries(archive_, 0);
+        for (zip_int64_t i = 0; i < entries && declared <= most; ++i) {
+            zip_stat_t part;
+            // The name as stored (ZIP_FL_ENC_RAW): converting it would
+            // allocate, and only the size is wanted.
+            if (zip_stat_index(archive_, zip_uint64_t(i), ZIP_FL_ENC_RAW, &part) == 0 &&
+                (part.valid & ZIP_STAT_SIZE) != 0) {
+                // Saturates: two parts declaring 2^63 bytes each do not wrap.
+                declared += std::min<uint64_t>(part.size, most + 1);
+            }
+        }
+        if (declared > most) {
+            fail("its parts inflate to more than " + std::to_string(most >> 20) + " MiB from " +
+                 std::to_string(size_) +
+                 " bytes, more than a mesh of that size can hold (a zip bomb?)");
+        }
+    }
+
+    // The part's bytes (OPC part names are case-insensitive), its declared
+    // size at most: a part that inflates to another size, or whose checksum
+    // does not match, is an error.
+    std::string part(const std::string& name) const {
+        const zip_int64_t index = zip_name_locate(archive_, name.c_str(), ZIP_FL_NOCASE);
+        if (index < 0) fail("the package has no part " + valid_utf8(name));
+        zip_stat_t stat;
+        if (zip_stat_index(archive_, zip_uint64_t(index), 0, &stat) != 0 ||
+            (stat.valid & ZIP_STAT_SIZE) == 0)
+            fail("the part " + valid_utf8(name) + " has no size");
+        std::string bytes(stat.size, '\0');
+        zip_file_t* file = zip_fopen_index(archive_, zip_uint64_t(index), 0);
+        if (file == nullptr) fail(valid_utf8(name) + ": " + zip_strerror(archive_));
+        const zip_int64_t read = zip_fread(file, bytes.data(), bytes.size());
+        // Reading on at the end checks the checksum (libzip's CRC error).
+        char extra = 0;
+        const zip_int64_t after =
+            read == zip_int64_t(bytes.size()) ? zip_fread(file, &extra, 1) : -1;
+        const std::string why = zip_file_strerror(file);
+        zip_fclose(file);
+        if (after != 0) fail(valid_utf8(name) + ": " + (after > 0 ? "longer than declared" : why));
+        return bytes;
+    }
+
+private:
+    zip_t* archive_ = nullptr;
+    uint64_t size_;
+};
+
+pugi::xml_document parse(const std::string& bytes, const std::string& part) {
+    pugixml_allocates_with_new();
+    pugi::xml_document document;
+    const pugi::xml_parse_result parsed = document.load_buffer(bytes.data(), bytes.size());
+    if (!parsed) {
+        fail(part + " is not well-formed XML (" + parsed.description() + " at byte " +
+             std::to_string(parsed.offset) + ")");
+    }
+    return document;
+}
+
+// The model part's name, from the package's root relationships.
+std::string model_part_name(const Package& package) {
+    const pugi::xml_document relationships = parse(package.part("_rels/.rels"), "_rels/.rels");
+    for (const pugi::xml_node relationship :
+         relationships.child("Relationships").children("Relationship")) {
+        if (std::string_view(relationship.attribute("Type").value()) != kModelRelationship)
+            continue;
+        std::string target = relationship.attribute("Target").value();
+        if (!target.empty() && target.front() == '/') target.erase(0, 1);
+        return target;
+    }
+    fail("_rels/.rels names no 3D model part");
+}
+
+// Where a value is ("object 3: vertex 17"), spelled out only for an error:
+// a model has millions of vertices.
+struct Where {
+    const std::string& place;
+    const char* element = nullptr;  // "vertex", "triangle", or none
+    uint64_t index = 0;
+
+    std::string text() const {
+        return element ? place + ": " + element + " " + std::to_string(index) : place;
+    }
+};
+
+double number(const pugi::xml_node element, const char* name, const Where& where) {
+    const pugi::xml_attribute attribute = element.attribute(name);
+    double value = 0.0;
+    if (!attribute || !parse_double(attribute.value(), value))
+        fail(where.text() + ": " + name + " is not a number: '" + valid_utf8(attribute.value()) +
+             "'");
+    return value;
+}
+
+uint64_t whole_number(const pugi::xml_node element, const char* name, const Where& where) {
+    const pugi::xml_attribute attribute = element.attribute(name);
+    int64_t value = -1;
+    if (!attribute || !parse_integer(attribute.value(), value) || value < 0)
+        fail(where.text() + ": " + name + " is not a whole number: '" +
+             valid_utf8(attribute.value()) + "'");
+    return uint64_t(value);
+}
+
+// A transform attribute as the Transform of readers/transform.hpp (row-major
+// 3x4, acting on column vectors): the transpose of 3MF's row-vector matrix.
+Transform transform_of(const pugi::xml_node element, const std::string& where) {
+    const pugi::xml_attribute attribute = element.attribute("transform");
+    if (!attribute) return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    std::string_view text = attribute.value();
+    double m[12];
+    int count = 0;
+    while (!text.empty()) {
+        const std::string_view::size_type start = text.find_first_not_of(" \t\r\n");
+        if (start == std::string_view::npos) break;
+        text.remove_prefix(start);
+        const std::string_view token = text.substr(0, text.find_first_of(" \t\r\n"));
+        text.remove_prefix(token.size());
+        if (count == 12 || !parse_double(token, m[count])) {
+            count = -1;  // a 13th token, or one that is no number
+            break;
+        }
+        ++count;
+    }
+    if (count != 12)
+        fail(where + ": the transform is not 12 numbers: '" + valid_utf8(attribute.value()) + "'");
     Transform t{};
     for (int row = 0; row < 3; ++row) {
-        for (int column = 0; column < 4; ++column) t[4 * row + column] = m.m_fFields[row][column];
+        for (int column = 0; column < 3; ++column) t[4 * row + column] = m[3 * column + row];
+        t[4 * row + 3] = m[9 + row];
     }
     return t;
 }
 
-std::string object_name(Instance object) {
-    ULONG needed = 0;
-    if (NMR::lib3mf_object_getnameutf8(object, nullptr, 0, &needed) != LIB3MF_OK || needed == 0) {
-        return "";
-    }
-    std::vector<char> name(needed + 1, '\0');
-    check(NMR::lib3mf_object_getnameutf8(object, name.data(), needed + 1, &needed), object,
-          "reading an object's name");
-    return std::string(name.data());
-}
+const std::string kAnObject = "an object", kAComponent = "a component";
 
-void add_mesh(Model& model, Part& part, Instance mesh, const Transform& transform) {
-    DWORD vertex_count = 0, triangle_count = 0;
-    check(NMR::lib3mf_meshobject_getvertexcount(mesh, &vertex_count), mesh, "counting vertices");
-    check(NMR::lib3mf_meshobject_gettrianglecount(mesh, &triangle_count), mesh,
-          "counting triangles");
-    std::vector<NMR::MODELMESHVERTEX> vertices(vertex_count);
-    std::vector<NMR::MODELMESHTRIANGLE> triangles(triangle_count);
-    if (vertex_count > 0) {
-        check(NMR::lib3mf_meshobject_getvertices(mesh, vertices.data(), vertex_count, nullptr),
-              mesh, "reading vertices");
-    }
-    if (triangle_count > 0) {
-        check(NMR::lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), triangle_count,
-                                                        nullptr),
-              mesh, "reading triangles");
-    }
-    const uint64_t first_vertex = model.vertex_count();
-    for (const NMR::MODELMESHVERTEX& v : vertices) {
-        append_transformed(model.positions, transform, v.m_fPosition[0], v.m_fPosition[1],
-                           v.m_fPosition[2]);
-    }
-    if (model.vertex_count() >= kIndexOutOfRange) throw ReadError("more than 4294967294 vertices");
-    const bool mirrored = determinant(transform) < 0;
-    for (const NMR::MODELMESHTRIANGLE& triangle : triangles) {
-        for (int corner = 0; corner < 3; ++corner) {
-            const DWORD index = triangle.m_nIndices[mirrored ? 2 - corner : corner];
-            part.indices.push_back(index < vertex_count
-                                       ? static_cast<uint32_t>(first_vertex + index)
-                                       : kIndexOutOfRange);
+class ModelReader {
+public:
+    explicit ModelReader(Model& model) : model_(model) {}
+
+    void add_object(Part& part, uint64_t id, const Transform& transform, unsigned depth) {
+        // Components name objects defined before them, so there is no cycle;
+        // this bounds the recursion of a long chain.
+        constexpr unsigned kDeepest = 1000;
+        if (depth > kDeepest) fail("the components are nested too deep");
+        const pugi::xml_node object = objects_.at(id);
+        const std::string where = "object " + std::to_string(id);
+        if (const pugi::xml_node mesh = object.child("mesh")) {
+            add_mesh(part, mesh, transform, where);
+            return;
         }
-        part.face_sizes.push_back(3);
-    }
-}
-
-void add_object(Model& model, Part& part, Instance object, const Transform& transform,
-                unsigned depth) {
-    // lib3mf refuses circular references; this bounds a deep but finite tree.
-    constexpr unsigned kDeepest = 1000;
-    if (depth > kDeepest) throw ReadError("the 3MF components are nested too deep");
-    BOOL is_mesh = false, is_components = false;
-    check(NMR::lib3mf_object_ismeshobject(object, &is_mesh), object, "reading an object");
-    check(NMR::lib3mf_object_iscomponentsobject(object, &is_components), object,
-          "reading an object");
-    if (is_mesh) {
-        add_mesh(model, part, object, transform);
-        return;
-    }
-    if (!is_components) return;
-    DWORD count = 0;
-    check(NMR::lib3mf_componentsobject_getcomponentcount(object, &count), object,
-          "counting components");
-    for (DWORD i = 0; i < count; ++i) {
-        Instance raw = nullptr;
-        check(NMR::lib3mf_componentsobject_getcomponent(object, i, &raw), object,
-              "reading a component");
-        const Handle component(raw);
-        NMR::MODELTRANSFORM placement{};
-        check(NMR::lib3mf_component_gettransform(component.get(), &placement), component.get(),
-              "reading a component's transform");
-        check(NMR::lib3mf_component_getobjectresource(component.get(), &raw), component.get(),
-              "reading a component's object");
-        const Handle child(raw);
-        add_object(model, part, child.get(), compose(transform, transform_of(placement)),
-                   depth + 1);
-    }
-}
-
-// A zip bomb is refused before lib3mf inflates it: the sizes the package's
-// central directory declares for its parts add up to no more than its
-// reader's memory budget (the same bound read_isolated sets). They are read
-// by libzip, the zip library lib3mf reads the package with, from the same
-// bytes, so the check and the reading cannot see two different packages.
-// Reading the directory inflates nothing. A package that declares less than
-// it holds fails its sizes and checksums in lib3mf, within that budget. A
-// package libzip cannot open is left to lib3mf's error, unless memory ran out
-// (std::bad_alloc: the check must not be skipped for want of memory).
-void check_declared_sizes(std::string_view package) {
-    // Fails only when it cannot allocate (the bytes are never NULL).
-    zip_source_t* source = zip_source_buffer_create(package.data(), package.size(), 0, nullptr);
-    if (source == nullptr) throw std::bad_alloc();
-    zip_error_t error;
-    zip_error_init(&error);
-    zip_t* archive = zip_open_from_source(source, ZIP_RDONLY, &error);
-    const bool out_of_memory = zip_error_code_zip(&error) == ZIP_ER_MEMORY;
-    zip_error_fini(&error);
-    if (archive == nullptr) {
-        zip_source_free(source);
-        if (out_of_memory) throw std::bad_alloc();
-        return;
-    }
-    const uint64_t most = reader_memory_budget(package.size());
-    uint64_t declared = 0;
-    const zip_int64_t entries = zip_get_num_entries(archive, 0);
-    for (zip_int64_t i = 0; i < entries && declared <= most; ++i) {
-        zip_stat_t part;
-        // The name as stored (ZIP_FL_ENC_RAW): converting it would allocate,
-        // and only the size is wanted.
-        if (zip_stat_index(archive, static_cast<zip_uint64_t>(i), ZIP_FL_ENC_RAW, &part) == 0 &&
-            (part.valid & ZIP_STAT_SIZE) != 0) {
-            // Saturates: two parts declaring 2^63 bytes each do not wrap.
-            declared += std::min<uint64_t>(part.size, most + 1);
+        for (const pugi::xml_node component : object.child("components").children("component")) {
+            // collect() checked the object it names.
+            add_object(part, whole_number(component, "objectid", {where}),
+                       compose(transform, transform_of(component, where + ": a component")),
+                       depth + 1);
         }
     }
-    zip_discard(archive);  // frees the source too; the bytes are the caller's
-    if (declared > most) {
-        throw ReadError("not a readable 3MF file: its parts inflate to more than " +
-                        std::to_string(most >> 20) + " MiB from " + std::to_string(package.size()) +
-                        " bytes, more than a mesh of that size can hold (a zip bomb?)");
+
+    // The objects of <resources>, by id, in order.
+    void collect(const pugi::xml_node resources) {
+        for (const pugi::xml_node object : resources.children("object")) {
+            const uint64_t id = whole_number(object, "id", {kAnObject});
+            // A component may only name an object defined before it (not
+            // itself): so there is no cycle.
+            if (!objects_.emplace(id, object).second)
+                fail("object id " + std::to_string(id) + " is used twice");
+            for (const pugi::xml_node component :
+                 object.child("components").children("component")) {
+                const uint64_t child = whole_number(component, "objectid", {kAComponent});
+                if (component.attribute("p:path"))
+                    fail("object " + std::to_string(id) +
+                         ": a component in another model part (3MF production extension)");
+                if (objects_.find(child) == objects_.end() || child == id)
+                    fail("object " + std::to_string(id) + ": a component names object " +
+                         std::to_string(child) + ", which is not defined before it");
+            }
+        }
     }
-}
+
+    pugi::xml_node object(uint64_t id) const {
+        const auto found = objects_.find(id);
+        return found == objects_.end() ? pugi::xml_node() : found->second;
+    }
+
+private:
+    void add_mesh(Part& part, const pugi::xml_node mesh, const Transform& transform,
+                  const std::string& where) {
+        const uint64_t first_vertex = model_.vertex_count();
+        uint64_t vertex_count = 0;
+        for (const pugi::xml_node vertex : mesh.child("vertices").children("vertex")) {
+            const Where at{where, "vertex", vertex_count};
+            append_transformed(model_.positions, transform, number(vertex, "x", at),
+                               number(vertex, "y", at), number(vertex, "z", at));
+            ++vertex_count;
+        }
+        if (model_.vertex_count() >= kIndexOutOfRange) fail("more than 4294967294 vertices");
+        const bool mirrored = determinant(transform) < 0;
+        uint64_t triangle = 0;
+        for (const pugi::xml_node corners : mesh.child("triangles").children("triangle")) {
+            const Where at{where, "triangle", triangle++};
+            uint32_t indices[3];
+            const char* names[] = {"v1", "v2", "v3"};
+            for (int corner = 0; corner < 3; ++corner) {
+                const uint64_t index = whole_number(corners, names[corner], at);
+                if (index >= vertex_count)
+                    fail(at.text() + ": vertex index " + std::to_string(index) +
+                         " is out of range (" + std::to_string(vertex_count) + " vertices)");
+                indices[corner] = uint32_t(first_vertex + index);
+            }
+            for (int corner = 0; corner < 3; ++corner)
+                part.indices.push_back(indices[mirrored ? 2 - corner : corner]);
+            part.face_sizes.push_back(3);
+        }
+    }
+
+    Model& model_;
+    std::map<uint64_t, pugi::xml_node> objects_;
+};
 
 }  // namespace
 
-Model read_3mf(std::string_view package) {
-    check_declared_sizes(package);
-    Instance raw = nullptr;
-    check(NMR::lib3mf_createmodel(&raw), nullptr, "creating a 3MF model");
-    const Handle model3mf(raw);
-    check(NMR::lib3mf_model_queryreader(model3mf.get(), "3mf", &raw), model3mf.get(),
-          "creating a 3MF reader");
-    const Handle reader(raw);
-    // lib3mf only reads the buffer (its interface predates const).
-    BYTE* const bytes = reinterpret_cast<BYTE*>(const_cast<char*>(package.data()));
-    check(NMR::lib3mf_reader_readfrombuffer(reader.get(), bytes, package.size()), reader.get(),
-          "not a readable 3MF file");
+Model read_3mf(std::string_view bytes) {
+    const Package package(bytes);
+    package.check_declared_sizes();
+    const std::string name = model_part_name(package);
+    const pugi::xml_document document = parse(package.part(name), valid_utf8(name));
+    const pugi::xml_node root = document.child("model");
+    if (!root) fail(valid_utf8(name) + " has no <model>");
 
     Model model;
-    model.notes.emplace_back(
-        "lib3mf reads 3MF coordinates as 32-bit floats: each is rounded to about 6e-8 of its "
-        "value, and so may be the results");
-    DWORD unit = 0;
-    check(NMR::lib3mf_model_getunit(model3mf.get(), &unit), model3mf.get(), "reading the unit");
     static const char* const kUnits[] = {"micron", "millimeter", "centimeter",
                                          "inch",   "foot",       "meter"};
-    if (unit < 6) model.notes.push_back(std::string("the file declares its unit: ") + kUnits[unit]);
-    check(NMR::lib3mf_model_getbuilditems(model3mf.get(), &raw), model3mf.get(),
-          "reading the build items");
-    const Handle items(raw);
-    BOOL more = false;
-    check(NMR::lib3mf_builditemiterator_movenext(items.get(), &more), items.get(),
-          "reading the build items");
-    for (; more; check(NMR::lib3mf_builditemiterator_movenext(items.get(), &more), items.get(),
-                       "reading the build items")) {
-        check(NMR::lib3mf_builditemiterator_getcurrent(items.get(), &raw), items.get(),
-              "reading a build item");
-        const Handle item(raw);
-        NMR::MODELTRANSFORM placement{};
-        check(NMR::lib3mf_builditem_getobjecttransform(item.get(), &placement), item.get(),
-              "reading a build item's transform");
-        check(NMR::lib3mf_builditem_getobjectresource(item.get(), &raw), item.get(),
-              "reading a build item's object");
-        const Handle object(raw);
+    const std::string unit = root.attribute("unit") ? root.attribute("unit").value() : "millimeter";
+    if (std::find(std::begin(kUnits), std::end(kUnits), unit) == std::end(kUnits))
+        fail("<model unit='" + valid_utf8(unit) +
+             "'> is none of micron, millimeter, "
+             "centimeter, inch, foot, meter");
+    model.notes.push_back("the file declares its unit: " + unit);
+
+    ModelReader reader(model);
+    reader.collect(root.child("resources"));
+    for (const pugi::xml_node item : root.child("build").children("item")) {
+        const std::string where = "build item " + std::to_string(model.parts.size() + 1);
+        const uint64_t id = whole_number(item, "objectid", {where});
+        const pugi::xml_node object = reader.object(id);
+        if (!object) fail(where + " names object " + std::to_string(id) + ", which is not defined");
         Part part;
-        part.name = object_name(object.get());
+        part.name = object.attribute("name").value();
         if (part.name.empty()) part.name = "item " + std::to_string(model.parts.size() + 1);
-        add_object(model, part, object.get(), transform_of(placement), 0);
+        reader.add_object(part, id, transform_of(item, where), 0);
         if (!part.face_sizes.empty()) model.parts.push_back(std::move(part));
     }
     return model;

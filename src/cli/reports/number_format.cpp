@@ -12,6 +12,12 @@ std::string exact_number(double value) {
     return std::string(text, result.ptr);
 }
 
+std::string float_number(float value) {
+    char text[32];
+    const std::to_chars_result result = std::to_chars(text, text + sizeof text, value + 0.0f);
+    return std::string(text, result.ptr);
+}
+
 std::string readable_number(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.10g", value + 0.0);  // -0 printed as 0

@@ -19,6 +19,7 @@ struct PartReport {
     uint64_t vertices = 0;  // distinct vertices its faces use
     uint64_t faces = 0;
     bool computed = false;  // false: not attempted (see FileReport)
+    std::string material;   // the materials table's name of its density, if it has one
     SolidResult result;
 };
 
@@ -55,6 +56,13 @@ Json json_document(const std::vector<FileReport>& files, const OutputSettings& s
 void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
                         OutputFormat format, const OutputSettings& settings);
 
+// --usda: a USD text layer with a UsdPhysics rigid body per readable, valid
+// file (its parts as child prims). Problems only USD has (a value past 32-bit
+// floats, a centre of mass float rounds more than its error bound) go to
+// diagnostics too; returns false when a value left a prim out.
+bool write_usda(std::ostream& out, std::ostream& diagnostics, const std::vector<FileReport>& files,
+                const OutputSettings& settings);
+
 // The files together, for the summary the table and --json give of several.
 struct Summary {
     uint64_t files = 0;
@@ -79,6 +87,10 @@ std::string warning_text(uint32_t warnings);
 inline constexpr const char* kFileUnitsNote =
     "lengths are in the file's units, not converted to metres: the mass is the density times "
     "the volume in those units, the inertia the mass times length squared";
+
+// The material as the XML and USD comments name it: "aluminium-6061, density
+// 2700 kg/m^3 (source)".
+std::string material_text(const PartReport& part);
 
 // A symmetric tensor (row-major 3x3) made from its upper triangle, so that
 // every output prints one number for [i][j] and [j][i], and -0 made 0.

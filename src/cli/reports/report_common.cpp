@@ -1,6 +1,8 @@
 #include <polymass/polymass.h>
 
 #include "library/categories.hpp"
+#include "model/materials.hpp"
+#include "reports/number_format.hpp"
 #include "reports/report.hpp"
 
 namespace polymass_cli {
@@ -61,6 +63,14 @@ std::string warning_text(uint32_t warnings) {
         if (!text.empty()) text += ", ";
         text += std::string(warning.name) + " (" + warning.meaning + ")";
     }
+    return text;
+}
+
+std::string material_text(const PartReport& part) {
+    const Material* material = find_material(part.material);
+    std::string text =
+        part.material + ", density " + readable_number(part.result.properties.density) + " kg/m^3";
+    if (material) text += std::string(" (") + material->source + ")";
     return text;
 }
 

@@ -111,6 +111,8 @@ void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
         add_comment(document, "provenance: " + provenance_text(file.solid.result.provenance));
         add_comment(document, "error bound: " + error_bound_text(p));
         for (const std::string& note : file.notes) add_comment(document, "note: " + note);
+        if (!file.solid.material.empty())
+            add_comment(document, "material: " + material_text(file.solid));
         if (settings.length_unit.empty()) add_comment(document, kFileUnitsNote);
         std::array<double, 3> origin{};
         for (int k = 0; k < 3; ++k) origin[k] = p.center_of_mass[k] - settings.link_origin[k];

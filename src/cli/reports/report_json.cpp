@@ -59,6 +59,7 @@ void add_solid_members(Json& solid, const PartReport& part, const OutputSettings
     solid["volume"] = json_number(p.volume);
     solid["mass"] = json_number(p.mass);
     solid["density"] = json_number(p.density);
+    if (!part.material.empty()) solid["material"] = part.material;
     solid["center_of_mass"] = json_numbers(p.center_of_mass, 3);
     solid["inertia"] = json_tensor(p.inertia);
     solid["inertia_origin"] = json_tensor(p.inertia_origin);

@@ -63,6 +63,7 @@ void write_solid(std::ostream& out, const PartReport& part, const OutputSettings
     write_row(out, "volume", readable_number(p.volume), units.volume);
     write_row(out, "mass", readable_number(p.mass), units.mass);
     write_row(out, "density", readable_number(p.density), units.density);
+    if (!part.material.empty()) write_row(out, "material", material_text(part));
     write_row(out, "surface area", readable_number(p.surface_area), units.area);
     write_row(out, "centre of mass", vector_text(p.center_of_mass), units.length);
     write_matrix(out, "inertia about COM", p.inertia, units.inertia);
