@@ -3,6 +3,7 @@
 // docs/exact-predicates.md.
 #include "core/exact_predicates.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -200,7 +201,7 @@ bool on_coarse_grid(const std::array<Row<Dim>, Dim>& rows, int bits,
     for (const Row<Dim>& row : rows)
         for (const TwoTerm& c : row) {
             if (c.lo != 0.0) return false;
-            largest = std::fmax(largest, std::fabs(c.hi));
+            largest = std::max(largest, std::fabs(c.hi));  // finite: no fmax call
         }
     if (!(largest >= 0x1p-300 && largest <= 0x1p300)) return false;
     // 2^-e from the exponent bits (ldexp is a library call).

@@ -33,7 +33,7 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       triangles_(triangulate_faces(mesh, memory)),
       reference_(reference),
       per_unit_(1.0 / unit_length_near(size)),
-      boxes_(memory),
+      degenerate_(memory),
       lowest_(memory),
       next_(memory),
       tree_(boxes_with_copies(vertex_ids, tasks, memory), memory) {}
@@ -41,9 +41,9 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
 // Welds the corners, boxes the triangles, and links the copies, whose boxes
 // above the lowest are then emptied: met through it. (Copies are found after
 // the boxes, so that the tree's scratch reuses their search's: 8 MB less at
-// the peak of a million triangles.)
+// the peak of a million triangles.) The tree keeps its own copy of the boxes.
 template <class Scalar, class Index>
-const std::pmr::vector<FloatBox>& IndexedSurface<Scalar, Index>::boxes_with_copies(
+std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     const std::uint32_t* vertex_ids, TaskRunner& tasks, std::pmr::memory_resource* memory) {
     // Each corner as the vertex it is welded to, in place: the test of
     // shared corners reads nothing else for most candidate pairs.
@@ -51,23 +51,24 @@ const std::pmr::vector<FloatBox>& IndexedSurface<Scalar, Index>::boxes_with_copi
         for (auto& corners : triangles_.corners)
             for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
     // Degenerate triangles keep an empty box.
-    boxes_.resize(size());
+    std::pmr::vector<FloatBox> boxes(size(), memory);
+    degenerate_.resize(size());
     for_each_in_blocks(size(), tasks, [&](std::size_t t) {
         const Triangle corners = triangle(t);
-        if (is_degenerate(corners)) return;
-        for (const Eigen::Vector3d& corner : corners) boxes_[t].extend(in_units(corner));
+        degenerate_[t] = is_degenerate(corners);
+        if (degenerate_[t]) return;
+        for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
     });
     find_copies(tasks, memory);
     for_each_in_blocks(size(), tasks, [&](std::size_t t) {
-        if (lowest_[t] != t) boxes_[t] = FloatBox();
+        if (lowest_[t] != t) boxes[t] = FloatBox();
     });
-    return boxes_;
+    return boxes;
 }
 
 template <class Scalar, class Index>
 double IndexedSurface<Scalar, Index>::span() const {
-    FloatBox everything;
-    for (const FloatBox& box : boxes_) everything.extend(box);
+    const FloatBox everything = tree_.bounds();
     double span = 0;
     for (int k = 0; k < 3; ++k)
         span = std::max(span, double(everything.hi[k]) - double(everything.lo[k]));

@@ -39,9 +39,6 @@ public:
     IndexedSurface(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                    const Eigen::Vector3d& reference, double size, TaskRunner& tasks,
                    std::pmr::memory_resource* memory);
-    // The tree refers to the boxes in place.
-    IndexedSurface(const IndexedSurface&) = delete;
-    IndexedSurface& operator=(const IndexedSurface&) = delete;
 
     std::size_t size() const { return triangles_.size(); }
     // Triangle t's corners as welded vertices, in the face's turn.
@@ -64,10 +61,7 @@ public:
     std::uint32_t lowest_copy(std::size_t t) const { return lowest_[t]; }
     std::uint32_t next_copy(std::size_t t) const { return next_[t]; }
     // Degenerate triangles (three collinear corners) bound nothing and meet nothing.
-    bool meets_nothing(std::size_t t) const {
-        const FloatBox& box = boxes_[lowest_[t]];
-        return !(box.lo[0] <= box.hi[0]);
-    }
+    bool meets_nothing(std::size_t t) const { return degenerate_[lowest_[t]] != 0; }
 
     // The tree over the lowest copy of each shape, in units about the
     // reference: a power of two near the surface's size, so that single
@@ -80,9 +74,8 @@ public:
     double span() const;
 
 private:
-    const std::pmr::vector<FloatBox>& boxes_with_copies(const std::uint32_t* vertex_ids,
-                                                        TaskRunner& tasks,
-                                                        std::pmr::memory_resource* memory);
+    std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                                                 std::pmr::memory_resource* memory);
     // Triangles at the same three positions in the same order: copies of a
     // part stacked in place, or a surface exported twice.
     void find_copies(TaskRunner& tasks, std::pmr::memory_resource* memory);
@@ -91,8 +84,7 @@ private:
     SurfaceTriangles triangles_;  // corners welded
     Eigen::Vector3d reference_;
     double per_unit_;
-    std::pmr::vector<FloatBox>
-        boxes_;  // empty for degenerate triangles and copies above the lowest
+    std::pmr::vector<std::uint8_t> degenerate_;  // three collinear corners
     std::pmr::vector<std::uint32_t> lowest_, next_;
     BoxTree tree_;
 };
