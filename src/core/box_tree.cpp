@@ -39,7 +39,7 @@ bool FloatBox::may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d&
 }
 
 BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory)
-    : items_(boxes), order_(memory), nodes_(memory), level_begin_(memory), memory_(memory) {
+    : order_(memory), boxes_(memory), nodes_(memory), level_begin_(memory), memory_(memory) {
     FloatBox all;
     for (const FloatBox& box : boxes) all.extend(box);
     // Morton codes of the centres on a 1024^3 grid over all boxes, each with
@@ -71,6 +71,8 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
     order_.reserve(keys.size());
     for (const std::uint64_t key : keys) order_.push_back(std::uint32_t(key));
     keys = {};
+    boxes_.reserve(order_.size());
+    for (const std::uint32_t item : order_) boxes_.push_back(boxes[item]);
 
     // Leaves, then each level from the one below, up to a single root.
     std::size_t count = (order_.size() + kLeafSize - 1) / kLeafSize;
@@ -80,7 +82,7 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
         FloatBox box;
         for (std::size_t i = kLeafSize * leaf; i < std::min(order_.size(), kLeafSize * (leaf + 1));
              ++i)
-            box.extend(boxes[order_[i]]);
+            box.extend(boxes_[i]);
         nodes_.push_back(box);
     }
     level_begin_.push_back(nodes_.size());

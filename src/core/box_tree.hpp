@@ -64,8 +64,14 @@ private:
 
 class BoxTree {
 public:
-    // The items are the boxes' indices; `boxes` must outlive the tree.
+    // The items are the boxes' indices. The tree keeps its own copy of the
+    // boxes, in its order along the curve: the search reads a leaf's boxes
+    // one after another, where reading them through their indices missed
+    // the cache about once a box on a large surface.
     BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory);
+
+    // The box of every item (empty when there are none).
+    FloatBox bounds() const { return order_.empty() ? FloatBox() : box(root()); }
 
     // A piece of the search for overlapping pairs: the pairs inside one node
     // (first == second), or between two nodes whose boxes overlap.
@@ -128,8 +134,8 @@ private:
     }
     Node root() const { return {std::uint32_t(level_begin_.size() - 2), 0}; }
 
-    const std::pmr::vector<FloatBox>& items_;
     std::pmr::vector<std::uint32_t> order_;      // items along the curve
+    std::pmr::vector<FloatBox> boxes_;           // their boxes, in that order
     std::pmr::vector<FloatBox> nodes_;           // every level, leaves first
     std::pmr::vector<std::size_t> level_begin_;  // level k is nodes_[begin[k], begin[k + 1])
     double pad_ = 0;                             // slack of segment tests
@@ -173,9 +179,9 @@ void BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
         }
         const bool inside = same(next);
         for (std::size_t i = leaf_first(a); i < leaf_last(a); ++i) {
-            const FloatBox& first = items_[order_[i]];
+            const FloatBox& first = boxes_[i];
             for (std::size_t j = inside ? i + 1 : leaf_first(b); j < leaf_last(b); ++j)
-                if (first.overlaps(items_[order_[j]])) visit(order_[i], order_[j]);
+                if (first.overlaps(boxes_[j])) visit(order_[i], order_[j]);
         }
     }
 }
@@ -192,7 +198,7 @@ void BoxTree::for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::
         if (!box(node).may_meet_segment(a, b, pad_)) continue;
         if (node.level == 0) {
             for (std::size_t i = leaf_first(node); i < leaf_last(node); ++i)
-                if (items_[order_[i]].may_meet_segment(a, b, pad_) && !visit(order_[i])) return;
+                if (boxes_[i].may_meet_segment(a, b, pad_) && !visit(order_[i])) return;
         } else {
             for (std::size_t i = 0; i < child_count(node); ++i) nodes.push_back(child(node, i));
         }

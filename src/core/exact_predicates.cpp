@@ -3,10 +3,13 @@
 // docs/exact-predicates.md.
 #include "core/exact_predicates.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 
 namespace polymass::core {
@@ -24,6 +27,26 @@ constexpr double underflow_cover = 0x1p-1060;
 // rounding of the permanent and of the bound itself.
 constexpr double orient3d_relative_bound = 9 * epsilon;
 constexpr double orient2d_relative_bound = 5 * epsilon;
+
+// Whether the filter decides: |det| above the bound `relative +
+// underflow_cover * scale`, rounded as that expression is
+// (docs/exact-predicates.md). Arithmetic with subnormal results stalls the
+// processor (a microcode assist of about a hundred cycles), and computed on
+// every call the cover was most of the cost of the intersection check; so:
+// - a relative part of at least 2^-900 has an ulp of at least 2^-952, and a
+//   cover of at most 2^-960 (scale up to 2^100) is below half of it: the
+//   rounded bound is the relative part itself;
+// - a relative part below that with a cover below 2^-1020 (scale below
+//   2^40) is a permanent at the foot of the double range, most often exactly
+//   zero (a point on an axis-aligned plane): the filter does not decide, and
+//   the exact evaluation does;
+// - otherwise the bound is computed as it reads, without subnormal results.
+inline bool filter_decides(double det, double relative, double scale) {
+    const bool relative_normal = relative >= 0x1p-900;
+    if (relative_normal && scale <= 0x1p100) return std::fabs(det) > relative;
+    if (!relative_normal && scale < 0x1p40) return false;
+    return std::fabs(det) > relative + underflow_cover * scale;
+}
 
 // A value held exactly as hi + lo with |lo| <= ulp(hi) / 2.
 struct TwoTerm {
@@ -161,6 +184,43 @@ constexpr std::size_t orient2d_terms = 2 * 4 * 2;
 static_assert(2 * (orient2d_row_top + 1) + 4 <= 1023, "orient2d terms must not overflow");
 static_assert(3 * (orient3d_row_top + 1) + 8 <= 1023, "orient3d terms must not overflow");
 
+// Exact inputs on a coarse grid, the cheapest exact case: every difference
+// exact in one double and a whole multiple of 2^e, with e `bits` below the
+// largest one's exponent, so that each is an integer of at most `bits` bits
+// times 2^e. Meshes from CAD, voxels or integer coordinates are made of such
+// points, and their contacts are where predicates are exactly zero. Then the
+// determinant of the integers is exact in double (orient3d: 16 bits, minors
+// below 2^33, monomials below 2^49, their sum below 2^51; orient2d: 24 bits,
+// products below 2^48), and its sign is the determinant's. The integers are
+// the differences times 2^-e, a power of two: exact, for every difference in
+// the range checked here. False when the rows are not of this kind.
+template <int Dim>
+bool on_coarse_grid(const std::array<Row<Dim>, Dim>& rows, int bits,
+                    std::array<std::array<double, Dim>, Dim>& integers) {
+    double largest = 0.0;
+    for (const Row<Dim>& row : rows)
+        for (const TwoTerm& c : row) {
+            if (c.lo != 0.0) return false;
+            largest = std::max(largest, std::fabs(c.hi));  // finite: no fmax call
+        }
+    if (!(largest >= 0x1p-300 && largest <= 0x1p300)) return false;
+    // 2^-e from the exponent bits (ldexp is a library call).
+    std::uint64_t largest_bits = 0;
+    std::memcpy(&largest_bits, &largest, sizeof largest);
+    const int e = int(largest_bits >> 52) - 1023 - (bits - 1);
+    const std::uint64_t scale_bits = std::uint64_t(1023 - e) << 52;
+    double scale = 0.0;
+    std::memcpy(&scale, &scale_bits, sizeof scale);
+    for (int i = 0; i < Dim; ++i)
+        for (int j = 0; j < Dim; ++j) {
+            // Below 2^bits in magnitude: a conversion truncates it exactly.
+            const double integer = rows[i][j].hi * scale;
+            if (double(std::int64_t(integer)) != integer) return false;
+            integers[i][j] = integer;
+        }
+    return true;
+}
+
 // The common exact case, cheaply: every difference exact in one double (float
 // input, or coordinates within a factor of two of each other) and of a
 // magnitude whose products of three neither overflow nor lose their low
@@ -212,6 +272,12 @@ int orient3d_exact(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eig
     // any scaling, as it is the common case here (a corner shared by two
     // triangles).
     if (a == b || a == c || a == d || b == c || b == d || c == d) return 0;
+    if (std::array<std::array<double, 3>, 3> m; on_coarse_grid<3>(rows, 16, m)) {
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) +
+                           m[0][1] * (m[1][2] * m[2][0] - m[1][0] * m[2][2]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        return (det > 0.0) - (det < 0.0);
+    }
     if (rows_are_plain_doubles(rows)) return orient3d_of_plain_rows(rows);
     for (Row<3>& row : rows) normalize<3>(row, orient3d_row_top);
     const Row<3>& u = rows[0];
@@ -232,6 +298,10 @@ int orient2d_exact(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eig
     if (!exact_difference<2>(b, a, rows[0]) || !exact_difference<2>(c, a, rows[1])) {
         if (!(a.allFinite() && b.allFinite() && c.allFinite())) return 0;
         return orient2d_exact(a / 4, b / 4, c / 4);
+    }
+    if (std::array<std::array<double, 2>, 2> m; on_coarse_grid<2>(rows, 24, m)) {
+        const double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+        return (det > 0.0) - (det < 0.0);
     }
     for (Row<2>& row : rows) {
         if (!normalize<2>(row, orient2d_row_top)) return 0;
@@ -258,9 +328,8 @@ int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
                              auy * (std::fabs(vz_wx) + std::fabs(vx_wz)) +
                              auz * (std::fabs(vx_wy) + std::fabs(vy_wx));
     // NaN or infinity anywhere (overflow) makes the comparison false.
-    const double bound =
-        orient3d_relative_bound * permanent + underflow_cover * (aux + auy + auz + 1.0);
-    if (std::fabs(det) > bound) return det > 0.0 ? 1 : -1;
+    if (filter_decides(det, orient3d_relative_bound * permanent, aux + auy + auz + 1.0))
+        return det > 0.0 ? 1 : -1;
     return orient3d_exact(a, b, c, d);
 }
 
@@ -283,9 +352,8 @@ int PlaneSide::of(const Eigen::Vector3d& d) const {
     const double permanent =
         awx * normal_permanent_[0] + awy * normal_permanent_[1] + awz * normal_permanent_[2];
     // NaN or infinity anywhere (overflow) makes the comparison false.
-    const double bound =
-        orient3d_relative_bound * permanent + underflow_cover * (awx + awy + awz + 1.0);
-    if (std::fabs(det) > bound) return det > 0.0 ? 1 : -1;
+    if (filter_decides(det, orient3d_relative_bound * permanent, awx + awy + awz + 1.0))
+        return det > 0.0 ? 1 : -1;
     return orient3d_exact(a_, b_, c_, d);
 }
 
@@ -293,9 +361,8 @@ int orient2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Ve
     const double ux_vy = (b[0] - a[0]) * (c[1] - a[1]);
     const double uy_vx = (b[1] - a[1]) * (c[0] - a[0]);
     const double det = ux_vy - uy_vx;
-    const double bound =
-        orient2d_relative_bound * (std::fabs(ux_vy) + std::fabs(uy_vx)) + underflow_cover;
-    if (std::fabs(det) > bound) return det > 0.0 ? 1 : -1;
+    if (filter_decides(det, orient2d_relative_bound * (std::fabs(ux_vy) + std::fabs(uy_vx)), 1.0))
+        return det > 0.0 ? 1 : -1;
     return orient2d_exact(a, b, c);
 }
 

@@ -1,44 +1,21 @@
 // Does the surface bound any region twice? Faces that cross each other, faces
-// that only touch, and how shells lie inside one another.
-//
-// Candidate pairs come from a box tree over the surface's triangles, so a
-// closed surface costs about as many triangle tests as each triangle has
-// neighbours. Each candidate is decided with exact predicates
-// (triangle_contact.hpp). Faces that share an edge meet there by
-// construction and are not compared; faces that share one vertex are compared
-// for crossing only.
-//
-// Nesting: when nothing crosses, the shells' surfaces are disjoint or touch,
-// and each shell lies inside a whole number of the others. The winding number
-// of the rest of the surface at a vertex of a shell says how many (counted
-// with their orientation): it is counted exactly, as the signed crossings of a
-// segment from that vertex to a point outside everything, with exact
-// predicates; a segment that grazes an edge or a vertex, or starts on another
-// shell, is replaced by another. Where shells touch, a shell may pass through
-// another along its own edges, so each triangle touching another shell is
-// also probed from a point inside it (symbolically perturbed), and a shell
-// whose probes disagree is marked mixed. docs/validity.md has the reasoning.
+// that only touch (surface_contacts.hpp), and, when nothing crosses, how
+// shells lie inside one another (shell_nesting.hpp), both over one index of
+// the surface's triangles (indexed_surface.hpp).
 #pragma once
 
 #include <Eigen/Core>
-#include <climits>
 #include <cstdint>
 #include <memory_resource>
 #include <vector>
 
 #include "findings.hpp"
 #include "mesh_view.hpp"
+#include "shell_nesting.hpp"
 #include "shells.hpp"
 #include "task_runner.hpp"
 
 namespace polymass::core {
-
-// A winding number that could not be counted (every probe was degenerate).
-inline constexpr int kUnknownWinding = INT_MIN;
-// Windings that differ between pieces of one shell: the shell passes
-// through another's surface (where the two touch) and bounds some region
-// twice, or less than once.
-inline constexpr int kMixedWinding = INT_MAX;
 
 struct SurfaceOverlaps {
     PairFinding crossing;  // face pairs (low, high) that cross

@@ -1,20 +1,31 @@
 /* What the intersection check (POLYMASS_OPTION_CHECK_INTERSECTIONS) costs:
    polymass_mesh_check with it against the same call without it (the topology
    checks alone, the bound), on the same mesh in the same round, on one thread
-   and on two. Three meshes:
-   - a torus far from the origin: a valid solid, every triangle near others
-     and none crossing;
-   - the same torus written twice in one mesh: two coincident shells, every
-     triangle with a copy (copies are paired without the box tree);
-   - a pile of coincident cubes: k copies of one part, whose face pairs in
-     contact grow as k squared (the count stops at its limit);
-   - about as many cubes stacked in a cube, each resting against its
-     neighbours: many shells touching, each triangle that touches another
-     shell probed for how the others wind around it.
+   and on two; and, when a peer is at hand, the rate of MeshLib's
+   findSelfCollidingTriangles on the same mesh, measured in the same run on
+   one processor. The meshes:
+   - closed tori far from the origin, 1e5, 1e6 (and 1e7) triangles: valid
+     solids, every triangle near others and none crossing;
+   - the 1e5 torus and a copy shifted by a tenth of its tube: crossing along
+     two loops (the report stops at its limit);
+   - 1,000 and 8,000 cubes stacked in a cube, each resting against its
+     neighbours, as separate parts (8 vertices each) and as one welded
+     triangle soup (an STL: every triangle its own corners, welded by the
+     options; shared edges are then used by 4 faces);
+   - piles of 1,000 and 8,000 coincident cubes.
+   Sizes grow 8x from one mesh of a kind to the next: the ratio of times
+   says whether the check grows with its input alone.
    Runs are interleaved (every measure once per round) and the median of the
    rounds is printed, with the status the check gave. Prints figures; asserts
    nothing about speed.
-   Usage: bench_intersections [rounds] [torus triangles] [cubes] */
+
+   Usage: bench_intersections [rounds] [largest torus] [meshes]
+   rounds: default 3; largest torus: 1e6 (1e7 adds the largest); meshes: run
+   only those whose name contains this text.
+   MeshLib: POLYMASS_BENCH_MESHLIB=<python with meshlib> runs
+   meshlib_self_collisions.py (beside this source; its path in
+   POLYMASS_BENCH_MESHLIB_SCRIPT) under `taskset -c 0` on each mesh, written
+   to a temporary file; without it, the column says so. */
 #include <polymass/polymass.h>
 
 #include <stdio.h>
@@ -24,69 +35,90 @@
 #include "bench_common.h"
 
 typedef struct bench_mesh {
-    const char* name;
+    char name[96];
     polymass_mesh_desc desc;
     size_t triangles;
+    uint32_t flags; /* options of both measures (welding) */
 } bench_mesh;
 
-/* The torus of about `wanted` triangles, written `times` times over (copy c's
-   vertices after copy c - 1's, its indices offset to them). */
-static bench_mesh make_tori(const char* name, size_t wanted, uint32_t times) {
+static void* checked_malloc(size_t bytes) {
+    void* memory = malloc(bytes);
+    if (!memory) {
+        fprintf(stderr, "out of memory\n");
+        exit(1);
+    }
+    return memory;
+}
+
+static bench_mesh new_mesh(const char* name, size_t vertices, size_t triangles) {
+    bench_mesh mesh = {{0}, {sizeof mesh.desc}, triangles, 0};
+    snprintf(mesh.name, sizeof mesh.name, "%s", name);
+    mesh.desc.positions = checked_malloc(3 * vertices * sizeof(double));
+    mesh.desc.vertex_count = vertices;
+    mesh.desc.indices = checked_malloc(3 * triangles * sizeof(uint32_t));
+    mesh.desc.index_count = 3 * triangles;
+    return mesh;
+}
+
+/* The torus of about `wanted` triangles (500 segments around its tube);
+   `copies` 2 adds a copy moved by `shift` along x. */
+static bench_mesh make_tori(const char* name, size_t wanted, uint32_t copies, double shift) {
     const uint32_t segments = 500, rings = (uint32_t)(wanted / (2.0 * segments));
     const size_t vertices = (size_t)rings * segments, indices = 6 * vertices;
-    double* positions = malloc(times * 3 * vertices * sizeof *positions);
-    uint32_t* index_array = malloc(times * indices * sizeof *index_array);
-    if (!positions || !index_array) exit(1);
+    bench_mesh mesh = new_mesh(name, copies * vertices, copies * indices / 3);
+    double* positions = (double*)mesh.desc.positions;
+    uint32_t* index_array = (uint32_t*)mesh.desc.indices;
     make_torus(rings, segments, positions, index_array);
-    for (uint32_t c = 1; c < times; ++c) {
-        memcpy(positions + c * 3 * vertices, positions, 3 * vertices * sizeof *positions);
+    for (uint32_t c = 1; c < copies; ++c) {
+        for (size_t v = 0; v < vertices; ++v) {
+            double* p = positions + 3 * (c * vertices + v);
+            memcpy(p, positions + 3 * v, 3 * sizeof *p);
+            p[0] += c * shift;
+        }
         for (size_t i = 0; i < indices; ++i)
             index_array[c * indices + i] = index_array[i] + c * (uint32_t)vertices;
     }
-    bench_mesh mesh = {name, {sizeof mesh.desc}, times * indices / 3};
-    mesh.desc.positions = positions;
-    mesh.desc.vertex_count = times * vertices;
-    mesh.desc.indices = index_array;
-    mesh.desc.index_count = times * indices;
     return mesh;
 }
 
-/* k unit cubes, 1e6 from the origin, each its own 8 vertices and 12 outward
-   triangles: at one place (side 0), or stacked side x side x side, each
-   resting against its neighbours. */
-static bench_mesh make_cubes(const char* name, uint32_t k, uint32_t side) {
+/* k unit cubes, 1e6 from the origin, 12 outward triangles each: at one place
+   (side 0), or stacked side x side x side, each resting against its
+   neighbours. Each cube its own 8 vertices, or (soup) each triangle its own
+   3, welded by the options, which accept the edges four faces share. */
+static bench_mesh make_cubes(const char* name, uint32_t k, uint32_t side, int soup) {
     static const uint32_t cube[36] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
                                       1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
-    double* positions = malloc((size_t)k * 24 * sizeof *positions);
-    uint32_t* indices = malloc((size_t)k * 36 * sizeof *indices);
-    if (!positions || !indices) exit(1);
+    bench_mesh mesh = new_mesh(name, (size_t)k * (soup ? 36 : 8), 12 * (size_t)k);
+    double* positions = (double*)mesh.desc.positions;
+    uint32_t* indices = (uint32_t*)mesh.desc.indices;
     for (uint32_t c = 0; c < k; ++c) {
         const uint32_t at[3] = {side ? c % side : 0, side ? c / side % side : 0,
                                 side ? c / side / side : 0};
+        double corner[8][3];
         for (int v = 0; v < 8; ++v) {
-            double* p = positions + 24 * (size_t)c + 3 * v;
-            p[0] = 1e6 + at[0] + (double)((v == 1 || v == 2 || v == 5 || v == 6));
-            p[1] = 1e6 + at[1] + (double)((v == 2 || v == 3 || v == 6 || v == 7));
-            p[2] = 1e6 + at[2] + (double)(v >= 4);
+            corner[v][0] = 1e6 + at[0] + (double)((v == 1 || v == 2 || v == 5 || v == 6));
+            corner[v][1] = 1e6 + at[1] + (double)((v == 2 || v == 3 || v == 6 || v == 7));
+            corner[v][2] = 1e6 + at[2] + (double)(v >= 4);
         }
-        for (int i = 0; i < 36; ++i) indices[36 * (size_t)c + i] = cube[i] + 8 * c;
+        for (int i = 0; i < 36; ++i) {
+            const size_t index = 36 * (size_t)c + (size_t)i;
+            indices[index] = soup ? (uint32_t)index : cube[i] + 8 * c;
+            if (soup) memcpy(positions + 3 * index, corner[cube[i]], sizeof corner[0]);
+        }
+        if (!soup) memcpy(positions + 24 * (size_t)c, corner, sizeof corner);
     }
-    bench_mesh mesh = {name, {sizeof mesh.desc}, 12 * (size_t)k};
-    mesh.desc.positions = positions;
-    mesh.desc.vertex_count = 8 * (size_t)k;
-    mesh.desc.indices = indices;
-    mesh.desc.index_count = 36 * (size_t)k;
+    mesh.flags = soup ? POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD : 0;
     return mesh;
 }
 
-static double check_seconds(polymass_context* context, const polymass_mesh_desc* desc,
-                            uint32_t flags, uint32_t threads, polymass_diagnostics* report) {
+static double check_seconds(polymass_context* context, const bench_mesh* mesh, uint32_t flags,
+                            uint32_t threads, polymass_diagnostics* report) {
     polymass_options options = POLYMASS_OPTIONS_INIT;
-    options.flags = flags;
+    options.flags = flags | mesh->flags;
     options.threads = threads;
     polymass_diagnostics_init(report, sizeof *report);
     const double start = now_seconds();
-    polymass_mesh_check_with_options(report, context, desc, &options);
+    polymass_mesh_check_with_options(report, context, &mesh->desc, &options);
     const double elapsed = now_seconds() - start;
     if (report->status == POLYMASS_ERROR_INVALID_ARGUMENT ||
         report->status == POLYMASS_ERROR_OUT_OF_MEMORY) {
@@ -96,24 +128,52 @@ static double check_seconds(polymass_context* context, const polymass_mesh_desc*
     return elapsed;
 }
 
+/* MeshLib's seconds on the mesh (the median of `rounds`, on one processor),
+   or a negative value when it is not at hand or failed. */
+static double meshlib_seconds(const bench_mesh* mesh, int rounds) {
+    const char* python = getenv("POLYMASS_BENCH_MESHLIB");
+    const char* script = getenv("POLYMASS_BENCH_MESHLIB_SCRIPT");
+    if (!python || !*python || !script || !*script) return -1;
+    char path[] = "/tmp/bench_intersections_XXXXXX";
+    const int fd = mkstemp(path);
+    if (fd < 0) return -1;
+    FILE* file = fdopen(fd, "wb");
+    const uint64_t counts[2] = {mesh->desc.vertex_count, mesh->triangles};
+    fwrite(counts, sizeof counts, 1, file);
+    fwrite(mesh->desc.positions, 3 * sizeof(double), mesh->desc.vertex_count, file);
+    fwrite(mesh->desc.indices, 3 * sizeof(uint32_t), mesh->triangles, file);
+    fclose(file);
+    char command[1024];
+    snprintf(command, sizeof command, "taskset -c 0 '%s' '%s' '%s' %d", python, script, path,
+             rounds);
+    FILE* output = popen(command, "r");
+    double seconds = -1;
+    if (output) {
+        char line[256];
+        if (fgets(line, sizeof line, output) && sscanf(line, "%lf", &seconds) != 1) seconds = -1;
+        while (fgets(line, sizeof line, output)) continue;
+        if (pclose(output) != 0) seconds = -1;
+    }
+    remove(path);
+    return seconds;
+}
+
 enum { topology_1, intersections_1, topology_2, intersections_2, measures };
 static const char* const names[measures] = {"topology checks", "with intersections",
                                             "topology checks, 2 threads",
                                             "with intersections, 2 threads"};
 
-static void run(const bench_mesh* mesh, int rounds, polymass_context* context) {
-    double* seconds = malloc((size_t)measures * (size_t)rounds * sizeof *seconds);
+/* peer: whether MeshLib is measured too (it lists every pair, k^2 of a pile of k). */
+static void run(const bench_mesh* mesh, int rounds, int peer, polymass_context* context) {
+    double* seconds = checked_malloc((size_t)measures * (size_t)rounds * sizeof *seconds);
     polymass_diagnostics reports[measures];
-    if (!seconds) exit(1);
     for (int r = 0; r < rounds; ++r) {
         double* s = seconds + (size_t)r * measures;
         const uint32_t check = POLYMASS_OPTION_CHECK_INTERSECTIONS;
-        s[topology_1] = check_seconds(context, &mesh->desc, 0, 1, &reports[topology_1]);
-        s[intersections_1] =
-            check_seconds(context, &mesh->desc, check, 1, &reports[intersections_1]);
-        s[topology_2] = check_seconds(context, &mesh->desc, 0, 2, &reports[topology_2]);
-        s[intersections_2] =
-            check_seconds(context, &mesh->desc, check, 2, &reports[intersections_2]);
+        s[topology_1] = check_seconds(context, mesh, 0, 1, &reports[topology_1]);
+        s[intersections_1] = check_seconds(context, mesh, check, 1, &reports[intersections_1]);
+        s[topology_2] = check_seconds(context, mesh, 0, 2, &reports[topology_2]);
+        s[intersections_2] = check_seconds(context, mesh, check, 2, &reports[intersections_2]);
     }
     double medians[measures];
     medians_of(seconds, rounds, measures, medians);
@@ -125,40 +185,70 @@ static void run(const bench_mesh* mesh, int rounds, polymass_context* context) {
         (unsigned long long)found->shell_count, (unsigned long long)found->overlapping_shells,
         (unsigned long long)found->intersecting_face_pairs,
         (unsigned long long)found->touching_face_pairs);
-    for (int m = 0; m < measures; ++m) {
-        printf("  %-30s %9.3f ms %8.2f M triangles/s", names[m], 1e3 * medians[m],
+    /* The check's own time: the call with it less the call without it. */
+    const double own_1 = medians[intersections_1] - medians[topology_1];
+    const double own_2 = medians[intersections_2] - medians[topology_2];
+    for (int m = 0; m < measures; ++m)
+        printf("  %-30s %10.3f ms %8.2f M triangles/s\n", names[m], 1e3 * medians[m],
                (double)mesh->triangles / medians[m] / 1e6);
-        if (m == intersections_1 || m == intersections_2)
-            printf("  %5.2fx the topology checks' time", medians[m] / medians[m - 1]);
-        if (m == topology_2 || m == intersections_2)
-            printf("  %4.2fx one thread", medians[m - 2] / medians[m]);
-        printf("\n");
-    }
+    printf("  %-30s %10.3f ms %8.2f M triangles/s  %6.2fx the topology checks' time\n",
+           "the check alone", 1e3 * own_1, (double)mesh->triangles / own_1 / 1e6,
+           own_1 / medians[topology_1]);
+    printf(
+        "  %-30s %10.3f ms %8.2f M triangles/s  %6.2fx the topology checks' time  %4.2fx "
+        "one thread\n",
+        "the check alone, 2 threads", 1e3 * own_2, (double)mesh->triangles / own_2 / 1e6,
+        own_2 / medians[topology_2], own_1 / own_2);
+    const double peer_seconds = peer ? meshlib_seconds(mesh, rounds) : -1;
+    if (peer_seconds > 0)
+        printf("  %-30s %10.3f ms %8.2f M triangles/s  polymass's check alone: %4.2fx its rate\n",
+               "MeshLib, 1 processor", 1e3 * peer_seconds,
+               (double)mesh->triangles / peer_seconds / 1e6, peer_seconds / own_1);
+    else if (!peer)
+        printf("  MeshLib: not measured (it lists all k^2 pairs of a pile: minutes)\n");
+    else
+        printf("  MeshLib: not measured (set POLYMASS_BENCH_MESHLIB to a python with meshlib)\n");
+    fflush(stdout);
     free(seconds);
 }
 
 int main(int argc, char** argv) {
-    const int rounds = argc > 1 ? atoi(argv[1]) : 5;
-    const double torus_triangles = argc > 2 ? atof(argv[2]) : 1e6;
-    const double cubes = argc > 3 ? atof(argv[3]) : 1000;
-    /* The stack: about as many cubes as the pile. */
-    const uint32_t stack = (uint32_t)(cbrt(cubes) + 0.5) > 0 ? (uint32_t)(cbrt(cubes) + 0.5) : 1;
+    const int rounds = argc > 1 ? atoi(argv[1]) : 3;
+    const double largest = argc > 2 ? atof(argv[2]) : 1e6;
+    const char* only = argc > 3 ? argv[3] : "";
     polymass_context* context = NULL;
-    if (rounds < 1 || torus_triangles < 1000 || cubes < 1 || cubes > 1e8 ||
-        polymass_context_create(&context, NULL) != POLYMASS_OK) {
-        fprintf(stderr, "usage: bench_intersections [rounds] [torus triangles >= 1000] [cubes]\n");
+    if (rounds < 1 || largest < 1e5 || polymass_context_create(&context, NULL) != POLYMASS_OK) {
+        fprintf(stderr, "usage: bench_intersections [rounds] [largest torus >= 1e5] [meshes]\n");
         return 1;
     }
     printf("libpolymass %s, median of %d interleaved rounds\n", polymass_version_string(), rounds);
-    const bench_mesh meshes[] = {
-        make_tori("torus", (size_t)torus_triangles, 1),
-        make_tori("torus written twice", (size_t)torus_triangles / 2, 2),
-        make_cubes("pile of coincident cubes", (uint32_t)cubes, 0),
-        make_cubes("stack of cubes resting on each other", stack * stack * stack, stack)};
-    for (size_t i = 0; i < sizeof meshes / sizeof *meshes; ++i) {
-        run(&meshes[i], rounds, context);
-        free((void*)meshes[i].desc.positions);
-        free((void*)meshes[i].desc.indices);
+    /* kind: 0 torus, 1 torus and its shifted copy, 2 separate cubes, 3 welded cubes, 4 pile. */
+    static const struct {
+        const char* name;
+        int kind;
+        double size; /* triangles of a torus, or cubes */
+    } cases[] = {{"torus 1e5", 0, 1e5},
+                 {"torus 1e6", 0, 1e6},
+                 {"torus 1e7", 0, 1e7},
+                 {"torus 1e5 and a copy shifted by a tenth of its tube", 1, 1e5},
+                 {"1000 separate cubes resting on each other", 2, 1000},
+                 {"8000 separate cubes resting on each other", 2, 8000},
+                 {"1000 cubes resting on each other, one welded STL", 3, 1000},
+                 {"8000 cubes resting on each other, one welded STL", 3, 8000},
+                 {"pile of 1000 coincident cubes", 4, 1000},
+                 {"pile of 8000 coincident cubes", 4, 8000}};
+    for (size_t c = 0; c < sizeof cases / sizeof *cases; ++c) {
+        const double size = cases[c].size;
+        if (!strstr(cases[c].name, only) || (cases[c].kind == 0 && size > largest)) continue;
+        const uint32_t side = (uint32_t)(cbrt(size) + 0.5);
+        bench_mesh mesh = cases[c].kind == 0 ? make_tori(cases[c].name, (size_t)size, 1, 0)
+                          : cases[c].kind == 1
+                              ? make_tori(cases[c].name, (size_t)size, 2, 0.1)
+                              : make_cubes(cases[c].name, (uint32_t)size,
+                                           cases[c].kind == 4 ? 0 : side, cases[c].kind == 3);
+        run(&mesh, rounds, !(cases[c].kind == 4 && size > 1000), context);
+        free((void*)mesh.desc.positions);
+        free((void*)mesh.desc.indices);
     }
     polymass_context_destroy(context);
     return 0;

@@ -360,6 +360,40 @@ void random_small_integers(std::mt19937_64& random) {
     report("orient3d and orient2d on random integers in [-3, 3]", counts);
 }
 
+// Points on coarse grids (integers times 2^k), where the exact evaluation
+// computes the determinant of the integers in double when each difference
+// fits in 16 bits (orient2d: 24) of the largest one's magnitude: coplanar
+// (collinear) and one grid step off, with differences just inside and just
+// past those widths, and some points off the grid by half a step.
+void coarse_grids(std::mt19937_64& random) {
+    Counts counts;
+    for (const int k : {-300, -40, 0, 40, 250}) {
+        for (const std::int64_t reach : {std::int64_t{1} << 14, std::int64_t{1} << 23}) {
+            std::uniform_int_distribution<std::int64_t> coordinate(-reach, reach);
+            std::uniform_int_distribution<int> step(-1, 1), axis(0, 2), coin(0, 3);
+            for (int n = 0; n < 200; ++n) {
+                Eigen::Matrix<std::int64_t, 3, 1> a, b, c;
+                for (int i = 0; i < 3; ++i) {
+                    a[i] = coordinate(random);
+                    b[i] = coordinate(random);
+                    c[i] = a[i] + (b[i] - a[i]) / 2 + step(random);
+                }
+                Eigen::Matrix<std::int64_t, 3, 1> d = a + (b - a) - (c - a);
+                d[axis(random)] += step(random);
+                const double off_grid = coin(random) == 0 ? 0.5 : 0.0;
+                auto place = [k](const Eigen::Matrix<std::int64_t, 3, 1>& x, double shift) {
+                    return Vector3d(std::ldexp(double(x[0]) + shift, k),
+                                    std::ldexp(double(x[1]), k), std::ldexp(double(x[2]), k));
+                };
+                check_orient3d(place(a, 0), place(b, 0), place(c, 0), place(d, off_grid), counts);
+                check_orient2d(place(a, 0).head<2>(), place(b, 0).head<2>(),
+                               place(d, off_grid).head<2>(), counts);
+            }
+        }
+    }
+    report("orient3d and orient2d on coarse grids, 2^-300 to 2^250", counts);
+}
+
 }  // namespace
 
 int main() {
@@ -371,5 +405,6 @@ int main() {
     mixed_magnitudes(random);
     orient2d_cases(random);
     random_small_integers(random);
+    coarse_grids(random);
     return polymass_test::finish("test_exact_predicates");
 }

@@ -5,9 +5,11 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <initializer_list>
+#include <memory_resource>
 #include <vector>
 
 #include "core/mesh_view.hpp"
+#include "core/shells.hpp"
 
 namespace polymass_test {
 
@@ -63,6 +65,28 @@ inline TestMesh box_mesh(const Eigen::Vector3d& corner, const Eigen::Vector3d& a
         }
     }
     return mesh;
+}
+
+// The shells of a surface: faces joined through shared vertices.
+inline polymass::core::Shells shells_of(const TestMesh& mesh) {
+    std::vector<std::uint32_t> parent(mesh.vertex_count());
+    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    auto root = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v];
+        return v;
+    };
+    const std::size_t faces = mesh.indices.size() / 3;
+    for (std::size_t f = 0; f < faces; ++f)
+        for (int k = 1; k < 3; ++k)
+            parent[root(mesh.indices[3 * f + k])] = root(mesh.indices[3 * f]);
+    polymass::core::Shells shells(std::pmr::get_default_resource());
+    std::vector<std::uint32_t> number(mesh.vertex_count(), UINT32_MAX);
+    for (std::size_t f = 0; f < faces; ++f) {
+        std::uint32_t& shell = number[root(mesh.indices[3 * f])];
+        if (shell == UINT32_MAX) shell = std::uint32_t(shells.count++);
+        shells.of_face.push_back(shell);
+    }
+    return shells;
 }
 
 }  // namespace polymass_test

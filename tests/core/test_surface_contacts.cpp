@@ -1,8 +1,8 @@
-// The intersection check's face pairs are those of a test of every pair of
-// triangles, however many copies of a triangle the surface holds: the box
+// The search for meeting faces finds the face pairs of a test of every pair
+// of triangles, however many copies of a triangle the surface holds: the box
 // tree holds one triangle of each shape (same positions, same order) and the
 // copies are paired from the shape pair's tests, each row of copies ending
-// where no count can take its pairs (surface_overlaps.cpp). Piles of cubes
+// where no count can take its pairs (surface_contacts.cpp). Piles of cubes
 // at one place, unwelded, sharing some corners with the first copy (in every
 // corner position), or all of them, with turned cubes crossing the pile at
 // a shared corner; past the count's stop (2048 pairs) and below it; with the
@@ -11,7 +11,7 @@
 // the same vertices in the same turn cross wherever they are). The reference
 // tests all pairs with the same exact predicate (test_triangle_contact
 // checks that one).
-#include "core/surface_overlaps.hpp"
+#include "core/surface_contacts.hpp"
 
 #include "check.hpp"
 #include "reversed_task_runner.hpp"
@@ -52,28 +52,6 @@ void add_cube(TestMesh& mesh, const Eigen::Matrix3d& turn, const std::uint32_t* 
         for (const std::array<int, 3> t :
              {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}})
             mesh.add_face({ids[t[first]], ids[t[(first + 1) % 3]], ids[t[(first + 2) % 3]]});
-}
-
-// The shells of a surface: faces joined through shared vertices.
-polymass::core::Shells shells_of(const TestMesh& mesh) {
-    std::vector<std::uint32_t> parent(mesh.vertex_count());
-    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
-    auto root = [&](std::uint32_t v) {
-        while (parent[v] != v) v = parent[v];
-        return v;
-    };
-    const std::size_t faces = mesh.indices.size() / 3;
-    for (std::size_t f = 0; f < faces; ++f)
-        for (int k = 1; k < 3; ++k)
-            parent[root(mesh.indices[3 * f + k])] = root(mesh.indices[3 * f]);
-    polymass::core::Shells shells(std::pmr::get_default_resource());
-    std::vector<std::uint32_t> number(mesh.vertex_count(), UINT32_MAX);
-    for (std::size_t f = 0; f < faces; ++f) {
-        std::uint32_t& shell = number[root(mesh.indices[3 * f])];
-        if (shell == UINT32_MAX) shell = std::uint32_t(shells.count++);
-        shells.of_face.push_back(shell);
-    }
-    return shells;
 }
 
 // Every pair of triangles (each face is one) tested.
@@ -135,9 +113,11 @@ void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Sh
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::SurfaceOverlaps found =
-            polymass::core::find_overlaps(view, nullptr, box.center(), box.diagonal().norm(),
-                                          shells, *runner, std::pmr::get_default_resource());
+        const polymass::core::IndexedSurface surface(view, nullptr, box.center(),
+                                                     box.diagonal().norm(), *runner,
+                                                     std::pmr::get_default_resource());
+        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
+            surface, shells, *runner, std::pmr::get_default_resource());
         const bool crossing = agrees(found.crossing, expected.crossing);
         const bool touching = agrees(found.touching, expected.touching);
         if (!crossing || !touching)
@@ -177,7 +157,7 @@ int main() {
                 std::snprintf(name, sizeof name,
                               "%zu cubes from corner %d sharing %zu vertices, 2 turned", copies,
                               first, shared_vertices);
-                const polymass::core::Shells shells = shells_of(pile);
+                const polymass::core::Shells shells = polymass_test::shells_of(pile);
                 check_pile(name, pile, nullptr);
                 check_pile(name, pile, &shells);
             }
@@ -194,9 +174,9 @@ int main() {
         add_cube(pile, tiny * turned, first_vertices, 1, 0);
         char name[96];
         std::snprintf(name, sizeof name, "4 cubes of side 2^-1050 from corner %d, 1 turned", first);
-        const polymass::core::Shells shells = shells_of(pile);
+        const polymass::core::Shells shells = polymass_test::shells_of(pile);
         check_pile(name, pile, nullptr);
         check_pile(name, pile, &shells);
     }
-    return polymass_test::finish("test_surface_overlaps");
+    return polymass_test::finish("test_surface_contacts");
 }

@@ -1,0 +1,92 @@
+// A surface's triangles indexed for the intersection check: each corner as
+// the vertex it is welded to, copies of one triangle (the same three
+// positions in the same order) linked together, and a box tree over one
+// triangle of each shape. The search for meeting faces (surface_contacts.hpp)
+// walks the tree's overlapping pairs; the count of how shells nest
+// (shell_nesting.hpp) walks the triangles near its probing segments.
+//
+// Copies meet every other triangle alike, so the tree holds one triangle of
+// each shape, and the copies of the two shapes of a pair it finds are paired
+// without it: a pile of k copies is then one pair of shapes, not k^2 pairs
+// of triangles each found through the tree.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+#include "box_tree.hpp"
+#include "mesh_view.hpp"
+#include "surface_triangles.hpp"
+#include "task_runner.hpp"
+#include "triangle_contact.hpp"
+
+namespace polymass::core {
+
+// The end of a list of copies.
+inline constexpr std::uint32_t kNoCopy = UINT32_MAX;
+
+template <class Scalar, class Index>
+class IndexedSurface {
+public:
+    // vertex_ids: welding (see weld_vertices), null meaning the index itself.
+    // reference, size: a point near the surface and its size (the scan's
+    // bounding box centre and diagonal). Indices must be in range,
+    // coordinates finite, faces fewer than 2^32. Built in blocks on `tasks`;
+    // the same for every runner.
+    IndexedSurface(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
+                   const Eigen::Vector3d& reference, double size, TaskRunner& tasks,
+                   std::pmr::memory_resource* memory);
+
+    std::size_t size() const { return triangles_.size(); }
+    // Triangle t's corners as welded vertices, in the face's turn.
+    const std::array<std::uint32_t, 3>& corners(std::size_t t) const {
+        return triangles_.corners[t];
+    }
+    std::uint32_t face(std::size_t t) const { return triangles_.face[t]; }
+    // Triangle t with corner `first` first, keeping its turn. A welded
+    // vertex sits at the position of the vertex it was welded to, so that
+    // corners the surface shares are one point, not two points 1e-17 apart
+    // whose triangles would seem to cross.
+    Triangle triangle(std::size_t t, int first = 0) const {
+        const std::array<std::uint32_t, 3>& ids = triangles_.corners[t];
+        return Triangle{mesh_.positions[ids[first]], mesh_.positions[ids[(first + 1) % 3]],
+                        mesh_.positions[ids[(first + 2) % 3]]};
+    }
+
+    // The lowest copy of t's shape (t itself when it is alone), and the next
+    // copy above t, or kNoCopy. A shape's copies ascend.
+    std::uint32_t lowest_copy(std::size_t t) const { return lowest_[t]; }
+    std::uint32_t next_copy(std::size_t t) const { return next_[t]; }
+    // Degenerate triangles (three collinear corners) bound nothing and meet nothing.
+    bool meets_nothing(std::size_t t) const { return degenerate_[lowest_[t]] != 0; }
+
+    // The tree over the lowest copy of each shape, in units about the
+    // reference: a power of two near the surface's size, so that single
+    // precision holds the boxes for any size a double does.
+    const BoxTree& tree() const { return tree_; }
+    Eigen::Vector3d in_units(const Eigen::Vector3d& p) const {
+        return (p - reference_) * per_unit_;
+    }
+    // The largest extent of the boxes, in the mesh's units.
+    double span() const;
+
+private:
+    std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                                                 std::pmr::memory_resource* memory);
+    // Triangles at the same three positions in the same order: copies of a
+    // part stacked in place, or a surface exported twice.
+    void find_copies(TaskRunner& tasks, std::pmr::memory_resource* memory);
+
+    const MeshView<Scalar, Index>& mesh_;
+    SurfaceTriangles triangles_;  // corners welded
+    Eigen::Vector3d reference_;
+    double per_unit_;
+    std::pmr::vector<std::uint8_t> degenerate_;  // three collinear corners
+    std::pmr::vector<std::uint32_t> lowest_, next_;
+    BoxTree tree_;
+};
+
+}  // namespace polymass::core

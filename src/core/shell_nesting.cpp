@@ -1,0 +1,192 @@
+#include "shell_nesting.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "exact_predicates.hpp"
+
+namespace polymass::core {
+namespace {
+
+// Where a nesting probe starts: a vertex p of a shell, or inside a triangle
+// p, a, b of it, at p + e (a - p) + e^2 (b - p) for e -> 0+, a point of the
+// open triangle next to p. Every predicate of a probe is affine in its start
+// point, so its sign there is the first nonzero of its signs at p, a and b.
+struct ProbeStart {
+    Eigen::Vector3d p, a, b;
+    bool inside;
+};
+
+template <class Predicate>
+int sign_at(const ProbeStart& start, const Predicate& predicate) {
+    int sign = predicate(start.p);
+    if (sign != 0 || !start.inside) return sign;
+    sign = predicate(start.a);
+    return sign != 0 ? sign : predicate(start.b);
+}
+
+// Whether the start, on the plane of t, lies on the closed triangle t:
+// exact, in the coordinate plane the triangle projects onto best.
+bool lies_on(const Triangle& t, const ProbeStart& start) {
+    int drop = 0;
+    (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs().maxCoeff(&drop);
+    const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+    auto flat = [&](const Eigen::Vector3d& x) { return Eigen::Vector2d(x[u], x[v]); };
+    const int turn = orient2d(flat(t[0]), flat(t[1]), flat(t[2]));
+    for (int k = 0; k < 3; ++k) {
+        const int side = sign_at(start, [&](const Eigen::Vector3d& x) {
+            return orient2d(flat(t[k]), flat(t[(k + 1) % 3]), flat(x));
+        });
+        if (side == -turn) return false;
+    }
+    return true;
+}
+
+// Directions of the probing segments: far from every coordinate plane and
+// from each other, so that the next one avoids what grazed the last.
+const Eigen::Vector3d kProbeDirections[] = {
+    {0.4353, 0.5209, 0.7342}, {-0.6016, 0.3187, 0.7326}, {0.2679, -0.8535, 0.4472}};
+// Vertices of a shell tried as probes before its nesting is left unknown.
+constexpr std::size_t kProbeVertices = 4;
+
+}  // namespace
+
+template <class Scalar, class Index>
+std::pmr::vector<int> count_windings(
+    const IndexedSurface<Scalar, Index>& surface, const Shells& shells,
+    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell,
+    std::pmr::memory_resource* memory) {
+    const auto shell_of = [&](std::size_t t) { return shells.of_face[surface.face(t)]; };
+    // The probes' far ends lie outside every box.
+    const double span = surface.span();
+    std::pmr::vector<int> winding_of_shell(shells.count, kUnknownWinding, memory);
+    if (!(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
+
+    // The winding number of every shell but `shell` at a start that lies on
+    // no other shell, or kUnknownWinding when the segment from it to
+    // p + 4 span direction grazes an edge, a vertex or a plane.
+    auto winding_at = [&](const ProbeStart& start, const Eigen::Vector3d& direction,
+                          std::uint32_t shell) {
+        const Eigen::Vector3d& p = start.p;
+        const Eigen::Vector3d q = p + 4 * span * direction.normalized();
+        int winding = 0;
+        bool counted = true;
+        surface.tree().for_each_item_near_segment(
+            surface.in_units(p), surface.in_units(q), [&](std::uint32_t t) {
+                // t and its copies, of the other shells. The first graze ends
+                // the walk: a pile of k shells at one place then costs each
+                // probe a triangle, not k.
+                int others = 0;
+                for (std::uint32_t copy = t; copy != kNoCopy; copy = surface.next_copy(copy))
+                    others += shell_of(copy) != shell;
+                if (others == 0) return true;
+                const Triangle c = surface.triangle(t);
+                const int to = orient3d(c[0], c[1], c[2], q);
+                const int from = sign_at(
+                    start, [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); });
+                // A start on c was turned away before (on_another_shell): from
+                // = 0 is a start in c's plane beside it.
+                if (to == 0) {
+                    counted = false;
+                    return false;
+                }
+                if (from == 0 || from == to) return true;
+                auto edge_sign = [&](int k) {
+                    return sign_at(start, [&](const Eigen::Vector3d& x) {
+                        return orient3d(x, q, c[k], c[(k + 1) % 3]);
+                    });
+                };
+                const int e0 = edge_sign(0), e1 = edge_sign(1), e2 = edge_sign(2);
+                const bool some_positive = e0 > 0 || e1 > 0 || e2 > 0;
+                const bool some_negative = e0 < 0 || e1 < 0 || e2 < 0;
+                if (some_positive && some_negative) return true;  // passes beside the triangle
+                if (e0 == 0 || e1 == 0 || e2 == 0) {
+                    counted = false;  // through an edge or a corner
+                    return false;
+                }
+                winding += from < 0 ? others : -others;  // leaving through the faces' outer side
+                return true;
+            });
+        return counted ? winding : kUnknownWinding;
+    };
+
+    // A few triangles of each shell, in order, whose first corners are the probes.
+    std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
+    std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
+    for (std::size_t t = 0; t < surface.size(); ++t) {
+        const std::uint32_t shell = shell_of(t);
+        if (!surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
+            probes[shell][probe_count[shell]++] = std::uint32_t(t);
+    }
+    // Whether the start lies on another shell's triangle: a look at the few
+    // triangles whose boxes hold it, before long probes that would only graze
+    // there. The vertices of parts resting on each other often do, and the
+    // starts next to the corners of faces resting flush always do.
+    auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell) {
+        bool on = false;
+        surface.tree().for_each_item_near_segment(
+            surface.in_units(start.p), surface.in_units(start.p), [&](std::uint32_t t) {
+                if (shell_of(t) == shell) return true;
+                const Triangle c = surface.triangle(t);
+                on = sign_at(start,
+                             [&](const Eigen::Vector3d& x) {
+                                 return orient3d(c[0], c[1], c[2], x);
+                             }) == 0 &&
+                     lies_on(c, start);
+                return !on;
+            });
+        return on;
+    };
+    // The winding at the start, or kUnknownWinding when it lies on another
+    // shell or every direction grazes.
+    auto probe = [&](const ProbeStart& start, std::uint32_t shell) {
+        int winding = kUnknownWinding;
+        if (on_another_shell(start, shell)) return winding;
+        for (const Eigen::Vector3d& direction : kProbeDirections) {
+            winding = winding_at(start, direction, shell);
+            if (winding != kUnknownWinding) break;
+        }
+        return winding;
+    };
+    for (std::uint32_t shell = 0; shell < shells.count; ++shell) {
+        int& winding = winding_of_shell[shell];
+        for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
+            const Eigen::Vector3d p = surface.triangle(probes[shell][k])[0];
+            winding = probe({p, p, p, false}, shell);
+        }
+    }
+    // Where a shell touches another, the rest of the surface may wind around
+    // its pieces differently: a surface passing through another's face
+    // exactly along its own edges crosses no face, yet lies partly inside
+    // the other part, and all its vertices may lie on that part or outside
+    // it. So each triangle touching another shell is probed from inside,
+    // next to each of its corners, unless the start there lies on another
+    // shell (what touches it from one side, along a segment or at a point,
+    // leaves the winding alike on both sides; a face lying flush on part of
+    // it cuts its inside into pieces, which these probes reach unless flush
+    // faces cover every corner); a shell whose probes disagree bounds some
+    // region twice (or less than once), whatever its sense.
+    for (std::uint32_t t = 0; t < surface.size(); ++t) {
+        if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
+        const std::uint32_t shell = shell_of(t);
+        int& winding = winding_of_shell[shell];
+        for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
+            const Triangle corners = surface.triangle(t, k);
+            const int here = probe({corners[0], corners[1], corners[2], true}, shell);
+            if (here != kUnknownWinding)
+                winding = winding == kUnknownWinding || winding == here ? here : kMixedWinding;
+        }
+    }
+    return winding_of_shell;
+}
+
+#define POLYMASS_INSTANTIATE(Scalar, Index)                       \
+    template std::pmr::vector<int> count_windings<Scalar, Index>( \
+        const IndexedSurface<Scalar, Index>&, const Shells&,      \
+        const std::pmr::vector<std::atomic<std::uint8_t>>&, std::pmr::memory_resource*);
+POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
+#undef POLYMASS_INSTANTIATE
+
+}  // namespace polymass::core

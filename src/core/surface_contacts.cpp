@@ -1,0 +1,318 @@
+#include "surface_contacts.hpp"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+#include "triangle_contact.hpp"
+
+namespace polymass::core {
+namespace {
+
+using FacePair = std::array<std::uint64_t, 2>;
+
+void sort_unique(std::pmr::vector<FacePair>& pairs) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
+// Face pairs of one kind (crossing, touching) as the candidates come, in any
+// order and with repeats (a polygon's triangles): every distinct pair is
+// counted until kMostCountedPairs are; past that, the count is that many (a
+// lower bound) and only a pair that would be among the lowest kKeptLocations
+// is still wanted. Piles of coincident copies of a part meet in millions of
+// pairs: counting them all took minutes and told nothing the first thousands
+// do not. wants() only grows stricter, and for larger pairs.
+//
+// The pieces of the search (BoxTree::pair_tasks) collect on their own and
+// are merged: the count is the number of distinct pairs, or
+// kMostCountedPairs when there are at least that many, and the lowest pairs
+// are exact, however the pairs were cut into pieces and in whatever order
+// they came.
+class PairCollector {
+public:
+    static constexpr std::size_t kMostCountedPairs = 2048;
+
+    explicit PairCollector(std::pmr::memory_resource* memory) : pairs_(memory) {}
+
+    // Whether a test of pair could change the finding.
+    bool wants(const FacePair& pair) const {
+        return !stopped_ || kept_ < kKeptLocations || pair < lowest_[kKeptLocations - 1];
+    }
+
+    void add(const FacePair& pair) {
+        keep_if_lowest(pair);
+        if (stopped_) return;
+        pairs_.push_back(pair);
+        if (pairs_.size() >= next_tidy_) tidy();
+    }
+
+    // Takes in what another piece of the search collected.
+    void merge(const PairCollector& piece) {
+        for (std::size_t i = 0; i < piece.kept_; ++i) keep_if_lowest(piece.lowest_[i]);
+        if (stopped_) return;
+        pairs_.insert(pairs_.end(), piece.pairs_.begin(), piece.pairs_.end());
+        stopped_ = piece.stopped_;
+        tidy();
+    }
+
+    // The pairs counted, without those `except` holds. Past the stop the
+    // count is a lower bound (complete false).
+    PairFinding finding(const PairCollector* except = nullptr) {
+        sort_unique(pairs_);
+        auto excepted = [&](const FacePair& pair) { return except && except->holds(pair); };
+        pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(), excepted), pairs_.end());
+        PairFinding found = PairFinding::of(pairs_);
+        if (stopped_) {
+            // The lowest pairs were kept apart past the stop.
+            std::size_t kept = 0;
+            for (std::size_t i = 0; i < kept_; ++i)
+                if (!excepted(lowest_[i])) found.lowest[kept++] = lowest_[i];
+            found.count = std::max(std::min(found.count, kMostCountedPairs), kept);
+            found.complete = false;
+        }
+        return found;
+    }
+
+    // Whether pair was counted or kept (after finding(): pairs_ is sorted).
+    bool holds(const FacePair& pair) const {
+        return std::binary_search(pairs_.begin(), pairs_.end(), pair) ||
+               std::binary_search(lowest_.begin(), lowest_.begin() + kept_, pair);
+    }
+
+private:
+    // Drops repeats and stops at kMostCountedPairs distinct pairs; the next
+    // tidy comes after as many more pairs, so that each costs a sort of at
+    // most twice that many.
+    void tidy() {
+        sort_unique(pairs_);
+        stopped_ = stopped_ || pairs_.size() >= kMostCountedPairs;
+        next_tidy_ = pairs_.size() + kMostCountedPairs;
+    }
+
+    void keep_if_lowest(const FacePair& pair) {
+        auto end = lowest_.begin() + kept_;
+        auto at = std::lower_bound(lowest_.begin(), end, pair);
+        if (at != end && *at == pair) return;
+        if (kept_ < kKeptLocations) {
+            ++kept_;
+            ++end;
+        } else if (at == end) {
+            return;
+        }
+        std::move_backward(at, end - 1, end);
+        *at = pair;
+    }
+
+    std::pmr::vector<FacePair> pairs_;  // until stopped, with repeats between tidies
+    std::size_t next_tidy_ = kMostCountedPairs;
+    std::array<FacePair, kKeptLocations> lowest_{};
+    std::size_t kept_ = 0;
+    bool stopped_ = false;
+};
+
+// How many corners two triangles share (as vertices, not positions), and
+// where the last one found sits in each.
+struct SharedCorners {
+    int count = 0, at_first = 0, at_second = 0;
+};
+
+SharedCorners shared_corners(const std::array<std::uint32_t, 3>& first,
+                             const std::array<std::uint32_t, 3>& second) {
+    SharedCorners shared;
+    for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+            if (first[k] == second[l]) shared = {shared.count + 1, k, l};
+    return shared;
+}
+
+}  // namespace
+
+template <class Scalar, class Index>
+SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, const Shells* shells,
+                              TaskRunner& tasks, std::pmr::memory_resource* memory) {
+    const bool nesting = shells && shells->count >= 2;
+    const auto shell_of = [&](std::size_t t) { return shells->of_face[surface.face(t)]; };
+    // Per shape (its lowest triangle): whether it touches a triangle of
+    // another shell. Only there can the rest of the surface wind around a
+    // shell otherwise than at its probe vertex (the nesting, below). Copies
+    // on two shells coincide, which is crossing and ends the check before the
+    // nesting, so the copies of a shape that matters lie on one shell.
+    SurfaceContacts contacts(nesting ? surface.size() : 0, memory);
+    auto& touches_other_shell = contacts.touches_other_shell;
+    auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
+        if (contact == Contact::touching && nesting && shell_of(i) != shell_of(j)) {
+            touches_other_shell[surface.lowest_copy(i)].store(1, std::memory_order_relaxed);
+            touches_other_shell[surface.lowest_copy(j)].store(1, std::memory_order_relaxed);
+        }
+    };
+
+    // Per shape (its lowest triangle), with shells: whether two of its
+    // copies lie on one shell.
+    std::pmr::vector<std::uint8_t> copies_share_a_shell(shells ? surface.size() : 0, 0, memory);
+    if (shells) {
+        std::pmr::vector<std::uint32_t> last_shape_on(shells->count, kNoCopy, memory);
+        for (std::uint32_t t = 0; t < surface.size(); ++t) {
+            if (surface.lowest_copy(t) != t || surface.next_copy(t) == kNoCopy) continue;
+            for (std::uint32_t copy = t; copy != kNoCopy; copy = surface.next_copy(copy)) {
+                std::uint32_t& last = last_shape_on[shell_of(copy)];
+                copies_share_a_shell[t] |= last == t;
+                last = t;
+            }
+        }
+    }
+
+    // Adds the face pair of triangles i and j as its contact says. Coinciding
+    // triangles of two shells bound the region behind both twice, as crossing
+    // ones do; within one shell they may be a fan over a non-convex polygon,
+    // whose overlaps cancel, and are taken as touching (so too without shells:
+    // the surface is then refused on other grounds).
+    auto add = [&](Contact contact, std::uint32_t i, std::uint32_t j, const FacePair& pair,
+                   PairCollector& crossing, PairCollector& touching) {
+        if (contact == Contact::coinciding)
+            contact = shells && shell_of(i) != shell_of(j) ? Contact::crossing : Contact::touching;
+        note_contact(contact, i, j);
+        if (contact != Contact::none)
+            (contact == Contact::crossing ? crossing : touching).add(pair);
+    };
+    // Triangles sharing two corners are neighbours across an edge and meet
+    // nothing more, and so are those sharing three in opposite turns (a face
+    // beside its reverse: a sheet of no thickness, which cancels). Three in
+    // one turn are one triangle written twice, which bounds the region behind
+    // it twice (a surface welded to its copy and accepted as non-manifold):
+    // crossing, whatever the shells. Returns whether the shared corners
+    // decided the pair; the contact test decides every other.
+    auto decided_by_shared_corners = [&](std::uint32_t i, std::uint32_t j,
+                                         const SharedCorners& shared, const FacePair& pair,
+                                         PairCollector& crossing) {
+        if (shared.count < 2) return false;
+        if (shared.count == 3 && surface.corners(i)[(shared.at_first + 1) % 3] ==
+                                     surface.corners(j)[(shared.at_second + 1) % 3])
+            crossing.add(pair);
+        return true;
+    };
+    // Triangles i and j, of different faces.
+    auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector& crossing,
+                         PairCollector& touching) {
+        const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
+        if (face_i == face_j) return;  // pieces of one polygon
+        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+        // Past the stop of touching pairs a pair is still tested while the
+        // count of crossing ones wants it, which it does until 2048 cross:
+        // every touching pair that the nesting needs is marked.
+        if (!crossing.wants(pair) && !touching.wants(pair)) return;
+        const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
+        if (decided_by_shared_corners(i, j, shared, pair, crossing)) return;
+        // The shared corner first.
+        add(triangle_contact(surface.triangle(i, shared.at_first),
+                             surface.triangle(j, shared.at_second), shared.count == 1),
+            i, j, pair, crossing, touching);
+    };
+    // The pairs of copies of shapes r and s (r != s), or of two distinct
+    // copies of r (r == s). Which corners a pair shares decides its contact:
+    // none, or corner k of one with corner l of the other, which then lie at
+    // one position, so each such pattern is tested once, when first met. The
+    // copies of a shape ascend, and their faces with them, so along a row (j)
+    // the face pairs only grow: the first that no collector wants ends the
+    // row, and so does the first that only collectors of kinds no pattern
+    // gives want: past the count's stop a pile costs a test per copy, not
+    // per pair of copies.
+    auto pair_copies = [&](std::uint32_t r, std::uint32_t s, PairCollector& crossing,
+                           PairCollector& touching) {
+        if (r != s && surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy) {
+            test_pair(r, s, crossing, touching);
+            return;
+        }
+        // [0]: no corner shared; [1 + 3 k + l]: corner k of r's copy is corner l of s's.
+        std::array<Contact, 10> contact_of;
+        std::array<bool, 10> tested{};
+        auto contact = [&](int k, int l, bool shared_corner) {
+            const int pattern = shared_corner ? 1 + 3 * k + l : 0;
+            if (!tested[pattern]) {
+                contact_of[pattern] =
+                    triangle_contact(surface.triangle(r, k), surface.triangle(s, l), shared_corner);
+                tested[pattern] = true;
+            }
+            return contact_of[pattern];
+        };
+        // Copies of shapes on two shells share no corner: all meet as r and
+        // s do. (A row breaks past the stop of touching pairs, and copies on
+        // one shell, on distinct vertices, reach the nesting.)
+        if (r != s && nesting && shell_of(r) != shell_of(s))
+            note_contact(contact(0, 0, false), r, s);
+        // Coinciding copies count as crossing on two shells, as touching on
+        // one or without shells (add); copies of one shape each on its own
+        // shell (a pile of parts) never touch, so that once the count of
+        // crossing ones stops, their rows end at once.
+        const bool coinciding_may_cross = shells != nullptr;
+        const bool coinciding_may_touch = !shells || r != s || copies_share_a_shell[r];
+        for (std::uint32_t i = r; i != kNoCopy; i = surface.next_copy(i)) {
+            for (std::uint32_t j = r == s ? surface.next_copy(i) : s; j != kNoCopy;
+                 j = surface.next_copy(j)) {
+                const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
+                if (face_i == face_j) continue;
+                const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
+                const bool cross_wants = crossing.wants(pair), touch_wants = touching.wants(pair);
+                if (!cross_wants && !touch_wants) break;
+                if (!(cross_wants && touch_wants)) {
+                    // Any pattern's kind is that of no corner shared, or
+                    // none: a shared corner changes no crossing (the
+                    // triangles' places decide it) and only drops touching
+                    // and coinciding. Coinciding copies count as crossing
+                    // or touching, as their shells say.
+                    const Contact apart = contact(0, 0, false);
+                    const bool coinciding = apart == Contact::coinciding;
+                    const bool can_cross =
+                        apart == Contact::crossing || (coinciding && coinciding_may_cross);
+                    const bool can_touch =
+                        apart == Contact::touching || (coinciding && coinciding_may_touch);
+                    if (!(can_cross && cross_wants) && !(can_touch && touch_wants)) break;
+                }
+                const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
+                if (decided_by_shared_corners(i, j, shared, pair, crossing)) continue;
+                add(contact(shared.at_first, shared.at_second, shared.count == 1), i, j, pair,
+                    crossing, touching);
+            }
+        }
+    };
+
+    // The contacts of one piece of the search, found on any thread.
+    struct PieceContacts {
+        PairCollector crossing, touching;
+    };
+    const std::pmr::vector<BoxTree::PairTask> pieces = surface.tree().pair_tasks();
+    std::pmr::vector<PieceContacts> found(memory);
+    found.reserve(pieces.size() + 1);
+    for (std::size_t piece = 0; piece <= pieces.size(); ++piece)
+        found.push_back({PairCollector(memory), PairCollector(memory)});
+    tasks.run(pieces.size(), [&](std::size_t piece) {
+        surface.tree().for_each_overlapping_pair(
+            pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
+                pair_copies(r, s, found[piece].crossing, found[piece].touching);
+            });
+    });
+    // The copies of one shape meet each other; the tree holds one of them.
+    for (std::uint32_t t = 0; t < surface.size(); ++t)
+        if (surface.lowest_copy(t) == t && surface.next_copy(t) != kNoCopy &&
+            !surface.meets_nothing(t))
+            pair_copies(t, t, found.back().crossing, found.back().touching);
+    // In piece order, though the result does not depend on it.
+    PairCollector crossing(memory), touching(memory);
+    for (const PieceContacts& piece : found) {
+        crossing.merge(piece.crossing);
+        touching.merge(piece.touching);
+    }
+    // Faces that cross somewhere are listed as crossing only.
+    contacts.crossing = crossing.finding();
+    contacts.touching = touching.finding(&crossing);
+    return contacts;
+}
+
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                     \
+    template SurfaceContacts find_contacts<Scalar, Index>(const IndexedSurface<Scalar, Index>&, \
+                                                          const Shells*, TaskRunner&,           \
+                                                          std::pmr::memory_resource*);
+POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
+#undef POLYMASS_INSTANTIATE
+
+}  // namespace polymass::core

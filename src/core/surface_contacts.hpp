@@ -1,0 +1,45 @@
+// Which faces of a surface meet: those that cross each other, and those that
+// only touch.
+//
+// Candidate pairs come from the box tree of the indexed surface
+// (indexed_surface.hpp), so a closed surface costs about as many triangle
+// tests as each triangle has neighbours. Each candidate is decided with exact
+// predicates (triangle_contact.hpp). Faces that share an edge meet there by
+// construction and are not compared; faces that share one vertex are
+// compared for crossing only.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory_resource>
+#include <vector>
+
+#include "findings.hpp"
+#include "indexed_surface.hpp"
+#include "shells.hpp"
+#include "task_runner.hpp"
+
+namespace polymass::core {
+
+struct SurfaceContacts {
+    PairFinding crossing;  // face pairs (low, high) that cross
+    PairFinding touching;  // face pairs that meet without crossing (and share no vertex)
+    // With two shells or more, per shape (its lowest copy): whether it
+    // touches a triangle of another shell. Only there can the rest of the
+    // surface wind around a shell otherwise than at one vertex of it
+    // (shell_nesting.hpp). Empty otherwise.
+    std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell;
+
+    SurfaceContacts(std::size_t triangles, std::pmr::memory_resource* memory)
+        : touches_other_shell(triangles, memory) {}
+};
+
+// shells: null, or the surface's shells (coinciding faces of two shells
+// cross; touching between shells is marked). The search runs as tasks of
+// `tasks`; the result is the same for every runner. Each kind counts its
+// pairs up to a limit and keeps the lowest exactly (PairFinding).
+template <class Scalar, class Index>
+SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, const Shells* shells,
+                              TaskRunner& tasks, std::pmr::memory_resource* memory);
+
+}  // namespace polymass::core
