@@ -140,7 +140,7 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     // The whole's intersection check (below) sees every part's faces, and
     // crossings between parts too: each part is checked without it.
     polymass_options part_options = options;
-    part_options.flags &= ~uint32_t(POLYMASS_OPTION_CHECK_INTERSECTIONS);
+    part_options.flags |= POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     std::vector<IntegratedSolid> solids;
     solids.reserve(model.parts.size());
     for (const Part& part : model.parts) solids.emplace_back(library, model, part, part_options);
@@ -156,7 +156,9 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     SolidResult verdict = failure(total.status, total.message);
     uint32_t warnings = 0;
     // Parts crossing each other, or one inside another, would count twice.
-    if (verdict.status == POLYMASS_OK && (options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS)) {
+    const uint32_t skips =
+        POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    if (verdict.status == POLYMASS_OK && !(options.flags & skips)) {
         const CheckResult check = check_solid(library, model, whole);
         verdict = failure(check.diagnostics.status, check.message);
         if (check.diagnostics.touching_face_pairs > 0) warnings |= POLYMASS_WARNING_TOUCHING_FACES;
