@@ -47,9 +47,7 @@ static void set_weld_flags(polymass_context* ctx, double tolerance, uint32_t fla
     PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
 }
 
-static void set_weld(polymass_context* ctx, double tolerance) {
-    set_weld_flags(ctx, tolerance, 0);
-}
+static void set_weld(polymass_context* ctx, double tolerance) { set_weld_flags(ctx, tolerance, 0); }
 
 static const pm_reference_solid* reference(const char* name) {
     size_t i;
