@@ -37,8 +37,8 @@ def main() -> int:
     vertices = np.asarray(loaded.vertices) * UNITS[arguments.unit]
     faces = np.asarray(loaded.faces)
 
-    # A file from elsewhere may hold parts that overlap: look for crossing faces too.
-    report = polymass.check(vertices, faces, weld=True, check_intersections=True)
+    # Every finding at once (crossing faces of parts that overlap too), not only the first.
+    report = polymass.check(vertices, faces, weld=True)
     if not report.ok:
         print(f"{arguments.mesh}: not a closed solid: {report.message}", file=sys.stderr)
         return 1

@@ -124,8 +124,9 @@ extern "C" {
    way), or a shell lies inside a solid of the same sense or passes through
    another's surface where the two touch: the surface bounds some region twice
    and its volume would be counted twice (two overlapping parts exported as
-   one file, a surface written twice, a surface folded through itself). Found
-   with POLYMASS_OPTION_CHECK_INTERSECTIONS. */
+   one file, a surface written twice, a surface folded through itself).
+   Checked by default; not with POLYMASS_OPTION_SKIP_INTERSECTION_CHECK or
+   POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS. */
 #define POLYMASS_ERROR_INTERSECTING 24
 /* The enclosed volume is negative: every face is reversed - or one shell is
    inside out (negative volume) while lying inside no solid shell. */
@@ -176,8 +177,9 @@ typedef struct polymass_allocator {
 
 /* polymass_options.flags */
 /* Trusted input (a game engine at load time): skip the open, non-manifold,
-   orientation and planarity checks. Index range and finiteness are always
-   checked, so bad input still cannot crash the library. */
+   orientation and planarity checks, and the intersection check with them
+   (see POLYMASS_OPTION_SKIP_INTERSECTION_CHECK). Index range and finiteness
+   are always checked, so bad input still cannot crash the library. */
 #define POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS (1u << 0)
 /* Accept an inverted solid: report it with POLYMASS_WARNING_INVERTED and the
    properties of the solid with its faces turned the right way. */
@@ -189,17 +191,19 @@ typedef struct polymass_allocator {
 /* Accept edges shared by more than two faces when they are traversed as often
    in one direction as in the other (two solids touching along an edge). */
 #define POLYMASS_OPTION_ACCEPT_NON_MANIFOLD (1u << 3)
-/* Also check that no faces cross each other and that no shell lies inside a
-   solid of the same sense (POLYMASS_ERROR_INTERSECTING), counting how shells
-   nest exactly; faces that touch without crossing (parts resting on each
-   other) give POLYMASS_WARNING_TOUCHING_FACES. Exact predicates decide every
-   case. Off by default: it costs about as much again as the topology checks
-   (see the README for figures), and an engine's load path need not pay it.
-   polymass_mesh_check follows it too: set it there to list crossing and
-   touching faces (the polymass tool does, by default). Without it a shell
-   turned inside out is still refused when it lies outside every solid
-   shell's bounding box. Needs the topology checks for the shells' nesting. */
-#define POLYMASS_OPTION_CHECK_INTERSECTIONS (1u << 4)
+/* For trusted input only: skip the intersection check. By default (this bit
+   clear) the library also checks that no faces cross each other and that no
+   shell lies inside a solid of the same sense (POLYMASS_ERROR_INTERSECTING),
+   counting how shells nest exactly; faces that touch without crossing (parts
+   resting on each other) give POLYMASS_WARNING_TOUCHING_FACES. Exact
+   predicates decide every case. Skipping it saves most of the time of
+   polymass_mesh_create (see the README for figures), but two overlapping
+   parts exported as one surface then pass, their overlap counted twice, and
+   a shell turned inside out is refused only when it lies outside every solid
+   shell's bounding box. polymass_mesh_check follows it too (set it there not
+   to list crossing and touching faces). The check needs the topology checks:
+   POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS skips it as well. */
+#define POLYMASS_OPTION_SKIP_INTERSECTION_CHECK (1u << 4)
 
 /* polymass_options.modes: how a surface is turned into a body. Since 1.2. */
 /* The chain's end (and an empty chain: solid only). */
@@ -392,7 +396,7 @@ typedef struct polymass_diagnostics {
     double max_non_planarity; /* largest relative off-plane distance seen */
     double signed_volume;     /* NaN when the faces could not be integrated */
     /* Since 1.1. Shells are counted on a closed, oriented surface; the face
-       pairs with POLYMASS_OPTION_CHECK_INTERSECTIONS, each pair (lower face,
+       pairs unless POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, each pair (lower face,
        higher face), lowest pairs first. Face pairs are counted up to 1024 of
        a kind: past that the count is a lower bound (the message says "at
        least"), and the first pairs are still the lowest. */
@@ -597,10 +601,10 @@ POLYMASS_API int32_t polymass_mesh_shells(uint32_t* out_shell_of_face, uint64_t*
 
 /* The shells of a closed surface and what each one is: a solid, a cavity in
    a solid, inside out, overlapping another, or without volume - the
-   classification polymass_mesh_create judges by (with
-   POLYMASS_OPTION_CHECK_INTERSECTIONS: by how the shells nest, counted
-   exactly; without: by bounding boxes, which can show a shell to be inside
-   out but take any negative shell within a solid's box for a cavity). Shell
+   classification polymass_mesh_create judges by (by how the shells nest,
+   counted exactly; with POLYMASS_OPTION_SKIP_INTERSECTION_CHECK: by bounding
+   boxes, which can show a shell to be inside out but take any negative shell
+   within a solid's box for a cavity). Shell
    i is the one polymass_mesh_shells numbers i. Writes the first
    min(capacity, count) shells to out_shells, an array whose elements all
    have struct_size set, and the count to *out_shell_count (out_shells may be

@@ -48,7 +48,7 @@ int32_t read_options(polymass_context* context, const polymass_options* options,
     constexpr uint32_t known_flags =
         POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_ACCEPT_INVERTED |
         POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD |
-        POLYMASS_OPTION_CHECK_INTERSECTIONS;
+        POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     if (read.flags & ~known_flags)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "options->flags has unknown bits 0x%x",

@@ -40,7 +40,10 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
     core::AnalysisSettings settings;
     settings.check_topology =
         full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
-    settings.check_intersections = options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS;
+    // On unless skipped by name; the trusted path (no topology checks) has
+    // no shells to nest, and skips it too.
+    settings.check_intersections =
+        settings.check_topology && !(options.flags & POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
     settings.weld = options.flags & POLYMASS_OPTION_WELD_VERTICES;
     settings.weld_tolerance = options.weld_tolerance;
     settings.stop_at_first_problem = !full_report;

@@ -140,7 +140,7 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
         // by pairs of faces, as often each way.
         const MeshInput fixed = triangles_input(repaired.positions, repaired.triangles);
         polymass_options judged = options;
-        judged.flags = (options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS) |
+        judged.flags = (options.flags & POLYMASS_OPTION_SKIP_INTERSECTION_CHECK) |
                        POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
         if (const int32_t status = build_solid(context, fixed, judged, mesh)) {
             char reason[sizeof context->message];

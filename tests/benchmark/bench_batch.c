@@ -1,7 +1,8 @@
 /* Throughput of polymass_batch_compute against a loop of single calls
    (polymass_mass_properties_compute) on many small meshes: spheres of
    `faces` triangles (a latitude-longitude grid, closed), each at its own
-   place. Prints figures; asserts nothing about speed.
+   place, with the default options (every check, the intersection check
+   included). Prints figures; asserts nothing about speed.
    Usage: bench_batch [meshes] [faces per mesh] [repeats] */
 #include <polymass/polymass.h>
 

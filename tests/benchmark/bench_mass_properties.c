@@ -1,10 +1,13 @@
 /* Throughput of libpolymass on large closed triangle meshes (torus grids far
-   from the origin) at 1e5, 1e6 and 1e7 triangles: trusted (topology checks
-   skipped) with float64 and with float32 positions, and fully checked, each on
-   one thread and on two (polymass_options.threads); each against a
+   from the origin) at 1e5, 1e6 and 1e7 triangles: trusted
+   (POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS: the topology and intersection checks
+   skipped) with float64 and with float32 positions, the topology checks
+   without the intersection check (POLYMASS_OPTION_SKIP_INTERSECTION_CHECK),
+   and every check (the default options), each on one thread and on two
+   (polymass_options.threads); each against a
    read-bandwidth probe that sums the very arrays the library reads, on one
    thread and on two, a two-thread figure also against its one-thread one,
-   and the checked path against the trusted one. Runs are interleaved (every path once per round)
+   and the checked paths against the trusted one. Runs are interleaved (every path once per round)
    and the median of the rounds is printed, as M triangles/s and as a fraction
    of the one-thread read bound. Prints figures; asserts nothing about speed.
    Usage: bench_mass_properties [rounds] [largest triangle count] */
@@ -100,6 +103,8 @@ enum {
     trusted_f64_2,
     trusted_f32,
     trusted_f32_2,
+    topology,
+    topology_2,
     checked,
     checked_2,
     measures
@@ -108,8 +113,9 @@ static const char* const names[measures] = {
     "read probe, 1 thread",          "read probe, 2 threads",
     "read probe, 1 thread, float32", "trusted, float64",
     "trusted, float64, 2 threads",   "trusted, float32",
-    "trusted, float32, 2 threads",   "checked (topology), float64",
-    "checked, float64, 2 threads"};
+    "trusted, float32, 2 threads",   "topology checks, float64",
+    "topology checks, 2 threads",    "every check (default), float64",
+    "every check, 2 threads"};
 /* What each measure is compared with: the 1-thread read bound of its arrays,
    and for a library path on two threads, the same path on one. */
 static int read_bound_of(int m) {
@@ -119,6 +125,7 @@ static int one_thread_of(int m) {
     return m == read_2_f64      ? read_1_f64
            : m == trusted_f64_2 ? trusted_f64
            : m == trusted_f32_2 ? trusted_f32
+           : m == topology_2    ? topology
            : m == checked_2     ? checked
                                 : -1;
 }
@@ -149,6 +156,7 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
     for (int r = 0; r < rounds; ++r) {
         double* s = seconds + (size_t)r * measures;
         const uint32_t trusted = POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+        const uint32_t no_overlaps = POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
         s[read_1_f64] = probe_seconds(&desc, 1, &checksum);
         s[trusted_f64] = compute_seconds(context, &desc, trusted, 1, &checksum);
         s[read_2_f64] = probe_seconds(&desc, 2, &checksum);
@@ -156,6 +164,8 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
         s[trusted_f32] = compute_seconds(context, &float_desc, trusted, 1, &checksum);
         s[read_1_f32] = probe_seconds(&float_desc, 1, &checksum);
         s[trusted_f32_2] = compute_seconds(context, &float_desc, trusted, 2, &checksum);
+        s[topology] = compute_seconds(context, &desc, no_overlaps, 1, &checksum);
+        s[topology_2] = compute_seconds(context, &desc, no_overlaps, 2, &checksum);
         s[checked] = compute_seconds(context, &desc, 0, 1, &checksum);
         s[checked_2] = compute_seconds(context, &desc, 0, 2, &checksum);
     }
@@ -169,9 +179,10 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
                medians[read_bound_of(m)] / medians[m]);
         if (one_thread_of(m) >= 0)
             printf("  %4.2fx one thread", medians[one_thread_of(m)] / medians[m]);
-        if (m == checked || m == checked_2)
-            printf("  %4.2f of trusted",
-                   medians[m == checked ? trusted_f64 : trusted_f64_2] / medians[m]);
+        if (m == topology || m == topology_2 || m == checked || m == checked_2)
+            printf(
+                "  %4.2f of trusted",
+                medians[m == topology || m == checked ? trusted_f64 : trusted_f64_2] / medians[m]);
         printf("\n");
     }
     free(seconds);

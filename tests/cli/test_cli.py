@@ -919,6 +919,83 @@ class Check(Case):
         self.assertGreater(report["touching_face_pairs"]["count"], 0)
         self.assertEqual([s["kind"] for s in report["shell_list"]], ["solid", "solid"])
 
+    def objects(self, name, *boxes):
+        """Boxes (lo, hi) as OBJ objects of one file, each with its own vertices."""
+        cube_vertices, cube_faces = fixtures.cube()
+        lines = []
+        for k, ((x0, y0, z0), (x1, y1, z1)) in enumerate(boxes):
+            lines.append(f"o box{k}")
+            for x, y, z in cube_vertices:
+                lines.append(f"v {x1 if x else x0!r} {y1 if y else y0!r} {z1 if z else z0!r}")
+            base = 1 + k * len(cube_vertices)
+            lines += ["f " + " ".join(str(base + i) for i in f) for f in cube_faces]
+        path = WORK / name
+        path.write_text("\n".join(lines) + "\n")
+        return path
+
+    def test_parts_resting_on_each_other_are_a_whole(self):
+        # Two cubes as two objects, one on the other: their touching corners
+        # at the same positions. Each part is judged alone and the parts
+        # against each other, never welded together: the whole is answered,
+        # the sum of the parts, with the touching warning.
+        path = self.objects("stacked.obj", ((0, 0, 0), (1, 1, 1)), ((0, 0, 1), (1, 1, 2)))
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 2.0)
+        self.assertEqual(out["center_of_mass"], [0.5, 0.5, 1.0])
+        self.assertEqual(out["warnings"], ["touching_faces"])
+        self.assertEqual([p["volume"] for p in out["parts"]], [1.0, 1.0])
+        # A cube resting half on the other, and three stacked: the same.
+        path = self.objects("half_on.obj", ((0, 0, 0), (1, 1, 1)), ((0.5, 0, 1), (1.5, 1, 2)))
+        result, out = run_json(path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual((out["volume"], out["warnings"]), (2.0, ["touching_faces"]))
+        boxes = [((0, 0, k), (1, 1, k + 1)) for k in range(3)]
+        result, out = run_json(self.objects("three.obj", *boxes))
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["volume"], 3.0)
+
+    def test_parts_crossing_or_nested_are_refused(self):
+        for name, second, volume in (
+            ("crossing_parts.obj", ((0.5, 0.5, 0.5), (1.5, 1.5, 1.5)), 1.0),
+            ("nested_parts.obj", ((0.25, 0.25, 0.25), (0.75, 0.75, 0.75)), 0.125),
+        ):
+            path = self.objects(name, ((0, 0, 0), (1, 1, 1)), second)
+            result, out = run_json(path)
+            self.assertEqual(result.returncode, EXIT_INVALID_MESH, name)
+            self.assertEqual(out["error"]["category"], "intersecting", name)
+            self.assertEqual([p["volume"] for p in out["parts"]], [1.0, volume])
+            # Skipped by name, each part is still answered and the whole is their sum.
+            result, out = run_json("--no-intersection-check", path)
+            self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+            self.assertEqual(out["volume"], 1.0 + volume)
+        # A fallback answers the crossing whole by its chain, and says so.
+        path = WORK / "crossing_parts.obj"
+        result, out = run_json("--fallback", "repair,hull", path)
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertNotEqual(out["provenance"]["mode"], "solid")
+
+    def test_exact_parts_give_the_same_bits_whatever_the_fallback(self):
+        # The bracket and a copy moved by (3.3, 0, 1.7): integrated as one
+        # surface the whole differed from the parts' sum in its last digits.
+        vertices, faces = fixtures.bracket()
+        n = len(vertices)
+        moved = [(x + 3.3, y, z + 1.7) for x, y, z in vertices]
+        lines = ["o first"] + [f"v {x!r} {y!r} {z!r}" for x, y, z in vertices + moved]
+        lines += ["f " + " ".join(str(i + 1) for i in f) for f in faces]
+        lines += ["o second"] + ["f " + " ".join(str(i + 1 + n) for i in f) for f in faces]
+        path = WORK / "two_brackets.obj"
+        path.write_text("\n".join(lines) + "\n")
+        _, exact = run_json(path)
+        keys = ("volume", "center_of_mass", "inertia", "principal_moments", "surface_area")
+        for fallback in ("repair", "hull", "repair,hull", "repair,shell"):
+            extra = ["--shell", "0.1"] if "shell" in fallback else []
+            result, out = run_json("--fallback", fallback, *extra, path)
+            self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+            for key in keys:
+                self.assertEqual(out[key], exact[key], f"{fallback}: {key}")
+            self.assertEqual(out["parts"], exact["parts"], fallback)
+
     def test_a_solid_inside_a_solid_is_counted_twice(self):
         path = self.cubes("nested.obj", (0.25, 0.25, 0.25), (0.75, 0.75, 0.75))
         report = json.loads(run("check", "--json", path).stdout)

@@ -17,7 +17,10 @@
  *                 6    polygon points: 0 x, y of each vertex (the position array
  *                      itself when FLOAT64); 1 every coordinate as packed pairs
  *                 7    positions and indices at an odd address
- *   1      1    option flags (low 5 bits: POLYMASS_OPTION_*); the high 3 bits
+ *   1      1    option flags (low 5 bits: POLYMASS_OPTION_*, but bit 4 asks for
+ *               the intersection check, POLYMASS_OPTION_SKIP_INTERSECTION_CHECK
+ *               inverted: the corpus was written when the check was opt-in,
+ *               and its inputs keep their meaning); the high 3 bits
  *               choose the chain of modes of a last call, entry (byte >> 5)
  *               of `chains` below
  *   2      1    planarity tolerance: entry (byte % 8) of `tolerances` below;
@@ -470,7 +473,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     adjust_count = (header[0] >> 5) & 1;
     packed_pairs = (header[0] >> 6) & 1;
     odd = (header[0] >> 7) & 1;
-    flags = header[1] & 0x1Fu;
+    flags = (header[1] & 0x1Fu) ^ POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     chain = chains[header[1] >> 5];
     vertex_bytes = float32 ? 12 : 24;
     index_bytes = index16 ? 2 : 4;

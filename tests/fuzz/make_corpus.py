@@ -25,6 +25,8 @@ SKIP_TOPOLOGY_CHECKS = 1 << 0
 ACCEPT_INVERTED = 1 << 1
 WELD_VERTICES = 1 << 2
 ACCEPT_NON_MANIFOLD = 1 << 3
+# The harness inverts bit 4 (POLYMASS_OPTION_SKIP_INTERSECTION_CHECK): set, it asks
+# for the intersection check, as when the corpus was written.
 CHECK_INTERSECTIONS = 1 << 4
 
 # Mass modes of the harness (header byte 3)

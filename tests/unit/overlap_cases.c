@@ -49,7 +49,7 @@ void octahedron(pm_mesh* m, const double c[3], double r, int inside_out) {
 }
 
 int32_t verdicts(const pm_mesh* m, int32_t* unchecked, uint32_t* warnings, double* volume) {
-    polymass_context* plain = pm_context_new(0);
+    polymass_context* plain = pm_context_new(UNCHECKED);
     polymass_context* checked = pm_context_new(CHECKED);
     polymass_mass_properties p, q;
     int32_t status;

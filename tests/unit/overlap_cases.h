@@ -7,7 +7,9 @@
 
 #include "test_support.h"
 
-#define CHECKED (POLYMASS_OPTION_CHECK_INTERSECTIONS)
+/* The default options check intersections; UNCHECKED skips it by name. */
+#define CHECKED 0u
+#define UNCHECKED (POLYMASS_OPTION_SKIP_INTERSECTION_CHECK)
 
 /* Where each case is also tried. */
 extern const pm_placement placements[];

@@ -370,8 +370,7 @@ static void test_copies_are_paired_as_triangles_are(void** state) {
     /* 0.4 radians about (1, 2, 3) / sqrt(14) */
     static const double turn[9] = {0.92669949,  -0.30095229, 0.22506836, 0.32350629, 0.94361500,
                                    -0.07024543, -0.19123736, 0.13790743, 0.97180750};
-    polymass_context* ctx =
-        pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_CHECK_INTERSECTIONS);
+    polymass_context* ctx = pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
     int turned_cube;
     (void)state;
     for (turned_cube = 0; turned_cube < 2; ++turned_cube) {
@@ -453,7 +452,7 @@ static void test_coinciding_faces_of_two_shells(void** state) {
 static void test_surface_welded_to_its_copy(void** state) {
     const int32_t flags = CHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
     polymass_context* checked = pm_context_new(flags);
-    polymass_context* plain = pm_context_new(POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+    polymass_context* plain = pm_context_new(UNCHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
     int triangulate, reversed;
     (void)state;
     for (triangulate = 0; triangulate < 2; ++triangulate) {
@@ -492,12 +491,6 @@ static void test_surface_welded_to_its_copy(void** state) {
     polymass_context_destroy(plain);
 }
 
-/* Reference solids whose faces touch by construction: four boxes face to
-   face, and caps fanned into triangles that overlap outside the star. */
-static int touches_by_construction(const char* name) {
-    return strcmp(name, "ring_of_boxes") == 0 || strcmp(name, "prism_star_fan") == 0;
-}
-
 /* No false positive: every exact-reference solid passes the check, far from
    the origin too, with bit-identical results. */
 static void test_reference_solids_do_not_intersect(void** state) {
@@ -520,7 +513,7 @@ static void test_reference_solids_do_not_intersect(void** state) {
                          polymass_status_string(unchecked));
             }
             if (!(warnings & POLYMASS_WARNING_TOUCHING_FACES) !=
-                !touches_by_construction(pm_reference_solids[r].name)) {
+                !pm_reference_touches_itself(&pm_reference_solids[r])) {
                 fail_msg("%s, %s: touching faces %s", pm_reference_solids[r].name,
                          placements[k].name,
                          warnings & POLYMASS_WARNING_TOUCHING_FACES ? "found" : "missed");

@@ -53,6 +53,8 @@ static void test_decomposition_of_every_solid(void** state) {
             if (rotated) {
                 pm_mesh_transform(&m, q, 1.0, NULL);
             }
+            pm_context_set_flags(
+                ctx, rotated ? pm_reference_rounded_rotation_flags(&pm_reference_solids[k]) : 0);
             PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
             assert_principal_decomposition(pm_reference_solids[k].name, &p);
             pm_mesh_free(&m);

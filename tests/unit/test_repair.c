@@ -203,8 +203,7 @@ static polymass_provenance repair_and_check(const char* what, const pm_mesh* int
         const polymass_options solid =
             pm_options(POLYMASS_OPTION_WELD_VERTICES | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, 0.0);
         assert_int_equal(compute_with(&truth, &provenance, ctx, &whole, &solid), POLYMASS_OK);
-        const polymass_options repair =
-            chain(POLYMASS_OPTION_CHECK_INTERSECTIONS, POLYMASS_MODE_REPAIR, 0, 0);
+        const polymass_options repair = chain(0, POLYMASS_MODE_REPAIR, 0, 0);
         const int32_t status = compute_with(&got, &provenance, ctx, &broken, &repair);
         if (status != POLYMASS_OK) {
             print_error("%s: repair failed: %s\n", label, polymass_context_message(ctx));
@@ -573,8 +572,7 @@ static void test_shell(void** state) {
 static void test_repair_gives_up(void** state) {
     (void)state;
     polymass_context* ctx = pm_context_new(0);
-    const polymass_options repair =
-        chain(POLYMASS_OPTION_CHECK_INTERSECTIONS, POLYMASS_MODE_REPAIR, 0, 0);
+    const polymass_options repair = chain(0, POLYMASS_MODE_REPAIR, 0, 0);
     polymass_mass_properties got;
     polymass_provenance provenance;
 
@@ -608,8 +606,7 @@ static void test_repair_gives_up(void** state) {
     message_says(ctx, "repair: edge");
     /* The hull answers what repair cannot. */
     const polymass_options fallback =
-        chain(POLYMASS_OPTION_CHECK_INTERSECTIONS, POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR,
-              POLYMASS_MODE_HULL);
+        chain(0, POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL);
     assert_int_equal(compute_with(&got, &provenance, ctx, &fin, &fallback), POLYMASS_OK);
     assert_int_equal(provenance.mode, POLYMASS_MODE_HULL);
     pm_mesh_free(&fin);

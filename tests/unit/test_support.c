@@ -348,6 +348,14 @@ polymass_mesh_desc pm_mesh_desc_ex(const pm_mesh* m, int force_face_sizes) {
 
 polymass_mesh_desc pm_mesh_desc(const pm_mesh* m) { return pm_mesh_desc_ex(m, 0); }
 
+int pm_reference_touches_itself(const pm_reference_solid* ref) {
+    return strcmp(ref->name, "ring_of_boxes") == 0 || strcmp(ref->name, "prism_star_fan") == 0;
+}
+
+uint32_t pm_reference_rounded_rotation_flags(const pm_reference_solid* ref) {
+    return pm_reference_touches_itself(ref) ? POLYMASS_OPTION_SKIP_INTERSECTION_CHECK : 0;
+}
+
 polymass_mesh_desc pm_reference_desc(const pm_reference_solid* ref) {
     return pm_packed_desc(ref->positions, ref->vertex_count, ref->indices, ref->index_count,
                           ref->face_sizes, ref->face_count);

@@ -94,6 +94,17 @@ double pm_mesh_size(const pm_mesh* m); /* bounding-box diagonal */
 polymass_mesh_desc pm_mesh_desc_ex(const pm_mesh* m, int force_face_sizes);
 polymass_mesh_desc pm_mesh_desc(const pm_mesh* m);
 polymass_mesh_desc pm_reference_desc(const pm_reference_solid* ref);
+/* Whether a reference solid's faces touch by construction (four boxes face
+   to face; caps fanned into triangles that overlap outside the star): the
+   intersection check of the default options warns of it
+   (POLYMASS_WARNING_TOUCHING_FACES). */
+int pm_reference_touches_itself(const pm_reference_solid* ref);
+/* The flags that compute a reference solid rotated by a rotation rounded to
+   doubles. The faces that touch by construction no longer lie exactly in one
+   plane once rounded: the boxes of the ring go into each other and the
+   star's fan through itself by a rounding error, and the intersection check,
+   exact, refuses them. It is skipped for those solids only. */
+uint32_t pm_reference_rounded_rotation_flags(const pm_reference_solid* ref);
 
 /* A mesh's data laid out as a caller's vertex and index buffers may be. */
 typedef struct pm_layout {

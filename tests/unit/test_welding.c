@@ -41,11 +41,13 @@ static double largest_extent(const pm_mesh* m) {
     return extent;
 }
 
-static void set_weld(polymass_context* ctx, double tolerance) {
-    polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0);
+static void set_weld_flags(polymass_context* ctx, double tolerance, uint32_t flags) {
+    polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES | flags, 0.0);
     o.weld_tolerance = tolerance;
     PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
 }
+
+static void set_weld(polymass_context* ctx, double tolerance) { set_weld_flags(ctx, tolerance, 0); }
 
 static const pm_reference_solid* reference(const char* name) {
     size_t i;
@@ -195,7 +197,10 @@ static void test_many_copies_of_one_vertex(void** state) {
         pm_mesh_add_tri(&cone, ring[(k + 1) % SEGMENTS], ring[k], base);
     }
     pm_mesh_to_soup(&cone);
-    set_weld(ctx, 1e-12);
+    /* The welding is under test: the intersection check, whose every
+       triangle here meets the 20,000 others at the apex, is skipped (issue
+       27 makes it linear on such fans). */
+    set_weld_flags(ctx, 1e-12, POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
     PM_ASSERT_OK(ctx, pm_check(&d, ctx, &cone));
     assert_int_equal(d.used_vertex_count, SEGMENTS + 2);
     PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &cone, NULL));

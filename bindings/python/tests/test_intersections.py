@@ -139,8 +139,9 @@ VERDICTS = [
 
 def _verdict(vertices, faces, check_intersections: bool):
     """The exception class raised, or the result."""
+    skip = not check_intersections
     try:
-        return polymass.mass_properties(vertices, faces, check_intersections=check_intersections)
+        return polymass.mass_properties(vertices, faces, skip_intersection_check=skip)
     except polymass.Error as error:
         return type(error)
 
@@ -161,7 +162,7 @@ def test_verdicts_everywhere(case, make, checked, unchecked, volume, name, scale
         _assert_identical(with_check, without)
     # check() says what mass_properties does, with the same keyword.
     for keyword, expected in ((True, checked), (False, unchecked)):
-        report = polymass.check(vertices, faces, check_intersections=keyword)
+        report = polymass.check(vertices, faces, skip_intersection_check=not keyword)
         assert report.error is (None if expected is OK else expected), f"{case}, {name}"
 
 
@@ -180,10 +181,36 @@ def _assert_identical(one: polymass.MassProperties, other: polymass.MassProperti
     assert one.warnings == other.warnings
 
 
-def test_overlapping_cubes_are_refused_naming_the_faces_and_accepted_double_without():
+def test_every_call_refuses_overlapping_cubes_by_default():
+    """Two unit cubes overlapping by an eighth: the solid is 1.875, their sum 2.0. Every
+    call refuses them unless the check is skipped by name, which gives the sum."""
+    vertices, faces = overlapping_cubes().placed(1.0, (0, 0, 0))
+    calls = {
+        "mass_properties": lambda **k: polymass.mass_properties(vertices, faces, **k).volume,
+        "Mesh": lambda **k: polymass.Mesh(vertices, faces, **k).mass_properties().volume,
+        "moments": lambda **k: polymass.moments(vertices, faces, **k).volume,
+        "batch": lambda **k: _raised_or(polymass.batch([(vertices, faces)], **k)[0]).volume,
+    }
+    for name, call in calls.items():
+        with pytest.raises(polymass.IntersectingSurfaceError):
+            call()
+        assert call(skip_intersection_check=True) == pytest.approx(2.0, rel=1e-15), name
+        assert call(skip_checks=True) == pytest.approx(2.0, rel=1e-15), name
+    assert polymass.check(vertices, faces).error is polymass.IntersectingSurfaceError
+    assert polymass.check(vertices, faces, skip_intersection_check=True).ok
+
+
+def _raised_or(outcome):
+    """A batch item's result, or its error raised."""
+    if isinstance(outcome, polymass.Error):
+        raise outcome
+    return outcome
+
+
+def test_overlapping_cubes_are_refused_naming_the_faces_and_accepted_double_skipped():
     vertices, faces = overlapping_cubes().placed(1.0, (0, 0, 0))
     with pytest.raises(polymass.IntersectingSurfaceError) as raised:
-        polymass.mass_properties(vertices, faces, check_intersections=True)
+        polymass.mass_properties(vertices, faces)
     error = raised.value
     assert isinstance(error, polymass.Error) and isinstance(error, ValueError)
     assert error.status == polymass.IntersectingSurfaceError.status == 24
@@ -193,20 +220,24 @@ def test_overlapping_cubes_are_refused_naming_the_faces_and_accepted_double_with
     first, first_shell, second, second_shell = (int(g) for g in named.groups())
     assert (first_shell, second_shell) == (0, 1) and first < 6 <= second < 12
     # The pair named is the report's first.
-    report = polymass.check(vertices, faces, check_intersections=True)
+    report = polymass.check(vertices, faces)
     assert report.first_intersecting_face_pairs[0] == (first, second)
     assert report.message == error.message
-    # A Mesh takes the keyword too.
+    # A Mesh checks too.
     with pytest.raises(polymass.IntersectingSurfaceError):
-        polymass.Mesh(vertices, faces, check_intersections=True)
-    # Without the check the overlap is counted twice: what the library reports.
-    assert polymass.mass_properties(vertices, faces).volume == pytest.approx(2.0, rel=1e-15)
-    assert polymass.Mesh(vertices, faces).mass_properties().volume == pytest.approx(2.0, rel=1e-15)
+        polymass.Mesh(vertices, faces)
+    # Skipped by name, the overlap is counted twice: what the library then reports.
+    trusted = polymass.mass_properties(vertices, faces, skip_intersection_check=True)
+    assert trusted.volume == pytest.approx(2.0, rel=1e-15)
+    trusted = polymass.Mesh(vertices, faces, skip_intersection_check=True).mass_properties()
+    assert trusted.volume == pytest.approx(2.0, rel=1e-15)
+    # The trusted path that skips the topology checks skips this one too.
+    assert polymass.mass_properties(vertices, faces, skip_checks=True).volume == pytest.approx(2.0)
 
 
 def test_the_report_lists_crossing_face_pairs_lowest_first():
     vertices, faces = overlapping_cubes().placed(1.0, (0, 0, 0))
-    report = polymass.check(vertices, faces, check_intersections=True)
+    report = polymass.check(vertices, faces)
     assert report.error is polymass.IntersectingSurfaceError and not report.ok
     assert report.shell_count == 2
     assert report.intersecting_face_pairs >= 3
@@ -218,8 +249,8 @@ def test_the_report_lists_crossing_face_pairs_lowest_first():
     assert (report.inverted_shells, report.first_inverted_shells) == (0, ())
     with pytest.raises(polymass.IntersectingSurfaceError, match="cross each other"):
         report.raise_if_error()
-    # Without the keyword no pair is looked for: the report is mass_properties' verdict.
-    plain = polymass.check(vertices, faces)
+    # Skipped, no pair is looked for: the report is mass_properties' verdict.
+    plain = polymass.check(vertices, faces, skip_intersection_check=True)
     assert plain.ok and plain.shell_count == 2
     assert (plain.intersecting_face_pairs, plain.first_intersecting_face_pairs) == (0, ())
 
@@ -233,7 +264,7 @@ def test_the_report_names_shells_inside_out_and_counted_twice():
     assert (report.inverted_shells, report.first_inverted_shells) == (1, (2,))
     assert (report.overlapping_shells, report.first_overlapping_shells) == (0, ())
 
-    report = polymass.check(*solid_in_solid().placed(1.0, (0, 0, 0)), check_intersections=True)
+    report = polymass.check(*solid_in_solid().placed(1.0, (0, 0, 0)))
     assert report.error is polymass.IntersectingSurfaceError
     assert "shell 1" in report.message
     assert (report.overlapping_shells, report.first_overlapping_shells) == (1, (1,))
@@ -244,7 +275,7 @@ def test_an_inside_out_shell_apart_is_refused_with_or_without_the_check():
     vertices, faces = inverted_apart().placed(1.0, (0, 0, 0))
     for keyword in (False, True):
         with pytest.raises(polymass.InvertedError, match="shell 1") as raised:
-            polymass.mass_properties(vertices, faces, check_intersections=keyword)
+            polymass.mass_properties(vertices, faces, skip_intersection_check=not keyword)
         assert isinstance(raised.value, ValueError)
 
 
@@ -262,13 +293,13 @@ def test_shell_list_describes_each_shell(name, scale, translation):
     def kinds_of(make, **keyword):
         return [s.kind for s in polymass.shell_list(*make().placed(scale, translation), **keyword)]
 
-    assert kinds_of(solid_in_solid, check_intersections=True) == ["solid", "overlapping"]
-    assert kinds_of(part_in_hollow, check_intersections=True) == ["solid", "cavity", "solid"]
-    assert kinds_of(inverted_in_the_notch, check_intersections=True) == ["solid", "inverted"]
+    assert kinds_of(solid_in_solid) == ["solid", "overlapping"]
+    assert kinds_of(part_in_hollow) == ["solid", "cavity", "solid"]
+    assert kinds_of(inverted_in_the_notch) == ["solid", "inverted"]
     # Without the check nesting is judged by bounding boxes, as the library documents:
     # a negative shell within a solid's box is taken for a cavity.
-    assert kinds_of(inverted_in_the_notch) == ["solid", "cavity"]
-    assert kinds_of(overlapping_cubes, check_intersections=True)[0] == "solid"
+    assert kinds_of(inverted_in_the_notch, skip_intersection_check=True) == ["solid", "cavity"]
+    assert kinds_of(overlapping_cubes)[0] == "solid"
 
 
 def test_shell_list_names_every_kind_of_the_header():
@@ -283,7 +314,7 @@ def test_shell_list_names_every_kind_of_the_header():
         .box((0, 0, 0), (1, 1, 1))
         .add([[3, 0, 0], [4, 0, 0], [3, 1, 0]], [[0, 1, 2], [0, 2, 1]])
     )
-    shells = polymass.shell_list(*sheet.placed(1.0, (0, 0, 0)), check_intersections=True)
+    shells = polymass.shell_list(*sheet.placed(1.0, (0, 0, 0)))
     assert [(s.kind, s.face_count, s.signed_volume) for s in shells[1:]] == [("no_volume", 2, 0.0)]
 
 
@@ -321,9 +352,11 @@ def test_valid_solids_give_bit_identical_results_with_the_check(shape, seed):
     rng = np.random.default_rng(seed)
     vertices, faces = SHAPES[shape](rng)
     vertices = np.asarray(vertices) @ ROTATIONS[shape](rng).T + rng.uniform(-1e6, 1e6, 3)
-    checked = polymass.mass_properties(vertices, faces, check_intersections=True)
-    _assert_identical(checked, polymass.mass_properties(vertices, faces))
-    report = polymass.check(vertices, faces, check_intersections=True)
+    checked = polymass.mass_properties(vertices, faces)
+    _assert_identical(
+        checked, polymass.mass_properties(vertices, faces, skip_intersection_check=True)
+    )
+    report = polymass.check(vertices, faces)
     assert report.ok, report.message
     assert (report.intersecting_face_pairs, report.touching_face_pairs) == (0, 0)
     assert report.shell_count == 1
@@ -357,13 +390,13 @@ TOUCHING = [
 @pytest.mark.parametrize(("case", "make", "volume"), TOUCHING, ids=[t[0] for t in TOUCHING])
 def test_touching_faces_are_a_warning_with_locations(case, make, volume, name, scale, translation):
     vertices, faces = make().placed(scale, translation)
-    checked = polymass.mass_properties(vertices, faces, check_intersections=True)
+    checked = polymass.mass_properties(vertices, faces)
     assert checked.warnings == polymass.Warnings.TOUCHING_FACES, f"{case}, {name}"
     assert checked.volume == pytest.approx(volume * scale**3, rel=1e-12)
-    plain = polymass.mass_properties(vertices, faces)
+    plain = polymass.mass_properties(vertices, faces, skip_intersection_check=True)
     assert plain.warnings == 0
     assert np.array_equal(plain.inertia, checked.inertia)
-    report = polymass.check(vertices, faces, check_intersections=True)
+    report = polymass.check(vertices, faces)
     assert report.ok and report.intersecting_face_pairs == 0
     assert report.touching_face_pairs >= 1
     assert len(report.first_touching_face_pairs) == min(report.touching_face_pairs, 8)

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "commands/commands.hpp"
 #include "commands/part_materials.hpp"
+#include "library/parts_apart.hpp"
 #include "library/solid_moments.hpp"
 
 namespace polymass_cli {
@@ -102,11 +106,11 @@ MomentsResult whole_moments(const Library& library, const std::vector<Integrated
     return total;
 }
 
-// With modes beyond the exact solid (--repair, --shell, --hull, --fallback),
-// each part and the whole are answered by the chain, each with its own
-// provenance: moments add up exactly only when every part is an exact solid,
-// and a whole the solid mode refuses (parts crossing each other) may still
-// have an approximate answer. Each face is then integrated twice.
+// With modes beyond the exact solid (--repair, --shell, --hull, --fallback)
+// and a part that is no exact solid, or parts crossing each other: each part
+// and the whole are answered by the chain, each with its own provenance (a
+// whole the solid mode refuses may still have an approximate answer). Each
+// face is then integrated twice.
 void report_by_chain(const Library& library, const Model& model, const Part& whole_part,
                      const std::vector<polymass_mass_desc>& masses,
                      const polymass_mass_desc& file_mass, FileReport& report) {
@@ -125,6 +129,17 @@ void report_by_chain(const Library& library, const Model& model, const Part& who
     }
 }
 
+// The parts judged against each other, each welded by itself and none
+// sharing a vertex with another: crossing and nesting are refused, touching
+// is a warning.
+CheckResult check_between_parts(const Library& library, const Model& model) {
+    const std::optional<PartsApart> apart = parts_apart(library, model);
+    // Every part is a valid solid by now: in range, finite, weldable.
+    if (!apart) throw std::logic_error("a valid part could not be welded");
+    const Library unwelded(unwelded_options(library));
+    return check_solid(unwelded, apart->model, apart->model.parts.front());
+}
+
 }  // namespace
 
 void report_parts(const Library& library, const std::string& path, const Model& model,
@@ -132,15 +147,17 @@ void report_parts(const Library& library, const std::string& path, const Model& 
                   FileReport& report) {
     const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
     const Part whole = combined_part(model);  // every part's indices, copied once
-    if (arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID}) {
-        report_by_chain(library, model, whole, masses, file_mass, report);
-        return;
-    }
+    const bool by_chain = arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID};
     const polymass_options options = options_for(arguments);
-    // The whole's intersection check (below) sees every part's faces, and
-    // crossings between parts too: each part is checked without it.
+    // Each part judged alone as an exact solid, whatever the chain, so that
+    // a whole of exact parts gets the same bits with --fallback as without.
+    // The check between the parts (below) sees every part's faces: each part
+    // is judged without it.
     polymass_options part_options = options;
-    part_options.flags &= ~uint32_t(POLYMASS_OPTION_CHECK_INTERSECTIONS);
+    part_options.flags |= POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
+    std::fill(std::begin(part_options.modes), std::end(part_options.modes),
+              uint32_t(POLYMASS_MODE_NONE));
+    part_options.modes[0] = POLYMASS_MODE_SOLID;
     std::vector<IntegratedSolid> solids;
     solids.reserve(model.parts.size());
     for (const Part& part : model.parts) solids.emplace_back(library, model, part, part_options);
@@ -148,7 +165,11 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     report.solid = counted(model, whole);
     if (!std::all_of(solids.begin(), solids.end(),
                      [](const IntegratedSolid& s) { return s.valid_as_given(); })) {
-        report_as_one(library, model, whole, arguments, solids, masses, file_mass, report);
+        if (by_chain) {
+            report_by_chain(library, model, whole, masses, file_mass, report);
+        } else {
+            report_as_one(library, model, whole, arguments, solids, masses, file_mass, report);
+        }
         return;
     }
 
@@ -156,10 +177,16 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     SolidResult verdict = failure(total.status, total.message);
     uint32_t warnings = 0;
     // Parts crossing each other, or one inside another, would count twice.
-    if (verdict.status == POLYMASS_OK && (options.flags & POLYMASS_OPTION_CHECK_INTERSECTIONS)) {
-        const CheckResult check = check_solid(library, model, whole);
+    const uint32_t skips =
+        POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    if (verdict.status == POLYMASS_OK && !(options.flags & skips)) {
+        const CheckResult check = check_between_parts(library, model);
         verdict = failure(check.diagnostics.status, check.message);
         if (check.diagnostics.touching_face_pairs > 0) warnings |= POLYMASS_WARNING_TOUCHING_FACES;
+    }
+    if (verdict.status != POLYMASS_OK && by_chain) {
+        report_by_chain(library, model, whole, masses, file_mass, report);
+        return;
     }
 
     // With the whole's --mass, the parts' density is the whole's.

@@ -1,7 +1,10 @@
 // The report of a file with several parts (OBJ objects, STL solids, glTF
-// nodes, 3MF build items): each part validated and integrated once, reported
-// from its own mass properties with its own density or mass, and the whole
-// file the exact sum of the parts' moments (docs/moments.md).
+// nodes, 3MF build items): each part validated and integrated once by
+// itself, reported from its own mass properties with its own density or mass;
+// the parts judged against each other for crossing and nesting, never welded
+// to each other (parts that touch are a whole, with a warning); and the whole
+// file the exact sum of the parts' moments (docs/moments.md), the same bits
+// whatever the chain of modes.
 #pragma once
 
 #include <polymass/polymass.h>

@@ -90,10 +90,7 @@ polymass_options options_for(const Arguments& arguments) {
     options.flags = POLYMASS_OPTION_WELD_VERTICES;
     if (arguments.accept_inverted) options.flags |= POLYMASS_OPTION_ACCEPT_INVERTED;
     if (arguments.no_check) options.flags |= POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
-    // Overlapping parts are the commonest silent error of exported
-    // assemblies: checked unless the user trusts the file.
-    if (!arguments.no_check && !arguments.no_intersection_check)
-        options.flags |= POLYMASS_OPTION_CHECK_INTERSECTIONS;
+    if (arguments.no_intersection_check) options.flags |= POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     options.weld_tolerance = arguments.weld_tolerance;
     options.planarity_tolerance = arguments.planarity_tolerance;
     std::copy(arguments.modes.begin(), arguments.modes.end(), options.modes);

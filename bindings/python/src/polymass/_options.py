@@ -101,7 +101,7 @@ def call_options(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
-    check_intersections: bool = False,
+    skip_intersection_check: bool = False,
     repair: bool = False,
     shell: float | None = None,
     hull: bool = False,
@@ -121,8 +121,8 @@ def call_options(
         flags |= _header.POLYMASS_OPTION_ACCEPT_INVERTED
     if accept_non_manifold:
         flags |= _header.POLYMASS_OPTION_ACCEPT_NON_MANIFOLD
-    if check_intersections:
-        flags |= _header.POLYMASS_OPTION_CHECK_INTERSECTIONS
+    if skip_intersection_check:
+        flags |= _header.POLYMASS_OPTION_SKIP_INTERSECTION_CHECK
     if _weld_tolerance(weld) is not None:
         flags |= _header.POLYMASS_OPTION_WELD_VERTICES
         options.weld_tolerance = _weld_tolerance(weld)

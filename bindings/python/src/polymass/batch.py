@@ -67,6 +67,7 @@ def batch(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
+    skip_intersection_check: bool = False,
     threads: int | None = None,
 ) -> list[MassProperties | Error]:
     """The mass properties of many meshes in one call, in order.
@@ -95,6 +96,7 @@ def batch(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
+        skip_intersection_check=skip_intersection_check,
         threads=threads,
     )
     results: list[MassProperties | Error | None] = [None] * count

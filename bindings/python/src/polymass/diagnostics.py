@@ -69,14 +69,14 @@ class Diagnostics:
     first_inverted_shells: tuple[int, ...]
     overlapping_shells: int
     """Shells inside a solid of the same sense, whose volume would count twice
-    (with check_intersections=True)."""
+    (not with skip_intersection_check=True)."""
     first_overlapping_shells: tuple[int, ...]
     intersecting_face_pairs: int
-    """Pairs of faces that cross each other (with check_intersections=True)."""
+    """Pairs of faces that cross each other (not with skip_intersection_check=True)."""
     first_intersecting_face_pairs: tuple[FacePair, ...]
     touching_face_pairs: int
     """Pairs of faces that touch without crossing nor sharing a vertex, such as
-    parts resting on each other: legal (with check_intersections=True)."""
+    parts resting on each other: legal (not with skip_intersection_check=True)."""
     first_touching_face_pairs: tuple[FacePair, ...]
 
     @property
@@ -119,7 +119,7 @@ def check(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
-    check_intersections: bool = False,
+    skip_intersection_check: bool = False,
     threads: int | None = None,
 ) -> Diagnostics:
     """Runs every check on a surface without stopping at the first finding.
@@ -128,11 +128,9 @@ def check(
     Problems with the mesh are reported in the result, not raised; problems with
     the call itself (InvalidArgumentError, OutOfMemoryError) are raised.
 
-    Call it with ``check_intersections=True`` unless you know the surface does
-    not overlap itself: only then are crossing and touching faces and shells
-    nested twice found (IntersectingSurfaceError, with the face pairs). It costs
-    about as much again as the topology checks. It is off by default so that
-    the report matches what `mass_properties` with its defaults would do.
+    Crossing and touching faces and shells nested twice are found too
+    (IntersectingSurfaceError, with the face pairs), as `mass_properties` finds
+    them by default, unless ``skip_intersection_check=True``.
     """
     mesh = mesh_description(vertices, faces, face_sizes)
     ctx = context()
@@ -142,7 +140,7 @@ def check(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
-        check_intersections=check_intersections,
+        skip_intersection_check=skip_intersection_check,
         threads=threads,
     )
     report = new_struct("polymass_diagnostics")
@@ -230,7 +228,7 @@ def shell_list(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
-    check_intersections: bool = False,
+    skip_intersection_check: bool = False,
     threads: int | None = None,
 ) -> list[Shell]:
     """What each shell of a closed surface is: a list of `Shell`, shell i being
@@ -240,9 +238,9 @@ def shell_list(
     that come before the shells (closed, manifold, oriented, planar, with a
     volume): otherwise their exception is raised. The shells are described
     whether or not they pass themselves, so an inside-out or overlapping shell
-    is listed rather than raised. With ``check_intersections=True`` the nesting
-    of the shells is counted exactly; without, it is judged by bounding boxes,
-    which can show a shell to be inside out but take any negative shell within a
+    is listed rather than raised. The nesting of the shells is counted exactly;
+    with ``skip_intersection_check=True`` it is judged by bounding boxes, which
+    can show a shell to be inside out but take any negative shell within a
     solid's box for a cavity.
     """
     mesh = mesh_description(vertices, faces, face_sizes)
@@ -253,7 +251,7 @@ def shell_list(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
-        check_intersections=check_intersections,
+        skip_intersection_check=skip_intersection_check,
         threads=threads,
     )
     count = ffi.new("uint64_t *")

@@ -92,8 +92,8 @@ class IntersectingSurfaceError(Error, ValueError):
     """Faces cross each other (or lie on another shell's faces, facing the same way), or a shell
     lies inside a solid of the same sense or passes through another's surface: some region would
     be counted twice (overlapping parts, a surface written twice, a surface folded through
-    itself). Found when ``check_intersections=True``; the message names a pair of faces (or the
-    shell)."""
+    itself). Found by default (not with ``skip_intersection_check=True`` or ``skip_checks=True``);
+    the message names a pair of faces (or the shell)."""
 
     status = _header.POLYMASS_ERROR_INTERSECTING
 

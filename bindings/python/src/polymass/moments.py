@@ -203,6 +203,7 @@ def moments(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
+    skip_intersection_check: bool = False,
     threads: int | None = None,
 ) -> Moments:
     """The moments (unit density) of a closed surface; arguments as `mass_properties`.
@@ -219,6 +220,7 @@ def moments(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
+        skip_intersection_check=skip_intersection_check,
         threads=threads,
     )
     if face_range is None:

@@ -45,7 +45,7 @@ class Warnings(enum.IntFlag):
     """Non-manifold edges were accepted (accept_non_manifold=True)."""
     TOUCHING_FACES = _header.POLYMASS_WARNING_TOUCHING_FACES
     """Faces touch without crossing, such as parts resting on each other: found by
-    check_intersections=True, where `check` lists the face pairs."""
+    the intersection check (on by default), and `check` lists the face pairs."""
     REPAIRED = _header.POLYMASS_WARNING_REPAIRED
     """Not a valid solid: the surface was repaired (see `Provenance`)."""
     SHELL = _header.POLYMASS_WARNING_SHELL
@@ -273,7 +273,7 @@ def mass_properties(
     accept_inverted: bool = False,
     accept_non_manifold: bool = False,
     planarity_tolerance: float | None = None,
-    check_intersections: bool = False,
+    skip_intersection_check: bool = False,
     repair: bool = False,
     shell: float | None = None,
     hull: bool = False,
@@ -301,7 +301,8 @@ def mass_properties(
         to the largest extent of the mesh (at most 1e-3). The integrals do not
         depend on it.
     skip_checks: trusted input: skip the closed, manifold, orientation and
-        planarity checks (indices and finiteness are always checked).
+        planarity checks, and the intersection check with them (indices and
+        finiteness are always checked).
     accept_inverted: a solid whose faces are all reversed gives the properties
         of the solid turned the right way, with Warnings.INVERTED, instead of
         raising InvertedError.
@@ -309,14 +310,14 @@ def mass_properties(
         are traversed as often one way as the other (solids touching at an edge).
     planarity_tolerance: how far a polygon face's vertex may be off its plane,
         relative to the face's diameter (None or 0: 1e-6).
-    check_intersections: also refuse, with IntersectingSurfaceError, faces that
+    skip_intersection_check: for trusted input only. By default faces that
         cross each other and shells inside a solid of the same sense (whose
-        volume would be counted twice: overlapping parts exported as one file),
-        judging how shells nest exactly; faces that only touch give
-        Warnings.TOUCHING_FACES. It costs about as much again as the topology
-        checks, so it is off by default (a load path of trusted meshes need not
-        pay it); turn it on for meshes from the outside world. It never changes
-        a result it accepts.
+        volume would be counted twice: overlapping parts exported as one file)
+        are refused with IntersectingSurfaceError, how shells nest judged
+        exactly, and faces that only touch give Warnings.TOUCHING_FACES; True
+        skips that check, which is most of the call's time (see the README),
+        and two overlapping parts then pass with their overlap counted twice.
+        The check never changes a result it accepts.
     repair: a surface that is not a valid solid is repaired where the fix is
         unique (orientation, duplicate and two-vertex faces, non-planar
         polygons, holes, balanced non-manifold edges); the result's
@@ -342,7 +343,7 @@ def mass_properties(
         accept_inverted=accept_inverted,
         accept_non_manifold=accept_non_manifold,
         planarity_tolerance=planarity_tolerance,
-        check_intersections=check_intersections,
+        skip_intersection_check=skip_intersection_check,
         repair=repair,
         shell=shell,
         hull=hull,
@@ -381,7 +382,7 @@ class Mesh:
         accept_inverted: bool = False,
         accept_non_manifold: bool = False,
         planarity_tolerance: float | None = None,
-        check_intersections: bool = False,
+        skip_intersection_check: bool = False,
         threads: int | None = None,
     ) -> None:
         mesh = mesh_description(vertices, faces, face_sizes)
@@ -393,7 +394,7 @@ class Mesh:
             accept_inverted=accept_inverted,
             accept_non_manifold=accept_non_manifold,
             planarity_tolerance=planarity_tolerance,
-            check_intersections=check_intersections,
+            skip_intersection_check=skip_intersection_check,
             threads=threads,
         )
         out = ffi.new("polymass_mesh**")

@@ -287,10 +287,8 @@ impl Context {
     /// tolerances apply). A bad surface is not an `Err`: its failure is in
     /// [`Diagnostics::error`]. `Err` means no report could be made.
     ///
-    /// Check with [`Options::check_intersections`] on unless the surface is
-    /// known not to overlap itself: only then are crossing faces, shells
-    /// nested twice and touching faces found. It costs about as much again as
-    /// the topology checks.
+    /// Crossing faces, shells nested twice and touching faces are found too,
+    /// unless [`Options::skip_intersection_check`].
     ///
     /// ```
     /// use polymass::{Context, Surface};
@@ -383,11 +381,10 @@ impl Context {
     /// checks that come before the shells (closed, manifold, oriented,
     /// planar, with a volume), otherwise their error; the shells are
     /// described whether or not they pass themselves, so an inside-out or
-    /// overlapping shell is listed, not an `Err`. With
-    /// [`Options::check_intersections`] the nesting of the shells is counted
-    /// exactly; without, it is judged by bounding boxes, which can show a
-    /// shell to be inside out but take any negative shell within a solid's
-    /// box for a cavity. Fails with
+    /// overlapping shell is listed, not an `Err`. The nesting of the shells
+    /// is counted exactly; with [`Options::skip_intersection_check`] it is
+    /// judged by bounding boxes, which can show a shell to be inside out but
+    /// take any negative shell within a solid's box for a cavity. Fails with
     /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) when
     /// the options skip the topology checks.
     ///
@@ -404,7 +401,7 @@ impl Context {
     ///     [0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3],
     ///     [4, 5, 6], [4, 7, 5], [4, 6, 7], [5, 7, 6],
     /// ];
-    /// let mut context = Context::with_options(&Options::new().check_intersections(true))?;
+    /// let mut context = Context::with_options(&Options::new())?;
     /// let shells = context.shell_list(&Surface::triangles(&positions, &triangles))?;
     /// let kinds: Vec<ShellKind> = shells.iter().map(|shell| shell.kind).collect();
     /// assert_eq!(kinds, [ShellKind::Solid, ShellKind::Cavity]);

@@ -104,14 +104,14 @@ pub struct Diagnostics {
     /// Shells inside out (negative volume) that lie inside no solid shell.
     pub inverted_shells: Occurrences<u64>,
     /// Shells inside a solid of the same sense, whose volume would count
-    /// twice (with [`Options::check_intersections`](crate::Options::check_intersections)).
+    /// twice (unless [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)).
     pub overlapping_shells: Occurrences<u64>,
-    /// Pairs of faces that cross each other (with
-    /// [`Options::check_intersections`](crate::Options::check_intersections)).
+    /// Pairs of faces that cross each other (unless
+    /// [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)).
     pub intersecting_face_pairs: Occurrences<[u64; 2]>,
     /// Pairs of faces that touch without crossing nor sharing a vertex, such
-    /// as parts resting on each other: legal (with
-    /// [`Options::check_intersections`](crate::Options::check_intersections)).
+    /// as parts resting on each other: legal (unless
+    /// [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)).
     pub touching_face_pairs: Occurrences<[u64; 2]>,
 }
 

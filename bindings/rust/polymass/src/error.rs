@@ -53,8 +53,9 @@ pub enum ErrorKind {
     /// same way), or a shell lies inside a solid of the same sense or passes
     /// through another's surface: some region would be counted twice
     /// (overlapping parts exported as one file, a surface written twice, a
-    /// surface folded through itself). Found with
-    /// [`Options::check_intersections`](crate::Options::check_intersections);
+    /// surface folded through itself). Found by default (not with
+    /// [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)
+    /// or [`Options::skip_topology_checks`](crate::Options::skip_topology_checks));
     /// the message names a pair of faces, or the shell.
     Intersecting,
     /// The enclosed volume is negative: every face is reversed, or one shell

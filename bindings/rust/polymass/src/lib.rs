@@ -28,10 +28,11 @@
 //! faces as indices plus face sizes. Faces are counter-clockwise seen from
 //! outside. The library checks everything (indices, finiteness, closed,
 //! manifold, consistently oriented, planar polygons, not inverted): bad input
-//! gives an [`Error`], never a crash. [`Options`] relax the checks (welding
-//! for STL triangle soups, trusted input, inverted solids) or add one: faces
-//! crossing each other and shells nested twice, whose volume would count
-//! twice ([`Options::check_intersections`]); [`check`] reports every problem
+//! gives an [`Error`], never a crash, and so do faces crossing each other
+//! and shells nested twice, whose volume would count twice. [`Options`] relax
+//! the checks (welding for STL triangle soups, inverted solids, trusted input:
+//! [`Options::skip_topology_checks`], [`Options::skip_intersection_check`]);
+//! [`check`] reports every problem
 //! of a surface at once, [`shell_list`] what each shell is.
 //!
 //! # Conventions
@@ -135,9 +136,8 @@ pub fn batch(items: &[(Surface<'_>, Body)]) -> Result<Vec<Result<MassProperties>
     Context::new()?.batch(items)
 }
 
-/// Every check of a surface, run to the end, with the default options; see
-/// [`Context::check`]. The default options do not look for crossing faces:
-/// for that, use a [`Context`] with [`Options::check_intersections`].
+/// Every check of a surface, run to the end, with the default options (every
+/// check, crossing faces included); see [`Context::check`].
 ///
 /// ```
 /// use polymass::Surface;
@@ -153,8 +153,7 @@ pub fn check(surface: &Surface<'_>) -> Result<Diagnostics> {
 }
 
 /// What each shell of a closed surface is, with the default options; see
-/// [`Context::shell_list`]. The default options do not count how shells
-/// nest: for that, use a [`Context`] with [`Options::check_intersections`].
+/// [`Context::shell_list`]; how shells nest is counted exactly.
 ///
 /// ```
 /// use polymass::{ErrorKind, Surface};

@@ -87,8 +87,9 @@ impl Options {
     }
 
     /// Trusted input (a game engine at load time): skip the open,
-    /// non-manifold, orientation and planarity checks. Index range and
-    /// finiteness are always checked. Results then carry
+    /// non-manifold, orientation and planarity checks, and the intersection
+    /// check with them. Index range and finiteness are always checked.
+    /// Results then carry
     /// [`Warnings::UNCHECKED`](crate::Warnings::UNCHECKED).
     ///
     /// ```
@@ -132,16 +133,16 @@ impl Options {
         self.with_flag(sys::POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, on)
     }
 
-    /// Also refuse, with [`ErrorKind::Intersecting`](crate::ErrorKind::Intersecting),
-    /// faces that cross each other and shells inside a solid of the same
-    /// sense (their volume would be counted twice: overlapping parts exported
-    /// as one file), judging how shells nest exactly; faces that only touch
-    /// give [`Warnings::TOUCHING_FACES`](crate::Warnings::TOUCHING_FACES). It
-    /// costs about as much again as the topology checks, so it is off by
-    /// default (an engine's load path of trusted meshes need not pay it); turn
-    /// it on for meshes from the outside world, and for
-    /// [`Context::check`](crate::Context::check). It never changes a result it
-    /// accepts.
+    /// For trusted input only: skip the intersection check. By default faces
+    /// that cross each other and shells inside a solid of the same sense
+    /// (their volume would be counted twice: overlapping parts exported as
+    /// one file) are refused with
+    /// [`ErrorKind::Intersecting`](crate::ErrorKind::Intersecting), how
+    /// shells nest judged exactly, and faces that only touch give
+    /// [`Warnings::TOUCHING_FACES`](crate::Warnings::TOUCHING_FACES). The
+    /// check is most of a call's time (see the README); skipped, two
+    /// overlapping parts pass with their overlap counted twice. It never
+    /// changes a result it accepts.
     ///
     /// ```
     /// use polymass::{Body, Context, ErrorKind, Options, Surface};
@@ -156,17 +157,17 @@ impl Options {
     ///     [4, 6, 5], [4, 5, 7], [4, 7, 6], [5, 6, 7],
     /// ];
     /// let surface = Surface::triangles(&positions, &triangles);
-    /// // Without the check the overlap is counted twice.
-    /// let twice = polymass::mass_properties(&surface, &Body::default())?;
-    /// assert!((twice.volume - 2.0 / 6.0).abs() < 1e-15);
-    /// let mut context = Context::with_options(&Options::new().check_intersections(true))?;
-    /// let error = context.mass_properties(&surface, &Body::default()).unwrap_err();
+    /// let error = polymass::mass_properties(&surface, &Body::default()).unwrap_err();
     /// assert_eq!(error.kind(), ErrorKind::Intersecting);
     /// assert!(error.message().contains("cross each other"));
+    /// // Skipped, the overlap is counted twice.
+    /// let mut context = Context::with_options(&Options::new().skip_intersection_check(true))?;
+    /// let twice = context.mass_properties(&surface, &Body::default())?;
+    /// assert!((twice.volume - 2.0 / 6.0).abs() < 1e-15);
     /// # Ok::<(), polymass::Error>(())
     /// ```
-    pub fn check_intersections(self, on: bool) -> Options {
-        self.with_flag(sys::POLYMASS_OPTION_CHECK_INTERSECTIONS, on)
+    pub fn skip_intersection_check(self, on: bool) -> Options {
+        self.with_flag(sys::POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, on)
     }
 
     /// The largest distance of a polygon face's vertex from the face's plane,
@@ -356,14 +357,15 @@ impl Options {
         self.flags & sys::POLYMASS_OPTION_ACCEPT_NON_MANIFOLD != 0
     }
 
-    /// Whether crossing faces and shells nested twice are looked for.
+    /// Whether the intersection check is skipped by name (the topology
+    /// checks skipped skip it too).
     ///
     /// ```
-    /// assert!(!polymass::Options::new().checks_intersections());
-    /// assert!(polymass::Options::new().check_intersections(true).checks_intersections());
+    /// assert!(!polymass::Options::new().skips_intersection_check());
+    /// assert!(polymass::Options::new().skip_intersection_check(true).skips_intersection_check());
     /// ```
-    pub fn checks_intersections(&self) -> bool {
-        self.flags & sys::POLYMASS_OPTION_CHECK_INTERSECTIONS != 0
+    pub fn skips_intersection_check(&self) -> bool {
+        self.flags & sys::POLYMASS_OPTION_SKIP_INTERSECTION_CHECK != 0
     }
 
     /// The planarity tolerance (0: the library's default; options read back

@@ -140,8 +140,8 @@ impl Warnings {
     /// ([`Options::accept_non_manifold`](crate::Options::accept_non_manifold)).
     pub const NON_MANIFOLD: Warnings = Warnings(sys::POLYMASS_WARNING_NON_MANIFOLD);
     /// Faces touch without crossing, such as parts resting on each other;
-    /// found with
-    /// [`Options::check_intersections`](crate::Options::check_intersections),
+    /// found by the intersection check (on unless
+    /// [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)),
     /// and listed by [`Diagnostics::touching_face_pairs`](crate::Diagnostics::touching_face_pairs).
     pub const TOUCHING_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_TOUCHING_FACES);
     /// Not a valid solid: the surface was repaired ([`Options::repair`](crate::Options::repair)).

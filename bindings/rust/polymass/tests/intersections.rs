@@ -46,8 +46,9 @@ fn triangulated(shape: &Shape) -> Shape {
     }
 }
 
+/// The default options: every check, the intersection check included.
 fn checking() -> Context {
-    Context::with_options(&Options::new().check_intersections(true)).unwrap()
+    Context::new().unwrap()
 }
 
 /// Two unit cubes overlapping by an eighth: 1.875 enclosed, 2 counted.
@@ -164,14 +165,14 @@ const VERDICTS: [Verdict; 6] = [
 ];
 
 fn compute(shape: &Shape, check_intersections: bool) -> polymass::Result<MassProperties> {
-    let options = Options::new().check_intersections(check_intersections);
+    let options = Options::new().skip_intersection_check(!check_intersections);
     Context::with_options(&options)
         .unwrap()
         .mass_properties(&shape.surface(), &Body::default())
 }
 
 fn report(shape: &Shape, check_intersections: bool) -> Diagnostics {
-    let options = Options::new().check_intersections(check_intersections);
+    let options = Options::new().skip_intersection_check(!check_intersections);
     let mut context = Context::with_options(&options).unwrap();
     context.check(&shape.surface()).unwrap()
 }
@@ -205,8 +206,63 @@ fn verdicts_everywhere() {
     }
 }
 
+/// Two unit cubes overlapping by an eighth (the solid is 1.875, their sum 2): every
+/// call refuses them with the default options, and gives the sum only when the check
+/// is skipped by name, or with the topology checks.
 #[test]
-fn overlapping_cubes_are_refused_naming_the_faces_and_counted_twice_without_the_check() {
+fn every_call_refuses_overlapping_cubes_by_default() {
+    let shape = overlapping_cubes();
+    let surface = shape.surface();
+    let body = Body::default();
+    let refused = |result: polymass::Result<f64>, what: &str| {
+        let error = result.expect_err(what);
+        assert_eq!(error.kind(), ErrorKind::Intersecting, "{what}: {error}");
+    };
+    refused(
+        polymass::mass_properties(&surface, &body).map(|p| p.volume),
+        "mass_properties",
+    );
+    refused(
+        polymass::batch(&[(surface, body)])
+            .unwrap()
+            .remove(0)
+            .map(|p| p.volume),
+        "batch",
+    );
+    let mut default = Context::new().unwrap();
+    refused(default.mesh(&surface).map(|_| 0.0), "mesh");
+    refused(default.moments(&surface).map(|m| m.volume()), "moments");
+    let report = polymass::check(&surface).unwrap();
+    assert_eq!(
+        report.error.map(|e| e.kind()),
+        Some(ErrorKind::Intersecting)
+    );
+    for options in [
+        Options::new().skip_intersection_check(true),
+        Options::new().skip_topology_checks(true),
+    ] {
+        let mut trusting = Context::with_options(&options).unwrap();
+        let what = format!("{options:?}");
+        let twice = trusting.mass_properties(&surface, &body).unwrap();
+        assert_close(twice.volume, 2.0, &what);
+        let mesh = trusting.mesh(&surface).unwrap();
+        assert_close(
+            trusting.mesh_mass_properties(&mesh, &body).unwrap().volume,
+            2.0,
+            &what,
+        );
+        assert_close(trusting.moments(&surface).unwrap().volume(), 2.0, &what);
+        let batch = trusting
+            .batch(&[(surface, body)])
+            .unwrap()
+            .remove(0)
+            .unwrap();
+        assert_close(batch.volume, 2.0, &what);
+    }
+}
+
+#[test]
+fn overlapping_cubes_are_refused_naming_the_faces_and_counted_twice_skipped() {
     let shape = overlapping_cubes();
     let error = compute(&shape, true).unwrap_err();
     assert_eq!(error.kind(), ErrorKind::Intersecting);
@@ -248,8 +304,10 @@ fn the_report_lists_crossing_face_pairs_lowest_first() {
     assert!(pairs.first.windows(2).all(|w| w[0] < w[1]), "{pairs:?}");
     assert_eq!(report.touching_face_pairs, Default::default());
     assert_eq!(report.inverted_shells, Default::default());
-    // Without the option no pair is looked for: the verdict of computing.
-    let plain = polymass::check(&shape.surface()).unwrap();
+    // Skipped by name, no pair is looked for: the verdict of computing so.
+    let options = Options::new().skip_intersection_check(true);
+    let mut unchecked = Context::with_options(&options).unwrap();
+    let plain = unchecked.check(&shape.surface()).unwrap();
     assert!(plain.is_solid() && plain.shell_count == 2);
     assert_eq!(plain.intersecting_face_pairs, Default::default());
 }
@@ -312,7 +370,11 @@ fn the_shell_list_describes_each_shell_everywhere() {
         assert_eq!(listed(overlapping_cubes())[0], Solid, "{name}");
         // Without the check nesting is judged by bounding boxes, as the library
         // documents: a negative shell within a solid's box is taken for a cavity.
-        let boxed = polymass::shell_list(&at(inverted_in_the_notch()).surface()).unwrap();
+        let options = Options::new().skip_intersection_check(true);
+        let mut unchecked = Context::with_options(&options).unwrap();
+        let boxed = unchecked
+            .shell_list(&at(inverted_in_the_notch()).surface())
+            .unwrap();
         assert_eq!(kinds(&boxed), [Solid, Cavity], "{name}");
     }
 }

@@ -100,7 +100,7 @@ fn a_context_keeps_the_options_it_was_given() {
     let options = Options::new()
         .weld_vertices(true)
         .accept_inverted(true)
-        .check_intersections(true)
+        .skip_intersection_check(true)
         .planarity_tolerance(1e-3)
         .weld_tolerance(1e-9);
     let mut context = Context::with_options(&options).unwrap();

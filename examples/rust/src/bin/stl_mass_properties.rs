@@ -41,9 +41,10 @@ fn run(path: &str, density: f64) -> Result<(), String> {
     let soup = binary_stl::parse(&bytes).map_err(|error| error.to_string())?;
     let surface = Surface::triangles(&soup.positions, &soup.triangles);
 
-    // A file from elsewhere may hold parts that overlap: look for crossing
-    // faces too, so that their common volume is not counted twice.
-    let options = Options::new().weld_vertices(true).check_intersections(true);
+    // STL repeats each vertex once per triangle: weld them. Every check is on
+    // by default, crossing faces too (parts that overlap would have their
+    // common volume counted twice).
+    let options = Options::new().weld_vertices(true);
     let mut context = Context::with_options(&options).map_err(|error| error.to_string())?;
     // On failure, the full report says everything that is wrong, not just the
     // first problem.

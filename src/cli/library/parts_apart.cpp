@@ -1,0 +1,116 @@
+#include "library/parts_apart.hpp"
+
+#include <limits>
+#include <new>
+#include <stdexcept>
+
+namespace polymass_cli {
+namespace {
+
+constexpr uint32_t kUnset = std::numeric_limits<uint32_t>::max();
+
+// Each corner of part given its welded vertex, numbered as the file does:
+// the part's used vertices are copied out (so that the library's weld, which
+// writes one entry per vertex, costs the part's size and not the file's),
+// welded, and mapped back. local_of is kUnset for every vertex on entry and
+// on return. False when the library cannot weld the part.
+bool welded_corners(const Library& library, const Model& model, const Part& part,
+                    std::vector<uint32_t>& local_of, std::vector<uint32_t>& corners) {
+    std::vector<uint32_t> file_of;  // the file's number of each local vertex
+    std::vector<double> positions;
+    std::vector<uint32_t> local_indices;
+    local_indices.reserve(part.indices.size());
+    bool in_range = true;
+    for (const uint32_t index : part.indices) {
+        if (index >= model.vertex_count()) {
+            in_range = false;
+            break;
+        }
+        if (local_of[index] == kUnset) {
+            local_of[index] = uint32_t(file_of.size());
+            file_of.push_back(index);
+            positions.insert(positions.end(), &model.positions[3 * size_t(index)],
+                             &model.positions[3 * size_t(index)] + 3);
+        }
+        local_indices.push_back(local_of[index]);
+    }
+    for (const uint32_t index : file_of) local_of[index] = kUnset;
+    if (!in_range) return false;
+
+    polymass_mesh_desc desc{};
+    desc.struct_size = sizeof desc;
+    desc.position_type = POLYMASS_POSITION_FLOAT64;
+    desc.positions = positions.data();
+    desc.vertex_count = file_of.size();
+    desc.index_type = POLYMASS_INDEX_UINT32;
+    desc.indices = local_indices.data();
+    desc.index_count = local_indices.size();
+    desc.face_sizes = part.face_sizes.data();
+    desc.face_count = part.face_sizes.size();
+    std::vector<uint32_t> welded(file_of.size());
+    uint64_t distinct = 0;
+    const int32_t status = polymass_mesh_weld(welded.data(), &distinct, library.context(), &desc);
+    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (status != POLYMASS_OK) return false;
+    corners.clear();
+    for (const uint32_t local : local_indices) corners.push_back(file_of[welded[local]]);
+    return true;
+}
+
+}  // namespace
+
+uint64_t PartsApart::file_vertex_of(uint64_t v) const {
+    const uint64_t file_count = model.vertex_count() - file_vertex.size();
+    return v < file_count ? v : file_vertex[v - file_count];
+}
+
+std::optional<PartsApart> parts_apart(const Library& library, const Model& model) {
+    PartsApart apart;
+    apart.model.format = model.format;
+    apart.model.positions = model.positions;
+    Part& all = apart.model.parts.emplace_back();
+    all.name = "combined";
+    const size_t file_count = model.vertex_count();
+    std::vector<uint32_t> scratch(file_count, kUnset);
+    // The part that first used each file vertex; a later part gets a copy,
+    // once (copy_of, reset after each part).
+    std::vector<uint32_t> owner(file_count, kUnset);
+    std::vector<uint32_t> copy_of(file_count, kUnset);
+    std::vector<uint32_t> corners;
+    for (size_t k = 0; k < model.parts.size(); ++k) {
+        const Part& part = model.parts[k];
+        if (!welded_corners(library, model, part, scratch, corners)) return std::nullopt;
+        std::vector<uint32_t> copied;
+        for (const uint32_t v : corners) {
+            if (owner[v] == kUnset) owner[v] = uint32_t(k);
+            if (owner[v] == k) {
+                all.indices.push_back(v);
+                continue;
+            }
+            if (copy_of[v] == kUnset) {
+                const uint64_t copy = apart.model.vertex_count();
+                if (copy >= kUnset) throw std::length_error("more than 2^32 - 1 vertices");
+                copy_of[v] = uint32_t(copy);
+                copied.push_back(v);
+                apart.file_vertex.push_back(v);
+                apart.model.positions.insert(apart.model.positions.end(),
+                                             &model.positions[3 * size_t(v)],
+                                             &model.positions[3 * size_t(v)] + 3);
+            }
+            all.indices.push_back(copy_of[v]);
+        }
+        for (const uint32_t v : copied) copy_of[v] = kUnset;
+        all.face_sizes.insert(all.face_sizes.end(), part.face_sizes.begin(), part.face_sizes.end());
+    }
+    return apart;
+}
+
+polymass_options unwelded_options(const Library& library) {
+    polymass_options options{};
+    options.struct_size = sizeof options;
+    polymass_context_get_options(&options, library.context());
+    options.flags &= ~uint32_t(POLYMASS_OPTION_WELD_VERTICES);
+    return options;
+}
+
+}  // namespace polymass_cli
