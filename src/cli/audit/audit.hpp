@@ -25,8 +25,10 @@ struct Finding {
 
 enum class GeometrySource { kCollision, kVisual };
 
-// The link's geometry as one body, at the declared mass (or, without one, at
-// the density the audit was given).
+// The link's geometry as one body. URDF and SDFormat: at the declared mass
+// (or, without one, at the density the audit was given). MJCF: what MuJoCo's
+// compiler infers from the geoms (their densities and masses, the groups it
+// weighs, shells, the <compiler> rules), every mesh integrated exactly.
 struct Computed {
     double volume = 0.0;
     double mass = 0.0;
@@ -38,11 +40,15 @@ struct Computed {
     Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();  // columns
     Eigen::Vector3d box_min = Eigen::Vector3d::Zero();             // the geometry's bounding box
     Eigen::Vector3d box_max = Eigen::Vector3d::Zero();
+    std::vector<std::string> rules;  // which rules produced the numbers, in order
 };
 
 struct LinkAudit {
     std::string name;
-    const char* geometry = "none";  // "collision", "visual" or "none": what was measured
+    // What was measured: "collision", "visual", "weighed" (MJCF: the geoms
+    // MuJoCo weighs, visual or not) or "none".
+    const char* geometry = "none";
+    const char* mujoco_uses = nullptr;  // MJCF: "declared", "computed" or "none"
     std::optional<Inertial> declared;
     std::optional<Computed> computed;
     std::vector<Finding> findings;

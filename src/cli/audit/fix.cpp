@@ -6,6 +6,7 @@
 #include "audit/fix.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "reports/number_format.hpp"
 #include "text_streams.hpp"
@@ -85,7 +86,9 @@ FixResult fix_description(const FileAudit& audit, const FixSettings& settings) {
             continue;
         }
         const Computed& c = *link.computed;
-        const double mass = settings.density ? *settings.density * c.volume : c.mass;
+        const double declared = link.declared->mass;
+        const double kept = std::isfinite(declared) && declared > 0.0 ? declared : c.mass;
+        const double mass = settings.density ? *settings.density * c.volume : kept;
         // At a fixed geometry the inertia is proportional to the mass;
         // symmetric from the computed tensor's upper triangle.
         Eigen::Matrix3d inertia = c.inertia.triangularView<Eigen::Upper>();
