@@ -313,7 +313,9 @@ void refuse_assembly_settings(const RawOptions& raw, const Arguments& arguments)
 void add_audit_options(CLI::App& app, RawOptions& raw, AuditArguments& audit) {
     app.add_option("FILE", raw.files, "URDF, SDFormat or MJCF files")->option_text(" ");
     app.add_flag("--json", raw.json, "JSON (schema in the README)");
-    app.add_option("--from", raw.from, "the geometry measured (default collision)")
+    app.add_option("--from", raw.from,
+                   "URDF, SDFormat: the geometry measured (default collision);\n"
+                   "MJCF: the geoms MuJoCo weighs, whatever this says")
         ->check(CLI::IsMember({"collision", "visual"}))
         ->option_text("collision|visual");
     app.add_option("--fail-on", audit.fail_on,
@@ -325,7 +327,8 @@ void add_audit_options(CLI::App& app, RawOptions& raw, AuditArguments& audit) {
                    "(one FILE; declared masses kept unless --density or --mass-from)")
         ->option_text("OUT");
     app.add_option("--density", raw.densities,
-                   "kg/m^3: links without a mass are computed at D (default 1000);\n"
+                   "kg/m^3: URDF and SDFormat links without a mass are computed\n"
+                   "at D (default 1000; MJCF geoms have their own density);\n"
                    "with --fix, every mass becomes D * volume")
         ->option_text("D");
     app.add_option("--mass-from", raw.mass_from,
@@ -351,8 +354,9 @@ constexpr const char* kFooter =
 
 constexpr const char* kAuditFooter =
     "Per link: the declared mass, centre of mass and inertia next to those of its\n"
-    "geometry (meshes and shapes) at the declared mass; findings with a kind, a\n"
-    "severity and a message (README: the kinds and their thresholds).\n"
+    "geometry (meshes and shapes): URDF and SDFormat at the declared mass, MJCF as\n"
+    "MuJoCo's compiler infers it (its mass rules: docs/audit.md); findings with a\n"
+    "kind, a severity and a message (README: the kinds and their thresholds).\n"
     "\n"
     "Exit status: 0 no finding as severe as --fail-on, 1 some, 2 usage error,\n"
     "3 a description cannot be read, 4 internal error.\n"
@@ -415,7 +419,12 @@ Arguments parse_arguments(int argc, const char* const* argv) {
     try {
         line.app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
+        // The help of the subcommand asked, with its own options.
         arguments.command = Command::kHelp;
+        arguments.help = line.app.help();
+        for (const CLI::App* subcommand : {line.check, line.assembly, line.audit}) {
+            if (subcommand->parsed()) arguments.help = subcommand->help("polymass");
+        }
         return arguments;
     } catch (const CLI::ParseError& error) {
         throw UsageError(std::string(error.what()) + " (see polymass --help)");

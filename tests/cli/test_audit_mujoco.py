@@ -15,36 +15,18 @@ relative.
 import json
 import os
 import subprocess
+import sys
+from pathlib import Path
 
 import mujoco
 import numpy as np
 import pytest
 
+sys.path.insert(0, str(Path(__file__).parent))
+import audit_fixtures as fx
+
 EXE = os.environ["POLYMASS_EXE"]
 RTOL = 1e-9
-
-# An L-shaped prism (not convex: its hull, its surface and MuJoCo's legacy
-# rule each weigh it differently), its section counter-clockwise in xy. Its
-# coordinates are dyadic: MuJoCo keeps mesh vertices in single precision.
-SECTION = [(0.0, 0.0), (0.25, 0.0), (0.25, 0.125), (0.125, 0.125), (0.125, 0.25), (0.0, 0.25)]
-HEIGHT = 0.0625
-
-
-def write_l_prism(path, offset=(0.03125, -0.015625, 0.0078125)):
-    n = len(SECTION)
-    vertices = [
-        (x + offset[0], y + offset[1], z + offset[2]) for z in (0.0, HEIGHT) for x, y in SECTION
-    ]
-    faces = []
-    for k in range(1, n - 1):  # a fan from corner 0 covers this section once
-        faces.append((0, k + 1, k))  # bottom, facing -z
-        faces.append((n, n + k, n + k + 1))  # top, facing +z
-    for k in range(n):
-        a, b = k, (k + 1) % n
-        faces += [(a, b, n + b), (a, n + b, n + a)]
-    lines = [f"v {x!r} {y!r} {z!r}" for x, y, z in vertices]
-    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in faces]
-    path.write_text("\n".join(lines) + "\n")
 
 
 def audit_json(path):
@@ -197,7 +179,7 @@ MESH_BODIES = """
 
 
 def test_meshes_in_each_inertia_mode(tmp_path):
-    write_l_prism(tmp_path / "l.obj")
+    fx.write_l_prism(tmp_path / "l.obj")
     path = tmp_path / "meshes.xml"
     defaults = '<default class="exactly"><mesh inertia="exact" scale="0.5 0.5 0.5"/></default>'
     path.write_text(model("", defaults, MESH_BODIES, MESHES))

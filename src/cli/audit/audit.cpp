@@ -10,6 +10,7 @@
 
 #include "audit/judge.hpp"
 #include "audit/measure.hpp"
+#include "audit/mirror.hpp"
 #include "audit/mujoco_inertia.hpp"
 #include "library/solid_moments.hpp"
 
@@ -106,7 +107,7 @@ Finding no_inertial_finding(const Description& description) {
 // (MJCF) or at the declared mass, else the density (URDF, SDFormat); judged
 // against the declared inertial at its mass.
 void add_up(const Library& library, const std::vector<Measured>& bodies, bool weighted_already,
-            const AuditSettings& settings, LinkAudit& audit) {
+            bool has_mesh, const AuditSettings& settings, LinkAudit& audit) {
     std::vector<polymass_moments> moments;
     std::vector<Eigen::Vector3d> points;
     for (const Measured& body : bodies) {
@@ -128,7 +129,7 @@ void add_up(const Library& library, const std::vector<Measured>& bodies, bool we
                              audit);
     }
     if (!judged) return;
-    for (Finding& finding : judge_against_geometry(*audit.declared, *judged)) {
+    for (Finding& finding : judge_against_geometry(*audit.declared, *judged, has_mesh)) {
         audit.findings.push_back(std::move(finding));
     }
 }
@@ -250,7 +251,10 @@ LinkAudit audit_link(const Library& library, const Description& description, con
     if (bodies.empty()) {
         rules.push_back("every geom weighs nothing (mass or density 0)");
     } else {
-        add_up(library, bodies, mjcf, settings, audit);
+        const bool has_mesh =
+            std::any_of(geometries.begin(), geometries.end(),
+                        [](const Geometry& geometry) { return geometry.shape == Shape::kMesh; });
+        add_up(library, bodies, mjcf, has_mesh, settings, audit);
     }
     if (!mjcf) return audit;
     if (audit.computed) {
@@ -299,6 +303,7 @@ FileAudit audit_file(const Library& library, const std::string& path,
         audit.links.push_back(audit_link(library, description, link, settings));
     }
     if (description.format == Format::kMjcf) apply_model_rules(description, audit);
+    judge_mirror_pairs(audit);
     audit.text = std::move(description.text);
     return audit;
 }

@@ -14,8 +14,9 @@ namespace polymass_cli::audit {
 std::vector<Finding> judge_declared(const Inertial& declared);
 
 // Findings from comparing the declared inertial with the computed one (at
-// the declared mass): implied density, principal moments and axes, centre of
-// mass.
-std::vector<Finding> judge_against_geometry(const Inertial& declared, const Computed& computed);
+// the declared mass): implied density (a mesh's units suspected only when
+// the geometry has a mesh), principal moments and axes, centre of mass.
+std::vector<Finding> judge_against_geometry(const Inertial& declared, const Computed& computed,
+                                            bool has_mesh);
 
 }  // namespace polymass_cli::audit
