@@ -1,6 +1,7 @@
 """Tests of polymass audit's reading of MuJoCo's mass rules without MuJoCo
 (tests/cli/test_audit_mujoco.py compares them with MuJoCo itself), of its
-mirror pairs, and of what it says about files it cannot audit as they are:
+mirror pairs, of what it says about files it cannot audit as they are, and of
+the Collada units note:
 
     POLYMASS_EXE=<polymass> POLYMASS_WORK_DIR=<scratch> python3 tests/cli/test_audit_rules.py
 """
@@ -230,6 +231,22 @@ class MirrorPairs(unittest.TestCase):
         for names in [("upper_leg", "lower_leg"), ("left_hip", "left_knee"), ("FL_hip", "FL_calf")]:
             out = self.write(fresh("sides"), -1.0, names)
             self.assertNotIn("mirror_sign", kinds(link(out, names[1])), names)
+
+
+class ColladaUnits(unittest.TestCase):
+    def test_one_consistent_note(self):
+        """The Collada reader applies the file's <unit>: its lengths are
+        metres, and no note says they are the file's units."""
+        directory = fresh("collada_units")
+        fx.write_dae(directory / "box.dae", fx.box_corners(), 0.001, "Z_UP")
+        fx.write_stl(directory / "box.stl", fx.box_corners())
+        alone = run(directory / "box.dae", "--json")
+        self.assertIn("lengths in metres (the file's <unit>)", alone.stderr)
+        self.assertNotIn("not converted to metres", alone.stderr)
+        self.assertIn("m^3", run(directory / "box.dae").stdout)
+        mixed = run(directory / "box.dae", directory / "box.stl", "--json")
+        self.assertIn("not converted to metres", mixed.stderr)
+        self.assertIn("Collada files excepted: in metres", mixed.stderr)
 
 
 if __name__ == "__main__":

@@ -133,17 +133,27 @@ ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& ar
                       << '\n';
         }
     }
+    // The Collada reader applies the file's <unit> (its note says so): files
+    // that are all Collada are in metres without --units.
+    const auto collada = [](const FileReport& file) {
+        return file.readable && file.format == "dae";
+    };
+    const bool in_metres =
+        arguments.metres_per_unit || std::all_of(files.begin(), files.end(), collada);
     // The table labels its lengths "(file units)"; the machine outputs carry
     // bare numbers, so say it once.
-    if (!arguments.metres_per_unit && arguments.output != OutputFormat::kTable) {
-        std::cerr << "polymass: note: " << kFileUnitsNote
-                  << " (give the file's unit with --units)\n";
+    if (!in_metres && arguments.output != OutputFormat::kTable) {
+        std::cerr << "polymass: note: " << kFileUnitsNote << " (give the file's unit with --units)"
+                  << (std::any_of(files.begin(), files.end(), collada)
+                          ? "; Collada files excepted: in metres, their <unit> applied"
+                          : "")
+                  << "\n";
     }
 
     OutputSettings settings;
     settings.about = arguments.about;
     settings.point = arguments.point;
-    if (arguments.metres_per_unit) settings.length_unit = "m";
+    if (in_metres) settings.length_unit = "m";
     settings.link_origin = arguments.link_origin;
     switch (arguments.output) {
         case OutputFormat::kTable:
