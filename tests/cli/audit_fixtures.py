@@ -77,12 +77,34 @@ NOTCHED_SECTION = [
     (0.4375, 0.125),
     (0.0, 0.125),
 ]
+# A U: its faces' area centroid lies in its gap, outside the solid, from
+# where some faces are seen from behind (MuJoCo's legacy rule counts those
+# pyramids positive); cut into triangles explicitly (no corner sees them all).
+U_SECTION = [
+    (0.0, 0.0),
+    (0.25, 0.0),
+    (0.25, 0.25),
+    (0.1875, 0.25),
+    (0.1875, 0.0625),
+    (0.0625, 0.0625),
+    (0.0625, 0.25),
+    (0.0, 0.25),
+]
+U_TRIANGLES = [(0, 1, 4), (0, 4, 5), (1, 2, 3), (1, 3, 4), (0, 5, 6), (0, 6, 7)]
 
 
-def write_l_prism(path, offset=(0.03125, -0.015625, 0.0078125), mirror_y=False, section=L_SECTION):
-    """The prism, or its mirror image across the xz plane (y negated, each
-    face turned so that it still faces out)."""
+def write_l_prism(
+    path,
+    offset=(0.03125, -0.015625, 0.0078125),
+    mirror_y=False,
+    section=L_SECTION,
+    triangles=None,
+):
+    """The prism of a section (its triangles: a fan from corner 0 unless
+    given), or its mirror image across the xz plane (y negated, each face
+    turned so that it still faces out)."""
     n = len(section)
+    triangles = triangles or [(0, k, k + 1) for k in range(1, n - 1)]
     sign = -1.0 if mirror_y else 1.0
     vertices = [
         (x + offset[0], sign * (y + offset[1]), z + offset[2])
@@ -90,9 +112,9 @@ def write_l_prism(path, offset=(0.03125, -0.015625, 0.0078125), mirror_y=False, 
         for x, y in section
     ]
     faces = []
-    for k in range(1, n - 1):  # a fan from corner 0 covers this section once
-        faces.append((0, k + 1, k))  # bottom, facing -z
-        faces.append((n, n + k, n + k + 1))  # top, facing +z
+    for a, b, c in triangles:
+        faces.append((a, c, b))  # bottom, facing -z
+        faces.append((n + a, n + b, n + c))  # top, facing +z
     for k in range(n):
         a, b = k, (k + 1) % n
         faces += [(a, b, n + b), (a, n + b, n + a)]

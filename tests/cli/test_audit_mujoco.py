@@ -222,3 +222,40 @@ def test_a_moving_body_without_mass_is_what_mujoco_refuses(tmp_path):
     assert "massless_moving_body" in kinds["nothing"]
     with pytest.raises(ValueError, match="mass and inertia of moving bodies"):
         mujoco.MjModel.from_xml_path(str(path))
+
+
+def test_legacy_mesh_inertia_is_mujocos_figure_and_the_distance_is_said(tmp_path):
+    """A mesh asset without inertia="..." keeps MuJoCo's default, legacy:
+    the audit's computed is the exact solid (MuJoCo's figure with
+    inertia="exact"), mujoco_legacy what MuJoCo compiles by default."""
+    fx.write_l_prism(tmp_path / "l.obj", section=fx.U_SECTION, triangles=fx.U_TRIANGLES)
+    worldbody = """
+    <body name="legacy" pos="0 0 1">
+      <geom type="mesh" mesh="l" pos="0.1 0 0" euler="0 30 90"/>
+      <geom type="box" size="0.01 0.02 0.03" pos="0 0.2 0"/>
+    </body>"""
+    for mode in ("", 'inertia="exact"'):
+        path = tmp_path / f"model{len(mode)}.xml"
+        path.write_text(
+            model("", "", worldbody, f'<mesh name="l" file="l.obj" scale="1 2 1" {mode}/>')
+        )
+        links = audit_json(path)
+    legacy_path, exact_path = tmp_path / "model0.xml", path
+    legacy = audit_json(legacy_path)["legacy"]
+    # The exact figure is the same either way, and MuJoCo's with inertia="exact".
+    assert_agree(exact_path, ["legacy"])
+    assert legacy["computed"] == links["legacy"]["computed"] | {
+        "rules": legacy["computed"]["rules"]
+    }
+    # MuJoCo's default compile is the legacy figure.
+    mass, com, inertia = mujoco_inertial(mujoco.MjModel.from_xml_path(str(legacy_path)), "legacy")
+    figure = legacy["mujoco_legacy"]
+    assert figure["mass"] == pytest.approx(mass, rel=RTOL)
+    np.testing.assert_allclose(figure["center_of_mass"], com, rtol=0, atol=RTOL * np.abs(com).max())
+    np.testing.assert_allclose(
+        figure["inertia"], inertia, rtol=0, atol=RTOL * np.abs(inertia).max()
+    )
+    # The legacy rule counts the pyramids over the faces seen from behind.
+    assert figure["mass"] > legacy["computed"]["mass"] * 1.01
+    assert "legacy_mesh_inertia" in [f["kind"] for f in legacy["findings"]]
+    assert "mujoco_legacy" not in links["legacy"]

@@ -157,6 +157,64 @@ std::vector<Geometry> mujoco_geometry(const Description& description, const Link
     return weighed;
 }
 
+// The geom's body at MuJoCo's mass, and its legacy body (when it has one)
+// at the mass MuJoCo gives that; false (and the finding) when the library
+// refuses.
+bool weigh(const Library& library, const Weighing& weighing, double mass, Measured& measured,
+           LinkAudit& audit) {
+    MomentsResult step = at_mass(library, measured.moments, mass);
+    if (step.status == POLYMASS_OK && measured.legacy) {
+        const MomentsResult legacy =
+            at_mass(library, *measured.legacy, mujoco_geom_mass(weighing, measured.legacy->volume));
+        measured.legacy = legacy.moments;
+        if (legacy.status != POLYMASS_OK) step = legacy;
+    }
+    if (step.status != POLYMASS_OK) {
+        audit.findings.push_back(
+            {"bad_geometry", Severity::kError, "a geom cannot be weighed: " + step.message});
+        return false;
+    }
+    measured.moments = step.moments;
+    return true;
+}
+
+// MuJoCo's own figure for a body some of whose meshes keep its default
+// (legacy) inertia: those meshes weighed by that rule, the other geoms as
+// they are; and how far it is from the exact one.
+void add_legacy_figure(const Library& library, const std::vector<Measured>& bodies,
+                       const MujocoCompiler& compiler, LinkAudit& audit) {
+    if (std::none_of(bodies.begin(), bodies.end(),
+                     [](const Measured& body) { return body.legacy_asked; })) {
+        return;
+    }
+    if (std::any_of(bodies.begin(), bodies.end(),
+                    [](const Measured& body) { return body.legacy_asked && !body.legacy; })) {
+        audit.findings.push_back({"legacy_mesh_inertia", Severity::kWarning,
+                                  "MuJoCo refuses a mesh of this body in its default (legacy) "
+                                  "inertia mode: no volume by that rule; set inertia=\"exact\" "
+                                  "on the <mesh>"});
+        return;
+    }
+    std::vector<polymass_moments> moments;
+    std::vector<Eigen::Vector3d> points;
+    for (const Measured& body : bodies) {
+        moments.push_back(body.legacy ? *body.legacy : body.moments);
+        points.insert(points.end(), body.points.begin(), body.points.end());
+    }
+    audit.mujoco_legacy = computed_of(library, sum(library, moments), points, audit);
+    if (!audit.mujoco_legacy) return;
+    for (const std::string& rule : audit.computed->rules) {
+        audit.mujoco_legacy->rules.push_back(
+            rule.rfind("mesh inertia legacy", 0) == 0
+                ? "mesh inertia legacy (MuJoCo's default): MuJoCo's legacy rule"
+                : rule);
+    }
+    apply_body_rules(compiler, *audit.mujoco_legacy);
+    if (std::optional<Finding> finding = judge_legacy(*audit.computed, *audit.mujoco_legacy)) {
+        audit.findings.push_back(std::move(*finding));
+    }
+}
+
 // The rules that weighed an MJCF body's geoms, said once each.
 void add_rule(std::vector<std::string>& rules, const std::string& rule) {
     if (std::find(rules.begin(), rules.end(), rule) == rules.end()) rules.push_back(rule);
@@ -236,13 +294,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
             // MuJoCo leaves out what weighs nothing.
             const double mass = mujoco_geom_mass(geometry.weighing, measured.moments.volume);
             if (mass == 0.0) continue;
-            const MomentsResult step = at_mass(library, measured.moments, mass);
-            if (step.status != POLYMASS_OK) {
-                audit.findings.push_back({"bad_geometry", Severity::kError,
-                                          "a geom cannot be weighed: " + step.message});
-                return audit;
-            }
-            measured.moments = step.moments;
+            if (!weigh(library, geometry.weighing, mass, measured, audit)) return audit;
             add_rule(rules, weighing_rule(geometry));
         }
         bodies.push_back(std::move(measured));
@@ -259,6 +311,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
     if (!mjcf) return audit;
     if (audit.computed) {
         audit.computed->rules = rules;
+        add_legacy_figure(library, bodies, description.compiler, audit);
         apply_body_rules(description.compiler, *audit.computed);
     }
     return audit;

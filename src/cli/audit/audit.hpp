@@ -51,6 +51,9 @@ struct LinkAudit {
     const char* mujoco_uses = nullptr;  // MJCF: "declared", "computed" or "none"
     std::optional<Inertial> declared;
     std::optional<Computed> computed;
+    // MJCF, when some of the body's meshes keep MuJoCo's default (legacy)
+    // inertia: what MuJoCo will use, those meshes weighed by that rule.
+    std::optional<Computed> mujoco_legacy;
     std::vector<Finding> findings;
 };
 

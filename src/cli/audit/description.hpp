@@ -33,7 +33,9 @@ struct Weighing {
     double density = 1000.0;     // kg/m^3 (kg/m^2 for a shell)
     std::optional<double> mass;  // <geom mass>: the geom's mass, its density derived
     bool shell = false;          // <geom shellinertia>: a primitive's surface
-    MeshInertia mesh_inertia = MeshInertia::kLegacy;
+    // The mesh asset's (MuJoCo's default is legacy; URDF and SDFormat meshes
+    // are weighed exactly).
+    MeshInertia mesh_inertia = MeshInertia::kExact;
 };
 
 struct Geometry {

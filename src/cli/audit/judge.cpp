@@ -42,19 +42,6 @@ constexpr double kUnitRatios[] = {10.0, 100.0, 1000.0, 2.54, 25.4, 1.0 / 0.0254}
 // rounding of a tensor on the boundary (a thin plate) stays above it.
 constexpr double kTriangleTolerance = 1e-9;
 
-// Three significant digits (whole numbers from 100 %): enough to read a
-// difference by.
-std::string percent(double fraction) {
-    const double value = 100.0 * fraction;
-    OutputText text;
-    if (std::abs(value) >= 100.0)
-        text << std::fixed << std::setprecision(0);
-    else
-        text << std::setprecision(3);
-    text << value << " %";
-    return text.str();
-}
-
 std::string triple(const Eigen::Vector3d& v) {
     return readable_number(v[0]) + " " + readable_number(v[1]) + " " + readable_number(v[2]);
 }
@@ -163,6 +150,17 @@ std::string density_hint(double density, bool has_mesh) {
 }
 
 }  // namespace
+
+std::string percent(double fraction) {
+    const double value = 100.0 * fraction;
+    OutputText text;
+    if (std::abs(value) >= 100.0)
+        text << std::fixed << std::setprecision(0);
+    else
+        text << std::setprecision(3);
+    text << value << " %";
+    return text.str();
+}
 
 std::vector<Finding> judge_declared(const Inertial& declared) {
     std::vector<Finding> findings;

@@ -2,11 +2,16 @@
 // one function; the thresholds are the README's.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "audit/audit.hpp"
 
 namespace polymass_cli::audit {
+
+// A fraction as a percentage in three significant digits (whole numbers from
+// 100 %): enough to read a difference by.
+std::string percent(double fraction);
 
 // Findings about the declared inertial alone: a mass that is not positive, a
 // tensor that is not positive definite or breaks a triangle inequality; or

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "audit/mujoco_legacy.hpp"
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
 #include "library/solid_moments.hpp"
@@ -182,7 +183,8 @@ MeshBody mesh_body(const Weighing& weighing) {
 }
 
 Measured measure_mesh_file(const Library& library, const polymass_options& options,
-                           const std::string& path, MeshBody body, const Eigen::Vector3d& scale) {
+                           const std::string& path, MeshBody body, const Eigen::Vector3d& scale,
+                           bool legacy) {
     Model model;
     try {
         model = read_mesh_file(path, "");
@@ -221,6 +223,10 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
     for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
         measured.points.emplace_back(model.positions[v], model.positions[v + 1],
                                      model.positions[v + 2]);
+    }
+    if (legacy) {
+        measured.legacy_asked = true;
+        measured.legacy = mujoco_legacy_moments(model, scale);
     }
     if (body == MeshBody::kSurface) return measured;
     const MomentsResult step = scaled(library, measured.moments, {scale[0], scale[1], scale[2]});
@@ -302,6 +308,14 @@ Measured placed(const Library& library, const Geometry& geometry, Measured measu
         return failure("bad_geometry", "cannot be placed: " + step.message);
     }
     measured.moments = step.moments;
+    if (measured.legacy) {
+        const MomentsResult legacy =
+            transformed(library, *measured.legacy, rotation, {t[0], t[1], t[2]});
+        if (legacy.status != POLYMASS_OK) {
+            return failure("bad_geometry", "cannot be placed: " + legacy.message);
+        }
+        measured.legacy = legacy.moments;
+    }
     for (Eigen::Vector3d& point : measured.points) {
         point = geometry.pose.rotation * point + geometry.pose.position;
     }
@@ -322,7 +336,8 @@ Measured measure_geometry(const Library& library, const polymass_options& option
                            geometry.uri + ": a mesh scale with a zero or non-finite factor");
         }
         measured = measure_mesh_file(library, options, resolved.path, mesh_body(geometry.weighing),
-                                     geometry.scale);
+                                     geometry.scale,
+                                     geometry.weighing.mesh_inertia == MeshInertia::kLegacy);
     } else {
         measured = measure_primitive(geometry);
     }

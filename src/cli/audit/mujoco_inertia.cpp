@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "audit/judge.hpp"
 #include "reports/number_format.hpp"
 
 namespace polymass_cli::audit {
@@ -14,6 +15,10 @@ namespace {
 // principal moments of at least kSmallest.
 constexpr double kGeomEpsilon = 1e-14;
 constexpr double kSmallest = 1e-15;
+// The legacy figure differs from the exact one beyond rounding above this
+// (relative); a warning above kLegacyWarning in mass or moments.
+constexpr double kSameFigure = 1e-9;
+constexpr double kLegacyWarning = 0.05;
 
 // The mass and principal moments MuJoCo ends with for the link (before
 // settotalmass, which scales them all alike).
@@ -26,8 +31,9 @@ BodyMass body_mass(const MujocoCompiler& compiler, const LinkAudit& link) {
     const std::string uses = mujoco_uses(compiler, link);
     BodyMass body;
     if (uses == "computed") {
-        body.mass = link.computed->mass;
-        body.moments = link.computed->principal_moments;
+        const Computed& used = link.mujoco_legacy ? *link.mujoco_legacy : *link.computed;
+        body.mass = used.mass;
+        body.moments = used.principal_moments;
         return body;
     }
     if (uses == "declared") {
@@ -121,6 +127,25 @@ void apply_body_rules(const MujocoCompiler& compiler, Computed& computed) {
     }
 }
 
+std::optional<Finding> judge_legacy(const Computed& exact, const Computed& legacy) {
+    const double mass = std::abs(legacy.mass - exact.mass) / exact.mass;
+    const double moments =
+        (legacy.principal_moments - exact.principal_moments).cwiseAbs().maxCoeff() /
+        exact.principal_moments.maxCoeff();
+    const double size = (exact.box_max - exact.box_min).norm();
+    const double offset = (legacy.center_of_mass - exact.center_of_mass).norm() / size;
+    if (std::max({mass, moments, offset}) <= kSameFigure) return std::nullopt;
+    return Finding{"legacy_mesh_inertia",
+                   std::max(mass, moments) > kLegacyWarning ? Severity::kWarning : Severity::kInfo,
+                   "MuJoCo's default mesh inertia (legacy) is not this exact figure: mass " +
+                       readable_number(legacy.mass) + " (" + percent(mass) +
+                       " off), principal "
+                       "moments up to " +
+                       percent(moments) + " off, centre of mass " + percent(offset) +
+                       " of the link's size away; inertia=\"exact\" on the "
+                       "<mesh> gives the exact one"};
+}
+
 const char* mujoco_uses(const MujocoCompiler& compiler, const LinkAudit& link) {
     using FromGeom = MujocoCompiler::FromGeom;
     const bool from_geom = compiler.inertia_from_geom == FromGeom::kTrue ||
@@ -147,10 +172,13 @@ void apply_model_rules(const Description& description, FileAudit& audit) {
         for (LinkAudit& link : audit.links) {
             const std::string uses = mujoco_uses(compiler, link);
             if (uses == "computed") {
-                scale(*link.computed, factor);
-                link.computed->rules.push_back(
-                    "settotalmass " + readable_number(compiler.settotalmass) +
-                    ": every body's mass and inertia scaled by " + readable_number(factor));
+                for (std::optional<Computed>* figure : {&link.computed, &link.mujoco_legacy}) {
+                    if (!*figure) continue;
+                    scale(**figure, factor);
+                    (*figure)->rules.push_back(
+                        "settotalmass " + readable_number(compiler.settotalmass) +
+                        ": every body's mass and inertia scaled by " + readable_number(factor));
+                }
             } else if (uses == "declared" && factor != 1.0) {
                 link.findings.push_back({"scaled_by_settotalmass", Severity::kInfo,
                                          "settotalmass " + readable_number(compiler.settotalmass) +

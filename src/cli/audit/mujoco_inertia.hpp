@@ -3,6 +3,7 @@
 // mass of each, and what <compiler> then does to each body and to the whole.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,11 @@ void set_inertia(Computed& computed, const Eigen::Matrix3d& inertia);
 // as MuJoCo applies them to each body; each that changes something is
 // added to computed.rules.
 void apply_body_rules(const MujocoCompiler& compiler, Computed& computed);
+
+// How far MuJoCo's legacy figure is from the exact one (mass, principal
+// moments, centre of mass): a finding when they differ beyond rounding, a
+// warning from 5 %.
+std::optional<Finding> judge_legacy(const Computed& exact, const Computed& legacy);
 
 // Which inertial MuJoCo uses for the link ("declared", "computed", or
 // "none": no inertial and inertiafromgeom false, or nothing weighed).

@@ -45,6 +45,7 @@ Json file_json(const FileAudit& file) {
         entry["declared"] = link.declared ? declared_json(*link.declared) : Json();
         entry["computed"] = link.computed ? computed_json(*link.computed) : Json();
         if (link.mujoco_uses != nullptr) entry["mujoco_uses"] = link.mujoco_uses;
+        if (link.mujoco_legacy) entry["mujoco_legacy"] = computed_json(*link.mujoco_legacy);
         Json findings = Json::array();
         for (const Finding& finding : link.findings) {
             findings.push_back({{"kind", finding.kind},
