@@ -299,7 +299,10 @@ LinkAudit audit_link(const Library& library, const Description& description, con
         }
         bodies.push_back(std::move(measured));
     }
-    if (!all_measured) return audit;  // a partial sum would mislead
+    if (!all_measured) {
+        audit.unmeasured = true;  // a partial sum would mislead
+        return audit;
+    }
     if (bodies.empty()) {
         rules.push_back("every geom weighs nothing (mass or density 0)");
     } else {
@@ -307,6 +310,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
             std::any_of(geometries.begin(), geometries.end(),
                         [](const Geometry& geometry) { return geometry.shape == Shape::kMesh; });
         add_up(library, bodies, mjcf, has_mesh, settings, audit);
+        audit.unmeasured = !audit.computed;
     }
     if (!mjcf) return audit;
     if (audit.computed) {

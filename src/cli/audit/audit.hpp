@@ -49,6 +49,8 @@ struct LinkAudit {
     // MuJoCo weighs, visual or not) or "none".
     const char* geometry = "none";
     const char* mujoco_uses = nullptr;  // MJCF: "declared", "computed" or "none"
+    // Geometry that could not be measured: the link's mass is unknown.
+    bool unmeasured = false;
     std::optional<Inertial> declared;
     std::optional<Computed> computed;
     // MJCF, when some of the body's meshes keep MuJoCo's default (legacy)

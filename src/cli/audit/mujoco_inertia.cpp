@@ -31,6 +31,7 @@ BodyMass body_mass(const MujocoCompiler& compiler, const LinkAudit& link) {
     const std::string uses = mujoco_uses(compiler, link);
     BodyMass body;
     if (uses == "computed") {
+        if (!link.computed) return body;  // not measured: unknown
         const Computed& used = link.mujoco_legacy ? *link.mujoco_legacy : *link.computed;
         body.mass = used.mass;
         body.moments = used.principal_moments;
@@ -51,6 +52,13 @@ bool has_mass(const BodyMass& body) {
     return body.mass >= kSmallest && body.moments.minCoeff() >= kSmallest;
 }
 
+// Whether MuJoCo would find the link's mass positive; so assumed when the
+// link's geometry could not be measured (nothing is known then).
+bool weighs(const MujocoCompiler& compiler, const LinkAudit& link) {
+    return (link.unmeasured && std::string(mujoco_uses(compiler, link)) != "declared") ||
+           has_mass(body_mass(compiler, link));
+}
+
 using Children = std::vector<std::vector<std::size_t>>;
 
 // MuJoCo's test of a moving body: its own mass, or that of a body fixed to
@@ -58,7 +66,7 @@ using Children = std::vector<std::vector<std::size_t>>;
 // is looked at for its nearest moving ancestor only.
 bool carries_mass(const MujocoCompiler& compiler, const FileAudit& audit, const Children& children,
                   const std::vector<Link>& links, std::size_t index) {
-    if (has_mass(body_mass(compiler, audit.links[index]))) return true;
+    if (weighs(compiler, audit.links[index])) return true;
     for (const std::size_t child : children[index]) {
         if (!links[child].moving && carries_mass(compiler, audit, children, links, child)) {
             return true;
@@ -150,7 +158,8 @@ const char* mujoco_uses(const MujocoCompiler& compiler, const LinkAudit& link) {
     using FromGeom = MujocoCompiler::FromGeom;
     const bool from_geom = compiler.inertia_from_geom == FromGeom::kTrue ||
                            (compiler.inertia_from_geom == FromGeom::kAuto && !link.declared);
-    if (from_geom) return link.computed ? "computed" : "none";
+    // With nothing weighed, MuJoCo keeps the declared inertial, if any.
+    if (from_geom && (link.computed || link.unmeasured)) return "computed";
     return link.declared ? "declared" : "none";
 }
 
