@@ -131,7 +131,8 @@ class MujocoRules(unittest.TestCase):
     def test_a_moving_body_without_mass(self):
         path = fresh("massless") / "model.xml"
         path.write_text(
-            mjcf("""
+            mjcf(
+                """
     <body name="carried"><joint/>
       <body name="welded"><geom type="sphere" size="0.1"/></body>
     </body>
@@ -139,14 +140,19 @@ class MujocoRules(unittest.TestCase):
       <body name="moving_child"><joint/><geom type="sphere" size="0.1"/></body>
     </body>
     <body name="weightless"><joint/><geom type="sphere" size="0.1" density="0"/></body>
-    <body name="static"/>""")
+    <body name="unknown"><joint/><geom type="mesh" mesh="missing"/></body>
+    <body name="static"/>""",
+                assets='<mesh name="missing" file="missing.obj"/>',
+            )
         )
         result, out = audit(path)
         self.assertEqual(result.returncode, 1)
         flagged = [
             entry["name"] for entry in out["links"] if "massless_moving_body" in kinds(entry)
         ]
+        # "unknown": its mesh cannot be read, so its mass is not known to be 0.
         self.assertEqual(flagged, ["alone", "weightless"])
+        self.assertIn("unreadable_mesh", kinds(link(out, "unknown")))
 
 
 class Judged(unittest.TestCase):
