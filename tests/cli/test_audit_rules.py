@@ -141,6 +141,7 @@ class MujocoRules(unittest.TestCase):
     </body>
     <body name="weightless"><joint/><geom type="sphere" size="0.1" density="0"/></body>
     <body name="unknown"><joint/><geom type="mesh" mesh="missing"/></body>
+    <body name="field"><joint/><geom type="hfield" hfield="terrain"/></body>
     <body name="static"/>""",
                 assets='<mesh name="missing" file="missing.obj"/>',
             )
@@ -150,7 +151,8 @@ class MujocoRules(unittest.TestCase):
         flagged = [
             entry["name"] for entry in out["links"] if "massless_moving_body" in kinds(entry)
         ]
-        # "unknown": its mesh cannot be read, so its mass is not known to be 0.
+        # "unknown": its mesh cannot be read, so its mass is not known to be 0;
+        # nor is "field"'s, whose height field MuJoCo weighs.
         self.assertEqual(flagged, ["alone", "weightless"])
         self.assertIn("unreadable_mesh", kinds(link(out, "unknown")))
 

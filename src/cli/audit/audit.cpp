@@ -266,6 +266,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
         }
     }
     if (geometries.empty()) {
+        audit.unmeasured = link.weighs_unmeasured;
         if (audit.declared) {
             audit.findings.push_back({"no_geometry", Severity::kInfo,
                                       "an inertial with no geometry to check it against"});
@@ -299,7 +300,7 @@ LinkAudit audit_link(const Library& library, const Description& description, con
         }
         bodies.push_back(std::move(measured));
     }
-    if (!all_measured) {
+    if (!all_measured || link.weighs_unmeasured) {
         audit.unmeasured = true;  // a partial sum would mislead
         return audit;
     }

@@ -76,6 +76,9 @@ struct Link {
     // Geometries the description has but the audit cannot measure (an
     // MJCF plane or height field, a pose relative to another frame): said.
     std::vector<std::string> unsupported;
+    // MJCF: one of those is a geom MuJoCo weighs (a height field, a mesh
+    // without a file, a shape fitted to a mesh): the body's mass is unknown.
+    bool weighs_unmeasured = false;
     // MJCF: the enclosing body's index in Description::links (-1: the
     // world), and whether the body moves (has a joint).
     int parent = -1;

@@ -449,6 +449,7 @@ private:
             }
             if (found->second.path.empty()) {
                 link.unsupported.push_back(what + ": mesh '" + mesh_name + "' has no file");
+                link.weighs_unmeasured = true;
                 return;
             }
             geometry.shape = Shape::kMesh;
@@ -458,6 +459,7 @@ private:
         } else if (!mesh_name.empty()) {
             link.unsupported.push_back(what + ": a " + type + " fitted to mesh '" + mesh_name +
                                        "' (MuJoCo's fitting is not one the audit reproduces)");
+            link.weighs_unmeasured = true;
             return;
         } else if (type == "box") {
             geometry.shape = Shape::kBox;
@@ -475,6 +477,8 @@ private:
         } else {
             link.unsupported.push_back(what + ": type '" + type +
                                        "' is not a shape the audit measures");
+            // MuJoCo gives a plane no volume; a height field or an SDF weighs.
+            link.weighs_unmeasured = link.weighs_unmeasured || type != "plane";
             return;
         }
         geometry.pose.position = frame.rotation * geometry.pose.position + frame.position;
