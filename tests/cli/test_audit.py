@@ -88,6 +88,8 @@ class Declared(AuditCase):
         result, out = audit(self.box_urdf("correct", self.correct_inertial()))
         self.assertEqual(result.returncode, 0, result.stdout)
         entry = link(out, "base")
+        rules = ["collision geometry at a uniform density: the declared mass"]
+        self.assertEqual(entry["computed"]["rules"], rules)
         self.assertEqual(entry["findings"], [])
         self.assertEqual(entry["geometry"], "collision")
         self.assert_computed(entry["computed"], fx.MASS, fx.centre(), fx.box_inertia(fx.MASS))

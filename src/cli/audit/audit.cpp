@@ -313,7 +313,15 @@ LinkAudit audit_link(const Library& library, const Description& description, con
         add_up(library, bodies, mjcf, has_mesh, settings, audit);
         audit.unmeasured = !audit.computed;
     }
-    if (!mjcf) return audit;
+    if (!mjcf) {
+        // URDF and SDFormat give geometry no density: uniform, at the mass.
+        if (audit.computed) {
+            audit.computed->rules.push_back(
+                std::string(audit.geometry) + " geometry at a uniform density: " +
+                (has_mass(audit.declared) ? "the declared mass" : "--density (default 1000)"));
+        }
+        return audit;
+    }
     if (audit.computed) {
         audit.computed->rules = rules;
         add_legacy_figure(library, bodies, description.compiler, audit);
