@@ -29,6 +29,13 @@ EXE = os.environ["POLYMASS_EXE"]
 RTOL = 1e-9
 
 
+@pytest.fixture(autouse=True)
+def in_scratch(tmp_path, monkeypatch):
+    """MuJoCo writes its warnings (settotalmass is deprecated in 4.0) to
+    MUJOCO_LOG.TXT in the working directory: the test's own."""
+    monkeypatch.chdir(tmp_path)
+
+
 def audit_json(path):
     result = subprocess.run(
         [EXE, "audit", "--json", str(path)],
