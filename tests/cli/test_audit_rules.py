@@ -128,6 +128,31 @@ class MujocoRules(unittest.TestCase):
         self.assertAlmostEqual(computed["center_of_mass"][0], 1 / 3, delta=1e-12)
         self.assertIn("1 geom(s) of other groups not weighed", " ".join(computed["rules"]))
 
+    def test_fix_writes_the_geometry_not_mujocos_bounds(self):
+        """boundinertia raises MuJoCo's computed moments; --fix writes the
+        geometry's at the declared mass, MuJoCo bounding the file itself."""
+        directory = fresh("fix_bounds")
+        path = directory / "model.xml"
+        body = """
+    <body name="b">
+      <inertial pos="0 0 0" mass="2" diaginertia="1 1 1"/>
+      <geom type="box" size="0.1 0.2 0.3"/>
+    </body>"""
+        path.write_text(mjcf(body, 'boundinertia="5"'))
+        _, out = audit(path)
+        self.assertIn("boundinertia", " ".join(link(out, "b")["computed"]["rules"]))
+        self.assertEqual(link(out, "b")["computed"]["principal_moments"], [5.0, 5.0, 5.0])
+        run("audit", path, "--fix", directory / "fixed.xml")
+        fixed = (directory / "fixed.xml").read_text()
+        full = fixed.split('fullinertia="')[1].split('"')[0].split()
+        expected = [
+            2 * (0.4**2 + 0.6**2) / 12,
+            2 * (0.2**2 + 0.6**2) / 12,
+            2 * (0.2**2 + 0.4**2) / 12,
+        ]
+        for value, want in zip(map(float, full[:3]), expected):
+            self.assertAlmostEqual(value / want, 1.0, delta=1e-12)
+
     def test_a_moving_body_without_mass(self):
         path = fresh("massless") / "model.xml"
         path.write_text(

@@ -132,6 +132,7 @@ void add_up(const Library& library, const std::vector<Measured>& bodies, bool we
     for (Finding& finding : judge_against_geometry(*audit.declared, *judged, has_mesh)) {
         audit.findings.push_back(std::move(finding));
     }
+    audit.at_declared_mass = std::move(judged);
 }
 
 // What MuJoCo weighs of a body: the geoms in inertiagrouprange, collision

@@ -56,6 +56,10 @@ struct LinkAudit {
     // MJCF, when some of the body's meshes keep MuJoCo's default (legacy)
     // inertia: what MuJoCo will use, those meshes weighed by that rule.
     std::optional<Computed> mujoco_legacy;
+    // The geometry at the declared mass (its mass distribution kept), which
+    // the declared inertial is judged against and --fix writes; the same as
+    // computed for URDF and SDFormat.
+    std::optional<Computed> at_declared_mass;
     std::vector<Finding> findings;
 };
 

@@ -6,7 +6,6 @@
 #include "audit/fix.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "reports/number_format.hpp"
 #include "text_streams.hpp"
@@ -85,10 +84,11 @@ FixResult fix_description(const FileAudit& audit, const FixSettings& settings) {
             result.left.push_back(link.name + ": its <inertial> is not in this file");
             continue;
         }
-        const Computed& c = *link.computed;
-        const double declared = link.declared->mass;
-        const double kept = std::isfinite(declared) && declared > 0.0 ? declared : c.mass;
-        const double mass = settings.density ? *settings.density * c.volume : kept;
+        // The geometry at the declared mass (for MJCF, before MuJoCo's
+        // bounds and total mass, which it applies to the file's inertials
+        // itself), else as computed.
+        const Computed& c = link.at_declared_mass ? *link.at_declared_mass : *link.computed;
+        const double mass = settings.density ? *settings.density * c.volume : c.mass;
         // At a fixed geometry the inertia is proportional to the mass;
         // symmetric from the computed tensor's upper triangle.
         Eigen::Matrix3d inertia = c.inertia.triangularView<Eigen::Upper>();
