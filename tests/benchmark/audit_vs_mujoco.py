@@ -25,13 +25,8 @@ import sys
 import mujoco
 import numpy as np
 
-
-def inertial(model, i):
-    body = model.body(i)
-    rotation = np.zeros(9)
-    mujoco.mju_quat2Mat(rotation, body.iquat)
-    rotation = rotation.reshape(3, 3)
-    return body.mass[0], np.array(body.ipos), rotation @ np.diag(body.inertia) @ rotation.T
+sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "cli"))
+from mujoco_body import body_inertial
 
 
 def agree(figure, mass, com, inertia):
@@ -87,11 +82,11 @@ def main(exe, roots):
         for i in range(1, exact.nbody):
             link = links[i - 1]
             counts["bodies"] += 1
-            counts["exact"] += agree(link["computed"], *inertial(exact, i))
+            counts["exact"] += agree(link["computed"], *body_inertial(exact, i))
             if inferred[i]:
                 counts["inferred"] += 1
                 counts["as_is"] += agree(
-                    link.get("mujoco_legacy") or link["computed"], *inertial(as_is, i)
+                    link.get("mujoco_legacy") or link["computed"], *body_inertial(as_is, i)
                 )
     print(counts)
 

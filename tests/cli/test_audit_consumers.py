@@ -20,6 +20,7 @@ import yourdfpy
 
 sys.path.insert(0, str(Path(__file__).parent))
 import audit_fixtures as fx
+from mujoco_body import body_inertial
 
 EXE = os.environ["POLYMASS_EXE"]
 
@@ -80,15 +81,6 @@ MJCF = fx.mjcf(
       </frame>
     </body>""",
 )
-
-
-def body_inertial(model, name):
-    body = model.body(name)
-    rotation = np.zeros(9)
-    mujoco.mju_quat2Mat(rotation, body.iquat)
-    rotation = rotation.reshape(3, 3)
-    inertia = rotation @ np.diag(body.inertia) @ rotation.T
-    return body.mass[0], body.ipos, inertia
 
 
 def test_mujoco_reads_the_fixed_mjcf_and_agrees_on_geometry(tmp_path):

@@ -24,6 +24,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
 import audit_fixtures as fx
+from mujoco_body import body_inertial
 
 EXE = os.environ["POLYMASS_EXE"]
 RTOL = 1e-9
@@ -48,19 +49,11 @@ def audit_json(path):
     return {link["name"]: link for link in json.loads(result.stdout)["links"]}
 
 
-def mujoco_inertial(model, name):
-    body = model.body(name)
-    rotation = np.zeros(9)
-    mujoco.mju_quat2Mat(rotation, body.iquat)
-    rotation = rotation.reshape(3, 3)
-    return body.mass[0], np.array(body.ipos), rotation @ np.diag(body.inertia) @ rotation.T
-
-
 def assert_agree(path, names):
     model = mujoco.MjModel.from_xml_path(str(path))
     links = audit_json(path)
     for name in names:
-        mass, com, inertia = mujoco_inertial(model, name)
+        mass, com, inertia = body_inertial(model, name)
         computed = links[name]["computed"]
         assert computed is not None, (name, links[name]["findings"])
         assert computed["mass"] == pytest.approx(mass, rel=RTOL), name
@@ -255,7 +248,7 @@ def test_legacy_mesh_inertia_is_mujocos_figure_and_the_distance_is_said(tmp_path
         "rules": legacy["computed"]["rules"]
     }
     # MuJoCo's default compile is the legacy figure.
-    mass, com, inertia = mujoco_inertial(mujoco.MjModel.from_xml_path(str(legacy_path)), "legacy")
+    mass, com, inertia = body_inertial(mujoco.MjModel.from_xml_path(str(legacy_path)), "legacy")
     figure = legacy["mujoco_legacy"]
     assert figure["mass"] == pytest.approx(mass, rel=RTOL)
     np.testing.assert_allclose(figure["center_of_mass"], com, rtol=0, atol=RTOL * np.abs(com).max())
