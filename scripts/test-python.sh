@@ -15,7 +15,9 @@
 #   6. the Dask example (examples/dask): dask[distributed] and pyarrow from PyPI,
 #      then its pytest on a distributed.LocalCluster;
 #   7. polymass audit --fix read back by yourdfpy and MuJoCo (from PyPI):
-#      tests/cli/test_audit_consumers.py, with the tool of build/dev (or
+#      tests/cli/test_audit_consumers.py; and the audit's MJCF inertials
+#      against MuJoCo's own compile of models exercising each mass rule:
+#      tests/cli/test_audit_mujoco.py; both with the tool of build/dev (or
 #      $POLYMASS_EXE; scripts/test.sh builds dev before this step);
 #   8. polymass --usda read back by OpenUSD (usd-core from PyPI):
 #      tests/cli/test_usd.py, with the same tool.
@@ -126,7 +128,7 @@ if [ ! -x "$polymass_exe" ]; then
 fi
 "$venv/bin/python" -m pip "${pip_options[@]}" install yourdfpy mujoco </dev/null
 POLYMASS_EXE=$polymass_exe "$venv/bin/python" -m pytest -q -p no:cacheprovider \
-    tests/cli/test_audit_consumers.py </dev/null
+    tests/cli/test_audit_consumers.py tests/cli/test_audit_mujoco.py </dev/null
 
 step usd
 "$venv/bin/python" -m pip "${pip_options[@]}" install usd-core </dev/null

@@ -376,7 +376,9 @@ void add_audit_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                    "also write a page that draws each robot: its links' geometry,\n"
                    "declared and computed inertia boxes, findings (opens offline)")
         ->option_text("REPORT.html");
-    app.add_option("--from", raw.from, "the geometry measured (default collision)")
+    app.add_option("--from", raw.from,
+                   "URDF, SDFormat: the geometry measured (default collision);\n"
+                   "MJCF: the geoms MuJoCo weighs, whatever this says")
         ->check(CLI::IsMember({"collision", "visual"}))
         ->option_text("collision|visual");
     app.add_option("--fail-on", audit.fail_on,
@@ -388,7 +390,8 @@ void add_audit_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
                    "(one FILE; declared masses kept unless --density or --mass-from)")
         ->option_text("OUT");
     app.add_option("--density", raw.densities,
-                   "kg/m^3: links without a mass are computed at D (default 1000);\n"
+                   "kg/m^3: URDF and SDFormat links without a mass are computed\n"
+                   "at D (default 1000; MJCF geoms have their own density);\n"
                    "with --fix, every mass becomes D * volume")
         ->option_text("D");
     app.add_option("--mass-from", raw.mass_from,
@@ -414,8 +417,9 @@ constexpr const char* kFooter =
 
 constexpr const char* kAuditFooter =
     "Per link: the declared mass, centre of mass and inertia next to those of its\n"
-    "geometry (meshes and shapes) at the declared mass; findings with a kind, a\n"
-    "severity and a message (README: the kinds and their thresholds).\n"
+    "geometry (meshes and shapes): URDF and SDFormat at the declared mass, MJCF as\n"
+    "MuJoCo's compiler infers it (its mass rules: docs/audit.md); findings with a\n"
+    "kind, a severity and a message (README: the kinds and their thresholds).\n"
     "\n"
     "Exit status: 0 no finding as severe as --fail-on, 1 some, 2 usage error,\n"
     "3 a description cannot be read, 4 internal error.\n"
@@ -478,7 +482,12 @@ Arguments parse_arguments(int argc, const char* const* argv) {
     try {
         line.app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
+        // The help of the subcommand asked, with its own options.
         arguments.command = Command::kHelp;
+        arguments.help = line.app.help();
+        for (const CLI::App* subcommand : {line.check, line.assembly, line.audit}) {
+            if (subcommand->parsed()) arguments.help = subcommand->help("polymass");
+        }
         return arguments;
     } catch (const CLI::ParseError& error) {
         throw UsageError(std::string(error.what()) + " (see polymass --help)");

@@ -60,6 +60,7 @@ struct Arguments {
     uint32_t threads = 0;              // --threads N; 0: all cores
     bool triangulate = false;
     AuditArguments audit;
+    std::string help;  // --help: the text to print (the subcommand's own)
     // The modes to try in order (POLYMASS_MODE_*): the solid alone by
     // default; --repair, --shell, --hull or --fallback change it.
     std::vector<uint32_t> modes{POLYMASS_MODE_SOLID};

@@ -59,6 +59,71 @@ def write_obj(path, corners, faces=QUADS):
     path.write_text("\n".join(lines) + "\n")
 
 
+# An L-shaped prism (not convex: its hull, its surface and MuJoCo's legacy
+# rule each weigh it differently; not symmetric: its products of inertia
+# about its centre of mass are not zero), its section counter-clockwise in
+# xy. Its coordinates are dyadic: MuJoCo keeps mesh vertices in single
+# precision.
+L_SECTION = [(0.0, 0.0), (0.25, 0.0), (0.25, 0.125), (0.125, 0.125), (0.125, 0.25), (0.0, 0.25)]
+L_HEIGHT = 0.0625
+# A long bar with a corner cut away: products of inertia small beside its
+# distinct moments (a wrong sign moves the principal moments and axes
+# little, as on most links of a robot).
+NOTCHED_SECTION = [
+    (0.0, 0.0),
+    (0.5, 0.0),
+    (0.5, 0.09375),
+    (0.4375, 0.09375),
+    (0.4375, 0.125),
+    (0.0, 0.125),
+]
+# A U: its faces' area centroid lies in its gap, outside the solid, from
+# where some faces are seen from behind (MuJoCo's legacy rule counts those
+# pyramids positive); cut into triangles explicitly (no corner sees them all).
+U_SECTION = [
+    (0.0, 0.0),
+    (0.25, 0.0),
+    (0.25, 0.25),
+    (0.1875, 0.25),
+    (0.1875, 0.0625),
+    (0.0625, 0.0625),
+    (0.0625, 0.25),
+    (0.0, 0.25),
+]
+U_TRIANGLES = [(0, 1, 4), (0, 4, 5), (1, 2, 3), (1, 3, 4), (0, 5, 6), (0, 6, 7)]
+
+
+def write_l_prism(
+    path,
+    offset=(0.03125, -0.015625, 0.0078125),
+    mirror_y=False,
+    section=L_SECTION,
+    triangles=None,
+):
+    """The prism of a section (its triangles: a fan from corner 0 unless
+    given), or its mirror image across the xz plane (y negated, each face
+    turned so that it still faces out)."""
+    n = len(section)
+    triangles = triangles or [(0, k, k + 1) for k in range(1, n - 1)]
+    sign = -1.0 if mirror_y else 1.0
+    vertices = [
+        (x + offset[0], sign * (y + offset[1]), z + offset[2])
+        for z in (0.0, L_HEIGHT)
+        for x, y in section
+    ]
+    faces = []
+    for a, b, c in triangles:
+        faces.append((a, c, b))  # bottom, facing -z
+        faces.append((n + a, n + b, n + c))  # top, facing +z
+    for k in range(n):
+        a, b = k, (k + 1) % n
+        faces += [(a, b, n + b), (a, n + b, n + a)]
+    if mirror_y:
+        faces = [(a, c, b) for a, b, c in faces]
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_obj(path, vertices, faces)
+
+
 def write_stl(path, corners):
     path.parent.mkdir(parents=True, exist_ok=True)
     data = bytearray(80) + struct.pack("<I", 12)

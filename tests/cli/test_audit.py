@@ -88,6 +88,8 @@ class Declared(AuditCase):
         result, out = audit(self.box_urdf("correct", self.correct_inertial()))
         self.assertEqual(result.returncode, 0, result.stdout)
         entry = link(out, "base")
+        rules = ["collision geometry at a uniform density: the declared mass"]
+        self.assertEqual(entry["computed"]["rules"], rules)
         self.assertEqual(entry["findings"], [])
         self.assertEqual(entry["geometry"], "collision")
         self.assert_computed(entry["computed"], fx.MASS, fx.centre(), fx.box_inertia(fx.MASS))
@@ -339,7 +341,7 @@ class Geometry(AuditCase):
         self.assert_computed(open_link["computed"], fx.MASS, fx.centre(), fx.box_inertia(fx.MASS))
         # A single quad has no volume to repair nor a hull: not a solid.
         self.assertEqual(kinds(link(out, "flat")), ["not_a_solid"])
-        self.assertIn("neither repaired nor its hull", link(out, "flat")["findings"][0]["message"])
+        self.assertIn("not measured: solid:", link(out, "flat")["findings"][0]["message"])
         self.assertIsNone(link(out, "flat")["computed"])
         self.assertEqual(kinds(link(out, "bare")), ["no_inertial"])
         self.assertEqual(link(out, "bare")["computed"]["density"], 1000)
@@ -457,9 +459,14 @@ class Mjcf(AuditCase):
         entry = link(out, "arm")
         self.assertEqual(out["format"], "mjcf")
         self.assertEqual(entry["findings"], [], result.stdout)
-        i = fx.box_inertia(fx.MASS)
+        # Computed as MuJoCo infers it: the geom at its density (1000).
+        mass = 1000 * fx.SIZE[0] * fx.SIZE[1] * fx.SIZE[2]
+        i = fx.box_inertia(mass)
         turned = [[i[0][0], 0, 0], [0, i[2][2], 0], [0, 0, i[1][1]]]
-        self.assert_computed(entry["computed"], fx.MASS, com, turned)
+        self.assert_computed(entry["computed"], mass, com, turned)
+        self.assertEqual(entry["mujoco_uses"], "declared")
+        self.assertEqual(len(entry["computed"]["rules"]), 1)
+        self.assertIn("mesh inertia legacy", entry["computed"]["rules"][0])
 
     def test_inertial_quat_turning_the_axes(self):
         directory = fresh("mjcf_quat")

@@ -25,8 +25,10 @@ struct Finding {
 
 enum class GeometrySource { kCollision, kVisual };
 
-// The link's geometry as one body, at the declared mass (or, without one, at
-// the density the audit was given).
+// The link's geometry as one body. URDF and SDFormat: at the declared mass
+// (or, without one, at the density the audit was given). MJCF: what MuJoCo's
+// compiler infers from the geoms (their densities and masses, the groups it
+// weighs, shells, the <compiler> rules), every mesh integrated exactly.
 struct Computed {
     double volume = 0.0;
     double mass = 0.0;
@@ -38,13 +40,26 @@ struct Computed {
     Eigen::Matrix3d principal_axes = Eigen::Matrix3d::Identity();  // columns
     Eigen::Vector3d box_min = Eigen::Vector3d::Zero();             // the geometry's bounding box
     Eigen::Vector3d box_max = Eigen::Vector3d::Zero();
+    std::vector<std::string> rules;  // which rules produced the numbers, in order
 };
 
 struct LinkAudit {
     std::string name;
-    const char* geometry = "none";  // "collision", "visual" or "none": what was measured
+    // What was measured: "collision", "visual", "weighed" (MJCF: the geoms
+    // MuJoCo weighs, visual or not) or "none".
+    const char* geometry = "none";
+    const char* mujoco_uses = nullptr;  // MJCF: "declared", "computed" or "none"
+    // Geometry that could not be measured: the link's mass is unknown.
+    bool unmeasured = false;
     std::optional<Inertial> declared;
     std::optional<Computed> computed;
+    // MJCF, when some of the body's meshes keep MuJoCo's default (legacy)
+    // inertia: what MuJoCo will use, those meshes weighed by that rule.
+    std::optional<Computed> mujoco_legacy;
+    // The geometry at the declared mass (its mass distribution kept), which
+    // the declared inertial is judged against and --fix writes; the same as
+    // computed for URDF and SDFormat.
+    std::optional<Computed> at_declared_mass;
     std::vector<Finding> findings;
 };
 

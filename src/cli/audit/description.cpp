@@ -49,11 +49,49 @@ void read_link_children(const pugi::xml_node& element, const InertialReader& rea
     }
 }
 
+namespace {
+
+bool ends_with(const std::string& text, const std::string& end) {
+    return text.size() >= end.size() &&
+           text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+// Whether a <robot> is xacro rather than URDF: its name says so, or it uses
+// xacro elements or ${...} expressions. (An expanded URDF often keeps the
+// xmlns:xacro declaration, which says nothing.)
+bool is_xacro(const std::string& path, const pugi::xml_node& root) {
+    if (ends_with(path, ".xacro")) return true;
+    struct Finder : pugi::xml_tree_walker {
+        bool found = false;
+        bool for_each(pugi::xml_node& node) override {
+            if (node.type() != pugi::node_element) return true;
+            found = std::strncmp(node.name(), "xacro:", 6) == 0;
+            for (const pugi::xml_attribute attribute : node.attributes()) {
+                found = found || std::strstr(attribute.value(), "${") != nullptr;
+            }
+            return !found;
+        }
+    } finder;
+    pugi::xml_node walked = root;
+    walked.traverse(finder);
+    return finder.found;
+}
+
+}  // namespace
+
 Description read_description(const std::string& path) {
     XmlFile file;
     load_xml(file, path);
     const pugi::xml_node root = file.document.document_element();
     Description description;
+    if (std::strcmp(root.name(), "robot") == 0 && is_xacro(path, root)) {
+        throw DescriptionError(path +
+                               ": a xacro file (macros and ${...} expressions), not a URDF: "
+                               "expand it first, e.g. `xacro " +
+                               path +
+                               " > robot.urdf` (ROS's xacro package, or pip install xacro), "
+                               "then audit robot.urdf");
+    }
     if (std::strcmp(root.name(), "robot") == 0) {
         description = parse_urdf(file);
     } else if (std::strcmp(root.name(), "sdf") == 0) {

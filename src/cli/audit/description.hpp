@@ -25,6 +25,22 @@ Pose compose(const Pose& parent, const Pose& child);
 
 enum class Shape { kMesh, kBox, kCylinder, kSphere, kCapsule, kEllipsoid };
 
+// How MuJoCo integrates a mesh asset (<mesh inertia>): legacy (its default:
+// every tetrahedron counted positive), exact, the convex hull, or the surface.
+enum class MeshInertia { kLegacy, kExact, kConvex, kShell };
+
+// How MuJoCo weighs an MJCF geom (URDF and SDFormat geometry keeps the
+// defaults, which the audit does not read for them).
+struct Weighing {
+    int group = 0;               // <geom group>, against inertiagrouprange
+    double density = 1000.0;     // kg/m^3 (kg/m^2 for a shell)
+    std::optional<double> mass;  // <geom mass>: the geom's mass, its density derived
+    bool shell = false;          // <geom shellinertia>: a primitive's surface
+    // The mesh asset's (MuJoCo's default is legacy; URDF and SDFormat meshes
+    // are weighed exactly).
+    MeshInertia mesh_inertia = MeshInertia::kExact;
+};
+
 struct Geometry {
     Shape shape = Shape::kMesh;
     Pose pose;  // in the link frame
@@ -36,6 +52,7 @@ struct Geometry {
     // Why the element cannot be read (a missing or malformed value), when it
     // cannot: the link's geometry is then unknown.
     std::string invalid;
+    Weighing weighing;
 };
 
 // Where an element sits in the description's text, for --fix: the bytes
@@ -68,15 +85,34 @@ struct Link {
     // page; empty when the description does not say (a pose relative to
     // another frame, a link no joint reaches from the root).
     std::optional<Pose> frame;
+    // MJCF: one of those is a geom MuJoCo weighs (a height field, a mesh
+    // without a file, a shape fitted to a mesh): the body's mass is unknown.
+    bool weighs_unmeasured = false;
+    // MJCF: the enclosing body's index in Description::links (-1: the
+    // world), and whether the body moves (has a joint).
+    int parent = -1;
+    bool moving = false;
 };
 
 enum class Format { kUrdf, kSdf, kMjcf };
+
+// MuJoCo's <compiler> settings for mass and inertia.
+struct MujocoCompiler {
+    enum class FromGeom { kFalse, kTrue, kAuto };
+    FromGeom inertia_from_geom = FromGeom::kAuto;
+    int group_low = 0, group_high = 5;  // inertiagrouprange
+    double settotalmass = -1.0;         // > 0: every body's mass scaled to add up to it
+    double boundmass = 0.0;             // each body's mass at least this
+    double boundinertia = 0.0;          // each principal moment at least this
+    bool balanceinertia = false;        // A + B < C: all three set to their mean
+};
 
 struct Description {
     Format format = Format::kUrdf;
     std::string path;
     std::string text;  // the file's bytes, which --fix edits
     std::vector<Link> links;
+    MujocoCompiler compiler;  // MJCF only
 };
 
 // A description that cannot be read: missing file, not XML, not one of the

@@ -1,17 +1,21 @@
 // MJCF (MuJoCo) with MuJoCo's semantics for what the audit needs:
 // - <compiler angle eulerseq meshdir assetdir> (angles in degrees unless
 //   angle="radian"; eulerseq "xyz" by default; mesh files under meshdir,
-//   else assetdir, else next to the model file);
+//   else assetdir, else next to the model file) and its mass settings
+//   (inertiafromgeom, inertiagrouprange, boundmass, boundinertia,
+//   balanceinertia, settotalmass), applied by audit/mujoco_inertia;
 // - <default> classes, nested (a class takes its parent's values), chosen
 //   by an element's class, else the nearest enclosing body's childclass,
 //   else the top class "main";
-// - <asset><mesh name file scale> (the name defaults to the file's name
-//   without its extension);
+// - <asset><mesh name file scale inertia> (the name defaults to the file's
+//   name without its extension; two meshes of one name are refused, as
+//   MuJoCo refuses them);
 // - every <body> of the <worldbody> is a link: its <inertial pos quat|euler
 //   |axisangle|xyaxes|zaxis mass diaginertia|fullinertia> and its geoms
-//   (type, size, pos, orientation, fromto, mesh), in the body's frame;
-//   geoms with contype and conaffinity both 0 are visual, the others
-//   collision;
+//   (type, size, pos, orientation, fromto, mesh), in the body's frame, with
+//   how MuJoCo weighs them (group, density, mass, shellinertia); geoms with
+//   contype and conaffinity both 0 are visual, the others collision (MuJoCo
+//   weighs both); a body with a <joint> or <freejoint> moves;
 // - <frame> elements (MuJoCo 3) placing the geoms and bodies in them;
 // - <include file> anywhere, its file's children taking its place
 //   (relative to the model file's directory); an inertial in an included file
@@ -80,7 +84,7 @@ public:
         });
         for_each_child(root, main_, 0, [&](const pugi::xml_node& node, const XmlFile& source) {
             if (std::string(node.name()) == "worldbody")
-                read_bodies(node, source, "main", 0, Pose{});
+                read_bodies(node, source, "main", 0, Pose{}, -1);
         });
         return std::move(description_);
     }
@@ -145,6 +149,52 @@ private:
         }
         if (const pugi::xml_attribute dir = node.attribute("meshdir")) meshdir_ = dir.value();
         if (const pugi::xml_attribute dir = node.attribute("assetdir")) assetdir_ = dir.value();
+        read_mass_settings(node, main_.path + ": <compiler>", description_.compiler);
+    }
+
+    static bool boolean(const std::string& text, const std::string& what) {
+        if (text != "true" && text != "false") {
+            throw DescriptionError(what + ": '" + text + "' is neither true nor false");
+        }
+        return text == "true";
+    }
+
+    static int integer(double value, const std::string& what) {
+        if (value != std::floor(value) || std::abs(value) > 1e9) {
+            throw DescriptionError(what + ": " + std::to_string(value) + " is not an integer");
+        }
+        return static_cast<int>(value);
+    }
+
+    static void read_mass_settings(const pugi::xml_node& node, const std::string& what,
+                                   MujocoCompiler& compiler) {
+        if (const pugi::xml_attribute from = node.attribute("inertiafromgeom")) {
+            const std::string value = from.value();
+            if (value == "auto") {
+                compiler.inertia_from_geom = MujocoCompiler::FromGeom::kAuto;
+            } else {
+                compiler.inertia_from_geom = boolean(value, what + " inertiafromgeom")
+                                                 ? MujocoCompiler::FromGeom::kTrue
+                                                 : MujocoCompiler::FromGeom::kFalse;
+            }
+        }
+        if (const pugi::xml_attribute range = node.attribute("inertiagrouprange")) {
+            const std::vector<double> v =
+                parse_numbers(range.value(), 2, what + " inertiagrouprange");
+            compiler.group_low = integer(v[0], what + " inertiagrouprange");
+            compiler.group_high = integer(v[1], what + " inertiagrouprange");
+        }
+        const auto number = [&](const char* name, double& value) {
+            if (const pugi::xml_attribute a = node.attribute(name)) {
+                value = parse_number(a.value(), what + " " + name);
+            }
+        };
+        number("settotalmass", compiler.settotalmass);
+        number("boundmass", compiler.boundmass);
+        number("boundinertia", compiler.boundinertia);
+        if (const pugi::xml_attribute balance = node.attribute("balanceinertia")) {
+            compiler.balanceinertia = boolean(balance.value(), what + " balanceinertia");
+        }
     }
 
     // A <default>: its class (the top one is "main") takes its parent's
@@ -240,13 +290,29 @@ private:
         }
         mesh.scale =
             vector(lookup(node, "scale", "main"), Eigen::Vector3d::Ones(), what + " scale");
-        meshes_[name] = mesh;
+        const std::string inertia = lookup(node, "inertia", "main");
+        if (inertia == "exact") {
+            mesh.inertia = MeshInertia::kExact;
+        } else if (inertia == "convex") {
+            mesh.inertia = MeshInertia::kConvex;
+        } else if (inertia == "shell") {
+            mesh.inertia = MeshInertia::kShell;
+        } else if (!inertia.empty() && inertia != "legacy") {
+            throw DescriptionError(what + " inertia: '" + inertia +
+                                   "' is none of legacy, exact, convex, shell");
+        }
+        if (!meshes_.emplace(name, mesh).second) {
+            throw DescriptionError(what + ": a second mesh named '" + name +
+                                   "' (MuJoCo refuses the model: names must be unique)");
+        }
     }
 
-    // frame: the parent body's frame in the world's, at zero joint
-    // positions (empty when a pos or orientation above cannot be read).
+    // The bodies in parent (a body, a frame or the worldbody), whose body
+    // is links[parent_link] (-1: the world); frame: the parent's frame in the
+    // world's, at zero joint positions (empty when a pos or orientation above
+    // cannot be read).
     void read_bodies(const pugi::xml_node& parent, const XmlFile& source, const std::string& cls,
-                     int depth, const std::optional<Pose>& frame) {
+                     int depth, const std::optional<Pose>& frame, int parent_link) {
         for_each_child(parent, source, depth, [&](const pugi::xml_node& node, const XmlFile& in) {
             const std::string name = node.name();
             if (name != "body" && name != "frame") return;
@@ -257,8 +323,12 @@ private:
                                        std::to_string(kDeepestBody) + " deep");
             }
             const std::optional<Pose> placed = placed_in(node, frame, child_class);
-            if (name == "body") read_body(node, in, child_class, depth, placed);
-            read_bodies(node, in, child_class, depth, placed);
+            int link = parent_link;
+            if (name == "body") {
+                read_body(node, in, child_class, depth, placed, parent_link);
+                link = static_cast<int>(description_.links.size()) - 1;
+            }
+            read_bodies(node, in, child_class, depth, placed, link);
             --body_depth_;
         });
     }
@@ -279,14 +349,17 @@ private:
     }
 
     void read_body(const pugi::xml_node& node, const XmlFile& source, const std::string& cls,
-                   int depth, const std::optional<Pose>& frame) {
+                   int depth, const std::optional<Pose>& frame, int parent_link) {
         Link link;
         link.frame = frame;
+        link.parent = parent_link;
         link.name = node.attribute("name").value();
         if (link.name.empty()) link.name = "body " + std::to_string(++unnamed_);
         const std::string what = "body '" + link.name + "'";
         for_each_child(node, source, depth, [&](const pugi::xml_node& child, const XmlFile& in) {
-            if (std::string(child.name()) != "inertial") return;
+            const std::string name = child.name();
+            if (name == "joint" || name == "freejoint") link.moving = true;
+            if (name != "inertial") return;
             try {
                 link.inertial = read_inertial(child, in, what + " <inertial>");
             } catch (const DescriptionError& error) {
@@ -386,6 +459,9 @@ private:
             geometry.pose.rotation = rotation_from_z_axis(to - from, what + " fromto");
             half_length = (to - from).norm() / 2;
         }
+        // MuJoCo gives a box or an ellipsoid along a fromto segment size[0]
+        // for both its half-widths.
+        const auto width = [&](std::size_t i) { return fromto.empty() ? half(i) : half(0); };
         if (type == "mesh") {
             const auto found = meshes_.find(mesh_name);
             if (found == meshes_.end()) {
@@ -393,15 +469,22 @@ private:
             }
             if (found->second.path.empty()) {
                 link.unsupported.push_back(what + ": mesh '" + mesh_name + "' has no file");
+                link.weighs_unmeasured = true;
                 return;
             }
             geometry.shape = Shape::kMesh;
             geometry.uri = found->second.path;
             geometry.scale = found->second.scale;
+            geometry.weighing.mesh_inertia = found->second.inertia;
+        } else if (!mesh_name.empty()) {
+            link.unsupported.push_back(what + ": a " + type + " fitted to mesh '" + mesh_name +
+                                       "' (MuJoCo's fitting is not one the audit reproduces)");
+            link.weighs_unmeasured = true;
+            return;
         } else if (type == "box") {
             geometry.shape = Shape::kBox;
             geometry.size =
-                2 * Eigen::Vector3d(half(0), half(1), fromto.empty() ? half(2) : half_length);
+                2 * Eigen::Vector3d(width(0), width(1), fromto.empty() ? half(2) : half_length);
         } else if (type == "cylinder" || type == "capsule") {
             geometry.shape = type == "cylinder" ? Shape::kCylinder : Shape::kCapsule;
             geometry.size = {half(0), 2 * (fromto.empty() ? half(1) : half_length), 0.0};
@@ -410,22 +493,52 @@ private:
             geometry.size = {half(0), 0.0, 0.0};
         } else if (type == "ellipsoid") {
             geometry.shape = Shape::kEllipsoid;
-            geometry.size = {half(0), half(1), fromto.empty() ? half(2) : half_length};
+            geometry.size = {width(0), width(1), fromto.empty() ? half(2) : half_length};
         } else {
             link.unsupported.push_back(what + ": type '" + type +
                                        "' is not a shape the audit measures");
+            // MuJoCo gives a plane no volume; a height field or an SDF weighs.
+            link.weighs_unmeasured = link.weighs_unmeasured || type != "plane";
             return;
         }
         geometry.pose.position = frame.rotation * geometry.pose.position + frame.position;
         geometry.pose.rotation = frame.rotation * geometry.pose.rotation;
+        read_weighing(node, cls, what, type == "mesh", geometry.weighing);
         const bool visual =
             lookup(node, "contype", cls) == "0" && lookup(node, "conaffinity", cls) == "0";
         (visual ? link.visual : link.collision).push_back(std::move(geometry));
     }
 
+    // The geom's group, density, mass and shellinertia (its class's, else
+    // MuJoCo's defaults).
+    void read_weighing(const pugi::xml_node& node, const std::string& cls, const std::string& what,
+                       bool mesh, Weighing& weighing) const {
+        if (const std::string group = lookup(node, "group", cls); !group.empty()) {
+            weighing.group = integer(parse_number(group, what + " group"), what + " group");
+        }
+        if (const std::string density = lookup(node, "density", cls); !density.empty()) {
+            weighing.density = parse_number(density, what + " density");
+        }
+        if (const std::string mass = lookup(node, "mass", cls); !mass.empty()) {
+            weighing.mass = parse_number(mass, what + " mass");
+        }
+        if (weighing.density < 0.0 || (weighing.mass && *weighing.mass < 0.0)) {
+            throw DescriptionError(what + ": a negative density or mass (MuJoCo refuses it)");
+        }
+        if (const std::string shell = lookup(node, "shellinertia", cls); !shell.empty()) {
+            weighing.shell = boolean(shell, what + " shellinertia");
+        }
+        if (weighing.shell && mesh) {
+            throw DescriptionError(what +
+                                   ": shellinertia on a mesh geom (MuJoCo wants "
+                                   "<mesh inertia=\"shell\"> instead)");
+        }
+    }
+
     struct Mesh {
         std::string path;  // relative to the model file's directory, or absolute
         Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+        MeshInertia inertia = MeshInertia::kLegacy;
     };
 
     const XmlFile& main_;

@@ -84,7 +84,10 @@ FixResult fix_description(const FileAudit& audit, const FixSettings& settings) {
             result.left.push_back(link.name + ": its <inertial> is not in this file");
             continue;
         }
-        const Computed& c = *link.computed;
+        // The geometry at the declared mass (for MJCF, before MuJoCo's
+        // bounds and total mass, which it applies to the file's inertials
+        // itself), else as computed.
+        const Computed& c = link.at_declared_mass ? *link.at_declared_mass : *link.computed;
         const double mass = settings.density ? *settings.density * c.volume : c.mass;
         // At a fixed geometry the inertia is proportional to the mass;
         // symmetric from the computed tensor's upper triangle.

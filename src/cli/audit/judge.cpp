@@ -8,7 +8,10 @@
 //   bounding box, a warning above 5 %, an error above 20 %; an error when it
 //   lies outside that box;
 // - implied density (declared mass / computed volume): outside 100 to
-//   25,000 kg/m^3 a warning, an error when a unit mix-up explains it.
+//   25,000 kg/m^3 a warning, an error when a unit mix-up explains it; below
+//   it with a mass of at most 1 g, a placeholder (a warning);
+// - a tensor whose principal moments are all k times the geometry's: lengths
+//   off by sqrt(k) said only when that is a ratio of length units.
 #include "audit/judge.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -29,22 +32,15 @@ constexpr double kAxisWarningDegrees = 5.0, kAxisErrorDegrees = 20.0;
 constexpr double kDistinctMoments = 0.05;
 constexpr double kComWarning = 0.05, kComError = 0.20;
 constexpr double kLightest = 100.0, kHeaviest = 25000.0;  // kg/m^3
+// A declared mass this small on a part that is not that light is a stand-in
+// (exporters write 1e-4 to 1e-8 kg for "no inertial").
+constexpr double kPlaceholderMass = 1e-3;  // kg
+// Ratios of the length units descriptions mix up: metre, centimetre,
+// millimetre, inch.
+constexpr double kUnitRatios[] = {10.0, 100.0, 1000.0, 2.54, 25.4, 1.0 / 0.0254};
 // Below this relative margin (a + b - c) / c the triangle inequality fails:
 // rounding of a tensor on the boundary (a thin plate) stays above it.
 constexpr double kTriangleTolerance = 1e-9;
-
-// Three significant digits (whole numbers from 100 %): enough to read a
-// difference by.
-std::string percent(double fraction) {
-    const double value = 100.0 * fraction;
-    OutputText text;
-    if (std::abs(value) >= 100.0)
-        text << std::fixed << std::setprecision(0);
-    else
-        text << std::setprecision(3);
-    text << value << " %";
-    return text.str();
-}
 
 std::string triple(const Eigen::Vector3d& v) {
     return readable_number(v[0]) + " " + readable_number(v[1]) + " " + readable_number(v[2]);
@@ -108,16 +104,24 @@ std::string inertia_hint(const Inertial& declared, const Eigen::Vector3d& declar
     }
     const Eigen::Vector3d ratios = declared_moments.cwiseQuotient(computed.principal_moments);
     const double factor = ratios.mean();
-    if ((ratios.array() - factor).abs().maxCoeff() <= 0.02 * factor) {
-        return "; every principal moment is " + readable_number(factor) +
-               " times the geometry's: lengths off by a factor " +
-               readable_number(std::sqrt(factor)) + " (a mesh scale not applied, or a unit mix-up)";
+    if ((ratios.array() - factor).abs().maxCoeff() > 0.02 * factor) return "";
+    const std::string same =
+        "; every principal moment is " + readable_number(factor) + " times the geometry's";
+    const double length = std::sqrt(factor);
+    for (const double unit : kUnitRatios) {
+        for (const double ratio : {unit, 1.0 / unit}) {
+            if (std::abs(std::log(length / ratio)) <= 0.02) {
+                return same + ": lengths off by a factor " + readable_number(length) +
+                       " (a mesh scale not applied, or a unit mix-up)";
+            }
+        }
     }
-    return "";
+    return same;
 }
 
-// The unit mix-up that brings density into the plausible range, or "".
-std::string density_hint(double density) {
+// The unit mix-up that brings density into the plausible range, or "";
+// those of a mesh's units only when there is a mesh.
+std::string density_hint(double density, bool has_mesh) {
     struct Explanation {
         double factor;  // the density it would have without the mix-up
         const char* text;
@@ -132,6 +136,7 @@ std::string density_hint(double density) {
     const char* best = nullptr;
     double best_distance = 0.0;
     for (const Explanation& explanation : explanations) {
+        if (!has_mesh && explanation.factor != 1e-3) continue;
         const double corrected = density * explanation.factor;
         if (corrected < kLightest || corrected > kHeaviest) continue;
         // Nearest, on a log scale, to 2000 kg/m^3 (plastics to aluminium).
@@ -145,6 +150,17 @@ std::string density_hint(double density) {
 }
 
 }  // namespace
+
+std::string percent(double fraction) {
+    const double value = 100.0 * fraction;
+    OutputText text;
+    if (std::abs(value) >= 100.0)
+        text << std::fixed << std::setprecision(0);
+    else
+        text << std::setprecision(3);
+    text << value << " %";
+    return text.str();
+}
 
 std::vector<Finding> judge_declared(const Inertial& declared) {
     std::vector<Finding> findings;
@@ -178,10 +194,19 @@ std::vector<Finding> judge_declared(const Inertial& declared) {
     return findings;
 }
 
-std::vector<Finding> judge_against_geometry(const Inertial& declared, const Computed& computed) {
+std::vector<Finding> judge_against_geometry(const Inertial& declared, const Computed& computed,
+                                            bool has_mesh) {
     std::vector<Finding> findings;
-    if (computed.density < kLightest || computed.density > kHeaviest) {
-        const std::string hint = density_hint(computed.density);
+    if (computed.density < kLightest && declared.mass <= kPlaceholderMass) {
+        findings.push_back(
+            {"placeholder_inertial", Severity::kWarning,
+             "declared mass " + readable_number(declared.mass) + " kg on a geometry of volume " +
+                 readable_number(computed.volume) + " (implied density " +
+                 readable_number(computed.density) +
+                 " kg/m^3): a placeholder, not the part's mass; simulators use it as it is "
+                 "(--fix --mass-from geometry writes the geometry's)"});
+    } else if (computed.density < kLightest || computed.density > kHeaviest) {
+        const std::string hint = density_hint(computed.density, has_mesh);
         findings.push_back(
             {"density_implausible", hint.empty() ? Severity::kWarning : Severity::kError,
              "implied density " + readable_number(computed.density) + " kg/m^3 (declared mass " +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "audit/mujoco_legacy.hpp"
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
 #include "library/solid_moments.hpp"
@@ -49,16 +50,92 @@ bool positive_finite(const Eigen::Vector3d& v, int count) {
     return true;
 }
 
-// A mesh that is not a valid solid, as the library's chain answers it:
-// repaired, else its convex hull (docs/repair.md), at unit density. Its
-// moments are written about its centre of mass from the mass properties:
-// there the first moments vanish and the second ones are
-// S = tr(I)/2 * 1 - I, since I = tr(S) * 1 - S. The message says what was
-// done and how far off it can be (or, when no mode answers, why).
-Measured measured_by_chain(const Library& library, polymass_options options, const Model& model) {
+// A cylinder (r, length h along z) or a capsule (its caps of radius r
+// beyond +-h/2) as a solid.
+polymass_moments round_solid(double r, double h, bool capsule) {
+    const double cylinder = kPi * r * r * h;
+    Eigen::Vector3d second(cylinder * r * r / 4, cylinder * r * r / 4, cylinder * h * h / 12);
+    double volume = cylinder;
+    if (capsule) {
+        // Two hemispheres, whole sphere about the axis; along it, each about
+        // its flat face moved to +-h/2 (docs/audit.md).
+        const double sphere = 4.0 / 3.0 * kPi * r * r * r;
+        volume += sphere;
+        second[0] += sphere * r * r / 5;
+        second[1] += sphere * r * r / 5;
+        second[2] += kPi * r * r * r * h * h / 3 + kPi * r * r * r * r * h / 2 +
+                     4.0 / 15.0 * kPi * r * r * r * r * r;
+    }
+    return centred_moments(volume, second);
+}
+
+// Their surfaces (MuJoCo's shellinertia; docs/audit.md): the side
+// 2 pi r h (int x^2 = A r^2 / 2, int z^2 = A h^2 / 12), then two discs
+// pi r^2 at z = +-h/2 (int x^2 = A r^2 / 4), or two hemispherical caps
+// whose flat faces are at +-h/2 (about the axis a sphere's A r^2 / 3;
+// along it A ((h/2)^2 + h r / 2 + r^2 / 3) for both).
+polymass_moments round_surface(double r, double h, bool capsule) {
+    const double side = 2 * kPi * r * h;
+    Eigen::Vector3d second(side * r * r / 2, side * r * r / 2, side * h * h / 12);
+    double area = side;
+    if (capsule) {
+        const double sphere = 4 * kPi * r * r;
+        area += sphere;
+        second[0] += sphere * r * r / 3;
+        second[1] += sphere * r * r / 3;
+        second[2] += sphere * (h * h / 4 + h * r / 2 + r * r / 3);
+    } else {
+        const double discs = 2 * kPi * r * r;
+        area += discs;
+        second[0] += discs * r * r / 4;
+        second[1] += discs * r * r / 4;
+        second[2] += discs * h * h / 4;
+    }
+    return centred_moments(area, second);
+}
+
+// A box's six faces (edges e): a face of area A across axis i, at
+// x_i = +-e_i/2, has int x_i^2 = A e_i^2 / 4 and int x_j^2 = A e_j^2 / 12.
+polymass_moments box_surface(const Eigen::Vector3d& e) {
+    double area = 0.0;
+    Eigen::Vector3d second = Eigen::Vector3d::Zero();
+    for (int i = 0; i < 3; ++i) {
+        const double face = 2 * e[(i + 1) % 3] * e[(i + 2) % 3];  // both faces across i
+        area += face;
+        for (int j = 0; j < 3; ++j) second[j] += face * e[j] * e[j] / (j == i ? 4.0 : 12.0);
+    }
+    return centred_moments(area, second);
+}
+
+// An ellipsoid's surface as MuJoCo weighs it, which has no closed form: the
+// area by Thomsen's approximation (p = 1.6075, within 1.1 %), the moments
+// those of the solid ellipsoid of radii + 1e-6 less the solid of radii,
+// at the density that gives that area's mass (docs/audit.md).
+polymass_moments mujoco_ellipsoid_surface(const Eigen::Vector3d& radii) {
+    const double p = 1.6075;
+    const double a = radii[0], b = radii[1], c = radii[2];
+    const double mean = (std::pow(a * b, p) + std::pow(b * c, p) + std::pow(c * a, p)) / 3;
+    const double area = 4 * kPi * std::pow(mean, 1 / p);
+    const Eigen::Vector3d grown = radii.array() + 1e-6;
+    const double inner = 4 * kPi * radii.prod() / 3;
+    const double outer = 4 * kPi * grown.prod() / 3;
+    const double density = area / (outer - inner);
+    const Eigen::Vector3d second =
+        density * (outer * grown.cwiseProduct(grown) - inner * radii.cwiseProduct(radii)) / 5;
+    return centred_moments(area, second);
+}
+
+// A mesh as the library's modes answer it, first answer first (docs/repair.md),
+// at unit density (a sheet: unit area density). Its moments are written
+// about its centre of mass from the mass properties: there the first
+// moments vanish and the second ones are S = tr(I)/2 * 1 - I, since
+// I = tr(S) * 1 - S. The message says what was done and how far off it can
+// be (or, when no mode answers, why).
+Measured measured_by_modes(const Library& library, polymass_options options, const Model& model,
+                           const std::vector<uint32_t>& modes) {
     std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
-    options.modes[0] = POLYMASS_MODE_REPAIR;
-    options.modes[1] = POLYMASS_MODE_HULL;
+    std::copy(modes.begin(), modes.end(), std::begin(options.modes));
+    options.shell_thickness = 1.0;
     const Part whole = combined_part(model);  // describe() points into it
     const polymass_mesh_desc desc = describe(model, whole);
     polymass_mass_properties p{};
@@ -69,7 +146,7 @@ Measured measured_by_chain(const Library& library, polymass_options options, con
     const int32_t status = polymass_mass_properties_with_provenance(
         &p, &provenance, library.context(), &desc, nullptr, &options);
     if (status != POLYMASS_OK) {
-        measured.message = "neither repaired nor its hull measured: " + library.message();
+        measured.message = "not measured: " + library.message();
         return measured;
     }
     measured.ok = true;
@@ -92,22 +169,50 @@ Measured measured_by_chain(const Library& library, polymass_options options, con
 
 }  // namespace
 
+MeshBody mesh_body(const Weighing& weighing) {
+    switch (weighing.mesh_inertia) {
+        case MeshInertia::kConvex:
+            return MeshBody::kHull;
+        case MeshInertia::kShell:
+            return MeshBody::kSurface;
+        case MeshInertia::kLegacy:
+        case MeshInertia::kExact:
+            break;
+    }
+    return MeshBody::kSolid;
+}
+
 Measured measure_mesh_file(const Library& library, const polymass_options& options,
-                           const std::string& path) {
+                           const std::string& path, MeshBody body, const Eigen::Vector3d& scale,
+                           bool legacy) {
     Model model;
     try {
         model = read_mesh_file(path, "");
     } catch (const ReadError& error) {
         return failure("unreadable_mesh", path + ": " + error.what());
     }
-    const IntegratedSolid solid(library, model, combined_part(model), options);
+    if (body == MeshBody::kSurface) {
+        // A surface's area does not follow a per-axis stretch of its moments:
+        // the vertices are scaled first (and a mirror needs no turning).
+        for (std::size_t v = 0; v < model.positions.size(); ++v) {
+            model.positions[v] *= scale[static_cast<int>(v % 3)];
+        }
+    }
     Measured measured;
-    if (solid.valid()) {
+    if (body != MeshBody::kSolid) {
+        measured = measured_by_modes(library, options, model,
+                                     {body == MeshBody::kHull ? uint32_t(POLYMASS_MODE_HULL)
+                                                              : uint32_t(POLYMASS_MODE_SHELL)});
+        if (!measured.ok) return failure("bad_geometry", path + ": " + measured.message);
+        measured.message.clear();  // the body asked for, exact: nothing to report
+    } else if (const IntegratedSolid solid(library, model, combined_part(model), options);
+               solid.valid()) {
         measured.moments = solid.moments(library);
     } else {
         const SolidResult why = solid.failure();
         const std::string not_a_solid = path + ": " + category_of(why.status) + ": " + why.message;
-        measured = measured_by_chain(library, options, model);
+        measured =
+            measured_by_modes(library, options, model, {POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL});
         if (!measured.ok) {
             return failure("not_a_solid", not_a_solid + "; " + measured.message);
         }
@@ -119,17 +224,30 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
         measured.points.emplace_back(model.positions[v], model.positions[v + 1],
                                      model.positions[v + 2]);
     }
+    if (legacy) {
+        measured.legacy_asked = true;
+        measured.legacy = mujoco_legacy_moments(model, scale);
+    }
+    if (body == MeshBody::kSurface) return measured;
+    const MomentsResult step = scaled(library, measured.moments, {scale[0], scale[1], scale[2]});
+    if (step.status != POLYMASS_OK) {
+        return failure("bad_geometry", path + ": cannot be scaled: " + step.message);
+    }
+    measured.moments = step.moments;
+    for (Eigen::Vector3d& point : measured.points) point = point.cwiseProduct(scale);
     return measured;
 }
 
 Measured measure_primitive(const Geometry& geometry) {
     const Eigen::Vector3d& s = geometry.size;
+    const bool surface = geometry.weighing.shell;
     Measured measured;
     switch (geometry.shape) {
         case Shape::kBox: {
             if (!positive_finite(s, 3)) break;
-            const double volume = s[0] * s[1] * s[2];
-            measured.moments = centred_moments(volume, volume * s.cwiseProduct(s) / 12.0);
+            measured.moments = surface
+                                   ? box_surface(s)
+                                   : centred_moments(s.prod(), s.prod() * s.cwiseProduct(s) / 12.0);
             measured.points = box_corners(s / 2);
             measured.ok = true;
             break;
@@ -140,7 +258,15 @@ Measured measure_primitive(const Geometry& geometry) {
                 geometry.shape == Shape::kSphere ? Eigen::Vector3d::Constant(s[0]) : s;
             if (!positive_finite(radii, 3)) break;
             const double volume = 4.0 / 3.0 * kPi * radii.prod();
-            measured.moments = centred_moments(volume, volume * radii.cwiseProduct(radii) / 5.0);
+            if (!surface) {
+                measured.moments =
+                    centred_moments(volume, volume * radii.cwiseProduct(radii) / 5.0);
+            } else if (geometry.shape == Shape::kSphere) {
+                const double area = 4 * kPi * s[0] * s[0];
+                measured.moments = centred_moments(area, area * radii.cwiseProduct(radii) / 3.0);
+            } else {
+                measured.moments = mujoco_ellipsoid_surface(radii);
+            }
             measured.points = box_corners(radii);
             measured.ok = true;
             break;
@@ -150,24 +276,9 @@ Measured measure_primitive(const Geometry& geometry) {
             const double r = s[0], h = s[1];
             if (!(std::isfinite(r) && r > 0.0 && std::isfinite(h) && h >= 0.0)) break;
             if (geometry.shape == Shape::kCylinder && !(h > 0.0)) break;
-            const double cylinder = kPi * r * r * h;
-            Eigen::Vector3d second(cylinder * r * r / 4, cylinder * r * r / 4,
-                                   cylinder * h * h / 12);
-            double volume = cylinder;
-            double half_height = h / 2;
-            if (geometry.shape == Shape::kCapsule) {
-                // Two hemispheres, whole sphere about the axis; along it,
-                // each about its flat face moved to +-h/2 (docs/audit.md).
-                const double sphere = 4.0 / 3.0 * kPi * r * r * r;
-                volume += sphere;
-                second[0] += sphere * r * r / 5;
-                second[1] += sphere * r * r / 5;
-                second[2] += kPi * r * r * r * h * h / 3 + kPi * r * r * r * r * h / 2 +
-                             4.0 / 15.0 * kPi * r * r * r * r * r;
-                half_height += r;
-            }
-            measured.moments = centred_moments(volume, second);
-            measured.points = box_corners({r, r, half_height});
+            const bool capsule = geometry.shape == Shape::kCapsule;
+            measured.moments = surface ? round_surface(r, h, capsule) : round_solid(r, h, capsule);
+            measured.points = box_corners({r, r, h / 2 + (capsule ? r : 0.0)});
             measured.ok = true;
             break;
         }
@@ -182,15 +293,9 @@ Measured measure_primitive(const Geometry& geometry) {
 
 namespace {
 
-// The geometry's body scaled (a mesh) and placed by its pose; a failure
-// when the library refuses a step (a result out of range).
+// The geometry's body placed by its pose; a failure when the library
+// refuses (a result out of range).
 Measured placed(const Library& library, const Geometry& geometry, Measured measured) {
-    MomentsResult step{POLYMASS_OK, {}, measured.moments};
-    if (geometry.shape == Shape::kMesh) {
-        step = scaled(library, step.moments,
-                      {geometry.scale[0], geometry.scale[1], geometry.scale[2]});
-        for (Eigen::Vector3d& point : measured.points) point = point.cwiseProduct(geometry.scale);
-    }
     std::array<double, 9> rotation{};
     for (int row = 0; row < 3; ++row) {
         for (int column = 0; column < 3; ++column) {
@@ -198,13 +303,19 @@ Measured placed(const Library& library, const Geometry& geometry, Measured measu
         }
     }
     const Eigen::Vector3d& t = geometry.pose.position;
-    if (step.status == POLYMASS_OK) {
-        step = transformed(library, step.moments, rotation, {t[0], t[1], t[2]});
-    }
+    const MomentsResult step = transformed(library, measured.moments, rotation, {t[0], t[1], t[2]});
     if (step.status != POLYMASS_OK) {
-        return failure("bad_geometry", "cannot be scaled or placed: " + step.message);
+        return failure("bad_geometry", "cannot be placed: " + step.message);
     }
     measured.moments = step.moments;
+    if (measured.legacy) {
+        const MomentsResult legacy =
+            transformed(library, *measured.legacy, rotation, {t[0], t[1], t[2]});
+        if (legacy.status != POLYMASS_OK) {
+            return failure("bad_geometry", "cannot be placed: " + legacy.message);
+        }
+        measured.legacy = legacy.moments;
+    }
     for (Eigen::Vector3d& point : measured.points) {
         point = geometry.pose.rotation * point + geometry.pose.position;
     }
@@ -224,7 +335,9 @@ Measured measure_geometry(const Library& library, const polymass_options& option
             return failure("bad_geometry",
                            geometry.uri + ": a mesh scale with a zero or non-finite factor");
         }
-        measured = measure_mesh_file(library, options, resolved.path);
+        measured = measure_mesh_file(library, options, resolved.path, mesh_body(geometry.weighing),
+                                     geometry.scale,
+                                     geometry.weighing.mesh_inertia == MeshInertia::kLegacy);
     } else {
         measured = measure_primitive(geometry);
     }

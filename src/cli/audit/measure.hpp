@@ -6,6 +6,7 @@
 #include <polymass/polymass.h>
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,16 +25,33 @@ struct Measured {
     // repaired or replaced by its hull): what was done and its bound.
     std::string kind;
     std::string message;
+    // A mesh whose MJCF asset keeps MuJoCo's default (legacy) inertia: the
+    // body that rule weighs (audit/mujoco_legacy), or nothing when MuJoCo
+    // refuses the mesh in that mode.
+    bool legacy_asked = false;
+    std::optional<polymass_moments> legacy;
 };
 
-// A mesh file in its own frame and units. A mesh that is not a valid solid
-// is measured as the library's modes answer it (repaired, else its convex
-// hull), the provenance and bound said.
+// What of a mesh is weighed: the solid it bounds, its convex hull, or its
+// surface as a sheet (unit area density).
+enum class MeshBody { kSolid, kHull, kSurface };
+
+// The body MuJoCo weighs for a mesh of this inertia mode (legacy weighs the
+// solid too, by its own rule: audit/mujoco_legacy); the solid for URDF and
+// SDFormat, whose weighing keeps the defaults.
+MeshBody mesh_body(const Weighing& weighing);
+
+// A mesh file in its own frame and units, stretched by scale per axis. A
+// mesh that is not a valid solid is measured as the library's modes answer
+// it (repaired, else its convex hull), the provenance and bound said. With
+// legacy, MuJoCo's legacy body too.
 Measured measure_mesh_file(const Library& library, const polymass_options& options,
-                           const std::string& path);
+                           const std::string& path, MeshBody body, const Eigen::Vector3d& scale,
+                           bool legacy);
 
 // A primitive shape in closed form (docs/audit.md), about its centre, its
-// axis along z: box, cylinder, sphere, capsule, ellipsoid.
+// axis along z: box, cylinder, sphere, capsule, ellipsoid; with
+// weighing.shell its surface, as MuJoCo weighs it (unit area density).
 Measured measure_primitive(const Geometry& geometry);
 
 // The geometry in the link frame: its mesh resolved (from the description's

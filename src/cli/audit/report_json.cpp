@@ -25,7 +25,8 @@ Json computed_json(const Computed& computed) {
                 {"density", json_number(computed.density)},
                 {"center_of_mass", vector_json(computed.center_of_mass)},
                 {"inertia", tensor_json(computed.inertia)},
-                {"principal_moments", vector_json(computed.principal_moments)}};
+                {"principal_moments", vector_json(computed.principal_moments)},
+                {"rules", computed.rules}};
 }
 
 Json file_json(const FileAudit& file) {
@@ -43,6 +44,8 @@ Json file_json(const FileAudit& file) {
         entry["geometry"] = link.geometry;
         entry["declared"] = link.declared ? declared_json(*link.declared) : Json();
         entry["computed"] = link.computed ? computed_json(*link.computed) : Json();
+        if (link.mujoco_uses != nullptr) entry["mujoco_uses"] = link.mujoco_uses;
+        if (link.mujoco_legacy) entry["mujoco_legacy"] = computed_json(*link.mujoco_legacy);
         Json findings = Json::array();
         for (const Finding& finding : link.findings) {
             findings.push_back({{"kind", finding.kind},

@@ -43,6 +43,11 @@ void write_audit_table(std::ostream& out, const std::vector<FileAudit>& files) {
                 write_row(out, "computed", link.computed->mass, link.computed->center_of_mass,
                           link.computed->principal_moments);
             }
+            if (link.mujoco_legacy) {
+                write_row(out, "legacy", link.mujoco_legacy->mass,
+                          link.mujoco_legacy->center_of_mass,
+                          link.mujoco_legacy->principal_moments);
+            }
             for (const Finding& finding : link.findings) {
                 out << "    " << severity_name(finding.severity) << ": " << finding.kind << ": "
                     << finding.message << '\n';

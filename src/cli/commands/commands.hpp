@@ -28,8 +28,9 @@ ExitCode run_assembly(const Arguments& arguments);
 // errors, warnings and notes on stderr; returns the highest exit status.
 ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& arguments);
 
-// How the reports label their numbers, from the command line.
-OutputSettings output_settings(const Arguments& arguments);
+// How the reports label their numbers: from the command line, and metres
+// when every file is Collada (its reader applies the <unit>).
+OutputSettings output_settings(const std::vector<FileReport>& files, const Arguments& arguments);
 
 // polymass audit FILE...: robot descriptions' inertials against their
 // geometry (exit 0, or 1 when a finding reaches --fail-on).

@@ -131,18 +131,30 @@ ExitCode run_properties(const Arguments& arguments) {
     }
     ExitCode worst = write_reports(files, arguments);
     if (!arguments.html.empty()) {
-        page.data()["report"] = json_document(files, output_settings(arguments));
+        page.data()["report"] = json_document(files, output_settings(files, arguments));
         page.data()["meshes"] = meshes;
         worst = std::max(worst, page.write(arguments.html));
     }
     return worst;
 }
 
-OutputSettings output_settings(const Arguments& arguments) {
+namespace {
+
+// The Collada reader applies the file's <unit> (its note says so).
+bool is_collada(const FileReport& file) { return file.readable && file.format == "dae"; }
+
+// Lengths are metres with --units, or when every file is Collada.
+bool lengths_in_metres(const std::vector<FileReport>& files, const Arguments& arguments) {
+    return arguments.metres_per_unit || std::all_of(files.begin(), files.end(), is_collada);
+}
+
+}  // namespace
+
+OutputSettings output_settings(const std::vector<FileReport>& files, const Arguments& arguments) {
     OutputSettings settings;
     settings.about = arguments.about;
     settings.point = arguments.point;
-    if (arguments.metres_per_unit) settings.length_unit = "m";
+    if (lengths_in_metres(files, arguments)) settings.length_unit = "m";
     settings.link_origin = arguments.link_origin;
     return settings;
 }
@@ -169,12 +181,15 @@ ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& ar
     }
     // The table labels its lengths "(file units)"; the machine outputs carry
     // bare numbers, so say it once.
-    if (!arguments.metres_per_unit && arguments.output != OutputFormat::kTable) {
-        std::cerr << "polymass: note: " << kFileUnitsNote
-                  << " (give the file's unit with --units)\n";
+    if (!lengths_in_metres(files, arguments) && arguments.output != OutputFormat::kTable) {
+        std::cerr << "polymass: note: " << kFileUnitsNote << " (give the file's unit with --units)"
+                  << (std::any_of(files.begin(), files.end(), is_collada)
+                          ? "; Collada files excepted: in metres, their <unit> applied"
+                          : "")
+                  << "\n";
     }
 
-    const OutputSettings settings = output_settings(arguments);
+    const OutputSettings settings = output_settings(files, arguments);
     switch (arguments.output) {
         case OutputFormat::kTable:
             write_table(std::cout, files, settings);

@@ -12,7 +12,7 @@ namespace polymass_cli {
 ExitCode run_command(const Arguments& arguments) {
     switch (arguments.command) {
         case Command::kHelp:
-            std::cout << help_text();
+            std::cout << arguments.help;
             return kExitOk;
         case Command::kVersion:
             std::cout << "polymass " << polymass_version_string() << '\n';
