@@ -121,9 +121,9 @@ class EveryFormat(Case):
         model = WORK / "msh_robot.xml"
         model.write_text(
             '<mujoco><asset><mesh file="bracket.msh"/></asset><worldbody><body name="b">'
-            '<geom type="mesh" mesh="bracket"/></body></worldbody></mujoco>'
+            '<geom type="mesh" mesh="bracket" density="1"/></body></worldbody></mujoco>'
         )
-        result = run("audit", model, "--json", "--density", 1)
+        result = run("audit", model, "--json")
         (link,) = json.loads(result.stdout)["links"]
         self.assertNotIn("unreadable_mesh", [f["kind"] for f in link["findings"]], result.stdout)
         self.assert_close(
