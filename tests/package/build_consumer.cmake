@@ -65,6 +65,21 @@ function(expect_needed program want) # want: TRUE if it must need libpolymass.so
     endif()
 endfunction()
 
+# The CMake consumers: configure (the command given), build, and run both
+# programs, the shared one linked to libpolymass.so and the static one not.
+function(configure_build_and_run) # configure command...
+    set(configure ${ARGN})
+    if(GENERATOR)
+        list(APPEND configure -G "${GENERATOR}")
+    endif()
+    run(${configure})
+    run("${CMAKE_COMMAND}" --build "${WORK_DIR}")
+    expect_needed("${WORK_DIR}/consumer_shared" TRUE)
+    expect_needed("${WORK_DIR}/consumer_static" FALSE)
+    run_consumer("${WORK_DIR}/consumer_shared")
+    run_consumer("${WORK_DIR}/consumer_static")
+endfunction()
+
 file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 
@@ -79,19 +94,12 @@ if(MODE STREQUAL "find_package")
         # Only the scratch prefix: never a polymass installed on the machine.
         -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
         -DCMAKE_FIND_USE_SYSTEM_PACKAGE_REGISTRY=OFF)
-    if(GENERATOR)
-        list(APPEND configure -G "${GENERATOR}")
-    endif()
-    run(${configure})
-    run("${CMAKE_COMMAND}" --build "${WORK_DIR}")
-    expect_needed("${WORK_DIR}/consumer_shared" TRUE)
-    expect_needed("${WORK_DIR}/consumer_static" FALSE)
-    run_consumer("${WORK_DIR}/consumer_shared")
-    run_consumer("${WORK_DIR}/consumer_static")
+    configure_build_and_run(${configure})
 
 elseif(MODE STREQUAL "add_subdirectory")
     # PREFIX is unused: the library is built from the checkout, in WORK_DIR.
     polymass_require_args(build_consumer.cmake CXX_COMPILER POLYMASS_SOURCE_DIR)
+    polymass_default_arg(BUILD_TYPE Debug)
     set(configure "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}"
         "-DPOLYMASS_SOURCE_DIR=${POLYMASS_SOURCE_DIR}"
         "-DCMAKE_C_COMPILER=${C_COMPILER}"
@@ -100,16 +108,9 @@ elseif(MODE STREQUAL "add_subdirectory")
         "-DCMAKE_CXX_FLAGS=${C_FLAGS}"
         "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}"
         "-DCMAKE_SHARED_LINKER_FLAGS=${LINK_FLAGS}"
-        -DCMAKE_BUILD_TYPE=Release)
-    if(GENERATOR)
-        list(APPEND configure -G "${GENERATOR}")
-    endif()
-    run(${configure})
-    run("${CMAKE_COMMAND}" --build "${WORK_DIR}")
-    expect_needed("${WORK_DIR}/consumer_shared" TRUE)
-    expect_needed("${WORK_DIR}/consumer_static" FALSE)
-    run_consumer("${WORK_DIR}/consumer_shared")
-    run_consumer("${WORK_DIR}/consumer_static")
+        # The parent's build type (Debug when it has none): compiles fastest.
+        "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+    configure_build_and_run(${configure})
 
 elseif(MODE STREQUAL "pkg_config")
     polymass_require_args(build_consumer.cmake PKG_CONFIG PKGCONFIGDIR LIBDIR)
