@@ -127,12 +127,14 @@ class EveryFormat(Case):
 
     def test_audit_measures_an_msh_mesh(self):
         # MuJoCo models name .msh meshes: the audit reads them as the tool does.
+        # The geom weighs as MuJoCo weighs it, by its own density (MuJoCo's
+        # default 1000, not --density): 1 here, so the mass is the volume.
         model = WORK / "msh_robot.xml"
         model.write_text(
             '<mujoco><asset><mesh file="bracket.msh"/></asset><worldbody><body name="b">'
-            '<geom type="mesh" mesh="bracket"/></body></worldbody></mujoco>'
+            '<geom type="mesh" mesh="bracket" density="1"/></body></worldbody></mujoco>'
         )
-        result = run("audit", model, "--json", "--density", 1)
+        result = run("audit", model, "--json")
         (link,) = json.loads(result.stdout)["links"]
         self.assertNotIn("unreadable_mesh", [f["kind"] for f in link["findings"]], result.stdout)
         self.assert_close(
