@@ -1214,6 +1214,19 @@ class Outputs(Case):
         self.assertTrue(any("file's units" in c for c in comments), comments)
         result = run("--urdf", "--units", "mm", self.path)
         self.assertNotIn("file's units", result.stderr + result.stdout)
+        # A 3MF declares its unit: in metres, no note, alone; beside the OBJ,
+        # only the OBJ's inertial says its lengths are the file's.
+        threemf = WORK / "outputs_bracket.3mf"
+        fixtures.write_3mf(threemf, self.vertices, self.faces)
+        result = run("--urdf", threemf)
+        self.assertNotIn("file's units", result.stderr + result.stdout)
+        groups = [[]]
+        for node in self.parse_xml(run("--urdf", threemf, self.path).stdout):
+            groups[-1].append(node)
+            if node.tag == "inertial":
+                groups.append([])
+        self.assertFalse(any("file's units" in c for c in self.comments(groups[0])), groups[0])
+        self.assertTrue(any("file's units" in c for c in self.comments(groups[1])), groups[1])
 
     def test_no_negative_zero_and_symmetric_tensors(self):
         # A cube centred on the origin, and the bracket turned and far away:
