@@ -140,7 +140,9 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
     app.add_option("--units", raw.units,
                    std::string("the file's length unit, converted to metres: ") + known_units() +
                        "\n(e.g. a CAD STL in millimetres: --units mm --density 2700\n"
-                       "gives kg, m and kg*m^2); without it, lengths are the file's")
+                       "gives kg, m and kg*m^2); without it, lengths are the file's;\n"
+                       "a file that declares its unit (3MF, Collada) is read in metres\n"
+                       "by that unit, --units not applied to it")
         ->group("Lengths")
         ->option_text("U");
     app.add_option("--scale", raw.scale, "multiply every coordinate by S (after --units)")
@@ -159,7 +161,8 @@ void add_options(CLI::App& app, RawOptions& raw, Arguments& arguments) {
     app.add_flag("--mjcf", raw.mjcf, "MuJoCo <inertial pos mass fullinertia>")->group(kOutput);
     app.add_flag("--usda", raw.usda,
                  "USD text layer: UsdPhysics rigid bodies with PhysicsMassAPI\n"
-                 "(32-bit floats; stage metersPerUnit/kilogramsPerUnit from --units)")
+                 "(32-bit floats; stage metersPerUnit/kilogramsPerUnit 1 when\n"
+                 "the lengths are metres: --units, or units the files declare)")
         ->group(kOutput);
     app.add_option("--html", arguments.html,
                    "also write a page that draws the result (one file that opens\n"

@@ -223,11 +223,12 @@ def write_glb(path, vertices, faces):
     path.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
 
 
-def write_3mf(path, vertices, faces, component=None, item=None):
+def write_3mf(path, vertices, faces, component=None, item=None, unit="millimeter"):
     """A 3MF of the solid: object 1 is its mesh. With component (a 3MF
     transform, "m00 m01 m02 m10 ... m32": rows of a 4x3 matrix applied to row
     vectors), object 2 holds object 1 as a component so placed and is the one
-    built; item is the build item's transform."""
+    built; item is the build item's transform. unit is the <model unit>
+    (None: no unit attribute, millimetres by the specification)."""
     vertex_xml = "".join('<vertex x="{!r}" y="{!r}" z="{!r}"/>'.format(*v) for v in vertices)
     triangle_xml = "".join(
         f'<triangle v1="{a}" v2="{b}" v3="{c}"/>' for a, b, c in triangles(faces)
@@ -241,9 +242,10 @@ def write_3mf(path, vertices, faces, component=None, item=None):
             f'<component objectid="1" transform="{component}"/></components></object>'
         )
     item_transform = f' transform="{item}"' if item is not None else ""
+    unit_attribute = f'unit="{unit}" ' if unit is not None else ""
     model = (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
-        '<model unit="millimeter" xml:lang="en-US" '
+        f'<model {unit_attribute}xml:lang="en-US" '
         'xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02">'
         '<resources><object id="1" type="model"><mesh>'
         f"<vertices>{vertex_xml}</vertices><triangles>{triangle_xml}</triangles>"

@@ -185,6 +185,51 @@ class Assembly(Case):
         body = box_body(Fraction(2), IDENTITY, [0, 0, 1], sides=[Fraction(s, 100) for s in SIDES])
         self.assert_body(out["parts"][1], body, "cm part")
 
+    def test_a_mesh_that_declares_its_unit(self):
+        # A 3MF in millimetres is read in metres: alone, the assembly is in
+        # metres without "units"; with "units" its own unit wins (never
+        # scaled twice), the note says so; beside a mesh without a unit and
+        # no "units", the lengths could not be added: an error naming both.
+        fixtures.write_3mf(ASSEMBLIES / "box_mm.3mf", box_vertices(SIDES), fixtures.cube()[1])
+        alone = {"parts": [{"mesh": "box_mm.3mf", "mass": 2, "translation": [0, 0, 1]}]}
+        result, out = test_cli.run_json("assembly", write_assembly("3mf.json", alone))
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["length_unit"], "m")
+        self.assert_close(out["volume"], 6e-9, 6e-9, "mm volume")
+        body = box_body(Fraction(2), IDENTITY, [0, 0, 1], sides=[Fraction(s, 1000) for s in SIDES])
+        self.assert_body(out, body, "3mf part")
+        self.assertIn(
+            'parts[0] "box_mm.3mf": lengths in metres (the file\'s unit: millimeter)',
+            out["notes"],
+        )
+        both = {
+            "parts": [
+                {"mesh": "box_mm.3mf", "units": "in", "density": 8000},
+                {"mesh": "meshes/box.obj", "units": "cm", "density": 8000},
+            ]
+        }
+        result, out = test_cli.run_json("assembly", write_assembly("3mf_units.json", both))
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["length_unit"], "m")
+        self.assert_close(out["parts"][0]["volume"], 6e-9, 6e-9, "3mf volume")
+        self.assert_close(out["parts"][1]["volume"], 6e-6, 6e-6, "cm volume")
+        self.assertIn(
+            'parts[0] "box_mm.3mf": "units" not applied: the mesh declares its unit', out["notes"]
+        )
+        mixed = {
+            "parts": [
+                {"mesh": "meshes/box.obj", "density": 1},
+                {"mesh": "box_mm.3mf", "density": 1},
+            ]
+        }
+        result, out = test_cli.run_json("assembly", write_assembly("3mf_mixed.json", mixed))
+        self.assertEqual(result.returncode, EXIT_UNREADABLE, result.stdout)
+        self.assertIn(
+            'parts[1] "box_mm.3mf": its mesh declares its unit (its lengths are metres) where '
+            'parts[0] "meshes/box.obj"\'s does not',
+            out["error"]["message"],
+        )
+
     def test_a_mirror_only_when_stated(self):
         mirror = {"matrix": [[-1, 0, 0], [0, 1, 0], [0, 0, 1]]}
         part = {"mesh": "cube.obj", "density": 1, "rotation": mirror, "mirror": True}

@@ -6,6 +6,7 @@ the Collada units note:
     POLYMASS_EXE=<polymass> POLYMASS_WORK_DIR=<scratch> python3 tests/cli/test_audit_rules.py
 """
 
+import json
 import math
 import sys
 import unittest
@@ -274,12 +275,34 @@ class ColladaUnits(unittest.TestCase):
         fx.write_dae(directory / "box.dae", fx.box_corners(), 0.001, "Z_UP")
         fx.write_stl(directory / "box.stl", fx.box_corners())
         alone = run(directory / "box.dae", "--json")
-        self.assertIn("lengths in metres (the file's <unit>)", alone.stderr)
+        self.assertIn("lengths in metres (the file's unit: u, 0.001 m)", alone.stderr)
         self.assertNotIn("not converted to metres", alone.stderr)
         self.assertIn("m^3", run(directory / "box.dae").stdout)
         mixed = run(directory / "box.dae", directory / "box.stl", "--json")
         self.assertIn("not converted to metres", mixed.stderr)
-        self.assertIn("Collada files excepted: in metres", mixed.stderr)
+        self.assertIn("files that declare their unit (3MF, Collada) excepted", mixed.stderr)
+        dae, stl = json.loads(mixed.stdout)["files"]
+        self.assertEqual(dae["length_unit"], "m")
+        self.assertNotIn("length_unit", stl)
+
+    def test_units_do_not_scale_a_collada_file_twice(self):
+        """--units is for files without a unit: a Collada file in millimetres
+        keeps its <unit> (a note says --units was not applied), an STL beside
+        it is converted."""
+        directory = fresh("collada_and_units")
+        fx.write_dae(directory / "box.dae", fx.box_corners(unit=0.001), 0.001, "Z_UP")
+        fx.write_stl(directory / "box.stl", fx.box_corners())
+        volume = math.prod(fx.SIZE)
+        result = run("--units", "in", directory / "box.dae", directory / "box.stl", "--json")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        dae, stl = json.loads(result.stdout)["files"]
+        # Collada is read in single precision: 2^-24 of each coordinate.
+        self.assertLessEqual(abs(dae["volume"] - volume), 1e-6 * volume)
+        self.assertIn("--units not applied: the file declares its unit", dae["notes"])
+        self.assertIn("--units not applied", result.stderr)
+        self.assertLessEqual(abs(stl["volume"] - volume * 0.0254**3), 1e-6 * volume * 0.0254**3)
+        self.assertNotIn("notes", stl)
+        self.assertEqual([dae["length_unit"], stl["length_unit"]], ["m", "m"])
 
 
 if __name__ == "__main__":

@@ -61,6 +61,13 @@ def scaled(expected, factor):
     }
 
 
+def in_metres(vertices, metres_per_unit):
+    """The vertices as a file that declares its unit is read: each coordinate
+    the double nearest the file's one times the double nearest the unit's
+    metres (one rounding, Python's as C's)."""
+    return [tuple(c * metres_per_unit for c in v) for v in vertices]
+
+
 class Case(unittest.TestCase):
     def assert_close(self, actual, expected, scale, what):
         self.assertLessEqual(
@@ -113,11 +120,15 @@ class EveryFormat(Case):
             with self.subTest(file=name):
                 result, out = run_json(WORK / name)
                 self.assertEqual(result.returncode, EXIT_OK, result.stderr)
-                self.assert_properties(out, self.expected, what=name)
+                # The 3MF declares millimetres: its lengths are read in metres.
+                factor = 1e-3 if name.endswith(".3mf") else 1.0
+                self.assert_properties(out, scaled(self.expected, factor), what=name)
                 self.assertEqual(out["warnings"], [])
 
     def test_audit_measures_an_msh_mesh(self):
         # MuJoCo models name .msh meshes: the audit reads them as the tool does.
+        # The geom weighs as MuJoCo weighs it, by its own density (MuJoCo's
+        # default 1000, not --density): 1 here, so the mass is the volume.
         model = WORK / "msh_robot.xml"
         model.write_text(
             '<mujoco><asset><mesh file="bracket.msh"/></asset><worldbody><body name="b">'
@@ -158,10 +169,10 @@ class EveryFormat(Case):
         placed = [(-y + 2 - 0.5, x + 3 + 0.25, z + 4 + 8) for x, y, z in self.vertices]
         self.assert_properties(
             out,
-            generate.exact_properties(placed, fixtures.triangles(self.faces)),
+            scaled(generate.exact_properties(placed, fixtures.triangles(self.faces)), 1e-3),
             what="components",
         )
-        self.assertEqual(out["notes"], ["the file declares its unit: millimeter"])
+        self.assertEqual(out["notes"], ["lengths in metres (the file's unit: millimeter)"])
 
     def test_3mf_decimals_are_read_in_double_precision(self):
         # Coordinates no 32-bit float holds, a thousand units out: the volume
@@ -172,8 +183,84 @@ class EveryFormat(Case):
         fixtures.write_3mf(path, placed, self.faces)
         result, out = run_json(path)
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
-        expected = generate.exact_properties(placed, fixtures.triangles(self.faces))
+        metres = in_metres(placed, 1e-3)
+        expected = generate.exact_properties(metres, fixtures.triangles(self.faces))
         self.assert_properties(out, expected, what="decimals")
+
+    def test_3mf_unit_is_applied(self):
+        # Every unit of the 3MF core specification, and none (millimetres by
+        # the specification): the lengths in metres, each coordinate placed
+        # in the file's unit, then times the unit's metres (in_metres): the
+        # exact properties of those coordinates to RTOL. The bracket is turned
+        # and moved far out, so a factor applied to the translation alone, or
+        # twice, shows. (Against the decimal metres themselves, far out, each
+        # coordinate's rounding is 2^-52 of 3 m on a body of 1 mm: 1e-12 of
+        # it, the most a double of the metres can do.)
+        item = "0 1 0 -1 0 0 0 0 1 1000.5 -2000.25 3000"
+        placed = [(-y + 1000.5, x - 2000.25, z + 3000) for x, y, z in self.vertices]
+        for unit, factor, named in (
+            ("micron", 1e-6, "micron"),
+            ("millimeter", 1e-3, "millimeter"),
+            ("centimeter", 1e-2, "centimeter"),
+            ("inch", 0.0254, "inch"),
+            ("foot", 0.3048, "foot"),
+            ("meter", 1.0, "meter"),
+            (None, 1e-3, "millimeter, 3MF's default"),
+        ):
+            with self.subTest(unit=unit):
+                path = WORK / f"unit_{unit}.3mf"
+                fixtures.write_3mf(path, self.vertices, self.faces, item=item, unit=unit)
+                result, out = run_json(path)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                exact = generate.exact_properties(
+                    in_metres(placed, factor), fixtures.triangles(self.faces)
+                )
+                self.assert_properties(out, exact, what=str(unit))
+                self.assertEqual(out["length_unit"], "m")
+                self.assertEqual(out["notes"], [f"lengths in metres (the file's unit: {named})"])
+                self.assertNotIn("not converted to metres", result.stderr)
+        # The table labels metres too.
+        self.assertIn("m^3", run(WORK / "unit_inch.3mf").stdout)
+
+    def test_units_do_not_apply_to_a_file_that_declares_its_own(self):
+        # --units is for the files without a unit: the 3MF keeps its
+        # millimetres (never scaled twice) and says --units was not applied,
+        # the OBJ beside it is read in inches.
+        path = WORK / "declared_mm.3mf"
+        fixtures.write_3mf(path, self.vertices, self.faces)
+        result, out = run_json("--units", "in", path, WORK / "bracket.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        threemf, obj = out["files"]
+        self.assert_properties(threemf, scaled(self.expected, 1e-3), what="3mf --units in")
+        self.assertEqual(
+            threemf["notes"],
+            [
+                "lengths in metres (the file's unit: millimeter)",
+                "--units not applied: the file declares its unit",
+            ],
+        )
+        self.assertIn("--units not applied", result.stderr)
+        self.assert_properties(obj, scaled(self.expected, 0.0254), what="obj --units in")
+        self.assertNotIn("notes", obj)
+        self.assertEqual([f["length_unit"] for f in out["files"]], ["m", "m"])
+
+    def test_a_declared_unit_beside_a_file_without_one(self):
+        # Without --units the OBJ's lengths are its own and the 3MF's metres:
+        # the outputs are not labelled metres, and the note says which are.
+        path = WORK / "declared_mm.3mf"
+        fixtures.write_3mf(path, self.vertices, self.faces)
+        result, out = run_json(path, WORK / "bracket.obj")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        self.assertEqual(out["files"][0]["length_unit"], "m")
+        self.assertNotIn("length_unit", out["files"][1])
+        self.assertIn("not converted to metres", result.stderr)
+        self.assertIn("files that declare their unit (3MF, Collada) excepted", result.stderr)
+        self.assert_properties(out["files"][0], scaled(self.expected, 1e-3), what="3mf")
+        self.assert_properties(out["files"][1], self.expected, what="obj")
+        # The table labels each file's lengths as they are.
+        table = run(path, WORK / "bracket.obj").stdout
+        self.assertIn("m^3", table.split("bracket.obj")[0])
+        self.assertIn("(file units)", table.split("bracket.obj")[1])
 
     def test_error_bound_contains_the_error(self):
         result, out = run_json(WORK / "bracket.obj")
@@ -798,8 +885,8 @@ class BadInput(Case):
         fixtures.write_3mf_package(path, model(tetrahedron, unit="inch"))
         result, out = run_json(path)
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
-        self.assertEqual(out["volume"], 1 / 6)
-        self.assertEqual(out["notes"], ["the file declares its unit: inch"])
+        self.assert_close(out["volume"], 0.0254**3 / 6, 0.0254**3 / 6, "inch volume")
+        self.assertEqual(out["notes"], ["lengths in metres (the file's unit: inch)"])
         component = '<object id="{}"><components><component objectid="{}"{}/></components></object>'
         for name, content, message in [
             ("cycle", model(component.format(1, 1, "")), "object 1: a component names object 1"),
@@ -1127,6 +1214,19 @@ class Outputs(Case):
         self.assertTrue(any("file's units" in c for c in comments), comments)
         result = run("--urdf", "--units", "mm", self.path)
         self.assertNotIn("file's units", result.stderr + result.stdout)
+        # A 3MF declares its unit: in metres, no note, alone; beside the OBJ,
+        # only the OBJ's inertial says its lengths are the file's.
+        threemf = WORK / "outputs_bracket.3mf"
+        fixtures.write_3mf(threemf, self.vertices, self.faces)
+        result = run("--urdf", threemf)
+        self.assertNotIn("file's units", result.stderr + result.stdout)
+        groups = [[]]
+        for node in self.parse_xml(run("--urdf", threemf, self.path).stdout):
+            groups[-1].append(node)
+            if node.tag == "inertial":
+                groups.append([])
+        self.assertFalse(any("file's units" in c for c in self.comments(groups[0])), groups[0])
+        self.assertTrue(any("file's units" in c for c in self.comments(groups[1])), groups[1])
 
     def test_no_negative_zero_and_symmetric_tensors(self):
         # A cube centred on the origin, and the bracket turned and far away:

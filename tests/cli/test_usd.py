@@ -8,7 +8,7 @@ tool's own answer (polymass --json) to float precision: the mass, the centre
 of mass, and the tensor about the centre of mass rebuilt from the quaternion
 and the diagonal as R diag R^T, for a rotated part, a part far from the
 origin, a file of several parts and an assembly; the stage's units as
---units says.
+--units or the file's declared unit says.
 """
 
 import json
@@ -118,6 +118,20 @@ def test_the_bracket_and_the_stage_units(tmp_path):
     assert not stage.HasAuthoredMetadata("metersPerUnit")
     assert not stage.HasAuthoredMetadata("kilogramsPerUnit")
     assert "--units" in stderr
+    assert_prim_is(only_prim(stage), solid)
+
+
+def test_a_file_that_declares_its_unit(tmp_path):
+    # A 3MF in millimetres is read in metres: the stage says so without --units.
+    vertices, faces = fixtures.bracket()
+    mesh = tmp_path / "bracket.3mf"
+    fixtures.write_3mf(mesh, vertices, faces)
+    solid = json.loads(run("--json", mesh, "--density", 2700).stdout)
+    assert solid["length_unit"] == "m"
+    stage, stderr = layer(tmp_path, mesh, "--density", 2700)
+    assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0
+    assert UsdPhysics.GetStageKilogramsPerUnit(stage) == 1.0
+    assert "not converted to metres" not in stderr
     assert_prim_is(only_prim(stage), solid)
 
 

@@ -33,9 +33,10 @@ SolidResult failure(int32_t status, std::string message) {
     return result;
 }
 
-// The part's moments through each step, stopping at the first refusal.
+// The part's moments through each step, stopping at the first refusal;
+// factor is the metres per unit of the model's lengths.
 PlacedPart place_part(const Library& library, const Model& model, const AssemblyPart& part,
-                      const Arguments& arguments) {
+                      double factor, const Arguments& arguments) {
     PlacedPart placed;
     const Part whole = combined_part(model);
     placed.report.name = part.name;
@@ -55,7 +56,6 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
         placed.report.result = own;
         return placed;
     }
-    const double factor = part.metres_per_unit.value_or(1.0);
     MomentsResult step{POLYMASS_OK, {}, solid.moments(library)};
     if (factor != 1.0) step = scaled(library, step.moments, {factor, factor, factor});
     polymass_mass_desc material = unit;
@@ -84,6 +84,10 @@ FileReport assembly_report(const Library& library, const std::string& path,
     double surface_area = 0.0;
     uint32_t warnings = 0;
     SolidResult broken;  // the first part that is not a valid solid
+    // A mesh that declares its unit (3MF, Collada) is read in metres: the
+    // first part whose mesh does, and the first whose mesh does not.
+    const AssemblyPart* declares = nullptr;
+    const AssemblyPart* declares_none = nullptr;
     for (const AssemblyPart& part : assembly.parts) {
         Model model;
         try {
@@ -93,9 +97,18 @@ FileReport assembly_report(const Library& library, const std::string& path,
             return report;
         }
         if (arguments.triangulate) triangulate_model(model);
+        // The declared unit is the mesh's truth: "units" is for meshes
+        // that declare none, and never scales a length twice.
+        double factor = part.metres_per_unit.value_or(1.0);
+        if (!model.declared_unit.empty()) {
+            if (part.metres_per_unit)
+                model.notes.push_back("\"units\" not applied: the mesh declares its unit");
+            factor = 1.0;
+        }
+        (model.declared_unit.empty() ? declares_none : declares) = &part;
         for (const std::string& note : model.notes)
             report.notes.push_back(part.where + ": " + note);
-        PlacedPart placed = place_part(library, model, part, arguments);
+        PlacedPart placed = place_part(library, model, part, factor, arguments);
         const SolidResult& result = placed.report.result;
         if (result.status == POLYMASS_OK) {
             bodies.push_back(placed.moments);
@@ -106,7 +119,18 @@ FileReport assembly_report(const Library& library, const std::string& path,
         }
         report.parts.push_back(std::move(placed.report));
     }
+    // Without "units" (given for every part or none), a part in metres and
+    // one in its file's unit cannot be added.
+    if (!assembly.in_metres && declares != nullptr && declares_none != nullptr) {
+        report.read_error = path + ": " + declares->where +
+                            ": its mesh declares its unit (its lengths are metres) where " +
+                            declares_none->where +
+                            "'s does not: give every part's \"units\" (the results are then "
+                            "in metres)";
+        return report;
+    }
     report.readable = true;
+    report.in_metres = assembly.in_metres || declares_none == nullptr;
     if (assembly.parts.size() > 1) report.notes.push_back(kNotCheckedNote);
     report.solid.name = "assembly";
     report.solid.material = common_material(report.parts);
@@ -134,12 +158,9 @@ FileReport assembly_report(const Library& library, const std::string& path,
 ExitCode run_assembly(const Arguments& arguments) {
     const Library library(options_for(arguments));
     const std::string& path = arguments.files.front();
-    Arguments settings = arguments;
     FileReport report;
     try {
         const Assembly assembly = read_assembly_file(path);
-        // The results are in metres when the parts give their units.
-        if (assembly.in_metres) settings.metres_per_unit = 1.0;
         report = assembly_report(library, path, assembly, arguments);
     } catch (const AssemblyError& error) {
         report.path = path;
@@ -147,7 +168,7 @@ ExitCode run_assembly(const Arguments& arguments) {
     }
     for (const std::string& note : report.notes)
         std::cerr << "polymass: " << path << ": note: " << note << '\n';
-    return write_reports({report}, settings);
+    return write_reports({report}, arguments);
 }
 
 }  // namespace polymass_cli

@@ -29,7 +29,7 @@ ExitCode run_assembly(const Arguments& arguments);
 ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& arguments);
 
 // How the reports label their numbers: from the command line, and metres
-// when every file is Collada (its reader applies the <unit>).
+// when every file's lengths are (FileReport::in_metres).
 OutputSettings output_settings(const std::vector<FileReport>& files, const Arguments& arguments);
 
 // polymass audit FILE...: robot descriptions' inertials against their
@@ -39,8 +39,8 @@ ExitCode run_audit(const Arguments& arguments);
 // The library options the command line asks for.
 polymass_options options_for(const Arguments& arguments);
 
-// What the command line asks done to a model once read: --units and --scale,
-// --triangulate.
+// What the command line asks done to a model once read: --units (unless the
+// file declares its unit: a note says so) and --scale, --triangulate.
 void prepare_model(Model& model, const Arguments& arguments);
 
 }  // namespace polymass_cli

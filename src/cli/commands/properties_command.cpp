@@ -45,6 +45,7 @@ FileReport process_file(const Library& library, const std::string& path, const A
     prepare_model(model, arguments);
     report.readable = true;
     report.format = model.format;
+    report.in_metres = !model.declared_unit.empty();
     report.notes = model.notes;
     for (const std::string& note : model.notes) {
         std::cerr << "polymass: " << path << ": note: " << note << '\n';
@@ -78,7 +79,14 @@ Located capped_holes(const polymass_provenance& provenance) {
 }  // namespace
 
 void prepare_model(Model& model, const Arguments& arguments) {
-    scale_model(model, arguments.metres_per_unit.value_or(1.0) * arguments.scale);
+    // A unit the file declares is its truth, applied by its reader: --units
+    // is for the files that declare none, and never scales a length twice.
+    double metres_per_unit = arguments.metres_per_unit.value_or(1.0);
+    if (!model.declared_unit.empty() && arguments.metres_per_unit) {
+        model.notes.push_back("--units not applied: the file declares its unit");
+        metres_per_unit = 1.0;
+    }
+    scale_model(model, metres_per_unit * arguments.scale);
     if (arguments.triangulate) triangulate_model(model);
 }
 
@@ -140,12 +148,12 @@ ExitCode run_properties(const Arguments& arguments) {
 
 namespace {
 
-// The Collada reader applies the file's <unit> (its note says so).
-bool is_collada(const FileReport& file) { return file.readable && file.format == "dae"; }
+bool in_metres(const FileReport& file) { return file.readable && file.in_metres; }
 
-// Lengths are metres with --units, or when every file is Collada.
+// Lengths are metres with --units, or when every file's are (each declares
+// its unit).
 bool lengths_in_metres(const std::vector<FileReport>& files, const Arguments& arguments) {
-    return arguments.metres_per_unit || std::all_of(files.begin(), files.end(), is_collada);
+    return arguments.metres_per_unit || std::all_of(files.begin(), files.end(), in_metres);
 }
 
 }  // namespace
@@ -183,8 +191,9 @@ ExitCode write_reports(const std::vector<FileReport>& files, const Arguments& ar
     // bare numbers, so say it once.
     if (!lengths_in_metres(files, arguments) && arguments.output != OutputFormat::kTable) {
         std::cerr << "polymass: note: " << kFileUnitsNote << " (give the file's unit with --units)"
-                  << (std::any_of(files.begin(), files.end(), is_collada)
-                          ? "; Collada files excepted: in metres, their <unit> applied"
+                  << (std::any_of(files.begin(), files.end(), in_metres)
+                          ? "; files that declare their unit (3MF, Collada) excepted: in "
+                            "metres, that unit applied"
                           : "")
                   << "\n";
     }

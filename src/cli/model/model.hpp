@@ -26,6 +26,11 @@ struct Model {
     std::string format;  // "obj", "stl", "ply", "off", "msh", "gltf", "glb", "3mf", "dae"
     std::vector<double> positions;  // x, y, z of each vertex
     std::vector<Part> parts;        // at least one
+    // The length unit the file declares (3MF's <model unit>, Collada's
+    // <unit>), which its reader applied: the positions are then in metres and
+    // --units does not apply. Empty for the formats that declare none: the
+    // positions are in the file's own, unknown unit.
+    std::string declared_unit;
     // What the reader must tell the user about the numbers (a unit the file
     // declares, a precision it cannot keep), printed with the results.
     std::vector<std::string> notes;

@@ -2,10 +2,10 @@
 // assimp, which reads the geometry and node transforms in single precision.
 // The asset's <unit meter> and <up_axis> are applied here in double precision
 // (assimp's own unit scaling is a float factor, 0.001 off in its 8th digit):
-// lengths in metres, and the file's up axis along +Z, as robot descriptions
-// and the simulators reading Collada for them (RViz, Gazebo) have it: a Z_UP
-// file stays as written, a Y_UP one is turned by +90 degrees about X, an X_UP
-// one by -90 degrees about Y.
+// lengths in metres (Model::declared_unit), and the file's up axis along +Z,
+// as robot descriptions and the simulators reading Collada for them (RViz,
+// Gazebo) have it: a Z_UP file stays as written, a Y_UP one is turned by +90
+// degrees about X, an X_UP one by -90 degrees about Y.
 //
 // Every node of the scene with meshes is a part, its vertices moved by the
 // node's transform accumulated from the root (in double precision); polygon
@@ -31,8 +31,9 @@ namespace polymass_cli {
 namespace {
 
 // The file's <unit meter> and <up_axis> as one transform (Collada's
-// defaults: 1 metre, Y_UP); a value that is neither is a ReadError.
-Transform asset_transform(std::string_view bytes) {
+// defaults: 1 metre, Y_UP); a value that is neither is a ReadError. unit_text
+// is set to the unit as the file gives it, for the notes.
+Transform asset_transform(std::string_view bytes, std::string& unit_text) {
     pugixml_allocates_with_new();
     pugi::xml_document document;
     if (!document.load_buffer(bytes.data(), bytes.size()))
@@ -44,6 +45,13 @@ Transform asset_transform(std::string_view bytes) {
         throw ReadError("<unit meter='" + valid_utf8(meter.value()) +
                         "'> is not a positive length");
     }
+    const pugi::xml_attribute name = asset.child("unit").attribute("name");
+    if (!meter)
+        unit_text = "meter, Collada's default";
+    else if (name)
+        unit_text = valid_utf8(name.value()) + ", " + valid_utf8(meter.value()) + " m";
+    else
+        unit_text = valid_utf8(meter.value()) + " m";
     const std::string up = asset.child("up_axis") ? asset.child("up_axis").text().get() : "Y_UP";
     if (up == "Z_UP") return {unit, 0, 0, 0, 0, unit, 0, 0, 0, 0, unit, 0};
     if (up == "Y_UP") return {unit, 0, 0, 0, 0, 0, -unit, 0, 0, unit, 0, 0};
@@ -104,7 +112,8 @@ void append_node(Model& model, const aiScene& scene, const aiNode& node, const T
 }  // namespace
 
 Model read_collada(std::string_view document) {
-    const Transform placement = asset_transform(document);
+    std::string unit;
+    const Transform placement = asset_transform(document, unit);
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     // Only the geometry: no post-processing that would change the faces. The
@@ -117,9 +126,10 @@ Model read_collada(std::string_view document) {
     }
     Model model;
     append_node(model, *scene, *scene->mRootNode, placement, 0);
+    model.declared_unit = unit;
     model.notes.push_back(
-        "Collada: lengths in metres (the file's <unit>), its up axis along +Z; coordinates "
-        "and transforms as assimp reads them, in single precision (7 significant digits)");
+        "Collada: its up axis along +Z; coordinates and transforms as assimp reads them, in "
+        "single precision (7 significant digits)");
     return model;
 }
 

@@ -82,6 +82,7 @@ std::string serialize(const Model& model) {
     Writer out;
     out.value(Outcome::kModel);
     out.text(model.format);
+    out.text(model.declared_unit);
     out.array(model.positions);
     out.value<uint64_t>(model.parts.size());
     for (const Part& part : model.parts) {
@@ -99,6 +100,7 @@ Model deserialize(const std::string& data) {
     if (in.value<Outcome>() == Outcome::kReadError) throw ReadError(in.text());
     Model model;
     model.format = in.text();
+    model.declared_unit = in.text();
     model.positions = in.array<double>();
     model.parts.resize(in.value<uint64_t>());
     for (Part& part : model.parts) {

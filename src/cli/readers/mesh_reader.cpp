@@ -101,6 +101,10 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
         throw ReadError("unknown format '" + name + "' (known: " + supported_formats() + ")");
     }
     model.format = name;
+    // One note for every format that declares its unit, first among them.
+    if (!model.declared_unit.empty())
+        model.notes.insert(model.notes.begin(),
+                           "lengths in metres (the file's unit: " + model.declared_unit + ")");
     check_faces_match_indices(model);
     check_face_sizes(model);
     model.parts.erase(std::remove_if(model.parts.begin(), model.parts.end(),

@@ -7,7 +7,8 @@
 //
 // The package's root relationships (_rels/.rels) name the model part (the
 // relationship of type .../3dmanufacturing/2013/01/3dmodel). Its <model
-// unit> is reported in a note; its <resources> hold <object>s, each a
+// unit> (millimeter when absent) is applied: lengths in metres, as Collada's
+// <unit> is (Model::declared_unit). Its <resources> hold <object>s, each a
 // <mesh> (<vertices><vertex x y z/>..., <triangles><triangle v1 v2 v3/>...)
 // or <components> (<component objectid transform/>...) naming objects
 // defined before it (the specification's rule, which also rules out cycles);
@@ -17,6 +18,15 @@
 // triangles' corners reversed so the solid stays outside-out. A transform
 // is 12 numbers m00 m01 m02 m10 m11 m12 m20 m21 m22 m30 m31 m32 acting on row
 // vectors: (x y z 1) times the 4x3 matrix.
+//
+// The unit is applied last, each coordinate placed in the file's unit times
+// the unit's metres in one rounding: a coordinate a millimetre file writes
+// as 12.5 becomes the double nearest 12.5 times the double nearest 0.001,
+// within an ulp of the exact metres (a decimal factor has no exact binary
+// form). Folding the factor into the composed transforms would round it
+// into each of their 12 numbers and change how the translation's sum
+// rounds; applied last, the coordinates in the file's unit stay exactly
+// those read before, and the metres are one multiplication from them.
 //
 // Hostile packages: a zip bomb is refused by the sizes its central directory
 // declares, before anything is inflated; a part read is never larger than its
@@ -310,14 +320,22 @@ Model read_3mf(std::string_view bytes) {
     if (!root) fail(valid_utf8(name) + " has no <model>");
 
     Model model;
-    static const char* const kUnits[] = {"micron", "millimeter", "centimeter",
-                                         "inch",   "foot",       "meter"};
-    const std::string unit = root.attribute("unit") ? root.attribute("unit").value() : "millimeter";
-    if (std::find(std::begin(kUnits), std::end(kUnits), unit) == std::end(kUnits))
+    // Metres per unit, each the exact definition (the inch and the foot
+    // since 1959) rounded once to a double.
+    static const struct {
+        const char* name;
+        double metres;
+    } kUnits[] = {{"micron", 1e-6}, {"millimeter", 1e-3}, {"centimeter", 1e-2},
+                  {"inch", 0.0254}, {"foot", 0.3048},     {"meter", 1.0}};
+    const pugi::xml_attribute unit_attribute = root.attribute("unit");
+    const std::string unit = unit_attribute ? unit_attribute.value() : "millimeter";
+    const auto known = std::find_if(std::begin(kUnits), std::end(kUnits),
+                                    [&](const auto& candidate) { return unit == candidate.name; });
+    if (known == std::end(kUnits))
         fail("<model unit='" + valid_utf8(unit) +
              "'> is none of micron, millimeter, "
              "centimeter, inch, foot, meter");
-    model.notes.push_back("the file declares its unit: " + unit);
+    model.declared_unit = unit_attribute ? unit : unit + ", 3MF's default";
 
     ModelReader reader(model);
     reader.collect(root.child("resources"));
@@ -332,6 +350,7 @@ Model read_3mf(std::string_view bytes) {
         reader.add_object(part, id, transform_of(item, where), 0);
         if (!part.face_sizes.empty()) model.parts.push_back(std::move(part));
     }
+    scale_model(model, known->metres);
     return model;
 }
 

@@ -33,6 +33,10 @@ struct FileReport {
     std::vector<PartReport> parts;   // each part, when the file has more than one
     double read_seconds = 0.0;
     double compute_seconds = 0.0;
+    // Its lengths are metres whatever --units says: the file declares its
+    // unit (Model::declared_unit); an assembly's parts all give their
+    // "units", or all their meshes declare theirs.
+    bool in_metres = false;
 
     ExitCode exit_code() const;
 };
@@ -41,9 +45,15 @@ struct FileReport {
 struct OutputSettings {
     About about = About::kCenterOfMass;
     std::array<double, 3> point{0.0, 0.0, 0.0};
-    std::string length_unit;  // "m" after --units, else empty (the file's unit)
+    // "m" when every file's lengths are metres (--units, or units the files
+    // declare), else empty: the file's unit (see length_unit_of).
+    std::string length_unit;
     std::array<double, 3> link_origin{0.0, 0.0, 0.0};  // --origin (XML outputs)
 };
+
+// The file's lengths' unit: the settings', or metres when the file's are
+// (a 3MF or Collada file among files without a unit).
+std::string length_unit_of(const FileReport& file, const OutputSettings& settings);
 
 void write_table(std::ostream& out, const std::vector<FileReport>& files,
                  const OutputSettings& settings);

@@ -12,6 +12,10 @@ ExitCode FileReport::exit_code() const {
     return exit_code_of(solid.result.status);
 }
 
+std::string length_unit_of(const FileReport& file, const OutputSettings& settings) {
+    return file.in_metres ? "m" : settings.length_unit;
+}
+
 Summary summarize(const std::vector<FileReport>& files) {
     Summary summary;
     summary.files = files.size();

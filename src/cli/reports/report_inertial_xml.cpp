@@ -113,7 +113,7 @@ void write_inertial_xml(std::ostream& out, const std::vector<FileReport>& files,
         for (const std::string& note : file.notes) add_comment(document, "note: " + note);
         if (!file.solid.material.empty())
             add_comment(document, "material: " + material_text(file.solid));
-        if (settings.length_unit.empty()) add_comment(document, kFileUnitsNote);
+        if (length_unit_of(file, settings).empty()) add_comment(document, kFileUnitsNote);
         std::array<double, 3> origin{};
         for (int k = 0; k < 3; ++k) origin[k] = p.center_of_mass[k] - settings.link_origin[k];
         const std::array<double, 9> inertia = symmetric_tensor(p.inertia);

@@ -97,7 +97,8 @@ Json file_object(const FileReport& file, const OutputSettings& settings) {
         return object;
     }
     object["format"] = file.format;
-    if (!settings.length_unit.empty()) object["length_unit"] = settings.length_unit;
+    const std::string length_unit = length_unit_of(file, settings);
+    if (!length_unit.empty()) object["length_unit"] = length_unit;
     if (!file.notes.empty()) object["notes"] = file.notes;
     add_solid_members(object, file.solid, settings);
     if (!file.parts.empty()) {

@@ -101,11 +101,13 @@ void write_table(std::ostream& out, const std::vector<FileReport>& files,
         if (!file.parts.empty()) out << ", " << file.parts.size() << " parts, combined";
         out << ")\n";
         for (const std::string& note : file.notes) out << "  note: " << note << '\n';
-        write_solid(out, file.solid, settings);
+        OutputSettings file_settings = settings;
+        file_settings.length_unit = length_unit_of(file, settings);
+        write_solid(out, file.solid, file_settings);
         for (const PartReport& part : file.parts) {
             out << "\n part '" << part.name << "'\n";
             if (part.computed) {
-                write_solid(out, part, settings);
+                write_solid(out, part, file_settings);
             } else {
                 write_row(out, "vertices, faces",
                           std::to_string(part.vertices) + ", " + std::to_string(part.faces));

@@ -257,11 +257,13 @@ bool write_usda(std::ostream& out, std::ostream& diagnostics, const std::vector<
                    "the tensor about the centre of mass is R diag(physics:diagonalInertia) R^T, "
                    "R the rotation of physics:principalAxes (w, x, y, z), its columns the "
                    "principal axes");
-    writer.comment("", settings.length_unit.empty()
-                           ? std::string(kFileUnitsNote) +
-                                 ": metersPerUnit and kilogramsPerUnit are left unset (give the "
-                                 "file's unit with --units)"
-                           : "lengths in metres, masses in kilograms (--units)");
+    writer.comment("",
+                   settings.length_unit.empty()
+                       ? std::string(kFileUnitsNote) +
+                             ": metersPerUnit and kilogramsPerUnit are left unset (give the "
+                             "file's unit with --units)"
+                       : "lengths in metres (--units, or the unit each file declares), masses in "
+                         "kilograms");
     bool written = true;
     for (size_t k = 0; k < files.size(); ++k) {
         const FileReport& file = files[k];
