@@ -1062,6 +1062,67 @@ class Check(Case):
         self.assertEqual(result.returncode, EXIT_OK, result.stderr)
         self.assertNotEqual(out["provenance"]["mode"], "solid")
 
+    def test_check_judges_parts_as_computing_does(self):
+        # polymass check judges a file of several parts part by part, as
+        # polymass FILE does: the same verdict, the same exit status.
+        cases = (
+            ("stacked.obj", ((0, 0, 1), (1, 1, 2)), None),
+            ("half_on.obj", ((0.5, 0, 1), (1.5, 1, 2)), None),
+            ("crossing_parts.obj", ((0.5, 0.5, 0.5), (1.5, 1.5, 1.5)), "intersecting"),
+            ("nested_parts.obj", ((0.25, 0.25, 0.25), (0.75, 0.75, 0.75)), "intersecting"),
+        )
+        for name, second, category in cases:
+            path = self.objects(name, ((0, 0, 0), (1, 1, 1)), second)
+            computed, out = run_json(path)
+            checked = run("check", "--json", path)
+            self.assertEqual(checked.returncode, computed.returncode, name)
+            report = json.loads(checked.stdout)
+            self.assertEqual(report["valid"], category is None, name)
+            self.assertEqual(report["shells"], 2, name)
+            if category is None:
+                self.assertEqual(out["warnings"], ["touching_faces"], name)
+                self.assertGreater(report["touching_face_pairs"]["count"], 0, name)
+                self.assertEqual(report["non_manifold_edges"]["count"], 0, name)
+                self.assertEqual(report["answer"], {"mode": "solid"}, name)
+            else:
+                self.assertEqual(report["category"], out["error"]["category"], name)
+        # The crossing pair is located as in the file: a face of the first
+        # object (faces 0-5, shell 0) and one of the second (6-11, shell 1).
+        report = json.loads(run("check", "--json", WORK / "crossing_parts.obj").stdout)
+        pairs = report["intersecting_face_pairs"]
+        self.assertGreater(pairs["count"], 0)
+        for (low, high), shells in zip(pairs["first_pairs"], pairs["first_pair_shells"]):
+            self.assertLess(low, 6)
+            self.assertGreaterEqual(high, 6)
+            self.assertEqual(shells, [0, 1])
+        self.assertEqual(report["overlapping_shells"]["count"], 0)
+        report = json.loads(run("check", "--json", WORK / "nested_parts.obj").stdout)
+        self.assertEqual(report["overlapping_shells"]["first_shells"], [1])
+
+    def test_check_judges_parts_sharing_vertices_apart(self):
+        # The second object stands on the first's top corners, using the
+        # file's vertices 4 to 7 as its bottom: welded as one surface those
+        # edges would be used by four faces; judged apart, the second part
+        # has its own copies, and the parts touch.
+        cube_vertices, cube_faces = fixtures.cube()
+        vertices = cube_vertices + [(x, y, z + 1) for x, y, z in cube_vertices if z]
+        second = [k + 4 for k in range(8)]  # its bottom the file's 4-7, its top 8-11
+        lines = [f"v {x} {y} {z}" for x, y, z in vertices] + ["o first"]
+        lines += ["f " + " ".join(str(i + 1) for i in f) for f in cube_faces]
+        lines.append("o second")
+        lines += ["f " + " ".join(str(second[i] + 1) for i in f) for f in cube_faces]
+        path = WORK / "sharing_parts.obj"
+        path.write_text("\n".join(lines) + "\n")
+        computed, out = run_json(path)
+        self.assertEqual(computed.returncode, EXIT_OK, computed.stderr)
+        self.assertEqual(out["volume"], 2.0)
+        checked = run("check", "--json", path)
+        self.assertEqual(checked.returncode, EXIT_OK, checked.stdout)
+        report = json.loads(checked.stdout)
+        self.assertEqual(report["non_manifold_edges"]["count"], 0)
+        self.assertGreater(report["touching_face_pairs"]["count"], 0)
+        self.assertEqual([s["kind"] for s in report["shell_list"]], ["solid", "solid"])
+
     def test_exact_parts_give_the_same_bits_whatever_the_fallback(self):
         # The bracket and a copy moved by (3.3, 0, 1.7): integrated as one
         # surface the whole differed from the parts' sum in its last digits.

@@ -2,16 +2,21 @@
 // first few locations (vertex numbers are 0-based positions in the file's
 // vertex list, shown with their coordinates; face pairs with the shells the
 // faces are in), and the shells as the library judges them: a solid, a
-// cavity, inside out, overlapping another, or without volume.
+// cavity, inside out, overlapping another, or without volume. A file of
+// several parts is judged part by part, as polymass FILE judges it.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "commands/commands.hpp"
+#include "commands/parts_report.hpp"
 #include "library/categories.hpp"
+#include "library/parts_apart.hpp"
 #include "library/solid.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/html_mesh.hpp"
@@ -225,14 +230,37 @@ Json json_report(const std::string& path, const Model& model, const CheckResult&
     return report;
 }
 
-// Which mode answers the file: the options' chain (the solid alone by
+// Which mode answers the file, as polymass FILE answers it (a file of
+// several parts part by part): the options' chain (the solid alone by
 // default), or else the option that would.
-SolidResult answer_of(const Library& library, const Model& model, const Part& part) {
+SolidResult answer_of(const Library& library, const std::string& path, const Model& model,
+                      const Arguments& arguments) {
     polymass_mass_desc unit{};
     unit.struct_size = sizeof unit;
     unit.mass_mode = POLYMASS_MASS_FROM_DENSITY;
     unit.density = 1.0;
-    return compute_solid(library, model, part, unit);
+    if (model.parts.size() == 1) return compute_solid(library, model, model.parts.front(), unit);
+    FileReport report;
+    report_parts(library, path, model, arguments, unit, report);
+    SolidResult answer = report.solid.result;
+    if (answer.status == POLYMASS_OK) return answer;
+    // Refused: a chain of modes would answer the whole as one surface
+    // (parts_report), so that surface says which option would answer.
+    const SolidResult whole = compute_solid(library, model, combined_part(model), unit);
+    answer.answering_option = whole.answering_option;
+    answer.answering_provenance = whole.answering_provenance;
+    return answer;
+}
+
+// A file of several parts is judged as polymass FILE judges it: when every
+// part is a solid by itself, its parts apart (each welded by itself, none
+// sharing a vertex with another) against each other, so that parts resting
+// on each other touch and are not non-manifold; else as one welded surface.
+std::optional<PartsApart> judged_apart(const Library& library, const Model& model,
+                                       const Arguments& arguments) {
+    if (model.parts.size() == 1 || !all_solid_as_given(parts_alone(library, model, arguments)))
+        return std::nullopt;
+    return parts_apart(library, model);
 }
 
 std::string answer_text(const SolidResult& answer) {
@@ -302,15 +330,23 @@ ExitCode run_check(const Arguments& arguments) {
         }
         prepare_model(model, arguments);
         const Part all = combined_part(model);
-        const CheckResult check = check_solid(library, model, all);
-        std::vector<uint32_t> shell_of_face = shell_of_each_face(library, model, all);
+        const std::optional<PartsApart> apart = judged_apart(library, model, arguments);
+        // The parts apart are already welded; their faces are the file's,
+        // in its order, and their vertices are renumbered as in the file.
+        const Library unwelded(unwelded_options(library));
+        const Library& judge = apart ? unwelded : library;
+        const Model& surface = apart ? apart->model : model;
+        const Part& judged = apart ? apart->model.parts.front() : all;
+        CheckResult check = check_solid(judge, surface, judged);
+        if (apart) apart->to_file_vertices(check.diagnostics);
+        std::vector<uint32_t> shell_of_face = shell_of_each_face(judge, surface, judged);
         const uint64_t shell_count =
             shell_of_face.empty()
                 ? 0
                 : uint64_t(*std::max_element(shell_of_face.begin(), shell_of_face.end())) + 1;
         const ShellView shells{std::move(shell_of_face),
-                               shell_list(library, model, all, shell_count)};
-        const SolidResult answer = answer_of(library, model, all);
+                               shell_list(judge, surface, judged, shell_count)};
+        const SolidResult answer = answer_of(library, path, model, arguments);
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json || html) {
             reports.push_back(json_report(path, model, check, shells));

@@ -142,18 +142,13 @@ CheckResult check_between_parts(const Library& library, const Model& model) {
 
 }  // namespace
 
-void report_parts(const Library& library, const std::string& path, const Model& model,
-                  const Arguments& arguments, const polymass_mass_desc& file_mass,
-                  FileReport& report) {
-    const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
-    const Part whole = combined_part(model);  // every part's indices, copied once
-    const bool by_chain = arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID};
-    const polymass_options options = options_for(arguments);
+std::vector<IntegratedSolid> parts_alone(const Library& library, const Model& model,
+                                         const Arguments& arguments) {
     // Each part judged alone as an exact solid, whatever the chain, so that
     // a whole of exact parts gets the same bits with --fallback as without.
-    // The check between the parts (below) sees every part's faces: each part
-    // is judged without it.
-    polymass_options part_options = options;
+    // The check between the parts sees every part's faces: each part is
+    // judged without it.
+    polymass_options part_options = options_for(arguments);
     part_options.flags |= POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     std::fill(std::begin(part_options.modes), std::end(part_options.modes),
               uint32_t(POLYMASS_MODE_NONE));
@@ -161,10 +156,25 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     std::vector<IntegratedSolid> solids;
     solids.reserve(model.parts.size());
     for (const Part& part : model.parts) solids.emplace_back(library, model, part, part_options);
+    return solids;
+}
+
+bool all_solid_as_given(const std::vector<IntegratedSolid>& solids) {
+    return std::all_of(solids.begin(), solids.end(),
+                       [](const IntegratedSolid& s) { return s.valid_as_given(); });
+}
+
+void report_parts(const Library& library, const std::string& path, const Model& model,
+                  const Arguments& arguments, const polymass_mass_desc& file_mass,
+                  FileReport& report) {
+    const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
+    const Part whole = combined_part(model);  // every part's indices, copied once
+    const bool by_chain = arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID};
+    const polymass_options options = options_for(arguments);
+    const std::vector<IntegratedSolid> solids = parts_alone(library, model, arguments);
 
     report.solid = counted(model, whole);
-    if (!std::all_of(solids.begin(), solids.end(),
-                     [](const IntegratedSolid& s) { return s.valid_as_given(); })) {
+    if (!all_solid_as_given(solids)) {
         if (by_chain) {
             report_by_chain(library, model, whole, masses, file_mass, report);
         } else {

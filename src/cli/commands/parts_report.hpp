@@ -10,9 +10,11 @@
 #include <polymass/polymass.h>
 
 #include <string>
+#include <vector>
 
 #include "arguments.hpp"
 #include "library/solid.hpp"
+#include "library/solid_moments.hpp"
 #include "model/model.hpp"
 #include "reports/report.hpp"
 
@@ -25,5 +27,16 @@ namespace polymass_cli {
 void report_parts(const Library& library, const std::string& path, const Model& model,
                   const Arguments& arguments, const polymass_mass_desc& file_mass,
                   FileReport& report);
+
+// Each part of model validated and integrated by itself, as an exact solid
+// and without the intersection check (the check between the parts does it).
+std::vector<IntegratedSolid> parts_alone(const Library& library, const Model& model,
+                                         const Arguments& arguments);
+
+// Whether every part is a valid solid by itself as given (not inside out):
+// then the parts are judged against each other apart (library/parts_apart),
+// each welded by itself; else the file is judged as one welded surface (a
+// closed surface split into parts by material, a cavity exported as a part).
+bool all_solid_as_given(const std::vector<IntegratedSolid>& solids);
 
 }  // namespace polymass_cli

@@ -64,6 +64,18 @@ uint64_t PartsApart::file_vertex_of(uint64_t v) const {
     return v < file_count ? v : file_vertex[v - file_count];
 }
 
+void PartsApart::to_file_vertices(polymass_diagnostics& d) const {
+    for (auto* edges :
+         {&d.first_open_edges, &d.first_non_manifold_edges, &d.first_misoriented_edges}) {
+        for (auto& edge : *edges) {
+            for (uint64_t& v : edge)
+                if (v != POLYMASS_NONE) v = file_vertex_of(v);
+        }
+    }
+    for (uint64_t& v : d.first_non_finite_vertices)
+        if (v != POLYMASS_NONE) v = file_vertex_of(v);
+}
+
 std::optional<PartsApart> parts_apart(const Library& library, const Model& model) {
     PartsApart apart;
     apart.model.format = model.format;

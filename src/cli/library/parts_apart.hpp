@@ -29,6 +29,9 @@ struct PartsApart {
 
     // The file's number of vertex v of model.
     uint64_t file_vertex_of(uint64_t v) const;
+    // The vertices a check of model names (edges' ends, non-finite
+    // vertices) renumbered as in the file; faces and shells keep theirs.
+    void to_file_vertices(polymass_diagnostics& diagnostics) const;
 };
 
 // Empty when a part cannot be welded (indices out of range; with a weld
