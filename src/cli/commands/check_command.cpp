@@ -331,14 +331,16 @@ ExitCode run_check(const Arguments& arguments) {
         prepare_model(model, arguments);
         const Part all = combined_part(model);
         const std::optional<PartsApart> apart = judged_apart(library, model, arguments);
-        // The parts apart are already welded; their faces are the file's,
-        // in its order, and their vertices are renumbered as in the file.
+        // The parts apart are already welded; their faces are the file's, in
+        // its order. They are judged apart only when each part is a solid by
+        // itself, so the check of the whole can name faces and shells only
+        // (crossing, touching, nested), never an edge or a vertex, whose
+        // numbers the copies do not keep.
         const Library unwelded(unwelded_options(library));
         const Library& judge = apart ? unwelded : library;
         const Model& surface = apart ? apart->model : model;
         const Part& judged = apart ? apart->model.parts.front() : all;
         CheckResult check = check_solid(judge, surface, judged);
-        if (apart) apart->to_file_vertices(check.diagnostics);
         std::vector<uint32_t> shell_of_face = shell_of_each_face(judge, surface, judged);
         const uint64_t shell_count =
             shell_of_face.empty()

@@ -1,8 +1,10 @@
 #include "library/parts_apart.hpp"
 
+#include <cstdint>
 #include <limits>
 #include <new>
 #include <stdexcept>
+#include <vector>
 
 namespace polymass_cli {
 namespace {
@@ -59,23 +61,6 @@ bool welded_corners(const Library& library, const Model& model, const Part& part
 
 }  // namespace
 
-uint64_t PartsApart::file_vertex_of(uint64_t v) const {
-    const uint64_t file_count = model.vertex_count() - file_vertex.size();
-    return v < file_count ? v : file_vertex[v - file_count];
-}
-
-void PartsApart::to_file_vertices(polymass_diagnostics& d) const {
-    for (auto* edges :
-         {&d.first_open_edges, &d.first_non_manifold_edges, &d.first_misoriented_edges}) {
-        for (auto& edge : *edges) {
-            for (uint64_t& v : edge)
-                if (v != POLYMASS_NONE) v = file_vertex_of(v);
-        }
-    }
-    for (uint64_t& v : d.first_non_finite_vertices)
-        if (v != POLYMASS_NONE) v = file_vertex_of(v);
-}
-
 std::optional<PartsApart> parts_apart(const Library& library, const Model& model) {
     PartsApart apart;
     apart.model.format = model.format;
@@ -104,7 +89,6 @@ std::optional<PartsApart> parts_apart(const Library& library, const Model& model
                 if (copy >= kUnset) throw std::length_error("more than 2^32 - 1 vertices");
                 copy_of[v] = uint32_t(copy);
                 copied.push_back(v);
-                apart.file_vertex.push_back(v);
                 apart.model.positions.insert(apart.model.positions.end(),
                                              &model.positions[3 * size_t(v)],
                                              &model.positions[3 * size_t(v)] + 3);

@@ -9,9 +9,7 @@
 // cross or nest as intersecting.
 #pragma once
 
-#include <cstdint>
 #include <optional>
-#include <vector>
 
 #include "library/solid.hpp"
 #include "model/model.hpp"
@@ -23,15 +21,6 @@ struct PartsApart {
     // too; one part holding every part's faces, in the file's order (so the
     // faces keep the numbers they have in combined_part).
     Model model;
-    // The file's number of each copied vertex: vertex v >= the file's vertex
-    // count is a copy of file_vertex[v - that count].
-    std::vector<uint32_t> file_vertex;
-
-    // The file's number of vertex v of model.
-    uint64_t file_vertex_of(uint64_t v) const;
-    // The vertices a check of model names (edges' ends, non-finite
-    // vertices) renumbered as in the file; faces and shells keep theirs.
-    void to_file_vertices(polymass_diagnostics& diagnostics) const;
 };
 
 // Empty when a part cannot be welded (indices out of range; with a weld
