@@ -234,14 +234,14 @@ Json json_report(const std::string& path, const Model& model, const CheckResult&
 // several parts part by part): the options' chain (the solid alone by
 // default), or else the option that would.
 SolidResult answer_of(const Library& library, const std::string& path, const Model& model,
-                      const Arguments& arguments) {
+                      const Arguments& arguments, const std::optional<JudgedParts>& parts) {
     polymass_mass_desc unit{};
     unit.struct_size = sizeof unit;
     unit.mass_mode = POLYMASS_MASS_FROM_DENSITY;
     unit.density = 1.0;
-    if (model.parts.size() == 1) return compute_solid(library, model, model.parts.front(), unit);
+    if (!parts) return compute_solid(library, model, model.parts.front(), unit);
     FileReport report;
-    report_parts(library, path, model, arguments, unit, report);
+    report_parts(library, path, model, arguments, unit, *parts, report);
     SolidResult answer = report.solid.result;
     if (answer.status == POLYMASS_OK) return answer;
     // Refused: a chain of modes would answer the whole as one surface
@@ -250,17 +250,6 @@ SolidResult answer_of(const Library& library, const std::string& path, const Mod
     answer.answering_option = whole.answering_option;
     answer.answering_provenance = whole.answering_provenance;
     return answer;
-}
-
-// A file of several parts is judged as polymass FILE judges it: when every
-// part is a solid by itself, its parts apart (each welded by itself, none
-// sharing a vertex with another) against each other, so that parts resting
-// on each other touch and are not non-manifold; else as one welded surface.
-std::optional<PartsApart> judged_apart(const Library& library, const Model& model,
-                                       const Arguments& arguments) {
-    if (model.parts.size() == 1 || !all_solid_as_given(parts_alone(library, model, arguments)))
-        return std::nullopt;
-    return parts_apart(library, model);
 }
 
 std::string answer_text(const SolidResult& answer) {
@@ -330,17 +319,24 @@ ExitCode run_check(const Arguments& arguments) {
         }
         prepare_model(model, arguments);
         const Part all = combined_part(model);
-        const std::optional<PartsApart> apart = judged_apart(library, model, arguments);
-        // The parts apart are already welded; their faces are the file's, in
-        // its order. They are judged apart only when each part is a solid by
-        // itself, so the check of the whole can name faces and shells only
-        // (crossing, touching, nested), never an edge or a vertex, whose
+        // A file of several parts is judged as polymass FILE judges it, once
+        // for both the findings and the answer: when every part is a solid by
+        // itself, its parts apart (each welded by itself, none sharing a
+        // vertex with another) against each other, so that parts resting on
+        // each other touch and are not non-manifold; else as one welded
+        // surface. The parts apart keep the file's faces, in its order; as
+        // each part is a solid by itself, their check names faces and shells
+        // only (crossing, touching, nested), never an edge or a vertex, whose
         // numbers the copies do not keep.
+        std::optional<JudgedParts> parts;
+        if (model.parts.size() > 1) parts = judge_parts(library, model, arguments);
+        const PartsApart* apart = parts && parts->apart ? &*parts->apart : nullptr;
         const Library unwelded(unwelded_options(library));
         const Library& judge = apart ? unwelded : library;
         const Model& surface = apart ? apart->model : model;
         const Part& judged = apart ? apart->model.parts.front() : all;
-        CheckResult check = check_solid(judge, surface, judged);
+        const CheckResult check =
+            parts && parts->between ? *parts->between : check_solid(judge, surface, judged);
         std::vector<uint32_t> shell_of_face = shell_of_each_face(judge, surface, judged);
         const uint64_t shell_count =
             shell_of_face.empty()
@@ -348,7 +344,7 @@ ExitCode run_check(const Arguments& arguments) {
                 : uint64_t(*std::max_element(shell_of_face.begin(), shell_of_face.end())) + 1;
         const ShellView shells{std::move(shell_of_face),
                                shell_list(judge, surface, judged, shell_count)};
-        const SolidResult answer = answer_of(library, path, model, arguments);
+        const SolidResult answer = answer_of(library, path, model, arguments, parts);
         worst = std::max(worst, exit_code_of(check.diagnostics.status));
         if (as_json || html) {
             reports.push_back(json_report(path, model, check, shells));

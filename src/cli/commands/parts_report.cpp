@@ -129,21 +129,9 @@ void report_by_chain(const Library& library, const Model& model, const Part& who
     }
 }
 
-// The parts judged against each other, each welded by itself and none
-// sharing a vertex with another: crossing and nesting are refused, touching
-// is a warning.
-CheckResult check_between_parts(const Library& library, const Model& model) {
-    const std::optional<PartsApart> apart = parts_apart(library, model);
-    // Every part is a valid solid by now: in range, finite, weldable.
-    if (!apart) throw std::logic_error("a valid part could not be welded");
-    const Library unwelded(unwelded_options(library));
-    return check_solid(unwelded, apart->model, apart->model.parts.front());
-}
-
 }  // namespace
 
-std::vector<IntegratedSolid> parts_alone(const Library& library, const Model& model,
-                                         const Arguments& arguments) {
+JudgedParts judge_parts(const Library& library, const Model& model, const Arguments& arguments) {
     // Each part judged alone as an exact solid, whatever the chain, so that
     // a whole of exact parts gets the same bits with --fallback as without.
     // The check between the parts sees every part's faces: each part is
@@ -153,28 +141,37 @@ std::vector<IntegratedSolid> parts_alone(const Library& library, const Model& mo
     std::fill(std::begin(part_options.modes), std::end(part_options.modes),
               uint32_t(POLYMASS_MODE_NONE));
     part_options.modes[0] = POLYMASS_MODE_SOLID;
-    std::vector<IntegratedSolid> solids;
-    solids.reserve(model.parts.size());
-    for (const Part& part : model.parts) solids.emplace_back(library, model, part, part_options);
-    return solids;
-}
-
-bool all_solid_as_given(const std::vector<IntegratedSolid>& solids) {
-    return std::all_of(solids.begin(), solids.end(),
-                       [](const IntegratedSolid& s) { return s.valid_as_given(); });
+    JudgedParts judged;
+    judged.solids.reserve(model.parts.size());
+    for (const Part& part : model.parts)
+        judged.solids.emplace_back(library, model, part, part_options);
+    if (!std::all_of(judged.solids.begin(), judged.solids.end(),
+                     [](const IntegratedSolid& s) { return s.valid_as_given(); }))
+        return judged;
+    judged.apart = parts_apart(library, model);
+    // Every part is a valid solid by now: in range, finite, weldable.
+    if (!judged.apart) throw std::logic_error("a valid part could not be welded");
+    // Parts crossing each other, or one inside another, would count twice.
+    const uint32_t skips =
+        POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    if (!(options_for(arguments).flags & skips)) {
+        const Library unwelded(unwelded_options(library));
+        judged.between =
+            check_solid(unwelded, judged.apart->model, judged.apart->model.parts.front());
+    }
+    return judged;
 }
 
 void report_parts(const Library& library, const std::string& path, const Model& model,
                   const Arguments& arguments, const polymass_mass_desc& file_mass,
-                  FileReport& report) {
+                  const JudgedParts& judged, FileReport& report) {
     const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
     const Part whole = combined_part(model);  // every part's indices, copied once
     const bool by_chain = arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID};
-    const polymass_options options = options_for(arguments);
-    const std::vector<IntegratedSolid> solids = parts_alone(library, model, arguments);
+    const std::vector<IntegratedSolid>& solids = judged.solids;
 
     report.solid = counted(model, whole);
-    if (!all_solid_as_given(solids)) {
+    if (!judged.apart) {
         if (by_chain) {
             report_by_chain(library, model, whole, masses, file_mass, report);
         } else {
@@ -186,13 +183,10 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     const MomentsResult total = whole_moments(library, solids, masses, file_mass);
     SolidResult verdict = failure(total.status, total.message);
     uint32_t warnings = 0;
-    // Parts crossing each other, or one inside another, would count twice.
-    const uint32_t skips =
-        POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
-    if (verdict.status == POLYMASS_OK && !(options.flags & skips)) {
-        const CheckResult check = check_between_parts(library, model);
-        verdict = failure(check.diagnostics.status, check.message);
-        if (check.diagnostics.touching_face_pairs > 0) warnings |= POLYMASS_WARNING_TOUCHING_FACES;
+    if (verdict.status == POLYMASS_OK && judged.between) {
+        verdict = failure(judged.between->diagnostics.status, judged.between->message);
+        if (judged.between->diagnostics.touching_face_pairs > 0)
+            warnings |= POLYMASS_WARNING_TOUCHING_FACES;
     }
     if (verdict.status != POLYMASS_OK && by_chain) {
         report_by_chain(library, model, whole, masses, file_mass, report);

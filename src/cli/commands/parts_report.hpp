@@ -9,10 +9,12 @@
 
 #include <polymass/polymass.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "arguments.hpp"
+#include "library/parts_apart.hpp"
 #include "library/solid.hpp"
 #include "library/solid_moments.hpp"
 #include "model/model.hpp"
@@ -20,23 +22,29 @@
 
 namespace polymass_cli {
 
-// Fills report.solid (the whole) and report.parts. file_mass is the command
-// line's density or total mass, with the --about point; library holds
-// options_for(arguments). Throws UsageError for --density/--mass NAME=V
-// naming no part of the file.
+// A file of several parts judged once, for its report and for polymass
+// check: each part validated and integrated by itself, as an exact solid and
+// without the intersection check; then, when every part is a valid solid by
+// itself as given (not inside out), the parts apart (library/parts_apart,
+// each welded by itself) checked against each other for crossing and
+// nesting, unless the options skip that check. Otherwise the file is judged
+// as one welded surface (a closed surface split into parts by material, a
+// cavity exported as a part), and apart and between are empty.
+struct JudgedParts {
+    std::vector<IntegratedSolid> solids;
+    std::optional<PartsApart> apart;
+    std::optional<CheckResult> between;
+};
+
+// library holds options_for(arguments).
+JudgedParts judge_parts(const Library& library, const Model& model, const Arguments& arguments);
+
+// Fills report.solid (the whole) and report.parts from the parts as judged.
+// file_mass is the command line's density or total mass, with the --about
+// point. Throws UsageError for --density/--mass NAME=V naming no part of
+// the file.
 void report_parts(const Library& library, const std::string& path, const Model& model,
                   const Arguments& arguments, const polymass_mass_desc& file_mass,
-                  FileReport& report);
-
-// Each part of model validated and integrated by itself, as an exact solid
-// and without the intersection check (the check between the parts does it).
-std::vector<IntegratedSolid> parts_alone(const Library& library, const Model& model,
-                                         const Arguments& arguments);
-
-// Whether every part is a valid solid by itself as given (not inside out):
-// then the parts are judged against each other apart (library/parts_apart),
-// each welded by itself; else the file is judged as one welded surface (a
-// closed surface split into parts by material, a cavity exported as a part).
-bool all_solid_as_given(const std::vector<IntegratedSolid>& solids);
+                  const JudgedParts& judged, FileReport& report);
 
 }  // namespace polymass_cli

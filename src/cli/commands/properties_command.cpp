@@ -54,7 +54,8 @@ FileReport process_file(const Library& library, const std::string& path, const A
 
     const auto compute_start = std::chrono::steady_clock::now();
     if (model.parts.size() > 1) {
-        report_parts(library, path, model, arguments, mass, report);
+        report_parts(library, path, model, arguments, mass, judge_parts(library, model, arguments),
+                     report);
         for (PartReport& part : report.parts) part.material = material_of(arguments, part.name);
         report.solid.material = common_material(report.parts);
     } else {
