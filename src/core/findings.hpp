@@ -44,7 +44,7 @@ struct Finding {
 struct PairFinding {
     std::size_t count = 0;
     std::array<std::array<std::uint64_t, 2>, kKeptLocations> lowest{};  // ascending
-    // False when counting stopped early (surface_overlaps.cpp: a count past
+    // False when counting stopped early (surface_contacts.cpp: a count past
     // kMostCountedPairs costs a test per pair and tells nothing more): count
     // is then a lower bound; lowest stays exact.
     bool complete = true;

@@ -361,6 +361,7 @@ class ReportPages(unittest.TestCase):
         result = run("--html", WORK / "no" / "such" / "folder.html", mesh, expect=3)
         self.assertIn("cannot write", result.stderr)
         result = run("assembly", "--html", WORK / "a.html", mesh, expect=2)
+        self.assertIn("writes no --html page", result.stderr)
 
     # ---- polymass FILE --html --------------------------------------------------
 

@@ -135,6 +135,7 @@ class EveryFormat(Case):
             '<geom type="mesh" mesh="bracket" density="1"/></body></worldbody></mujoco>'
         )
         result = run("audit", model, "--json")
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
         (link,) = json.loads(result.stdout)["links"]
         self.assertNotIn("unreadable_mesh", [f["kind"] for f in link["findings"]], result.stdout)
         self.assert_close(
