@@ -27,6 +27,8 @@
 #include <filesystem>
 #include <set>
 
+#include <Eigen/Geometry>
+
 #include "library/categories.hpp"
 #include "reports/number_format.hpp"
 #include "reports/provenance.hpp"
@@ -48,28 +50,14 @@ struct UsdValues {
 };
 
 // The unit quaternion (w, x, y, z), w >= 0, of a proper rotation given
-// row-major (Shepperd's method: the largest of the four squared components
-// is taken from the diagonal, so no division by a small number).
+// row-major (Eigen's conversion takes the largest component from the
+// diagonal, so it divides by no small number).
 std::array<double, 4> rotation_quaternion(const double* r) {
-    const double trace = r[0] + r[4] + r[8];
-    std::array<double, 4> q{};
-    if (trace >= r[0] && trace >= r[4] && trace >= r[8]) {
-        const double s = 2.0 * std::sqrt(1.0 + trace);
-        q = {0.25 * s, (r[7] - r[5]) / s, (r[2] - r[6]) / s, (r[3] - r[1]) / s};
-    } else if (r[0] >= r[4] && r[0] >= r[8]) {
-        const double s = 2.0 * std::sqrt(1.0 + r[0] - r[4] - r[8]);
-        q = {(r[7] - r[5]) / s, 0.25 * s, (r[1] + r[3]) / s, (r[2] + r[6]) / s};
-    } else if (r[4] >= r[8]) {
-        const double s = 2.0 * std::sqrt(1.0 + r[4] - r[0] - r[8]);
-        q = {(r[2] - r[6]) / s, (r[1] + r[3]) / s, 0.25 * s, (r[5] + r[7]) / s};
-    } else {
-        const double s = 2.0 * std::sqrt(1.0 + r[8] - r[0] - r[4]);
-        q = {(r[3] - r[1]) / s, (r[2] + r[6]) / s, (r[5] + r[7]) / s, 0.25 * s};
-    }
-    const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    const double sign = q[0] < 0.0 ? -1.0 : 1.0;  // q and -q are the same rotation
-    for (double& component : q) component *= sign / norm;
-    return q;
+    const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> rotation(r);
+    Eigen::Quaterniond q(rotation);
+    q.normalize();
+    if (q.w() < 0.0) q.coeffs() *= -1.0;  // q and -q are the same rotation
+    return {q.w(), q.x(), q.y(), q.z()};
 }
 
 // A positive quantity as a normal float, or why it cannot be one.
