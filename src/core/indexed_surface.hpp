@@ -61,7 +61,7 @@ public:
     std::uint32_t lowest_copy(std::size_t t) const { return lowest_[t]; }
     std::uint32_t next_copy(std::size_t t) const { return next_[t]; }
     // Degenerate triangles (three collinear corners) bound nothing and meet nothing.
-    bool meets_nothing(std::size_t t) const { return degenerate_[lowest_[t]] != 0; }
+    bool meets_nothing(std::size_t t) const { return degenerate_[t] != 0; }
 
     // The tree over the lowest copy of each shape, in units about the
     // reference: a power of two near the surface's size, so that single
