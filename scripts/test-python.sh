@@ -133,7 +133,7 @@ POLYMASS_EXE=$polymass_exe "$venv/bin/python" -m pytest -q -p no:cacheprovider \
     tests/cli/test_audit_consumers.py tests/cli/test_audit_mujoco.py </dev/null
 
 step usd
-"$venv/bin/python" -m pip "${pip_options[@]}" install 'usd-core==0.26.*' </dev/null
+"$venv/bin/python" -m pip "${pip_options[@]}" install 'usd-core==26.*' </dev/null
 POLYMASS_EXE=$polymass_exe "$venv/bin/python" -m pytest -q -p no:cacheprovider \
     tests/cli/test_usd.py </dev/null
 
