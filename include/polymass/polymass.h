@@ -781,9 +781,12 @@ POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh);
    a NULL mesh. */
 POLYMASS_API int32_t polymass_mesh_status(const polymass_mesh* mesh);
 
-/* Why no mode answered ("edge (4, 9) is used by 3 faces"; each mode's reason
-   when the chain has several), "" when one did; "mesh is NULL" for a NULL
-   mesh. Valid as long as the mesh. Never NULL. Thread-safe. Since 2.0. */
+/* What is wrong with the surface as given, in words: the message of
+   polymass_diagnostics.status ("edge (4, 9) is used by 3 faces"), kept when
+   a later mode of the chain answered; when no mode answered, each later
+   mode's reason follows ("...; hull: ..."). "" for a valid solid, "mesh is
+   NULL" for a NULL mesh. Valid as long as the mesh. Never NULL.
+   Thread-safe. Since 2.0. */
 POLYMASS_API const char* polymass_mesh_message(const polymass_mesh* mesh);
 
 /* Everything on the mesh below may be read by several threads at once, each
@@ -983,11 +986,11 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
    vertex_count) the lowest vertex index welded to each vertex, and to
    *out_distinct_count how many vertices are their own lowest. weld_tolerance
    is polymass_options.weld_tolerance's, relative to the largest extent of
-   the positions' bounding box: 0 welds exactly equal positions (+0 and -0
-   being one, and copies of the same NaN: coordinates are compared bit for
-   bit) in one hashing pass; above 0 chains of near positions are one, and
-   then non-finite coordinates are an error. At most UINT32_MAX vertices.
-   Context: one thread at a time. Since 2.0.
+   the positions' bounding box: 0 welds exactly equal positions in one
+   hashing pass (coordinates compared by their bits once -0 is +0 and a NaN
+   is quiet: NaNs of one payload are one position); above 0 chains of near
+   positions are one, and then non-finite coordinates are an error. At most
+   UINT32_MAX vertices. Context: one thread at a time. Since 2.0.
    Returns POLYMASS_OK or POLYMASS_ERROR_NON_FINITE. */
 POLYMASS_API int32_t polymass_weld_positions(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
                                              polymass_context* context, const void* positions,
