@@ -906,8 +906,8 @@ POLYMASS_API int32_t polymass_mesh_provenance(polymass_provenance* out_provenanc
 
 /* The moments (unit density) of the body that answered. Cheap: no pass over
    the faces. Since 2.0.
-   Returns POLYMASS_OK, or the mesh's status (with its message) when no mode
-   answered. */
+   Returns POLYMASS_OK, POLYMASS_ERROR_OVERFLOW (a moment beyond a double),
+   or the mesh's status (with its message) when no mode answered. */
 POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polymass_context* context,
                                            const polymass_mesh* mesh);
 
