@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "struct_versions.hpp"
+
 namespace polymass::capi {
 namespace {
 
@@ -14,7 +16,8 @@ static_assert(core::kWarningInverted == POLYMASS_WARNING_INVERTED &&
                   core::kWarningDegenerate == POLYMASS_WARNING_DEGENERATE_FACES &&
                   core::kWarningUnchecked == POLYMASS_WARNING_UNCHECKED &&
                   core::kWarningNonManifold == POLYMASS_WARNING_NON_MANIFOLD &&
-                  core::kWarningTouching == POLYMASS_WARNING_TOUCHING_FACES,
+                  core::kWarningTouching == POLYMASS_WARNING_TOUCHING_FACES &&
+                  core::kWarningIntersectionsUnchecked == POLYMASS_WARNING_INTERSECTIONS_UNCHECKED,
               "the core's warning bits are the API's");
 
 int32_t fail_on_edge(polymass_context* context, int32_t status, const core::EdgeFinding& edges,
@@ -35,37 +38,57 @@ int32_t fail_on_shell(polymass_context* context, int32_t status, const core::She
 
 }  // namespace
 
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
-                           const polymass_options& options, bool full_report) {
-    core::AnalysisSettings settings;
-    settings.check_topology =
-        full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
-    // On unless skipped by name; the trusted path (no topology checks) has
-    // no shells to nest, and skips it too.
-    settings.check_intersections =
-        settings.check_topology && !(options.flags & POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
-    settings.weld = options.flags & POLYMASS_OPTION_WELD_VERTICES;
-    settings.weld_tolerance = options.weld_tolerance;
-    settings.stop_at_first_problem = !full_report;
-    settings.planarity_tolerance = options.planarity_tolerance;
-    settings.policy.accept_inverted = options.flags & POLYMASS_OPTION_ACCEPT_INVERTED;
-    settings.policy.accept_balanced_non_manifold =
-        options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-    settings.tasks = &context->tasks(options);
-    return visit_mesh(input, [&](const auto& view) {
-        return core::analyse_mesh(view, settings, &context->memory);
-    });
+int32_t status_of(core::Defect defect) {
+    using core::Defect;
+    switch (defect) {
+        case Defect::none:
+            return POLYMASS_OK;
+        case Defect::face_too_small:
+            return POLYMASS_ERROR_FACE_TOO_SMALL;
+        case Defect::index_out_of_range:
+            return POLYMASS_ERROR_INDEX_OUT_OF_RANGE;
+        case Defect::non_finite:
+            return POLYMASS_ERROR_NON_FINITE;
+        case Defect::open:
+            return POLYMASS_ERROR_OPEN;
+        case Defect::non_manifold:
+            return POLYMASS_ERROR_NON_MANIFOLD;
+        case Defect::misoriented:
+            return POLYMASS_ERROR_INCONSISTENT_ORIENTATION;
+        case Defect::non_planar:
+            return POLYMASS_ERROR_NON_PLANAR_FACE;
+        case Defect::zero_volume:
+            return POLYMASS_ERROR_ZERO_VOLUME;
+        case Defect::inverted:
+        case Defect::inverted_shell:
+            return POLYMASS_ERROR_INVERTED;
+        case Defect::crossing:
+        case Defect::overlapping_shells:
+            return POLYMASS_ERROR_INTERSECTING;
+        case Defect::extent_overflow:
+        case Defect::integrals_overflow:
+        case Defect::volume_underflow:
+            return POLYMASS_ERROR_OVERFLOW;
+    }
+    return POLYMASS_ERROR_INTERNAL;
 }
 
 int32_t report_verdict(polymass_context* context, const MeshInput& input,
                        const polymass_options& options, const core::MeshAnalysis& analysis,
-                       uint32_t& warnings) {
+                       core::Defect defect) {
     using core::Defect;
     const core::MeshScan& scan = analysis.scan;
-    warnings = analysis.verdict.warnings;
-    switch (analysis.verdict.defect) {
+    switch (defect) {
         case Defect::none:
             return POLYMASS_OK;
+        case Defect::face_too_small: {
+            const std::size_t face = analysis.small_faces.first();
+            return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
+                                 "face %llu has %u vertices; a face needs at least 3 (%llu such "
+                                 "faces)",
+                                 u64(face), input.face_sizes[face],
+                                 u64(analysis.small_faces.count));
+        }
         case Defect::index_out_of_range:
             return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
                                  "face %llu refers to vertex %u, but there are only %llu vertices "
@@ -164,11 +187,13 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
                                  "side, or passes through its surface: its region would be "
                                  "counted twice");
     }
-    return context->fail(POLYMASS_ERROR_INTERNAL, "unknown verdict");
+    return context->fail(POLYMASS_ERROR_INTERNAL, "unknown defect");
 }
 
 static_assert(core::kKeptLocations == POLYMASS_DIAGNOSTIC_LOCATIONS,
               "the core keeps as many locations as the report lists");
+static_assert(core::kMostCountedPairs == POLYMASS_MAX_COUNTED_FACE_PAIRS,
+              "the core counts as many face pairs as the header says");
 
 void copy_locations(const core::Finding& found, uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS]) {
     for (std::size_t i = 0; i < found.kept(); ++i) first[i] = found.lowest[i];
@@ -181,34 +206,22 @@ void copy_finding(const core::Finding& found, uint64_t& count,
 }
 
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
-                 const core::MeshAnalysis* analysis) {
-    report = polymass_diagnostics{};
-    report.struct_size = sizeof report;
-    // Every location POLYMASS_NONE until a finding fills it: the struct is
-    // nothing but counts, locations and the two doubles set below.
-    for (uint64_t* location :
-         {&report.first_non_finite_vertices[0], &report.first_out_of_range_faces[0],
-          &report.first_small_faces[0], &report.first_degenerate_faces[0],
-          &report.first_non_planar_faces[0], &report.first_inverted_shells[0],
-          &report.first_overlapping_shells[0]})
-        std::fill_n(location, POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
-    for (uint64_t* pair :
-         {&report.first_open_edges[0][0], &report.first_non_manifold_edges[0][0],
-          &report.first_misoriented_edges[0][0], &report.first_intersecting_face_pairs[0][0],
-          &report.first_touching_face_pairs[0][0]})
-        std::fill_n(pair, 2 * POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
+                 const core::MeshAnalysis& analysis) {
+    // Every location POLYMASS_NONE until a finding fills it.
+    report = StructVersions<polymass_diagnostics>::defaults();
     report.face_count = input.face_count;
     report.signed_volume = std::numeric_limits<double>::quiet_NaN();
-    copy_finding(input.small_faces, report.small_faces, report.first_small_faces);
-    if (!analysis) return;
-
-    const core::MeshScan& scan = analysis->scan;
-    report.used_vertex_count = analysis->used_vertex_count;
+    const core::MeshScan& scan = analysis.scan;
+    copy_finding(analysis.small_faces, report.small_faces, report.first_small_faces);
+    report.used_vertex_count = analysis.used_vertex_count;
     copy_finding(scan.non_finite, report.non_finite_vertices, report.first_non_finite_vertices);
     // Counted per index, located per face.
     report.out_of_range_indices = scan.out_of_range_indices;
     copy_locations(scan.out_of_range_faces, report.first_out_of_range_faces);
-    if (const auto& topology = analysis->topology) {
+    if (analysis.topology && analysis.integration) report.checks |= POLYMASS_CHECKED_TOPOLOGY;
+    if (analysis.shells) report.checks |= POLYMASS_CHECKED_SHELLS;
+    if (analysis.overlaps) report.checks |= POLYMASS_CHECKED_INTERSECTIONS;
+    if (const auto& topology = analysis.topology) {
         report.edge_count = topology->edge_count;
         copy_finding(topology->open, report.open_edges, report.first_open_edges);
         copy_finding(topology->non_manifold, report.non_manifold_edges,
@@ -216,7 +229,7 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
         copy_finding(topology->misoriented, report.misoriented_edges,
                      report.first_misoriented_edges);
     }
-    if (const auto& integration = analysis->integration) {
+    if (const auto& integration = analysis.integration) {
         copy_finding(integration->degenerate_faces, report.degenerate_faces,
                      report.first_degenerate_faces);
         copy_finding(integration->non_planar_faces, report.non_planar_faces,
@@ -224,18 +237,69 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
         report.max_non_planarity = integration->max_non_planarity;
         report.signed_volume = integration->integrals.volume;
     }
-    if (const auto& shells = analysis->shells) {
+    if (const auto& shells = analysis.shells) {
         report.shell_count = shells->shells.count;
         copy_finding(shells->inverted, report.inverted_shells, report.first_inverted_shells);
         copy_finding(shells->overlapping, report.overlapping_shells,
                      report.first_overlapping_shells);
+    } else if (analysis.unjudged_shells) {
+        report.shell_count = analysis.unjudged_shells->count;
     }
-    if (const auto& overlaps = analysis->overlaps) {
+    if (const auto& overlaps = analysis.overlaps) {
         copy_finding(overlaps->crossing, report.intersecting_face_pairs,
                      report.first_intersecting_face_pairs);
         copy_finding(overlaps->touching, report.touching_face_pairs,
                      report.first_touching_face_pairs);
     }
+}
+
+namespace {
+
+int32_t shell_kind(core::ShellKind kind) {
+    switch (kind) {
+        case core::ShellKind::solid:
+            return POLYMASS_SHELL_SOLID;
+        case core::ShellKind::cavity:
+            return POLYMASS_SHELL_CAVITY;
+        case core::ShellKind::inverted:
+            return POLYMASS_SHELL_INVERTED;
+        case core::ShellKind::overlapping:
+            return POLYMASS_SHELL_OVERLAPPING;
+        case core::ShellKind::no_volume:
+            return POLYMASS_SHELL_NO_VOLUME;
+    }
+    return POLYMASS_SHELL_UNJUDGED;
+}
+
+}  // namespace
+
+void list_shells(const core::MeshAnalysis& analysis, std::pmr::vector<polymass_shell>& shells,
+                 std::pmr::vector<uint32_t>& shell_of_face) {
+    polymass_shell shell = StructVersions<polymass_shell>::defaults();
+    if (const auto& survey = analysis.shells) {
+        shells.reserve(survey->summary.size());
+        for (const core::ShellSummary& summary : survey->summary) {
+            shell.kind = shell_kind(summary.kind);
+            shell.face_count = summary.face_count;
+            shell.first_face = summary.first_face;
+            shell.signed_volume = summary.signed_volume;
+            shells.push_back(shell);
+        }
+        shell_of_face.assign(survey->shells.of_face.begin(), survey->shells.of_face.end());
+        return;
+    }
+    if (!analysis.unjudged_shells) return;
+    // Connected pieces only: their sizes and first faces from the numbering.
+    const core::Shells& pieces = *analysis.unjudged_shells;
+    shell.kind = POLYMASS_SHELL_UNJUDGED;
+    shell.signed_volume = std::numeric_limits<double>::quiet_NaN();
+    shells.assign(pieces.count, shell);
+    for (std::size_t face = pieces.of_face.size(); face-- > 0;) {
+        polymass_shell& piece = shells[pieces.of_face[face]];
+        ++piece.face_count;
+        piece.first_face = face;
+    }
+    shell_of_face.assign(pieces.of_face.begin(), pieces.of_face.end());
 }
 
 }  // namespace polymass::capi
