@@ -1,6 +1,6 @@
 # ctest: what libpolymass.so exports must be exactly the C API of the header.
 #
-#   cmake -DLIBRARY=<libpolymass.so> -DHEADER=<polymass.h> -DEXPECTED_SONAME=libpolymass.so.1
+#   cmake -DLIBRARY=<libpolymass.so> -DHEADER=<polymass.h> -DEXPECTED_SONAME=libpolymass.so.2
 #         [-DNM=nm] [-DREADELF=readelf] -P check_exports.cmake
 #
 # 1. The expected list is read from the header (every `POLYMASS_API ... name(`),
