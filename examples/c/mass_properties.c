@@ -150,7 +150,7 @@ int main(void) {
         return 1;
     }
     printf("as 1 kg: density %.6g kg/m^3\n", of_1kg.density);
-    print_matrix("inertia (fixture)", inertia_at_fixture);
+    print_matrix("inertia (grip)", inertia_at_fixture);
 
     polymass_context_destroy(context);
     return 0;
