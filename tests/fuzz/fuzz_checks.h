@@ -40,8 +40,8 @@ static inline const char* inertia_about_violation(const polymass_mass_properties
     for (i = 0; i < 3; ++i)
         distance2 += (p->center_of_mass[i] - point[i]) * (p->center_of_mass[i] - point[i]);
     expected = p->inertia[0] + p->inertia[4] + p->inertia[8] + 2.0 * p->mass * distance2;
-    scale = fabs(p->inertia[0]) + fabs(p->inertia[4]) + fabs(p->inertia[8]) +
-            2.0 * p->mass * distance2;
+    scale =
+        fabs(p->inertia[0]) + fabs(p->inertia[4]) + fabs(p->inertia[8]) + 2.0 * p->mass * distance2;
     if (!(fabs(inertia[0] + inertia[4] + inertia[8] - expected) <= 1e-12 * scale + 1e-300))
         return "polymass_inertia_about: the trace is not the parallel-axis theorem's";
     return NULL;
