@@ -8,6 +8,8 @@
 
 #include "overlap_cases.h"
 
+#include <math.h>
+
 static void test_shells_touching_along_a_face(void** state) {
     pm_mesh m;
     const expectation touching = {POLYMASS_OK, POLYMASS_OK, POLYMASS_WARNING_TOUCHING_FACES, 2.0};
@@ -159,7 +161,7 @@ static void test_shell_passing_through_a_face_along_its_edges(void** state) {
        other, listed last: past the count's stop of touching pairs, its pairs
        are still tested and its triangles probed. */
     {
-        polymass_context* ctx = pm_context_new(CHECKED);
+        polymass_context* ctx = pm_context_new();
         polymass_diagnostics d;
         int x, y, z;
         pm_mesh_init(&m);
@@ -255,14 +257,15 @@ static void test_flush_faces_around_a_window(void** state) {
     pm_mesh_free(&m);
 }
 
-/* The shell list refuses what it cannot fill or judge, saying why. */
+/* The shell list refuses what it cannot fill, saying why; shells it could
+   not judge (the topology checks skipped) are listed unjudged. */
 static void test_shell_list_refuses_bad_arguments(void** state) {
-    polymass_context* ctx = pm_context_new(CHECKED);
-    polymass_context* trusting = pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    polymass_context* ctx = pm_context_new();
     polymass_shell shells[2];
     uint64_t count = 0;
     pm_mesh m;
     polymass_mesh_desc desc;
+    polymass_mesh* mesh = NULL;
     (void)state;
     pm_mesh_init(&m);
     box(&m, 0, 0, 0, 1, 1, 1, 0, 0);
@@ -270,20 +273,63 @@ static void test_shell_list_refuses_bad_arguments(void** state) {
     memset(shells, 0, sizeof shells);
     shells[0].struct_size = sizeof shells[0];
     shells[1].struct_size = sizeof shells[1] - 8;
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc, NULL));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_shell_list(shells, 1, NULL, ctx, &desc));
+                     polymass_mesh_shells(shells, 1, NULL, ctx, mesh));
     assert_non_null(strstr(polymass_context_message(ctx), "out_shell_count"));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_shell_list(shells, 2, &count, ctx, &desc));
+                     polymass_mesh_shells(shells, 2, &count, ctx, mesh));
     assert_non_null(strstr(polymass_context_message(ctx), "out_shells[1].struct_size"));
-    PM_ASSERT_STATUS(trusting, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_shell_list(shells, 1, &count, trusting, &desc));
-    assert_non_null(strstr(polymass_context_message(trusting), "topology checks"));
-    PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 1, &count, ctx, &desc));
+    PM_ASSERT_OK(ctx, polymass_mesh_shells(shells, 1, &count, ctx, mesh));
     assert_int_equal(count, 1);
     assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    polymass_mesh_destroy(mesh);
+    PM_ASSERT_OK(ctx, shell_list(shells, 1, &count, ctx, &m, POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS));
+    assert_int_equal(count, 1);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_UNJUDGED);
+    assert_int_equal(shells[0].face_count, 6);
+    assert_int_equal(shells[0].first_face, 0);
+    assert_true(isnan(shells[0].signed_volume));
     pm_mesh_free(&m);
-    polymass_context_destroy(trusting);
+    polymass_context_destroy(ctx);
+}
+
+/* A surface inside out as a whole passes the checks before the shells
+   (closed, manifold, oriented, planar): its shells are judged, signed as
+   found - inside out, refused - or, accepted inside out, counted turned. */
+static void test_surface_inside_out_as_a_whole(void** state) {
+    const pm_reference_solid* tetra = &pm_reference_solids[PM_REF_TETRA_CORNER];
+    polymass_context* ctx = pm_context_new();
+    polymass_diagnostics d;
+    polymass_shell shells[2];
+    uint64_t count = 0;
+    pm_mesh m;
+    (void)state;
+    pm_mesh_from_reference(&m, tetra);
+    pm_mesh_reverse_all(&m);
+    memset(shells, 0, sizeof shells);
+    shells[0].struct_size = shells[1].struct_size = sizeof shells[0];
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_check(&d, ctx, &m));
+    assert_true(d.checks & POLYMASS_CHECKED_SHELLS);
+    assert_int_equal(d.inverted_shells, 1);
+    assert_int_equal(d.first_inverted_shells[0], 0);
+    PM_ASSERT_OK(ctx, shell_list(shells, 2, &count, ctx, &m, CHECKED));
+    assert_int_equal(count, 1);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_INVERTED);
+    PM_ASSERT_REL("signed as found", -tetra->volume, shells[0].signed_volume, PM_TOL);
+    PM_ASSERT_OK(ctx, shell_list(shells, 2, &count, ctx, &m, POLYMASS_OPTION_ACCEPT_INVERTED));
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    PM_ASSERT_REL("counted turned", tetra->volume, shells[0].signed_volume, PM_TOL);
+    /* two shells, both inside out: each judged, inside out */
+    box(&m, 5, 0, 0, 6, 1, 1, 1, 1);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_check(&d, ctx, &m));
+    assert_int_equal(d.inverted_shells, 2);
+    PM_ASSERT_OK(ctx, shell_list(shells, 2, &count, ctx, &m, CHECKED));
+    assert_int_equal(count, 2);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_INVERTED);
+    assert_int_equal(shells[1].kind, POLYMASS_SHELL_INVERTED);
+    PM_ASSERT_REL("the box, signed as found", -1.0, shells[1].signed_volume, PM_TOL);
+    pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }
 
@@ -296,6 +342,7 @@ int main(void) {
         cmocka_unit_test(test_shell_passing_through_a_face_along_its_edges),
         cmocka_unit_test(test_flush_faces_around_a_window),
         cmocka_unit_test(test_shell_list_refuses_bad_arguments),
+        cmocka_unit_test(test_surface_inside_out_as_a_whole),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
