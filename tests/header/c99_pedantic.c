@@ -27,6 +27,10 @@ C99_STATIC_ASSERT(moments_starts_with_size, offsetof(polymass_moments, struct_si
 C99_STATIC_ASSERT(polygon_properties_starts_with_size,
                   offsetof(polymass_polygon_properties, struct_size) == 0);
 C99_STATIC_ASSERT(batch_item_starts_with_size, offsetof(polymass_batch_item, struct_size) == 0);
+C99_STATIC_ASSERT(packed_meshes_starts_with_size,
+                  offsetof(polymass_packed_meshes, struct_size) == 0);
+C99_STATIC_ASSERT(packed_results_starts_with_size,
+                  offsetof(polymass_packed_results, struct_size) == 0);
 C99_STATIC_ASSERT(modes_have_room,
                   sizeof(((polymass_options*)0)->modes) == POLYMASS_MAX_MODES * sizeof(uint32_t));
 C99_STATIC_ASSERT(batch_message_size,
@@ -45,7 +49,8 @@ void polymass_header_c99_functions(void) {
         polymass_sizeof_mass_properties, polymass_sizeof_diagnostics,
         polymass_sizeof_shell,           polymass_sizeof_provenance,
         polymass_sizeof_moments,         polymass_sizeof_polygon_properties,
-        polymass_sizeof_batch_item,
+        polymass_sizeof_batch_item,      polymass_sizeof_packed_meshes,
+        polymass_sizeof_packed_results,
     };
     int32_t (*allocator_init)(polymass_allocator*, uint32_t) = polymass_allocator_init;
     int32_t (*options_init)(polymass_options*, uint32_t) = polymass_options_init;
@@ -60,6 +65,9 @@ void polymass_header_c99_functions(void) {
     int32_t (*polygon_properties_init)(polymass_polygon_properties*, uint32_t) =
         polymass_polygon_properties_init;
     int32_t (*batch_item_init)(polymass_batch_item*, uint32_t) = polymass_batch_item_init;
+    int32_t (*packed_meshes_init)(polymass_packed_meshes*, uint32_t) = polymass_packed_meshes_init;
+    int32_t (*packed_results_init)(polymass_packed_results*, uint32_t) =
+        polymass_packed_results_init;
 
     int32_t (*context_create)(polymass_context**, const polymass_allocator*) =
         polymass_context_create;
@@ -97,6 +105,9 @@ void polymass_header_c99_functions(void) {
 
     int32_t (*batch_compute)(polymass_batch_item*, uint64_t, uint64_t*, polymass_context*) =
         polymass_batch_compute;
+    int32_t (*packed_compute)(const polymass_packed_results*, uint64_t*, polymass_context*,
+                              const polymass_packed_meshes*, const polymass_options*) =
+        polymass_packed_compute;
 
     int32_t (*moments_compute_faces)(polymass_moments*, polymass_context*,
                                      const polymass_mesh_desc*, uint64_t, uint64_t, const double[3],
@@ -135,6 +146,8 @@ void polymass_header_c99_functions(void) {
     (void)moments_init;
     (void)polygon_properties_init;
     (void)batch_item_init;
+    (void)packed_meshes_init;
+    (void)packed_results_init;
     (void)context_create;
     (void)context_destroy;
     (void)context_set_threads;
@@ -153,6 +166,7 @@ void polymass_header_c99_functions(void) {
     (void)mesh_mass_properties;
     (void)inertia_about;
     (void)batch_compute;
+    (void)packed_compute;
     (void)moments_compute_faces;
     (void)moments_add;
     (void)moments_subtract;
@@ -179,6 +193,8 @@ void polymass_header_c99_values(void) {
     polymass_moments moments = POLYMASS_MOMENTS_INIT;
     polymass_polygon_properties polygon = POLYMASS_POLYGON_PROPERTIES_INIT;
     polymass_batch_item item = POLYMASS_BATCH_ITEM_INIT;
+    polymass_packed_meshes packed = POLYMASS_PACKED_MESHES_INIT;
+    polymass_packed_results columns = POLYMASS_PACKED_RESULTS_INIT;
     polymass_context* context = 0;
     polymass_mesh* mesh = 0;
 
@@ -232,6 +248,8 @@ void polymass_header_c99_values(void) {
         POLYMASS_INDEX_UINT16,
         POLYMASS_MASS_FROM_DENSITY,
         POLYMASS_MASS_FROM_TOTAL,
+        POLYMASS_INDICES_LOCAL,
+        POLYMASS_INDICES_GLOBAL,
         POLYMASS_MAX_MODES,
         POLYMASS_MAX_THREADS,
         POLYMASS_DIAGNOSTIC_LOCATIONS,
@@ -261,6 +279,8 @@ void polymass_header_c99_values(void) {
     (void)moments;
     (void)polygon;
     (void)item;
+    (void)packed;
+    (void)columns;
     (void)context;
     (void)mesh;
     (void)statuses;

@@ -33,6 +33,8 @@ static_assert(plain_and_size_prefixed<polymass_provenance>());
 static_assert(plain_and_size_prefixed<polymass_moments>());
 static_assert(plain_and_size_prefixed<polymass_polygon_properties>());
 static_assert(plain_and_size_prefixed<polymass_batch_item>());
+static_assert(plain_and_size_prefixed<polymass_packed_meshes>());
+static_assert(plain_and_size_prefixed<polymass_packed_results>());
 
 template <typename Expected, typename Function>
 constexpr bool has_type(Function*) {
@@ -58,6 +60,8 @@ static_assert(has_type<uint32_t()>(polymass_sizeof_provenance));
 static_assert(has_type<uint32_t()>(polymass_sizeof_moments));
 static_assert(has_type<uint32_t()>(polymass_sizeof_polygon_properties));
 static_assert(has_type<uint32_t()>(polymass_sizeof_batch_item));
+static_assert(has_type<uint32_t()>(polymass_sizeof_packed_meshes));
+static_assert(has_type<uint32_t()>(polymass_sizeof_packed_results));
 static_assert(has_type<int32_t(polymass_allocator*, uint32_t)>(polymass_allocator_init));
 static_assert(has_type<int32_t(polymass_options*, uint32_t)>(polymass_options_init));
 static_assert(has_type<int32_t(polymass_mesh_desc*, uint32_t)>(polymass_mesh_desc_init));
@@ -71,6 +75,8 @@ static_assert(has_type<int32_t(polymass_moments*, uint32_t)>(polymass_moments_in
 static_assert(
     has_type<int32_t(polymass_polygon_properties*, uint32_t)>(polymass_polygon_properties_init));
 static_assert(has_type<int32_t(polymass_batch_item*, uint32_t)>(polymass_batch_item_init));
+static_assert(has_type<int32_t(polymass_packed_meshes*, uint32_t)>(polymass_packed_meshes_init));
+static_assert(has_type<int32_t(polymass_packed_results*, uint32_t)>(polymass_packed_results_init));
 static_assert(has_type<int32_t(Context**, const polymass_allocator*)>(polymass_context_create));
 static_assert(has_type<void(Context*)>(polymass_context_destroy));
 static_assert(has_type<int32_t(Context*, uint32_t)>(polymass_context_set_threads));
@@ -99,6 +105,9 @@ static_assert(has_type<int32_t(double*, const polymass_mass_properties*, const d
     polymass_inertia_about));
 static_assert(
     has_type<int32_t(polymass_batch_item*, uint64_t, uint64_t*, Context*)>(polymass_batch_compute));
+static_assert(has_type<int32_t(const polymass_packed_results*, uint64_t*, Context*,
+                               const polymass_packed_meshes*, const polymass_options*)>(
+    polymass_packed_compute));
 static_assert(
     has_type<int32_t(polymass_moments*, Context*, const polymass_mesh_desc*, uint64_t, uint64_t,
                      const double*, const polymass_options*)>(polymass_moments_compute_faces));
