@@ -96,9 +96,9 @@ struct SurfaceAnswer {
     std::size_t hull_vertex_count = 0, hull_triangle_count = 0;  // Mode::hull
     double hull_volume = 0.0;
 
-    // The modes that failed, in the order tried (the solid once, however
-    // often the chain asks for its verdict).
-    std::array<ModeFailure, kMaxModes> failures{};
+    // The modes that failed, in the order tried: the solid's verdict once
+    // (however often the chain asks for it), then each other mode's.
+    std::array<ModeFailure, kMaxModes + 1> failures{};
     std::size_t failure_count = 0;
 
     explicit SurfaceAnswer(MeshAnalysis analysed) : surface(std::move(analysed)) {}
