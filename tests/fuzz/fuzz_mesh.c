@@ -736,18 +736,10 @@ static void check_one_call(const analysis* a, polymass_context* context,
     }
 }
 
-/* A NaN's bits with the quiet bit set: the library reads coordinates as
-   values, and a signalling NaN read so is its quiet twin. */
-static uint64_t quiet_bits(double value) {
-    uint64_t bits;
-    memcpy(&bits, &value, sizeof bits);
-    return bits | (UINT64_C(1) << 51);
-}
-
 /* polymass_weld_positions over the description's positions: each vertex
    welded to the lowest of its group (itself for the group's lowest, which
    the distinct count counts), at the same position when the tolerance is 0
-   (+0 and -0 one, the same NaN one, quiet or signalling); non-finite coordinates an error only
+   (+0 and -0 one, a NaN only with its exact copies); non-finite coordinates an error only
    above 0; a stride smaller than a vertex refused. */
 static void check_weld(polymass_context* context, const polymass_mesh_desc* desc, int stride_valid,
                        double tolerance) {
@@ -781,8 +773,7 @@ static void check_weld(polymass_context* context, const polymass_mesh_desc* desc
             for (k = 0; k < 3; ++k) {
                 const double a = vertex_coordinate(desc, i, k),
                              b = vertex_coordinate(desc, root, k);
-                CHECK(a == b || (isnan(a) && isnan(b) && quiet_bits(a) == quiet_bits(b)), status,
-                      context);
+                CHECK(a == b || (isnan(a) && memcmp(&a, &b, sizeof a) == 0), status, context);
             }
     }
     CHECK(distinct == own, status, context);
