@@ -754,9 +754,8 @@ static void check_one_call(const analysis* a, polymass_context* context,
     }
 }
 
-/* A NaN's bits with the quiet bit set. Whether an exact weld takes a
-   signalling NaN for its quiet twin is not settled (the header says bit for
-   bit, api2-capi 56ee43f quiets): both are accepted here. */
+/* A NaN's bits with the quiet bit set: the exact weld reads coordinates as
+   values (-0 is +0, a NaN is quiet), so NaNs of one payload are one. */
 static uint64_t quiet_bits(double value) {
     uint64_t bits;
     memcpy(&bits, &value, sizeof bits);
@@ -766,7 +765,7 @@ static uint64_t quiet_bits(double value) {
 /* polymass_weld_positions over the description's positions: each vertex
    welded to the lowest of its group (itself for the group's lowest, which
    the distinct count counts), at the same position when the tolerance is 0
-   (+0 and -0 one, a NaN with its copies); non-finite coordinates an error only
+   (+0 and -0 one, NaNs of one payload one); non-finite coordinates an error only
    above 0; a stride smaller than a vertex refused. */
 static void check_weld(polymass_context* context, const polymass_mesh_desc* desc, int stride_valid,
                        double tolerance) {
