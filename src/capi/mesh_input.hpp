@@ -21,12 +21,19 @@ struct MeshInput {
     std::size_t position_stride = 0;
     const unsigned char* indices = nullptr;
     std::size_t index_count = 0;
+    // What the indices count from: 0, or a packed mesh's first vertex when
+    // they count from the packed array's (POLYMASS_INDICES_GLOBAL).
+    uint32_t index_base = 0;
     const uint32_t* face_sizes = nullptr;
     std::size_t face_count = 0;
     // Faces of fewer than 3 vertices (found while adding up face_sizes): not
     // a solid's, but readable (repair drops them).
     core::Finding small_faces;
 };
+
+// True when [pointer, pointer + count * stride) - the last element `element`
+// bytes long - is addressable: no arithmetic on it can overflow.
+bool span_fits(const void* pointer, uint64_t count, uint64_t stride, uint64_t element);
 
 // Fills `input` and returns POLYMASS_OK or POLYMASS_ERROR_INVALID_ARGUMENT,
 // with the message. Faces too small are recorded, not refused.
@@ -52,7 +59,7 @@ decltype(auto) visit_mesh(const MeshInput& input, Visit&& visit) {
             using Index = decltype(index);
             return core::MeshView<Scalar, Index>{{input.positions, input.position_stride},
                                                  input.vertex_count,
-                                                 {input.indices},
+                                                 {input.indices, input.index_base},
                                                  input.index_count,
                                                  input.face_sizes,
                                                  input.face_count};
