@@ -145,7 +145,7 @@ int32_t compute_mesh(const PackedSet& set, uint64_t i, polymass_context* context
     if (const int32_t status = read_mesh_desc(context, &desc, input)) return status;
     if (m.index_base == POLYMASS_INDICES_GLOBAL) input.index_base = uint32_t(first_vertex);
     Answer answer;
-    if (const int32_t status = answer_surface(context, input, set.options, answer, nullptr))
+    if (const int32_t status = analyse_surface(context, input, set.options, answer, nullptr))
         return status;
     if (!m.mass_values) return mass_properties(&out, context, answer.body, nullptr);
     polymass_mass_desc mass = StructVersions<polymass_mass_desc>::defaults();
