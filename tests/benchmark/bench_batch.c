@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
     for (int r = 0; r < repeats; ++r) {
         double start = now_seconds();
         for (size_t m = 0; m < meshes; ++m)
-            if (polymass_mass_properties_compute(&results[m], context, &descs[m], NULL) !=
-                POLYMASS_OK) {
+            if (polymass_mass_properties_compute(&results[m], NULL, context, &descs[m], NULL,
+                                                 NULL) != POLYMASS_OK) {
                 fprintf(stderr, "mesh %zu: %s\n", m, polymass_context_message(context));
                 return 1;
             }
