@@ -47,6 +47,7 @@ from .errors import (
 )
 from .mesh import Mesh, check
 from .moments import Moments, moments
+from .packed import PackedMassProperties, packed_mass_properties
 from .polygons import PolygonProperties, polygon_properties
 from .solids import (
     ErrorBound,
@@ -88,6 +89,7 @@ __all__ = [
     "OpenSurfaceError",
     "Options",
     "OutOfMemoryError",
+    "PackedMassProperties",
     "PolygonProperties",
     "Provenance",
     "Repair",
@@ -104,6 +106,7 @@ __all__ = [
     "library_version",
     "mass_properties",
     "moments",
+    "packed_mass_properties",
     "polygon_properties",
     "weld",
 ]
