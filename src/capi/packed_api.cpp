@@ -127,19 +127,18 @@ int32_t compute_mesh(const PackedSet& set, uint64_t i, polymass_context* context
                      polymass_mass_properties& out) {
     const polymass_packed_meshes& m = set.meshes;
     const uint64_t first_vertex = m.vertex_offsets[i], first_index = m.index_offsets[i];
+    // Mesh i's part of an array (whose span read_set checked; a null array
+    // has no part but the empty one at its start).
+    auto part = [](const void* array, uint64_t first, uint64_t bytes) {
+        return static_cast<const unsigned char*>(array) + first * bytes;
+    };
     polymass_mesh_desc desc = StructVersions<polymass_mesh_desc>::defaults();
     desc.position_type = m.position_type;
-    desc.positions =
-        m.vertex_offsets[i + 1] > first_vertex
-            ? static_cast<const unsigned char*>(m.positions) + first_vertex * set.position_stride
-            : nullptr;
+    desc.positions = part(m.positions, first_vertex, set.position_stride);
     desc.vertex_count = m.vertex_offsets[i + 1] - first_vertex;
     desc.position_stride = set.position_stride;
     desc.index_type = m.index_type;
-    desc.indices =
-        m.index_offsets[i + 1] > first_index
-            ? static_cast<const unsigned char*>(m.indices) + first_index * set.index_bytes
-            : nullptr;
+    desc.indices = part(m.indices, first_index, set.index_bytes);
     desc.index_count = m.index_offsets[i + 1] - first_index;
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, &desc, input)) return status;

@@ -55,15 +55,6 @@ static size_t make_sphere(uint32_t rings, uint32_t segments, double cx, double* 
     return t / 3;
 }
 
-static void* allocate(size_t bytes) {
-    void* memory = malloc(bytes);
-    if (!memory) {
-        fprintf(stderr, "out of memory\n");
-        exit(1);
-    }
-    return memory;
-}
-
 static void fail(const char* what, polymass_context* context) {
     fprintf(stderr, "%s: %s\n", what, polymass_context_message(context));
     exit(1);
@@ -88,18 +79,18 @@ int main(int argc, char** argv) {
     const size_t vertex_count = 2 + (size_t)(segments - 1) * rings;
     const size_t face_count = 2 * (size_t)rings * (segments - 1);
     const size_t index_count = 3 * face_count;
-    double* positions = allocate(meshes * vertex_count * 3 * sizeof *positions);
-    uint32_t* indices = allocate(meshes * index_count * sizeof *indices);
-    uint32_t* global_indices = allocate(meshes * index_count * sizeof *global_indices);
-    uint64_t* vertex_offsets = allocate((meshes + 1) * sizeof *vertex_offsets);
-    uint64_t* index_offsets = allocate((meshes + 1) * sizeof *index_offsets);
-    polymass_mesh_desc* descs = allocate(meshes * sizeof *descs);
-    polymass_batch_item* items = allocate(meshes * sizeof *items);
-    polymass_mass_properties* single = allocate(meshes * sizeof *single);
-    polymass_mass_properties* batch = allocate(meshes * sizeof *batch);
-    double* volumes = allocate(meshes * sizeof *volumes);
-    int32_t* status = allocate(meshes * sizeof *status);
-    double* seconds = allocate((size_t)rounds * PATHS * sizeof *seconds);
+    double* positions = checked_malloc(meshes * vertex_count * 3 * sizeof *positions);
+    uint32_t* indices = checked_malloc(meshes * index_count * sizeof *indices);
+    uint32_t* global_indices = checked_malloc(meshes * index_count * sizeof *global_indices);
+    uint64_t* vertex_offsets = checked_malloc((meshes + 1) * sizeof *vertex_offsets);
+    uint64_t* index_offsets = checked_malloc((meshes + 1) * sizeof *index_offsets);
+    polymass_mesh_desc* descs = checked_malloc(meshes * sizeof *descs);
+    polymass_batch_item* items = checked_malloc(meshes * sizeof *items);
+    polymass_mass_properties* single = checked_malloc(meshes * sizeof *single);
+    polymass_mass_properties* batch = checked_malloc(meshes * sizeof *batch);
+    double* volumes = checked_malloc(meshes * sizeof *volumes);
+    int32_t* status = checked_malloc(meshes * sizeof *status);
+    double* seconds = checked_malloc((size_t)rounds * PATHS * sizeof *seconds);
     double medians[PATHS];
     polymass_context* context = NULL;
     polymass_packed_meshes local = POLYMASS_PACKED_MESHES_INIT;
