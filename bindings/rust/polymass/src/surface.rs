@@ -2,6 +2,7 @@
 //! copying them: packed slices, or positions interleaved with other vertex
 //! attributes at any byte stride.
 
+use std::fmt;
 use std::mem::{size_of, size_of_val};
 
 use polymass_sys as sys;
@@ -136,7 +137,7 @@ fn bytes_of<T: sealed::Sealed>(items: &[T]) -> &[u8] {
 /// assert!((p.volume - 1.0 / 6.0).abs() < 1e-15);
 /// # Ok::<(), polymass::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct Positions<'a> {
     /// From the first coordinate of vertex 0 to (at least) the last of the
     /// last vertex.
@@ -286,6 +287,22 @@ impl<'a> Positions<'a> {
     }
 }
 
+/// What the data are, not the numbers: a vertex buffer may be large.
+impl fmt::Debug for Positions<'_> {
+    fn fmt(&self, formatter: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let coordinate = match self.position_type {
+            sys::POLYMASS_POSITION_FLOAT32 => "f32",
+            _ => "f64",
+        };
+        formatter
+            .debug_struct("Positions")
+            .field("coordinate", &coordinate)
+            .field("len", &self.count)
+            .field("stride_bytes", &self.stride)
+            .finish()
+    }
+}
+
 fn invalid(message: String) -> Error {
     Error::new(sys::POLYMASS_ERROR_INVALID_ARGUMENT, message)
 }
@@ -328,7 +345,7 @@ impl<'a, V: Vertex> From<&'a Vec<V>> for Positions<'a> {
 /// assert!((properties.volume - 1.0 / 6.0).abs() < 1e-15);
 /// # Ok::<(), polymass::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy)]
+#[derive(Clone, Copy)]
 pub struct Surface<'a> {
     positions: Positions<'a>,
     index_type: u32,
@@ -439,6 +456,28 @@ impl<'a> Surface<'a> {
             face_sizes,
             face_count,
         }
+    }
+}
+
+/// What the data are, not the numbers.
+///
+/// ```
+/// let positions = [[0.0f32; 3]; 3];
+/// let surface = polymass::Surface::triangles(&positions, &[[0u16, 1, 2]]);
+/// assert_eq!(
+///     format!("{surface:?}"),
+///     "Surface { positions: Positions { coordinate: \"f32\", len: 3, stride_bytes: 12 }, \
+///      index_count: 3, face_count: 1 }"
+/// );
+/// ```
+impl fmt::Debug for Surface<'_> {
+    fn fmt(&self, formatter: &mut fmt::Formatter<'_>) -> fmt::Result {
+        formatter
+            .debug_struct("Surface")
+            .field("positions", &self.positions)
+            .field("index_count", &self.index_count)
+            .field("face_count", &self.face_count())
+            .finish()
     }
 }
 
