@@ -3,7 +3,7 @@
 use polymass_sys as sys;
 
 use crate::codes::bit_set;
-use crate::error::ErrorKind;
+use crate::error::{Error, ErrorKind};
 
 /// How often a problem occurs and where: the first few locations.
 ///
@@ -93,7 +93,8 @@ bit_set! {
 /// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
 /// let mesh = Mesh::new(&Surface::triangles(&positions, &open), &Options::new())?;
 /// let report = mesh.diagnostics()?;
-/// assert_eq!(report.status, Some(ErrorKind::Open));
+/// assert_eq!(report.error.as_ref().map(|e| e.kind()), Some(ErrorKind::Open));
+/// assert!(report.error.unwrap().message().contains("edge"));
 /// assert_eq!(report.open_edges.count, 3);
 /// assert_eq!(report.open_edges.first.len(), 3); // the rim of the missing face
 /// assert!(report.misoriented_edges.first.is_empty());
@@ -103,10 +104,10 @@ bit_set! {
 #[non_exhaustive]
 pub struct Diagnostics {
     /// The surface's own verdict, as the solid mode judges it whatever mode
-    /// answered: `None` for a valid solid, else its first defect (the
-    /// message is the mesh's, [`Mesh::status`](crate::Mesh::status), when
-    /// the solid mode was asked).
-    pub status: Option<ErrorKind>,
+    /// answered: `None` for a valid solid, else its first defect with the
+    /// library's message saying where (when no mode answered, each later
+    /// mode's reason follows, as in [`Mesh::status`](crate::Mesh::status)).
+    pub error: Option<Error>,
     /// Which checks ran to their end.
     pub checks: Checks,
     /// Number of faces.
@@ -154,9 +155,10 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
-    pub(crate) fn from_raw(raw: &sys::polymass_diagnostics) -> Diagnostics {
+    /// The report, and the mesh's message, which is its status's.
+    pub(crate) fn from_raw(raw: &sys::polymass_diagnostics, message: String) -> Diagnostics {
         Diagnostics {
-            status: ErrorKind::from_code(raw.status),
+            error: ErrorKind::from_code(raw.status).map(|_| Error::new(raw.status, message)),
             checks: Checks::from_bits(raw.checks),
             face_count: raw.face_count,
             used_vertex_count: raw.used_vertex_count,
@@ -209,7 +211,7 @@ impl Diagnostics {
         }
     }
 
-    /// Whether the surface is a valid solid (no [`status`](Diagnostics::status)).
+    /// Whether the surface is a valid solid (no [`error`](Diagnostics::error)).
     ///
     /// ```
     /// use polymass::{Mesh, Options, Surface};
@@ -221,6 +223,6 @@ impl Diagnostics {
     /// # Ok::<(), polymass::Error>(())
     /// ```
     pub fn is_solid(&self) -> bool {
-        self.status.is_none()
+        self.error.is_none()
     }
 }

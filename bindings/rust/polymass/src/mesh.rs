@@ -115,7 +115,10 @@ impl Mesh {
     }
 
     /// The verdict: `Ok` when a mode of the options' chain answered,
-    /// otherwise the error with the mesh's message (why each mode failed).
+    /// otherwise the error with the mesh's message: what is wrong with the
+    /// surface, then why each later mode failed. What is wrong with a
+    /// surface that a later mode answered is in its
+    /// [`diagnostics`](Mesh::diagnostics).
     ///
     /// ```
     /// use polymass::{Mesh, Options, Surface};
@@ -133,13 +136,20 @@ impl Mesh {
         if status == sys::POLYMASS_OK {
             return Ok(());
         }
+        Err(Error::new(status, self.message()))
+    }
+
+    /// What is wrong with the surface as given, in words
+    /// (`polymass_mesh_message`): "" for a valid solid.
+    fn message(&self) -> String {
         // SAFETY: never NULL, NUL-terminated, valid as long as the mesh.
         let message = unsafe { CStr::from_ptr(sys::polymass_mesh_message(self.as_raw())) };
-        Err(Error::new(status, message.to_string_lossy().into_owned()))
+        message.to_string_lossy().into_owned()
     }
 
     /// What the analysis found: every check the options did not skip, run
-    /// to its end. Written for every mesh, answered or not.
+    /// to its end, and the surface's own verdict with its message. Written
+    /// for every mesh, answered or not.
     pub fn diagnostics(&self) -> Result<Diagnostics> {
         let empty = sys::polymass_diagnostics {
             struct_size: struct_size::<sys::polymass_diagnostics>(),
@@ -150,7 +160,7 @@ impl Mesh {
         let raw = self.ask(empty, |out, context, mesh| unsafe {
             sys::polymass_mesh_diagnostics(out, context, mesh)
         })?;
-        Ok(Diagnostics::from_raw(&raw))
+        Ok(Diagnostics::from_raw(&raw, self.message()))
     }
 
     /// The shells, numbered from 0 in the order of their first faces. A

@@ -217,7 +217,7 @@ fn verdicts_everywhere() {
                 let mesh = analyse(&shape, on);
                 let found = mesh.status().err().map(|e| e.kind());
                 assert_eq!(found, expected, "{what}: mesh with the check {on}");
-                let verdict = mesh.diagnostics().unwrap().status;
+                let verdict = mesh.diagnostics().unwrap().error.map(|e| e.kind());
                 assert_eq!(verdict, expected, "{what}: report with the check {on}");
             }
         }
@@ -260,8 +260,8 @@ fn every_call_refuses_overlapping_cubes_by_default() {
     refused(mesh.mass_properties(&body).map(|p| p.volume), "mesh mass");
     refused(mesh.moments().map(|m| m.volume()), "moments");
     assert_eq!(
-        mesh.diagnostics().unwrap().status,
-        Some(ErrorKind::Intersecting)
+        mesh.diagnostics().unwrap().error,
+        Some(mesh.status().unwrap_err())
     );
     for options in [
         Options::new().skip_intersection_check(true),
@@ -299,7 +299,7 @@ fn overlapping_cubes_are_refused_naming_the_faces_and_counted_twice_skipped() {
     assert!(low < 6 && (6..12).contains(&high), "{low}, {high}");
     let named = format!("faces {low} (shell 0) and {high} (shell 1) cross each other");
     assert!(error.message().contains(&named), "{error}");
-    assert_eq!(report.status, Some(error.kind()));
+    assert_eq!(report.error, Some(error.clone()));
     // A mesh is refused the same way, with the same message.
     assert_eq!(analyse(&shape, true).status(), Err(error));
     // Without the check the overlap is counted twice: what the library reports.
@@ -310,7 +310,10 @@ fn overlapping_cubes_are_refused_naming_the_faces_and_counted_twice_skipped() {
 fn the_report_lists_crossing_face_pairs_lowest_first() {
     let shape = overlapping_cubes();
     let found = report(&shape, true);
-    assert_eq!(found.status, Some(ErrorKind::Intersecting));
+    assert_eq!(
+        found.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::Intersecting)
+    );
     assert!(found.checks.contains(Checks::INTERSECTIONS));
     assert_eq!(found.shell_count, 2);
     let pairs = &found.intersecting_face_pairs;
@@ -338,7 +341,10 @@ fn the_report_names_shells_inside_out_and_counted_twice() {
     let shape = cube_with_cavity().with(&cuboid([6.0, 0.0, 0.0], [7.0, 1.0, 1.0]).reversed());
     let mesh = analyse(&shape, true);
     let found = mesh.diagnostics().unwrap();
-    assert_eq!(found.status, Some(ErrorKind::Inverted));
+    assert_eq!(
+        found.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::Inverted)
+    );
     let error = mesh.status().unwrap_err();
     assert!(error.message().contains("shell 2"), "{error}");
     assert_eq!(found.shell_count, 3);
@@ -350,7 +356,10 @@ fn the_report_names_shells_inside_out_and_counted_twice() {
 
     let mesh = analyse(&solid_in_solid(), true);
     let found = mesh.diagnostics().unwrap();
-    assert_eq!(found.status, Some(ErrorKind::Intersecting));
+    assert_eq!(
+        found.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::Intersecting)
+    );
     let error = mesh.status().unwrap_err();
     assert!(error.message().contains("shell 1"), "{error}");
     assert_eq!(
@@ -453,7 +462,10 @@ fn shells_before_the_checks_that_judge_them_are_listed_unjudged() {
     let mesh = analyse(&inverted, true);
     assert_eq!(kinds(&mesh.shells().unwrap()), [ShellKind::Unjudged]);
     let report = mesh.diagnostics().unwrap();
-    assert_eq!(report.status, Some(ErrorKind::Inverted));
+    assert_eq!(
+        report.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::Inverted)
+    );
     assert_close(report.signed_volume.unwrap(), -1.0 / 6.0, "inverted volume");
     let accepting = Options::new().accept_inverted(true);
     let turned = Mesh::new(&inverted.surface(), &accepting)
@@ -482,7 +494,7 @@ fn valid_solids_give_bit_identical_results_with_the_check() {
             let checked = compute(&shape, true).unwrap_or_else(|e| panic!("{what}: {e}"));
             assert_same_but_unchecked(&checked, &compute(&shape, false).unwrap(), &what);
             let found = report(&shape, true);
-            assert!(found.is_solid(), "{what}: {:?}", found.status);
+            assert!(found.is_solid(), "{what}: {:?}", found.error);
             assert_eq!(found.intersecting_face_pairs.count, 0, "{what}");
             assert_eq!(found.touching_face_pairs.count, 0, "{what}");
         }
@@ -562,7 +574,7 @@ fn touching_faces_are_a_warning_with_locations() {
             assert_eq!(plain.warnings, Warnings::INTERSECTIONS_UNCHECKED, "{what}");
             assert_same_body(&checked, &plain, &what);
             let found = report(&shape, true);
-            assert!(found.is_solid(), "{what}: {:?}", found.status);
+            assert!(found.is_solid(), "{what}: {:?}", found.error);
             assert_eq!(found.intersecting_face_pairs.count, 0, "{what}");
             let touching = &found.touching_face_pairs;
             assert!(touching.count >= 1, "{what}");

@@ -42,8 +42,8 @@ fn flipped_and_missing_faces_are_repaired_within_the_bound() {
     let one_call =
         polymass::mass_properties(&surface, &Options::new().repair(true), &Body::density(2.0));
     assert_eq!(one_call.unwrap(), p);
-    // What the surface itself is, whatever answered.
-    assert!(mesh.diagnostics().unwrap().status.is_some());
+    // What is wrong with the surface itself, whatever answered.
+    assert!(mesh.diagnostics().unwrap().error.is_some());
     assert_eq!(provenance.mode, Mode::Repair);
     assert_eq!(provenance.holes.count, 1);
     assert_eq!(provenance.reoriented_faces.count, 1);
