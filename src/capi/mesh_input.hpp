@@ -20,8 +20,9 @@ struct MeshInput {
     std::size_t position_stride = 0;
     const unsigned char* indices = nullptr;
     std::size_t index_count = 0;
-    // What the indices count from: 0, or a packed mesh's first vertex when
-    // they count from the packed array's (POLYMASS_INDICES_GLOBAL).
+    // What the caller's indices count from, added back to an index a message
+    // names: a packed mesh's first vertex when its global indices were
+    // rebased to its own (POLYMASS_INDICES_GLOBAL, packed_api.cpp), else 0.
     uint32_t index_base = 0;
     const uint32_t* face_sizes = nullptr;
     std::size_t face_count = 0;
@@ -56,7 +57,7 @@ decltype(auto) visit_mesh(const MeshInput& input, Visit&& visit) {
             using Index = decltype(index);
             return core::MeshView<Scalar, Index>{{input.positions, input.position_stride},
                                                  input.vertex_count,
-                                                 {input.indices, input.index_base},
+                                                 {input.indices},
                                                  input.index_count,
                                                  input.face_sizes,
                                                  input.face_count};

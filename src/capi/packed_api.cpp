@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cstring>
 #include <limits>
+#include <memory_resource>
+#include <vector>
 
 #include "api_guard.hpp"
 #include "item_threads.hpp"
@@ -120,6 +122,33 @@ int32_t read_set(polymass_context* context, const polymass_packed_results* resul
     return POLYMASS_OK;
 }
 
+template <class Index>
+void rebase_as(const unsigned char* indices, std::size_t count, uint32_t first, uint32_t* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        Index index;
+        std::memcpy(&index, indices + i * sizeof index, sizeof index);
+        out[i] = uint32_t(index) - first;
+    }
+}
+
+// A mesh's global indices counted from its own first vertex instead, in
+// `local`, which the input then reads: the mesh is then read as a mesh of
+// its own (nothing of the packed array outside its part), at the cost of one
+// pass over its indices. In 32 bits, modulo 2^32: an index below `first`
+// wraps past every vertex of the mesh (read_set made first + vertex count at
+// most 2^32), so it is out of range as it should be; messages add `first`
+// back.
+void rebase(MeshInput& input, uint32_t first, std::pmr::vector<uint32_t>& local) {
+    local.resize(input.index_count);
+    if (input.index_type == POLYMASS_INDEX_UINT16)
+        rebase_as<uint16_t>(input.indices, input.index_count, first, local.data());
+    else
+        rebase_as<uint32_t>(input.indices, input.index_count, first, local.data());
+    input.index_type = POLYMASS_INDEX_UINT32;
+    input.indices = reinterpret_cast<const unsigned char*>(local.data());
+    input.index_base = first;
+}
+
 // Mesh i of the set, answered as polymass_mass_properties_compute answers a
 // mesh given alone (its surface read from a polymass_mesh_desc of its part of
 // the arrays); the status, with the message in the context.
@@ -142,7 +171,8 @@ int32_t compute_mesh(const PackedSet& set, uint64_t i, polymass_context* context
     desc.index_count = m.index_offsets[i + 1] - first_index;
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, &desc, input)) return status;
-    if (m.index_base == POLYMASS_INDICES_GLOBAL) input.index_base = uint32_t(first_vertex);
+    std::pmr::vector<uint32_t> rebased(&context->memory);
+    if (m.index_base == POLYMASS_INDICES_GLOBAL) rebase(input, uint32_t(first_vertex), rebased);
     Answer answer;
     if (const int32_t status = analyse_surface(context, input, set.options, answer, nullptr))
         return status;

@@ -37,15 +37,11 @@ private:
 template <class Index>
 struct IndexArray {
     const unsigned char* base = nullptr;
-    // Subtracted from every index, modulo 2^32: a packed mesh's indices may
-    // count from the first vertex of the whole packed array (its own first
-    // vertex is `first`), and one below it wraps out of range.
-    std::uint32_t first = 0;
 
     std::uint32_t operator[](std::size_t position) const {
         Index index;
         std::memcpy(&index, base + position * sizeof(Index), sizeof index);
-        return std::uint32_t(index) - first;
+        return index;
     }
 };
 

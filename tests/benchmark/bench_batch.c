@@ -5,14 +5,17 @@
    from the packed array's), each on one thread and on two
    (polymass_context_set_threads). The meshes are spheres of `faces` triangles
    (a latitude-longitude grid, closed), each at its own place, in one packed
-   array, computed with the default options (every check, the intersection
-   check included). Runs are interleaved (every path once per round) and the
+   array, computed with the options named (default: the default options,
+   every check, the intersection check included; "topology": the topology
+   checks without the intersection check; "trusted": no check,
+   POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, where the per-mesh costs around the
+   computation weigh most). Runs are interleaved (every path once per round) and the
    median of the rounds is printed, in meshes/s and as ratios measured in the
    same run: the packed call against the item batch, two threads against one.
    Every path's volumes are checked bit for bit against the single calls'.
    Prints figures; asserts nothing about speed.
-   Usage: bench_batch [meshes] [faces per mesh] [rounds]
-   (default: 5,000 meshes of 1,000 triangles, 5 rounds) */
+   Usage: bench_batch [meshes] [faces per mesh] [rounds] [default|topology|trusted]
+   (default: 5,000 meshes of 1,000 triangles, 5 rounds, the default options) */
 #include <polymass/polymass.h>
 
 #include <math.h>
@@ -74,6 +77,16 @@ int main(int argc, char** argv) {
     const size_t meshes = argc > 1 ? (size_t)atof(argv[1]) : 5000;
     const size_t wanted_faces = argc > 2 ? (size_t)atof(argv[2]) : 1000;
     const int rounds = argc > 3 ? atoi(argv[3]) : 5;
+    const char* checks = argc > 4 ? argv[4] : "default";
+    polymass_options options = POLYMASS_OPTIONS_INIT;
+    if (strcmp(checks, "topology") == 0) {
+        options.flags = POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
+    } else if (strcmp(checks, "trusted") == 0) {
+        options.flags = POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    } else if (strcmp(checks, "default") != 0) {
+        fprintf(stderr, "options: default, topology or trusted, not %s\n", checks);
+        return 1;
+    }
     /* faces = 2 * rings * (segments - 1): segments = 11, rings = faces / 20. */
     const uint32_t segments = 11, rings = (uint32_t)(wanted_faces / 20 > 3 ? wanted_faces / 20 : 3);
     const size_t vertex_count = 2 + (size_t)(segments - 1) * rings;
@@ -114,6 +127,7 @@ int main(int argc, char** argv) {
         polymass_batch_item_init(&items[m], sizeof items[m]);
         items[m].desc = &descs[m];
         items[m].properties = &batch[m];
+        items[m].options = &options;
     }
     vertex_offsets[meshes] = meshes * vertex_count, index_offsets[meshes] = meshes * index_count;
     local.positions = positions;
@@ -136,8 +150,8 @@ int main(int argc, char** argv) {
             const double start = now_seconds();
             if (path == LOOP) {
                 for (size_t m = 0; m < meshes; ++m)
-                    if (polymass_mass_properties_compute(&single[m], NULL, context, &descs[m], NULL,
-                                                         NULL) != POLYMASS_OK)
+                    if (polymass_mass_properties_compute(&single[m], NULL, context, &descs[m],
+                                                         &options, NULL) != POLYMASS_OK)
                         fail("single call", context);
             } else if (path == BATCH_1 || path == BATCH_2) {
                 if (polymass_batch_compute(items, meshes, &failed, context) != POLYMASS_OK ||
@@ -145,7 +159,7 @@ int main(int argc, char** argv) {
                     fail("batch", context);
             } else if (polymass_packed_compute(&results, &failed, context,
                                                path < GLOBAL_1 ? &local : &global,
-                                               NULL) != POLYMASS_OK ||
+                                               &options) != POLYMASS_OK ||
                        failed) {
                 fail("packed call", context);
             }
@@ -165,9 +179,9 @@ int main(int argc, char** argv) {
     medians_of(seconds, rounds, PATHS, medians);
 
     printf(
-        "libpolymass %s: %zu closed meshes of %zu triangles (%zu vertices), default options, "
+        "libpolymass %s: %zu closed meshes of %zu triangles (%zu vertices), %s options, "
         "median of %d rounds\n",
-        polymass_version_string(), meshes, face_count, vertex_count, rounds);
+        polymass_version_string(), meshes, face_count, vertex_count, checks, rounds);
     for (int path = 0; path < PATHS; ++path)
         printf("  %-34s %8.1f ms  %8.0f meshes/s  %6.1f M triangles/s\n", path_names[path],
                1e3 * medians[path], meshes / medians[path],

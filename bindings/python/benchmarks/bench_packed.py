@@ -1,10 +1,13 @@
 """Meshes/s of the packed call from Python, on the C benchmark's workload.
 
     python bindings/python/benchmarks/bench_packed.py [--meshes N] [--faces N] [--rounds N]
+        [--checks default|topology|trusted]
 
 The workload of tests/benchmark/bench_batch.c: closed latitude-longitude
 spheres of 1,000 triangles (default 5,000 of them), each at its own place, in
-one packed array, with the default options. Times, interleaved and each as the
+one packed array, with the options named as bench_batch takes them (default:
+the default options; "topology": no intersection check; "trusted": no check,
+where the per-mesh costs around the computation weigh most). Times, interleaved and each as the
 median of the rounds, on one thread and on two: the C function itself
 (polymass_packed_compute called through cffi on the arrays already described:
 what a C caller pays, the bound of this run), `polymass.packed_mass_properties`
@@ -24,6 +27,7 @@ import numpy as np
 
 import polymass
 from polymass._library import ffi, lib, new_struct, working_context
+from polymass._options import c_options as options_struct
 
 
 def sphere(rings: int, segments: int) -> tuple[np.ndarray, np.ndarray]:
@@ -62,7 +66,14 @@ def main() -> None:
     parser.add_argument("--meshes", type=int, default=5000)
     parser.add_argument("--faces", type=int, default=1000)
     parser.add_argument("--rounds", type=int, default=5)
+    parser.add_argument("--checks", choices=("default", "topology", "trusted"), default="default")
     arguments = parser.parse_args()
+    options = {
+        "default": polymass.Options(),
+        "topology": polymass.Options(skip_intersection_check=True),
+        "trusted": polymass.Options(skip_checks=True),
+    }[arguments.checks]
+    c_options = options_struct(options)
     count, segments = arguments.meshes, 11
     rings = max(arguments.faces // 20, 3)
     one_vertices, one_faces = sphere(rings, segments)
@@ -92,7 +103,7 @@ def main() -> None:
 
     def c_call(threads: int) -> np.ndarray:
         ctx = working_context(threads)
-        status = lib.polymass_packed_compute(c_results, failed, ctx, c_meshes, ffi.NULL)
+        status = lib.polymass_packed_compute(c_results, failed, ctx, c_meshes, c_options)
         if status != 0 or failed[0]:
             raise RuntimeError(ffi.string(lib.polymass_context_message(ctx)).decode())
         return c_volume
@@ -105,15 +116,18 @@ def main() -> None:
             face_offsets,
             global_indices=True,
             threads=threads,
+            options=options,
         ).volume
 
     def packed_local(threads: int) -> np.ndarray:
         return polymass.packed_mass_properties(
-            vertices, local, vertex_offsets, face_offsets, threads=threads
+            vertices, local, vertex_offsets, face_offsets, threads=threads, options=options
         ).volume
 
     def old_batch(threads: int) -> np.ndarray:
-        return np.array([p.volume for p in polymass.batch(meshes, threads=threads)])
+        return np.array(
+            [p.volume for p in polymass.batch(meshes, threads=threads, options=options)]
+        )
 
     paths = {
         "C packed call (cffi)": c_call,
@@ -137,7 +151,7 @@ def main() -> None:
     rate = {key: count / statistics.median(values) for key, values in times.items()}
     print(
         f"polymass {polymass.__version__}: {count:,} closed meshes of {nf:,} triangles, "
-        f"default options, median of {arguments.rounds} interleaved rounds"
+        f"{arguments.checks} options, median of {arguments.rounds} interleaved rounds"
     )
     c_rates = (rate[("C packed call (cffi)", 1)], rate[("C packed call (cffi)", 2)])
     for name in paths:
