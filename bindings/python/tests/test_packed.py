@@ -191,3 +191,7 @@ def test_arguments_that_describe_no_packed_set():
         call(vertices, faces, descending, face_offsets)
     with pytest.raises(polymass.IndexOutOfRangeError, match="face 0"):
         call(vertices, -faces, vertex_offsets, face_offsets)
+    too_large = faces.copy()
+    too_large[7, 2] = 2**32
+    with pytest.raises(polymass.IndexOutOfRangeError, match="face 7"):
+        call(vertices, too_large, vertex_offsets, face_offsets)
