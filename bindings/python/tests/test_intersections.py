@@ -337,7 +337,7 @@ def test_many_shells_are_listed():
     assert all(isinstance(s, polymass.Shell) for s in shells)
 
 
-def test_shells_of_a_surface_refused_before_them_are_unjudged(tetrahedron, cube):
+def test_shells_are_unjudged_only_when_a_check_before_them_failed(tetrahedron, cube):
     vertices, faces = tetrahedron
     open_surface = polymass.Mesh(vertices, faces[:3])
     assert open_surface.error is polymass.OpenSurfaceError
@@ -346,11 +346,14 @@ def test_shells_of_a_surface_refused_before_them_are_unjudged(tetrahedron, cube)
     [shell] = open_surface.shells
     assert (shell.kind, shell.face_count, shell.first_face) == ("unjudged", 3, 0)
     assert np.isnan(shell.signed_volume)
-    # Inside out as a whole: refused, its volume negative.
+    # Inside out as a whole: closed, manifold and oriented, so its shell is judged
+    # (signed as found) and the surface refused.
     inverted = polymass.Mesh(vertices, faces[:, ::-1])
     assert inverted.error is polymass.InvertedError
-    assert inverted.diagnostics.signed_volume == pytest.approx(-1 / 6, rel=1e-15)
-    assert [s.face_count for s in inverted.shells] == [4]
+    assert inverted.diagnostics.checks & polymass.Checks.SHELLS
+    [shell] = inverted.shells
+    assert (shell.kind, shell.face_count) == ("inverted", 4)
+    assert shell.signed_volume == pytest.approx(-1 / 6, rel=1e-15)
     turned = _shells(vertices, faces[:, ::-1], accept_inverted=True)
     assert [(s.kind, s.face_count) for s in turned] == [("solid", 4)]
     assert turned[0].signed_volume == pytest.approx(1 / 6, rel=1e-15)

@@ -77,6 +77,17 @@ def test_a_struct_layout_that_disagrees_is_refused(minor, size_change):
         _library._check_struct_sizes(fake)
 
 
+def test_a_library_without_a_function_of_the_header_is_refused():
+    fake = _FakeLibrary(_header.POLYMASS_VERSION_NUMBER)
+
+    def missing():
+        raise AttributeError("undefined symbol: polymass_sizeof_shell")
+
+    fake.polymass_sizeof_shell = missing
+    with pytest.raises(ImportError, match="has no polymass_sizeof_shell"):
+        _library._check_struct_sizes(fake)
+
+
 def test_a_missing_library_is_an_import_error_naming_the_variable_and_soname():
     result = _import_with({"POLYMASS_LIBRARY": "/nonexistent/libpolymass.so.2"})
     assert result.returncode != 0

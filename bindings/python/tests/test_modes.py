@@ -115,8 +115,10 @@ def test_a_mesh_tells_which_mode_answered(sphere):
     flipped = triangles.copy()
     flipped[::5] = flipped[::5, ::-1]
     mesh = polymass.Mesh(vertices, flipped, modes=("solid", "repair"))
-    assert mesh.ok and mesh.message == ""
+    # It answered; what is wrong with the surface as given is still said.
+    assert mesh.ok and mesh.error is None
     assert mesh.diagnostics.solid_status == polymass.InconsistentOrientationError.status
+    assert mesh.message and mesh.message == polymass.Mesh(vertices, flipped).message
     assert mesh.diagnostics.misoriented_edges > 0
     assert mesh.provenance.mode == "repaired"
     assert mesh.mass_properties().provenance == mesh.provenance

@@ -79,7 +79,14 @@ def _check_struct_sizes(library) -> None:
     prefix = "polymass_sizeof_"
     for function in sorted(name for name in dir(library) if name.startswith(prefix)):
         struct = "polymass_" + function[len(prefix) :]
-        ours, theirs = ffi.sizeof(struct), getattr(library, function)()
+        try:
+            theirs = getattr(library, function)()
+        except (AttributeError, ffi.error) as error:
+            raise ImportError(
+                f"polymass: the loaded library has no {function}: it is not a build of the "
+                "header this binding was built from"
+            ) from error
+        ours = ffi.sizeof(struct)
         if theirs < ours or (same_version and theirs != ours):
             raise ImportError(
                 f"polymass: {struct} is {theirs} bytes in the loaded library and {ours} in this "

@@ -42,7 +42,9 @@ class Diagnostics(Verdict):
     """The analysis's verdict, what `mass_properties` with the same options
     reports: 0 (POLYMASS_OK) when a mode answered, else an error status."""
     message: str
-    """The library's message for that status ("" when it is OK)."""
+    """What is wrong with the surface as given, in words: the message of
+    ``solid_status`` ("" for a valid solid), kept when a later mode answered;
+    when none answered, each later mode's reason follows."""
     solid_status: int
     """The surface's own verdict as the "solid" mode judges it, whatever mode
     answered: 0 for a valid solid, else its first defect."""

@@ -151,8 +151,11 @@ def error_class(status: int) -> type[Error]:
 
 
 class Verdict:
-    """What an analysis concluded: ``status`` (0, POLYMASS_OK, or an error status)
-    and the library's ``message`` saying what and where ("" when OK)."""
+    """What an analysis concluded: ``status``, 0 (POLYMASS_OK) when a mode of the
+    options' chain answered, else an error status; and the library's ``message``
+    saying what is wrong with the surface as given, and where ("" for a valid
+    solid; kept when a later mode answered, then followed by each later mode's
+    reason when none did)."""
 
     status: int
     message: str
