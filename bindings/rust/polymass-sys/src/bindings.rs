@@ -65,6 +65,8 @@ pub const POLYMASS_SHELL_NO_VOLUME: i32 = 5;
 pub const POLYMASS_MOMENTS_PARTIAL: u32 = 1;
 pub const POLYMASS_COUNTER_CLOCKWISE: i32 = 1;
 pub const POLYMASS_CLOCKWISE: i32 = -1;
+pub const POLYMASS_INDICES_LOCAL: u32 = 0;
+pub const POLYMASS_INDICES_GLOBAL: u32 = 1;
 unsafe extern "C" {
     pub fn polymass_version() -> u32;
 }
@@ -640,6 +642,129 @@ impl Default for polymass_batch_item {
         }
     }
 }
+#[repr(C)]
+#[derive(Debug, Copy, Clone)]
+pub struct polymass_packed_meshes {
+    pub struct_size: u32,
+    pub position_type: u32,
+    pub positions: *const ::std::os::raw::c_void,
+    pub position_stride: u64,
+    pub index_type: u32,
+    pub index_base: u32,
+    pub indices: *const ::std::os::raw::c_void,
+    pub mesh_count: u64,
+    pub vertex_offsets: *const u64,
+    pub index_offsets: *const u64,
+    pub mass_mode: u32,
+    pub reserved: u32,
+    pub mass_values: *const f64,
+}
+#[allow(clippy::unnecessary_operation, clippy::identity_op)]
+const _: () = {
+    ["Size of polymass_packed_meshes"][::std::mem::size_of::<polymass_packed_meshes>() - 80usize];
+    ["Alignment of polymass_packed_meshes"]
+        [::std::mem::align_of::<polymass_packed_meshes>() - 8usize];
+    ["Offset of field: polymass_packed_meshes::struct_size"]
+        [::std::mem::offset_of!(polymass_packed_meshes, struct_size) - 0usize];
+    ["Offset of field: polymass_packed_meshes::position_type"]
+        [::std::mem::offset_of!(polymass_packed_meshes, position_type) - 4usize];
+    ["Offset of field: polymass_packed_meshes::positions"]
+        [::std::mem::offset_of!(polymass_packed_meshes, positions) - 8usize];
+    ["Offset of field: polymass_packed_meshes::position_stride"]
+        [::std::mem::offset_of!(polymass_packed_meshes, position_stride) - 16usize];
+    ["Offset of field: polymass_packed_meshes::index_type"]
+        [::std::mem::offset_of!(polymass_packed_meshes, index_type) - 24usize];
+    ["Offset of field: polymass_packed_meshes::index_base"]
+        [::std::mem::offset_of!(polymass_packed_meshes, index_base) - 28usize];
+    ["Offset of field: polymass_packed_meshes::indices"]
+        [::std::mem::offset_of!(polymass_packed_meshes, indices) - 32usize];
+    ["Offset of field: polymass_packed_meshes::mesh_count"]
+        [::std::mem::offset_of!(polymass_packed_meshes, mesh_count) - 40usize];
+    ["Offset of field: polymass_packed_meshes::vertex_offsets"]
+        [::std::mem::offset_of!(polymass_packed_meshes, vertex_offsets) - 48usize];
+    ["Offset of field: polymass_packed_meshes::index_offsets"]
+        [::std::mem::offset_of!(polymass_packed_meshes, index_offsets) - 56usize];
+    ["Offset of field: polymass_packed_meshes::mass_mode"]
+        [::std::mem::offset_of!(polymass_packed_meshes, mass_mode) - 64usize];
+    ["Offset of field: polymass_packed_meshes::reserved"]
+        [::std::mem::offset_of!(polymass_packed_meshes, reserved) - 68usize];
+    ["Offset of field: polymass_packed_meshes::mass_values"]
+        [::std::mem::offset_of!(polymass_packed_meshes, mass_values) - 72usize];
+};
+impl Default for polymass_packed_meshes {
+    fn default() -> Self {
+        let mut s = ::std::mem::MaybeUninit::<Self>::uninit();
+        unsafe {
+            ::std::ptr::write_bytes(s.as_mut_ptr(), 0, 1);
+            s.assume_init()
+        }
+    }
+}
+#[repr(C)]
+#[derive(Debug, Copy, Clone)]
+pub struct polymass_packed_results {
+    pub struct_size: u32,
+    pub reserved: u32,
+    pub status: *mut i32,
+    pub warnings: *mut u32,
+    pub volume: *mut f64,
+    pub mass: *mut f64,
+    pub surface_area: *mut f64,
+    pub center_of_mass: *mut f64,
+    pub inertia: *mut f64,
+    pub principal_moments: *mut f64,
+    pub principal_axes: *mut f64,
+    pub error_bound_volume: *mut f64,
+    pub error_bound_center_of_mass: *mut f64,
+    pub error_bound_inertia: *mut f64,
+    pub messages: *mut ::std::os::raw::c_char,
+}
+#[allow(clippy::unnecessary_operation, clippy::identity_op)]
+const _: () = {
+    ["Size of polymass_packed_results"]
+        [::std::mem::size_of::<polymass_packed_results>() - 112usize];
+    ["Alignment of polymass_packed_results"]
+        [::std::mem::align_of::<polymass_packed_results>() - 8usize];
+    ["Offset of field: polymass_packed_results::struct_size"]
+        [::std::mem::offset_of!(polymass_packed_results, struct_size) - 0usize];
+    ["Offset of field: polymass_packed_results::reserved"]
+        [::std::mem::offset_of!(polymass_packed_results, reserved) - 4usize];
+    ["Offset of field: polymass_packed_results::status"]
+        [::std::mem::offset_of!(polymass_packed_results, status) - 8usize];
+    ["Offset of field: polymass_packed_results::warnings"]
+        [::std::mem::offset_of!(polymass_packed_results, warnings) - 16usize];
+    ["Offset of field: polymass_packed_results::volume"]
+        [::std::mem::offset_of!(polymass_packed_results, volume) - 24usize];
+    ["Offset of field: polymass_packed_results::mass"]
+        [::std::mem::offset_of!(polymass_packed_results, mass) - 32usize];
+    ["Offset of field: polymass_packed_results::surface_area"]
+        [::std::mem::offset_of!(polymass_packed_results, surface_area) - 40usize];
+    ["Offset of field: polymass_packed_results::center_of_mass"]
+        [::std::mem::offset_of!(polymass_packed_results, center_of_mass) - 48usize];
+    ["Offset of field: polymass_packed_results::inertia"]
+        [::std::mem::offset_of!(polymass_packed_results, inertia) - 56usize];
+    ["Offset of field: polymass_packed_results::principal_moments"]
+        [::std::mem::offset_of!(polymass_packed_results, principal_moments) - 64usize];
+    ["Offset of field: polymass_packed_results::principal_axes"]
+        [::std::mem::offset_of!(polymass_packed_results, principal_axes) - 72usize];
+    ["Offset of field: polymass_packed_results::error_bound_volume"]
+        [::std::mem::offset_of!(polymass_packed_results, error_bound_volume) - 80usize];
+    ["Offset of field: polymass_packed_results::error_bound_center_of_mass"]
+        [::std::mem::offset_of!(polymass_packed_results, error_bound_center_of_mass) - 88usize];
+    ["Offset of field: polymass_packed_results::error_bound_inertia"]
+        [::std::mem::offset_of!(polymass_packed_results, error_bound_inertia) - 96usize];
+    ["Offset of field: polymass_packed_results::messages"]
+        [::std::mem::offset_of!(polymass_packed_results, messages) - 104usize];
+};
+impl Default for polymass_packed_results {
+    fn default() -> Self {
+        let mut s = ::std::mem::MaybeUninit::<Self>::uninit();
+        unsafe {
+            ::std::ptr::write_bytes(s.as_mut_ptr(), 0, 1);
+            s.assume_init()
+        }
+    }
+}
 unsafe extern "C" {
     pub fn polymass_sizeof_allocator() -> u32;
 }
@@ -672,6 +797,12 @@ unsafe extern "C" {
 }
 unsafe extern "C" {
     pub fn polymass_sizeof_batch_item() -> u32;
+}
+unsafe extern "C" {
+    pub fn polymass_sizeof_packed_meshes() -> u32;
+}
+unsafe extern "C" {
+    pub fn polymass_sizeof_packed_results() -> u32;
 }
 unsafe extern "C" {
     pub fn polymass_allocator_init(allocator: *mut polymass_allocator, struct_size: u32) -> i32;
@@ -714,6 +845,18 @@ unsafe extern "C" {
 }
 unsafe extern "C" {
     pub fn polymass_batch_item_init(item: *mut polymass_batch_item, struct_size: u32) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_packed_meshes_init(
+        meshes: *mut polymass_packed_meshes,
+        struct_size: u32,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_packed_results_init(
+        results: *mut polymass_packed_results,
+        struct_size: u32,
+    ) -> i32;
 }
 unsafe extern "C" {
     pub fn polymass_context_create(
@@ -824,6 +967,15 @@ unsafe extern "C" {
         item_count: u64,
         out_failed: *mut u64,
         context: *mut polymass_context,
+    ) -> i32;
+}
+unsafe extern "C" {
+    pub fn polymass_packed_compute(
+        results: *const polymass_packed_results,
+        out_failed: *mut u64,
+        context: *mut polymass_context,
+        meshes: *const polymass_packed_meshes,
+        options: *const polymass_options,
     ) -> i32;
 }
 unsafe extern "C" {

@@ -44,6 +44,7 @@ fn flipped_and_missing_faces_are_repaired_within_the_bound() {
     assert_eq!(one_call.unwrap(), p);
     // What is wrong with the surface itself, whatever answered.
     assert!(mesh.diagnostics().unwrap().error.is_some());
+    assert!(mesh.status().is_ok());
     assert_eq!(provenance.mode, Mode::Repair);
     assert_eq!(provenance.holes.count, 1);
     assert_eq!(provenance.reoriented_faces.count, 1);
