@@ -446,27 +446,32 @@ fn shells_before_the_checks_that_judge_them_are_listed_unjudged() {
     let mut open = corner_tetrahedron(1.0, 1.0, 1.0);
     open.indices.truncate(9);
     open.face_sizes.truncate(3);
-    let unjudged = shells(&open, true);
+    let mesh = analyse(&open, true);
+    let unjudged = mesh.shells().unwrap();
     assert_eq!(kinds(&unjudged), [ShellKind::Unjudged]);
     assert_eq!((unjudged[0].face_count, unjudged[0].first_face), (3, 0));
     assert!(unjudged[0].signed_volume.is_nan());
+    assert!(!mesh.diagnostics().unwrap().checks.contains(Checks::SHELLS));
     let trusting = Options::new().skip_topology_checks(true);
     let cube = Mesh::new(&cuboid([0.0; 3], [1.0; 3]).surface(), &trusting).unwrap();
     assert_eq!(kinds(&cube.shells().unwrap()), [ShellKind::Unjudged]);
     assert!(cube.diagnostics().unwrap().checks.is_empty());
+}
 
-    // Inside out as a whole: refused before the shells are judged (a shell
-    // inside out among others is judged: see the test above), and accepted
-    // turned, a solid.
+/// A surface inside out as a whole is closed and oriented: its shell is
+/// judged, inside out and signed as found - or, accepted inverted, a solid
+/// counted turned.
+#[test]
+fn a_surface_inside_out_as_a_whole_has_its_shell_judged() {
     let inverted = corner_tetrahedron(1.0, 1.0, 1.0).reversed();
     let mesh = analyse(&inverted, true);
-    assert_eq!(kinds(&mesh.shells().unwrap()), [ShellKind::Unjudged]);
+    let listed = mesh.shells().unwrap();
+    assert_eq!(kinds(&listed), [ShellKind::Inverted]);
+    assert_close(listed[0].signed_volume, -1.0 / 6.0, "inverted volume");
     let report = mesh.diagnostics().unwrap();
-    assert_eq!(
-        report.error.as_ref().map(|e| e.kind()),
-        Some(ErrorKind::Inverted)
-    );
-    assert_close(report.signed_volume.unwrap(), -1.0 / 6.0, "inverted volume");
+    assert!(report.checks.contains(Checks::SHELLS));
+    assert_eq!(report.error, Some(mesh.status().unwrap_err()));
+    assert_eq!(report.error.map(|e| e.kind()), Some(ErrorKind::Inverted));
     let accepting = Options::new().accept_inverted(true);
     let turned = Mesh::new(&inverted.surface(), &accepting)
         .unwrap()

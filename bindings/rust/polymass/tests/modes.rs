@@ -42,8 +42,10 @@ fn flipped_and_missing_faces_are_repaired_within_the_bound() {
     let one_call =
         polymass::mass_properties(&surface, &Options::new().repair(true), &Body::density(2.0));
     assert_eq!(one_call.unwrap(), p);
-    // What is wrong with the surface itself, whatever answered.
-    assert!(mesh.diagnostics().unwrap().error.is_some());
+    // What is wrong with the surface itself, whatever answered, in words.
+    let defect = mesh.diagnostics().unwrap().error.unwrap();
+    assert!(!defect.message().is_empty(), "{defect}");
+    assert!(mesh.status().is_ok());
     assert_eq!(provenance.mode, Mode::Repair);
     assert_eq!(provenance.holes.count, 1);
     assert_eq!(provenance.reoriented_faces.count, 1);
