@@ -1,6 +1,7 @@
 """The rules of the public header's contract, checked on the header itself, run by ctest:
 
-    python3 tests/header/check_contract.py include/polymass/polymass.h <project version>
+    python3 tests/header/check_contract.py include/polymass/polymass.h <project version> \
+        [tests/header/c99_pedantic.c tests/header/cxx17_pedantic.cpp]
 
 The rules (the header's STABILITY and ERRORS sections promise them):
   - every public struct (`typedef struct polymass_X {`) starts with
@@ -12,7 +13,10 @@ The rules (the header's STABILITY and ERRORS sections promise them):
   - every function returning int32_t (a status) has a "Returns" sentence
     naming its statuses, each a status the header defines (POLYMASS_OK,
     POLYMASS_ERROR_X or its short form _X);
-  - no name ends in `_with_options`: options are per call, one way.
+  - no name ends in `_with_options`: options are per call, one way;
+  - the header's compile tests (the files given after the version) name
+    every function, so that a function added to the header is compiled at
+    its type too.
 
 The checker must be able to fail: the same run breaks copies of the real
 header one rule at a time (each struct, each function in turn) and requires
@@ -28,6 +32,7 @@ from pathlib import Path
 
 HEADER = Path()
 PROJECT_VERSION = (0, 0)
+COMPILE_TESTS = []
 
 
 @dataclass
@@ -291,12 +296,23 @@ class BrokenCopies(unittest.TestCase):
         self.assert_rejected(anchor, twin + anchor, "polymass_mesh_destroy_with_options")
 
 
+class CompileTests(unittest.TestCase):
+    def test_every_function_is_compiled_at_its_type(self):
+        names = [name for _, name, _ in functions(scan(HEADER.read_text()))]
+        for path in COMPILE_TESTS:
+            text = path.read_text()
+            missing = [name for name in names if not re.search(rf"\b{name}\b", text)]
+            with self.subTest(file=path.name):
+                self.assertEqual(missing, [], f"{path} does not name these functions")
+
+
 def main():
-    global HEADER, PROJECT_VERSION
-    if len(sys.argv) != 3:
-        sys.exit(f"usage: {sys.argv[0]} <polymass.h> <project version>")
+    global HEADER, PROJECT_VERSION, COMPILE_TESTS
+    if len(sys.argv) < 3:
+        sys.exit(f"usage: {sys.argv[0]} <polymass.h> <project version> [compile tests...]")
     HEADER = Path(sys.argv[1])
     PROJECT_VERSION = tuple(int(part) for part in sys.argv[2].split(".")[:2])
+    COMPILE_TESTS = [Path(path) for path in sys.argv[3:]]
     unittest.main(argv=sys.argv[:1], verbosity=1)
 
 
