@@ -43,15 +43,6 @@ typedef struct bench_mesh {
     uint32_t flags; /* options of both measures (welding) */
 } bench_mesh;
 
-static void* checked_malloc(size_t bytes) {
-    void* memory = malloc(bytes);
-    if (!memory) {
-        fprintf(stderr, "out of memory\n");
-        exit(1);
-    }
-    return memory;
-}
-
 static bench_mesh new_mesh(const char* name, size_t vertices, size_t triangles) {
     bench_mesh mesh = {{0}, {sizeof mesh.desc}, triangles, 0};
     snprintf(mesh.name, sizeof mesh.name, "%s", name);
