@@ -1,8 +1,8 @@
 /* A caller compiled against the 2.0.0 header (tests/abi/baseline, frozen),
  * run against the library of this tree: every size-prefixed struct is passed
  * with its 2.0.0 size, through every kind of call (initialisers, context,
- * the one call, a mesh and its questions, a batch, moments, polygons,
- * welding). Inputs must be read, outputs written only up to that size (the
+ * the one call, a mesh and its questions, a batch, a packed batch,
+ * moments, polygons, welding). Inputs must be read, outputs written only up to that size (the
  * bytes after each output struct are checked untouched), and the results
  * must be right. From 2.0 on the structs only grow: this is the caller that
  * shows an older one keeps working. Exits non-zero, saying what failed. */
@@ -151,6 +151,8 @@ static void check_initialisers(void) {
     CHECK_INIT(polymass_moments, polymass_moments_init);
     CHECK_INIT(polymass_polygon_properties, polymass_polygon_properties_init);
     CHECK_INIT(polymass_batch_item, polymass_batch_item_init);
+    CHECK_INIT(polymass_packed_meshes, polymass_packed_meshes_init);
+    CHECK_INIT(polymass_packed_results, polymass_packed_results_init);
     /* The library's own structs are at least as large as the 2.0.0 ones. */
     expect(polymass_sizeof_allocator() >= sizeof(polymass_allocator) &&
                polymass_sizeof_options() >= sizeof(polymass_options) &&
@@ -162,7 +164,9 @@ static void check_initialisers(void) {
                polymass_sizeof_provenance() >= sizeof(polymass_provenance) &&
                polymass_sizeof_moments() >= sizeof(polymass_moments) &&
                polymass_sizeof_polygon_properties() >= sizeof(polymass_polygon_properties) &&
-               polymass_sizeof_batch_item() >= sizeof(polymass_batch_item),
+               polymass_sizeof_batch_item() >= sizeof(polymass_batch_item) &&
+               polymass_sizeof_packed_meshes() >= sizeof(polymass_packed_meshes) &&
+               polymass_sizeof_packed_results() >= sizeof(polymass_packed_results),
            "polymass_sizeof_*: no struct smaller than in 2.0.0");
 }
 
@@ -324,6 +328,49 @@ static void check_batch(polymass_context* context, const polymass_mesh_desc* clo
     expect_untouched(properties[1].guard, "polymass_mass_properties (batch, refused)");
 }
 
+/* Two boxes packed into shared arrays (the second moved by +10 in x), in
+   columns; packed structs of 2.0.0 sizes. */
+static void check_packed(polymass_context* context) {
+    double positions[16][3];
+    uint32_t indices[72];
+    static const uint64_t vertex_offsets[3] = {0, 8, 16}, index_offsets[3] = {0, 36, 72};
+    static const double densities[2] = {1.0, 2.5};
+    polymass_packed_meshes meshes = POLYMASS_PACKED_MESHES_INIT;
+    GUARDED(polymass_packed_results) results;
+    int32_t status[2] = {-1, -1};
+    double volume[2] = {0, 0}, mass[2] = {0, 0}, center_of_mass[6] = {0};
+    uint64_t failed = 99;
+    int i, k;
+    for (i = 0; i < 8; ++i)
+        for (k = 0; k < 3; ++k) {
+            positions[i][k] = box_positions[i][k];
+            positions[8 + i][k] = box_positions[i][k] + (k == 0 ? 10.0 : 0.0);
+        }
+    for (i = 0; i < 36; ++i) indices[i] = indices[36 + i] = box_indices[i]; /* local */
+    meshes.positions = positions;
+    meshes.index_base = POLYMASS_INDICES_LOCAL;
+    meshes.indices = indices;
+    meshes.mesh_count = 2;
+    meshes.vertex_offsets = vertex_offsets;
+    meshes.index_offsets = index_offsets;
+    meshes.mass_mode = POLYMASS_MASS_FROM_DENSITY;
+    meshes.mass_values = densities;
+    polymass_packed_results_init(&results.value, sizeof results.value);
+    arm(results.guard);
+    results.value.status = status;
+    results.value.volume = volume;
+    results.value.mass = mass;
+    results.value.center_of_mass = center_of_mass;
+    check_status(polymass_packed_compute(&results.value, &failed, context, &meshes, NULL), context,
+                 "packed_compute");
+    expect(failed == 0 && status[0] == POLYMASS_OK && status[1] == POLYMASS_OK,
+           "packed: both boxes answered");
+    expect_near(volume[1], 6.0, "packed: volume");
+    expect_near(mass[1], 15.0, "packed: mass at density 2.5");
+    expect_near(center_of_mass[3], 11.5, "packed: the second box's centre of mass x");
+    expect_untouched(results.guard, "polymass_packed_results");
+}
+
 int main(void) {
     counting count = {0, 0};
     polymass_allocator allocator = POLYMASS_ALLOCATOR_INIT;
@@ -365,6 +412,7 @@ int main(void) {
     check_mesh(context, &desc);
     check_open_box(context, &desc);
     check_batch(context, &desc);
+    check_packed(context);
 
     polymass_polygon_properties_init(&polygon.value, sizeof polygon.value);
     arm(polygon.guard);

@@ -595,9 +595,8 @@ static void check_shells(const analysis* a, polymass_context* context) {
         CHECK(shell->kind >= POLYMASS_SHELL_UNJUDGED && shell->kind <= POLYMASS_SHELL_NO_VOLUME,
               status, context);
         CHECK((shell->kind != POLYMASS_SHELL_UNJUDGED) == judged, status, context);
-        /* NaN exactly when unjudged - or for a shell of no volume, whose
-           rounding-level sum may be NaN at extreme coordinates (reported to
-           capi; the verdict, NO_VOLUME, is right). */
+        /* NaN when unjudged, or for a shell of no volume whose volume is
+           beyond a double's range (coordinates near overflow). */
         if (!judged)
             CHECK(isnan(shell->signed_volume), status, context);
         else if (shell->kind != POLYMASS_SHELL_NO_VOLUME)

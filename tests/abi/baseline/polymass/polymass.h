@@ -203,8 +203,8 @@ POLYMASS_API const char* polymass_status_string(int32_t status);
    the lowest vertex pairs. */
 #define POLYMASS_DIAGNOSTIC_LOCATIONS 8
 /* How many face pairs of a kind (crossing, touching) the intersection check
-   counts: past that the count is a lower bound (the message says "at least")
-   and the search stops; the pairs listed are still the lowest. */
+   counts: past that the count is a lower bound (the message says "at
+   least"); the pairs listed are still the lowest. */
 #define POLYMASS_MAX_COUNTED_FACE_PAIRS 2048
 /* No location: the value of the "first_*" entries past the count beside them
    (all of them when it is 0). */
@@ -469,7 +469,9 @@ typedef struct polymass_shell {
     uint64_t face_count;
     uint64_t first_face;
     /* Signed so that the whole surface's volume is positive (a surface
-       accepted inside out as a whole counts turned); NaN when unjudged. */
+       accepted inside out as a whole counts turned); NaN when unjudged, or when
+       the volume is beyond a double's range (a shell of no volume made of
+       coordinates near overflow). */
     double signed_volume;
 } polymass_shell;
 
