@@ -8,12 +8,14 @@
 #      directory into the compiler flags (-ffile-prefix-map=DIR=.), and ccache
 #      finds an earlier build's objects only under the same flags;
 #   2. dpkg-buildpackage -us -uc -b (binary packages, unsigned): the cmake
-#      build through dh, the symbols check against debian/libpolymass1.symbols,
+#      build through dh, the symbols check against debian/libpolymass2.symbols,
 #      the manual page from `polymass --help`;
 #   3. lintian on the result: any error or warning fails (the full output is
 #      printed, informational tags and overridden ones included);
-#   4. unpacks the three packages into a scratch root and runs the packaged
-#      tool, with the packaged library, on the bundled bracket.
+#   4. unpacks the three packages into a scratch root, checks that the library
+#      package libpolymassN ships SONAME libpolymass.so.N (N the major
+#      version), and runs the packaged tool, with the packaged library, on the
+#      bundled bracket.
 #
 #   scripts/test-debian.sh
 #
@@ -59,6 +61,16 @@ for deb in "$work"/*.deb; do
     dpkg-deb -x "$deb" "$scratch"
 done
 multiarch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
+# The shared library's package is named after its SONAME (Debian policy 8.1):
+# libpolymassN ships libpolymass.so.N, N the project's major version.
+major=${version%%.*}
+test -f "$work"/libpolymass"$major"_"$version"_*.deb
+soname=$(readelf -d "$scratch/usr/lib/$multiarch/libpolymass.so" | sed -nE 's/.*\(SONAME\).*\[(.*)\]/\1/p')
+if [ "$soname" != "libpolymass.so.$major" ]; then
+    echo "FAIL: the packaged library's SONAME is '$soname', not libpolymass.so.$major" >&2
+    exit 1
+fi
+echo "SONAME $soname in package libpolymass$major"
 test -f "$scratch/usr/share/man/man1/polymass.1.gz"
 LD_LIBRARY_PATH=$scratch/usr/lib/$multiarch "$scratch/usr/bin/polymass" \
     examples/data/bracket.obj --units mm --density 2700

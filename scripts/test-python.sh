@@ -101,7 +101,7 @@ step threads-under-tsan
 # scripts/test.sh): Python threads, each calling the library, which runs its
 # own workers. The interpreter is not instrumented; libtsan is preloaded so
 # that it sees every thread and lock.
-tsan_library=$root/build/tsan/src/libpolymass.so.1
+tsan_library=$root/build/tsan/src/libpolymass.so.2
 if [ -f "$tsan_library" ]; then
     (cd bindings/python && POLYMASS_LIBRARY=$tsan_library \
         LD_PRELOAD=$(gcc -print-file-name=libtsan.so) TSAN_OPTIONS=halt_on_error=1 \

@@ -125,7 +125,9 @@ bool mass_properties_of(const EngineMesh& mesh, double density,
     mass.mass_mode = POLYMASS_MASS_FROM_DENSITY;
     mass.density = density;
     polymass_mass_properties_init(properties, sizeof *properties);
-    const int32_t status = polymass_mass_properties_compute(properties, context, &desc, &mass);
+    // No provenance wanted; no options: every check, the exact solid or an error.
+    const int32_t status =
+        polymass_mass_properties_compute(properties, nullptr, context, &desc, nullptr, &mass);
     if (status != POLYMASS_OK) {
         std::fprintf(stderr, "polymass: %s (%s)\n", polymass_status_string(status),
                      polymass_context_message(context));

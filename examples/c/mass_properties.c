@@ -5,6 +5,12 @@
  * Lengths are in metres and the density in kg/m^3, so the mass is in kg and
  * the inertia in kg*m^2.
  *
+ * Two ways in: an engine's load path makes one call
+ * (polymass_mass_properties_compute: surface, options and mass in, properties
+ * out); a tool that asks more than one question analyses the surface once
+ * (polymass_mesh_create) and asks the handle (its verdict, what the checks
+ * found, the properties for any density or mass, the inertia about any point).
+ *
  *   cc -std=c99 mass_properties.c $(pkg-config --cflags --libs polymass)
  */
 #include <polymass/polymass.h>
@@ -64,6 +70,13 @@ int main(void) {
     polymass_mesh_desc mesh = POLYMASS_MESH_DESC_INIT;
     polymass_mass_desc body = POLYMASS_MASS_DESC_INIT;
     polymass_mass_properties p = POLYMASS_MASS_PROPERTIES_INIT;
+    polymass_mesh* analysed = NULL;
+    polymass_diagnostics found = POLYMASS_DIAGNOSTICS_INIT;
+    polymass_mass_desc kilogram = POLYMASS_MASS_DESC_INIT;
+    polymass_mass_properties of_1kg = POLYMASS_MASS_PROPERTIES_INIT;
+    /* The centre of the long leg's end face, where a fixture holds it. */
+    static const double fixture[3] = {0.04, 0.005, 0.01};
+    double inertia_at_fixture[9];
     int32_t status;
     int i;
 
@@ -91,7 +104,9 @@ int main(void) {
     body.mass_mode = POLYMASS_MASS_FROM_DENSITY;
     body.density = 2700.0; /* aluminium, kg/m^3 */
 
-    status = polymass_mass_properties_compute(&p, context, &mesh, &body);
+    /* One call: no provenance wanted (NULL), the default options (NULL: every
+       check, the exact solid or an error). */
+    status = polymass_mass_properties_compute(&p, NULL, context, &mesh, NULL, &body);
     if (failed(status, context, "polymass_mass_properties_compute")) {
         polymass_context_destroy(context);
         return 1;
@@ -110,6 +125,32 @@ int main(void) {
                p.principal_axes[6 + i]);
     }
     if (p.warnings != 0) printf("warnings         0x%x\n", (unsigned)p.warnings);
+
+    /* One analysis, many questions. polymass_mesh_create returns the mesh's
+       status, and gives a mesh even when the surface is refused, so that the
+       caller can read why (polymass_mesh_message, polymass_mesh_diagnostics). */
+    status = polymass_mesh_create(&analysed, context, &mesh, NULL);
+    if (analysed != NULL) status = polymass_mesh_diagnostics(&found, context, analysed);
+    if (status == POLYMASS_OK) {
+        printf("analysis         %s: %llu faces, %llu edges, %llu shell(s)\n",
+               polymass_status_string(polymass_mesh_status(analysed)),
+               (unsigned long long)found.face_count, (unsigned long long)found.edge_count,
+               (unsigned long long)found.shell_count);
+        /* The same part weighed at 1 kg, and its inertia about the fixture:
+           no second pass over the faces. */
+        kilogram.mass_mode = POLYMASS_MASS_FROM_TOTAL;
+        kilogram.mass = 1.0;
+        status = polymass_mesh_mass_properties(&of_1kg, context, analysed, &kilogram);
+    }
+    if (status == POLYMASS_OK)
+        status = polymass_inertia_about(inertia_at_fixture, &of_1kg, fixture);
+    polymass_mesh_destroy(analysed); /* NULL is accepted */
+    if (failed(status, context, "the questions to the mesh")) {
+        polymass_context_destroy(context);
+        return 1;
+    }
+    printf("as 1 kg: density %.6g kg/m^3\n", of_1kg.density);
+    print_matrix("inertia (grip)", inertia_at_fixture);
 
     polymass_context_destroy(context);
     return 0;

@@ -72,6 +72,7 @@ CATEGORIES = {
     polymass.IndexOutOfRangeError: "index_out_of_range",
     polymass.FaceTooSmallError: "face_too_small",
     polymass.NonPlanarFaceError: "non_planar_face",
+    polymass.IntersectingSurfaceError: "intersecting",
     polymass.ZeroVolumeError: "zero_volume",
     polymass.ResultOutOfRangeError: "overflow",
     polymass.OutOfMemoryError: "out_of_memory",

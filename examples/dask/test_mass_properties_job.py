@@ -69,7 +69,8 @@ def make_corpus(root: Path, count: int, first: int = 0) -> dict[str, tuple[str, 
     """count files under root (in nested directories): for each, the category
     expected and, for a valid solid, its exact volume. Every 10th file is broken."""
     expected = {}
-    broken = ["unreadable", "open", "index_out_of_range", "non_finite", "inverted", "empty"]
+    broken = ["unreadable", "open", "index_out_of_range", "non_finite", "inverted"]
+    broken += ["intersecting", "empty"]
     for k in range(first, first + count):
         # Dyadic sizes and shifts: exact in float32 (binary STL) and in the integration.
         size = (1 + k % 7, 0.5 + (k % 5) / 4, 2 + (k % 3) / 8)
@@ -89,6 +90,9 @@ def make_corpus(root: Path, count: int, first: int = 0) -> dict[str, tuple[str, 
             vertices[5] = (float("nan"), 0.0, 0.0)
         elif kind == "inverted":
             faces = [list(reversed(f)) for f in faces]
+        elif kind == "intersecting":  # a copy moved by half its size: overlapping parts
+            vertices += box(size, [s + d / 2 for s, d in zip(shift, size)])
+            faces += [[i + 8 for i in f] for f in faces]
         if k % 3 == 2 and kind == "ok":
             data = ascii_stl(vertices, faces)
         else:
@@ -139,11 +143,12 @@ def test_job_rows_categories_volumes_and_rerun(tmp_path, client):
         by_category[row["category"]] = by_category.get(row["category"], 0) + 1
     assert by_category == {
         "ok": 270,
-        "unreadable": 10,
+        "unreadable": 9,
         "open": 5,
-        "index_out_of_range": 5,
-        "non_finite": 5,
-        "inverted": 5,
+        "index_out_of_range": 4,
+        "non_finite": 4,
+        "inverted": 4,
+        "intersecting": 4,
     }
 
     # Run again: nothing to do; add files: only they are computed.

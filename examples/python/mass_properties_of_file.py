@@ -37,12 +37,19 @@ def main() -> int:
     vertices = np.asarray(loaded.vertices) * UNITS[arguments.unit]
     faces = np.asarray(loaded.faces)
 
-    # Every finding at once (crossing faces of parts that overlap too), not only the first.
-    report = polymass.check(vertices, faces, weld=True)
-    if not report.ok:
-        print(f"{arguments.mesh}: not a closed solid: {report.message}", file=sys.stderr)
+    # One analysis: every check (crossing faces of parts that overlap too), every
+    # finding kept, then the properties of any density read from it.
+    mesh = polymass.Mesh(vertices, faces, weld=True)
+    report = mesh.diagnostics
+    if not mesh.ok:
+        print(f"{arguments.mesh}: not a closed solid: {mesh.message}", file=sys.stderr)
+        print(
+            f"  {report.open_edges} open edges, {report.non_manifold_edges} non-manifold, "
+            f"{report.intersecting_face_pairs} crossing face pairs",
+            file=sys.stderr,
+        )
         return 1
-    p = polymass.mass_properties(vertices, faces, density=arguments.density, weld=True)
+    p = mesh.mass_properties(density=arguments.density)
 
     np.set_printoptions(precision=6, suppress=False)
     print(

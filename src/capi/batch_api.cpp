@@ -1,13 +1,12 @@
 // polymass_batch_compute: many meshes in one call, each item with its own
 // status and message. The items are independent, so the context's workers
-// take them in any order without changing a result.
+// take them in any order without changing a result (item_threads.hpp).
 #include <polymass/polymass.h>
 
-#include <algorithm>
-#include <atomic>
 #include <cstring>
 
 #include "api_guard.hpp"
+#include "item_threads.hpp"
 #include "struct_io.hpp"
 
 using namespace polymass::capi;
@@ -51,19 +50,8 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
         auto item = [&](uint64_t i) -> polymass_batch_item& {
             return *reinterpret_cast<polymass_batch_item*>(bytes + i * stride);
         };
-        const std::size_t threads = std::min<uint64_t>(context->threads(), item_count);
-        if (threads == 1) {
-            for (uint64_t i = 0; i < item_count; ++i) compute_item(item(i), context);
-        } else {
-            // Each thread takes the next item not yet taken and computes it
-            // through its own context: the results do not depend on which.
-            for (std::size_t thread = 0; thread < threads; ++thread) context->batch_context(thread);
-            std::atomic<uint64_t> next{0};
-            context->tasks().run(threads, [&](std::size_t thread) {
-                polymass_context* own = context->batch_context(thread);
-                for (uint64_t i = next++; i < item_count; i = next++) compute_item(item(i), own);
-            });
-        }
+        for_each_item(context, item_count,
+                      [&](uint64_t i, polymass_context* own) { compute_item(item(i), own); });
         uint64_t failed = 0;
         for (uint64_t i = 0; i < item_count; ++i) failed += item(i).status != POLYMASS_OK;
         context->clear_message();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "struct_versions.hpp"
@@ -89,14 +90,25 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
                                  u64(face), input.face_sizes[face],
                                  u64(analysis.small_faces.count));
         }
-        case Defect::index_out_of_range:
+        case Defect::index_out_of_range: {
+            // The index as the caller wrote it, and the vertices it may name
+            // (a packed mesh's own, when its indices count from the whole
+            // array's first vertex: index_base).
+            char vertices[96];
+            if (input.index_base == 0)
+                std::snprintf(vertices, sizeof vertices, "there are only %llu vertices",
+                              u64(input.vertex_count));
+            else
+                std::snprintf(vertices, sizeof vertices, "the mesh's %llu vertices start at %u",
+                              u64(input.vertex_count), unsigned(input.index_base));
             return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-                                 "face %llu refers to vertex %u, but there are only %llu vertices "
-                                 "(%llu indices out of range, in %llu faces)",
+                                 "face %llu refers to vertex %u, but %s (%llu indices out of "
+                                 "range, in %llu faces)",
                                  u64(scan.out_of_range_faces.first()),
-                                 scan.first_out_of_range_index, u64(input.vertex_count),
-                                 u64(scan.out_of_range_indices),
+                                 unsigned(scan.first_out_of_range_index + input.index_base),
+                                 vertices, u64(scan.out_of_range_indices),
                                  u64(scan.out_of_range_faces.count));
+        }
         case Defect::non_finite:
             return context->fail(POLYMASS_ERROR_NON_FINITE,
                                  "vertex %llu, used by a face, has a NaN or infinite coordinate "

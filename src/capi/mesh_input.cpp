@@ -9,18 +9,6 @@ namespace {
 
 using u64 = unsigned long long;  // for printf
 
-// True when [pointer, pointer + count * stride) — the last element `element`
-// bytes long — is addressable: no arithmetic on it can overflow.
-bool span_fits(const void* pointer, uint64_t count, uint64_t stride, uint64_t element) {
-    if (count == 0) return true;
-    uint64_t last = 0, end = 0;
-    if (__builtin_mul_overflow(count - 1, stride, &last)) return false;
-    if (__builtin_add_overflow(last, element, &end)) return false;
-    const uint64_t room = uint64_t(std::numeric_limits<std::uintptr_t>::max()) -
-                          uint64_t(reinterpret_cast<std::uintptr_t>(pointer));
-    return end <= room && end <= uint64_t(std::numeric_limits<std::ptrdiff_t>::max());
-}
-
 int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& desc,
                         MeshInput& input) {
     if (!desc.face_sizes) {
@@ -59,6 +47,16 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
 }
 
 }  // namespace
+
+bool span_fits(const void* pointer, uint64_t count, uint64_t stride, uint64_t element) {
+    if (count == 0) return true;
+    uint64_t last = 0, end = 0;
+    if (__builtin_mul_overflow(count - 1, stride, &last)) return false;
+    if (__builtin_add_overflow(last, element, &end)) return false;
+    const uint64_t room = uint64_t(std::numeric_limits<std::uintptr_t>::max()) -
+                          uint64_t(reinterpret_cast<std::uintptr_t>(pointer));
+    return end <= room && end <= uint64_t(std::numeric_limits<std::ptrdiff_t>::max());
+}
 
 int32_t read_positions(polymass_context* context, const void* positions, uint32_t position_type,
                        uint64_t vertex_count, uint64_t position_stride, MeshInput& input) {

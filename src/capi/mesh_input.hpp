@@ -20,9 +20,17 @@ struct MeshInput {
     std::size_t position_stride = 0;
     const unsigned char* indices = nullptr;
     std::size_t index_count = 0;
+    // What the caller's indices count from, added back to an index a message
+    // names: a packed mesh's first vertex when its global indices were
+    // rebased to its own (POLYMASS_INDICES_GLOBAL, packed_api.cpp), else 0.
+    uint32_t index_base = 0;
     const uint32_t* face_sizes = nullptr;
     std::size_t face_count = 0;
 };
+
+// True when [pointer, pointer + count * stride) - the last element `element`
+// bytes long - is addressable: no arithmetic on it can overflow.
+bool span_fits(const void* pointer, uint64_t count, uint64_t stride, uint64_t element);
 
 // Fills `input` and returns POLYMASS_OK or POLYMASS_ERROR_INVALID_ARGUMENT,
 // with the message. The face sizes must add up to index_count; what a face's

@@ -54,5 +54,13 @@ POLYMASS_API int32_t polymass_polygon_properties_init(polymass_polygon_propertie
 POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_t struct_size) {
     return init(item, struct_size);
 }
+POLYMASS_API int32_t polymass_packed_meshes_init(polymass_packed_meshes* meshes,
+                                                 uint32_t struct_size) {
+    return init(meshes, struct_size);
+}
+POLYMASS_API int32_t polymass_packed_results_init(polymass_packed_results* results,
+                                                  uint32_t struct_size) {
+    return init(results, struct_size);
+}
 
 }  // extern "C"

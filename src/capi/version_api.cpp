@@ -22,5 +22,9 @@ POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void) {
     return sizeof(polymass_polygon_properties);
 }
 POLYMASS_API uint32_t polymass_sizeof_batch_item(void) { return sizeof(polymass_batch_item); }
+POLYMASS_API uint32_t polymass_sizeof_packed_meshes(void) { return sizeof(polymass_packed_meshes); }
+POLYMASS_API uint32_t polymass_sizeof_packed_results(void) {
+    return sizeof(polymass_packed_results);
+}
 
 }  // extern "C"

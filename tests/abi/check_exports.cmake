@@ -1,19 +1,20 @@
 # ctest: what libpolymass.so exports must be exactly the C API of the header.
 #
-#   cmake -DLIBRARY=<libpolymass.so> -DHEADER=<polymass.h> -DEXPECTED_SONAME=libpolymass.so.1
-#         [-DNM=nm] [-DREADELF=readelf] -P check_exports.cmake
+#   cmake -DLIBRARY=<libpolymass.so> -DHEADER=<polymass.h> -DEXPECTED_SONAME=libpolymass.so.2
+#         -DVERSION_NODE=POLYMASS_2 [-DNM=nm] [-DREADELF=readelf] -P check_exports.cmake
 #
 # 1. The expected list is read from the header (every `POLYMASS_API ... name(`),
 #    so it cannot drift from the contract; it must not be empty.
 # 2. Every defined dynamic symbol (`nm -D --defined-only`) must start with
 #    polymass_: no Eigen, no libstdc++, no helper leaks (none is ignored).
-# 3. The exported functions (type T) must be exactly the header's list.
+# 3. The exported functions (type T) must be exactly the header's list, each
+#    at the symbol version VERSION_NODE (polymass.map), the only node.
 # 4. The SONAME must be EXPECTED_SONAME.
 
 cmake_minimum_required(VERSION 3.25)
 
 include("${CMAKE_CURRENT_LIST_DIR}/../cmake_helpers/script_checks.cmake")
-polymass_require_args(check_exports.cmake LIBRARY HEADER EXPECTED_SONAME)
+polymass_require_args(check_exports.cmake LIBRARY HEADER EXPECTED_SONAME VERSION_NODE)
 polymass_default_arg(NM nm)
 polymass_default_arg(READELF readelf)
 
@@ -56,12 +57,22 @@ foreach(line IN LISTS nm_lines)
     if(line MATCHES "^[0-9a-fA-F]* *([A-Za-z]) ([^ ]+)$")
         set(type "${CMAKE_MATCH_1}")
         set(symbol "${CMAKE_MATCH_2}")
-        # Symbol versions: nm prints name@@POLYMASS_1 (and the version node
-        # itself as an absolute symbol POLYMASS_1).
+        # Symbol versions: nm prints name@@POLYMASS_2 (and the version node
+        # itself as an absolute symbol POLYMASS_2).
         string(REGEX REPLACE "@.*$" "" name "${symbol}")
+        set(version "")
+        if(symbol MATCHES "@@?(.*)$")
+            set(version "${CMAKE_MATCH_1}")
+        endif()
         math(EXPR defined_count "${defined_count} + 1")
         if(type STREQUAL "A" AND name MATCHES "^POLYMASS_[0-9_.]+$")
+            if(NOT name STREQUAL VERSION_NODE)
+                fail("version node ${name}, expected ${VERSION_NODE} (polymass.map)")
+            endif()
             continue() # the version node of polymass.map
+        endif()
+        if(name MATCHES "^polymass_" AND NOT symbol STREQUAL "${name}@@${VERSION_NODE}")
+            fail("${symbol} is not versioned ${name}@@${VERSION_NODE} (polymass.map)")
         endif()
         if(NOT name MATCHES "^polymass_")
             list(APPEND leaks "${type} ${symbol}")

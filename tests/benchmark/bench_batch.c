@@ -1,14 +1,27 @@
-/* Throughput of polymass_batch_compute against a loop of single calls
-   (polymass_mass_properties_compute) on many small meshes: spheres of
-   `faces` triangles (a latitude-longitude grid, closed), each at its own
-   place, with the default options (every check, the intersection check
-   included). Prints figures; asserts nothing about speed.
-   Usage: bench_batch [meshes] [faces per mesh] [repeats] */
+/* Throughput on many small meshes, as a dataset holds them: a loop of single
+   calls (polymass_mass_properties_compute), the batch of items
+   (polymass_batch_compute) and the packed call (polymass_packed_compute, its
+   indices counted from each mesh's first vertex and, as PyTorch3D packs them,
+   from the packed array's), each on one thread and on two
+   (polymass_context_set_threads). The meshes are spheres of `faces` triangles
+   (a latitude-longitude grid, closed), each at its own place, in one packed
+   array, computed with the options named (default: the default options,
+   every check, the intersection check included; "topology": the topology
+   checks without the intersection check; "trusted": no check,
+   POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, where the per-mesh costs around the
+   computation weigh most). Runs are interleaved (every path once per round) and the
+   median of the rounds is printed, in meshes/s and as ratios measured in the
+   same run: the packed call against the item batch, two threads against one.
+   Every path's volumes are checked bit for bit against the single calls'.
+   Prints figures; asserts nothing about speed.
+   Usage: bench_batch [meshes] [faces per mesh] [rounds] [default|topology|trusted]
+   (default: 5,000 meshes of 1,000 triangles, 5 rounds, the default options) */
 #include <polymass/polymass.h>
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "bench_common.h"
@@ -45,68 +58,145 @@ static size_t make_sphere(uint32_t rings, uint32_t segments, double cx, double* 
     return t / 3;
 }
 
+static void fail(const char* what, polymass_context* context) {
+    fprintf(stderr, "%s: %s\n", what, polymass_context_message(context));
+    exit(1);
+}
+
+/* The paths measured, in the order of the table. */
+enum { LOOP, BATCH_1, BATCH_2, PACKED_1, PACKED_2, GLOBAL_1, GLOBAL_2, PATHS };
+static const char* const path_names[PATHS] = {"loop of single calls, 1 thread",
+                                              "item batch, 1 thread",
+                                              "item batch, 2 threads",
+                                              "packed call, 1 thread",
+                                              "packed call, 2 threads",
+                                              "packed, global indices, 1 thread",
+                                              "packed, global indices, 2 threads"};
+
 int main(int argc, char** argv) {
-    const size_t meshes = argc > 1 ? (size_t)atof(argv[1]) : 10000;
+    const size_t meshes = argc > 1 ? (size_t)atof(argv[1]) : 5000;
     const size_t wanted_faces = argc > 2 ? (size_t)atof(argv[2]) : 1000;
-    const int repeats = argc > 3 ? atoi(argv[3]) : 3;
+    const int rounds = argc > 3 ? atoi(argv[3]) : 5;
+    const char* checks = argc > 4 ? argv[4] : "default";
+    polymass_options options = POLYMASS_OPTIONS_INIT;
+    if (strcmp(checks, "topology") == 0) {
+        options.flags = POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
+    } else if (strcmp(checks, "trusted") == 0) {
+        options.flags = POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    } else if (strcmp(checks, "default") != 0) {
+        fprintf(stderr, "options: default, topology or trusted, not %s\n", checks);
+        return 1;
+    }
     /* faces = 2 * rings * (segments - 1): segments = 11, rings = faces / 20. */
     const uint32_t segments = 11, rings = (uint32_t)(wanted_faces / 20 > 3 ? wanted_faces / 20 : 3);
     const size_t vertex_count = 2 + (size_t)(segments - 1) * rings;
     const size_t face_count = 2 * (size_t)rings * (segments - 1);
-    double* positions = malloc(meshes * vertex_count * 3 * sizeof *positions);
-    uint32_t* indices = malloc(meshes * face_count * 3 * sizeof *indices);
-    polymass_mesh_desc* descs = malloc(meshes * sizeof *descs);
-    polymass_batch_item* items = malloc(meshes * sizeof *items);
-    polymass_mass_properties* results = malloc(meshes * sizeof *results);
+    const size_t index_count = 3 * face_count;
+    double* positions = checked_malloc(meshes * vertex_count * 3 * sizeof *positions);
+    uint32_t* indices = checked_malloc(meshes * index_count * sizeof *indices);
+    uint32_t* global_indices = checked_malloc(meshes * index_count * sizeof *global_indices);
+    uint64_t* vertex_offsets = checked_malloc((meshes + 1) * sizeof *vertex_offsets);
+    uint64_t* index_offsets = checked_malloc((meshes + 1) * sizeof *index_offsets);
+    polymass_mesh_desc* descs = checked_malloc(meshes * sizeof *descs);
+    polymass_batch_item* items = checked_malloc(meshes * sizeof *items);
+    polymass_mass_properties* single = checked_malloc(meshes * sizeof *single);
+    polymass_mass_properties* batch = checked_malloc(meshes * sizeof *batch);
+    double* volumes = checked_malloc(meshes * sizeof *volumes);
+    int32_t* status = checked_malloc(meshes * sizeof *status);
+    double* seconds = checked_malloc((size_t)rounds * PATHS * sizeof *seconds);
+    double medians[PATHS];
     polymass_context* context = NULL;
-    double best_loop = 1e300, best_batch = 1e300, volume = 0;
+    polymass_packed_meshes local = POLYMASS_PACKED_MESHES_INIT;
+    polymass_packed_results results = POLYMASS_PACKED_RESULTS_INIT;
     uint64_t failed = 0;
-    if (!positions || !indices || !descs || !items || !results ||
-        polymass_context_create(&context, NULL) != POLYMASS_OK) {
-        fprintf(stderr, "out of memory\n");
-        return 1;
-    }
+    if (polymass_context_create(&context, NULL) != POLYMASS_OK) fail("context", context);
     for (size_t m = 0; m < meshes; ++m) {
         make_sphere(rings, segments, 3.0 * (double)m, positions + m * vertex_count * 3,
-                    indices + m * face_count * 3);
+                    indices + m * index_count);
+        for (size_t k = 0; k < index_count; ++k)
+            global_indices[m * index_count + k] =
+                (uint32_t)(m * vertex_count) + indices[m * index_count + k];
+        vertex_offsets[m] = m * vertex_count, index_offsets[m] = m * index_count;
         polymass_mesh_desc_init(&descs[m], sizeof descs[m]);
         descs[m].positions = positions + m * vertex_count * 3;
         descs[m].vertex_count = vertex_count;
-        descs[m].indices = indices + m * face_count * 3;
-        descs[m].index_count = face_count * 3;
-        polymass_mass_properties_init(&results[m], sizeof results[m]);
+        descs[m].indices = indices + m * index_count;
+        descs[m].index_count = index_count;
+        polymass_mass_properties_init(&single[m], sizeof single[m]);
+        polymass_mass_properties_init(&batch[m], sizeof batch[m]);
         polymass_batch_item_init(&items[m], sizeof items[m]);
         items[m].desc = &descs[m];
-        items[m].properties = &results[m];
+        items[m].properties = &batch[m];
+        items[m].options = &options;
     }
-    for (int r = 0; r < repeats; ++r) {
-        double start = now_seconds();
-        for (size_t m = 0; m < meshes; ++m)
-            if (polymass_mass_properties_compute(&results[m], context, &descs[m], NULL) !=
-                POLYMASS_OK) {
-                fprintf(stderr, "mesh %zu: %s\n", m, polymass_context_message(context));
-                return 1;
+    vertex_offsets[meshes] = meshes * vertex_count, index_offsets[meshes] = meshes * index_count;
+    local.positions = positions;
+    local.indices = indices;
+    local.mesh_count = meshes;
+    local.vertex_offsets = vertex_offsets;
+    local.index_offsets = index_offsets;
+    polymass_packed_meshes global = local;
+    global.indices = global_indices;
+    global.index_base = POLYMASS_INDICES_GLOBAL;
+    results.status = status;
+    results.volume = volumes;
+
+    for (int r = 0; r < rounds; ++r)
+        for (int path = 0; path < PATHS; ++path) {
+            const uint32_t threads = path == LOOP ? 1 : 2 - (path % 2);
+            if (polymass_context_set_threads(context, threads) != POLYMASS_OK)
+                fail("threads", context);
+            memset(volumes, 0, meshes * sizeof *volumes);
+            const double start = now_seconds();
+            if (path == LOOP) {
+                for (size_t m = 0; m < meshes; ++m)
+                    if (polymass_mass_properties_compute(&single[m], NULL, context, &descs[m],
+                                                         &options, NULL) != POLYMASS_OK)
+                        fail("single call", context);
+            } else if (path == BATCH_1 || path == BATCH_2) {
+                if (polymass_batch_compute(items, meshes, &failed, context) != POLYMASS_OK ||
+                    failed)
+                    fail("batch", context);
+            } else if (polymass_packed_compute(&results, &failed, context,
+                                               path < GLOBAL_1 ? &local : &global,
+                                               &options) != POLYMASS_OK ||
+                       failed) {
+                fail("packed call", context);
             }
-        const double loop = now_seconds() - start;
-        start = now_seconds();
-        if (polymass_batch_compute(items, meshes, &failed, context) != POLYMASS_OK || failed) {
-            fprintf(stderr, "batch: %s (%llu failed)\n", polymass_context_message(context),
-                    (unsigned long long)failed);
-            return 1;
+            seconds[(size_t)r * PATHS + path] = now_seconds() - start;
+            /* Every path's results are the single calls', bit for bit. */
+            for (size_t m = 0; m < meshes; ++m) {
+                const double volume = path == LOOP      ? single[m].volume
+                                      : path <= BATCH_2 ? batch[m].volume
+                                                        : volumes[m];
+                if (memcmp(&volume, &single[m].volume, sizeof volume) != 0) {
+                    fprintf(stderr, "%s: mesh %zu's volume differs from its single call's\n",
+                            path_names[path], m);
+                    return 1;
+                }
+            }
         }
-        const double batch = now_seconds() - start;
-        best_loop = loop < best_loop ? loop : best_loop;
-        best_batch = batch < best_batch ? batch : best_batch;
-    }
-    for (size_t m = 0; m < meshes; ++m) volume += results[m].volume;
-    printf("libpolymass %s: %zu meshes of %zu triangles, best of %d\n", polymass_version_string(),
-           meshes, face_count, repeats);
-    printf("  loop of single calls: %8.2f ms  %9.0f meshes/s  %6.1f M triangles/s\n",
-           1e3 * best_loop, meshes / best_loop, meshes * face_count / best_loop / 1e6);
-    printf("  one batch call:       %8.2f ms  %9.0f meshes/s  %6.1f M triangles/s\n",
-           1e3 * best_batch, meshes / best_batch, meshes * face_count / best_batch / 1e6);
-    printf("  total volume %.6g\n", volume);
+    medians_of(seconds, rounds, PATHS, medians);
+
+    printf(
+        "libpolymass %s: %zu closed meshes of %zu triangles (%zu vertices), %s options, "
+        "median of %d rounds\n",
+        polymass_version_string(), meshes, face_count, vertex_count, checks, rounds);
+    for (int path = 0; path < PATHS; ++path)
+        printf("  %-34s %8.1f ms  %8.0f meshes/s  %6.1f M triangles/s\n", path_names[path],
+               1e3 * medians[path], meshes / medians[path],
+               meshes * face_count / medians[path] / 1e6);
+    printf("  packed / item batch:        %.2f (1 thread)  %.2f (2 threads)\n",
+           medians[BATCH_1] / medians[PACKED_1], medians[BATCH_2] / medians[PACKED_2]);
+    printf("  global / local indices:     %.2f (1 thread)  %.2f (2 threads)\n",
+           medians[PACKED_1] / medians[GLOBAL_1], medians[PACKED_2] / medians[GLOBAL_2]);
+    printf("  2 threads / 1 thread:       %.2f (item batch)  %.2f (packed)  %.2f (global)\n",
+           medians[BATCH_1] / medians[BATCH_2], medians[PACKED_1] / medians[PACKED_2],
+           medians[GLOBAL_1] / medians[GLOBAL_2]);
+    printf("  every path bit for bit the single calls' volumes\n");
     polymass_context_destroy(context);
-    free(positions), free(indices), free(descs), free(items), free(results);
+    free(positions), free(indices), free(global_indices), free(vertex_offsets);
+    free(index_offsets), free(descs), free(items), free(single), free(batch), free(volumes);
+    free(status), free(seconds);
     return 0;
 }

@@ -1,10 +1,12 @@
-/* What the benchmarks share: a monotonic clock, the median of rounds, and the
-   torus they measure (a closed grid of triangles far from the origin). */
+/* What the benchmarks share: a monotonic clock, the median of rounds, memory
+   or an exit, and the torus they measure (a closed grid of triangles far from
+   the origin). */
 #ifndef POLYMASS_BENCH_COMMON_H
 #define POLYMASS_BENCH_COMMON_H
 
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
@@ -12,6 +14,16 @@ static inline double now_seconds(void) {
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* malloc, or the program ends saying why. */
+static inline void* checked_malloc(size_t bytes) {
+    void* memory = malloc(bytes);
+    if (!memory) {
+        fprintf(stderr, "out of memory\n");
+        exit(1);
+    }
+    return memory;
 }
 
 static inline int by_value(const void* a, const void* b) {

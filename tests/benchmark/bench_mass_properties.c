@@ -4,7 +4,7 @@
    skipped) with float64 and with float32 positions, the topology checks
    without the intersection check (POLYMASS_OPTION_SKIP_INTERSECTION_CHECK),
    and every check (the default options), each on one thread and on two
-   (polymass_options.threads); each against a
+   (polymass_context_set_threads); each against a
    read-bandwidth probe that sums the very arrays the library reads, on one
    thread and on two, a two-thread figure also against its one-thread one,
    and the checked paths against the trusted one. Runs are interleaved (every path once per round)
@@ -81,11 +81,14 @@ static double compute_seconds(polymass_context* context, const polymass_mesh_des
                               uint32_t flags, uint32_t threads, double* checksum) {
     polymass_options options = POLYMASS_OPTIONS_INIT;
     options.flags = flags;
-    options.threads = threads;
-    polymass_context_set_options(context, &options);
-    polymass_mass_properties out = {sizeof out};
+    polymass_mass_properties out = POLYMASS_MASS_PROPERTIES_INIT;
+    if (polymass_context_set_threads(context, threads) != POLYMASS_OK) {
+        fprintf(stderr, "error: %s\n", polymass_context_message(context));
+        exit(1);
+    }
     const double start = now_seconds();
-    const int32_t status = polymass_mass_properties_compute(&out, context, desc, NULL);
+    const int32_t status =
+        polymass_mass_properties_compute(&out, NULL, context, desc, &options, NULL);
     const double elapsed = now_seconds() - start;
     if (status != POLYMASS_OK) {
         fprintf(stderr, "error: %s\n", polymass_context_message(context));

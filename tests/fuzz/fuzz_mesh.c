@@ -34,7 +34,7 @@
  *               fewer copies when they would pass 2048 vertices or indices
  *   7      1    index_count delta (int8), when layout bit 5 is set
  *   8      8    density or mass (double, raw bits)
- *   16     24   point (3 doubles, raw bits)
+ *   16     24   a point for polymass_inertia_about (3 doubles, raw bits)
  *   40          F face sizes, one byte each (only when layout bit 2 is set;
  *               faces past 2048 indices are dropped)
  *               V vertices: 3 doubles or 3 floats each, raw bits
@@ -45,19 +45,30 @@
  * stride claim (allocated to that size, so AddressSanitizer sees any read
  * past it), never larger. A violated invariant prints what failed and traps.
  * The invariants: every status is one the function documents (never
- * POLYMASS_ERROR_INTERNAL), and the message is "" exactly after a success;
- * after a success every output is finite, volume, mass, density and surface
- * area are positive, principal moments ascend and the axes are a rotation
- * (orthonormal to 1e-9, det +1), the warnings match the options, and the
- * density or mass is the one asked for; after a failure the output struct is
- * untouched and *out_mesh is NULL; polymass_mesh_check's report has its
- * status and consistent counts and first locations, and (topology checks on)
- * the status and message of polymass_mesh_create; polymass_mass_properties_compute
- * equals polymass_mesh_create + polymass_mesh_mass_properties, bit for bit;
- * polymass_mass_properties_with_provenance with a chain of modes answers
- * with a mode of the chain (or the solid, for repair), says so in its
- * warnings, and answers a mesh the solid accepts bit for bit as the solid
- * does when the chain starts with the solid or repair.
+ * POLYMASS_ERROR_INTERNAL), and the context's message is "" exactly after a
+ * success; after a success every output is finite, volume, mass, density and
+ * surface area are positive, principal moments ascend and the axes are a
+ * rotation (orthonormal to 1e-9, det +1), the warnings match the options, and
+ * the density or mass is the one asked for; after a failure the output struct
+ * is untouched. Options are given per call: a refused option gives
+ * INVALID_ARGUMENT and no mesh (the rest of the run then takes the defaults).
+ * polymass_mesh_create gives a mesh exactly when the analysis ran, whose
+ * polymass_mesh_status is what it returned and whose message is "" exactly
+ * when it answered; its diagnostics have consistent counts, first locations
+ * and checks, and the surface's verdict (the status, with the solid alone);
+ * its shells and the shell of each face agree, numbered in the order of
+ * their first faces, judged exactly when the shells were checked; its mass
+ * properties, provenance and moments are there exactly when it answered, and
+ * the inertia about the input's point follows the parallel-axis theorem.
+ * polymass_mass_properties_compute is the same analysis: its status, message,
+ * properties and provenance are those of polymass_mesh_create +
+ * polymass_mesh_mass_properties + polymass_mesh_provenance, bit for bit, with
+ * the solid alone and with a chain of modes; a chain answers with a mode of
+ * the chain (or the solid, for repair), says so in its warnings, leaves the
+ * diagnostics as they were, and answers a mesh the solid accepts bit for bit
+ * as the solid does when it starts with the solid or repair.
+ * polymass_weld_positions over the positions welds each vertex to the lowest
+ * of its group, at the same position when the tolerance is 0.
  *
  * POLYMASS_FUZZ_VERBOSE=1 in the environment prints the decoded input and the
  * statuses, for reproducing a finding by hand. */
@@ -69,6 +80,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fuzz_checks.h"
 #include "fuzz_input.h"
 
 #define HEADER_SIZE 40
@@ -156,13 +168,6 @@ static void check_status_and_message(int32_t status, const polymass_context* con
         CHECK(message[0] != '\0', status, context);
 }
 
-static int all_finite(const double* values, size_t count) {
-    size_t i;
-    for (i = 0; i < count; ++i)
-        if (!isfinite(values[i])) return 0;
-    return 1;
-}
-
 /* The locations of a face or vertex finding: `kept` of them (all the count
    allows when exact, else at least one when count > 0), ascending, below
    limit, then POLYMASS_NONE. */
@@ -200,10 +205,49 @@ static int edges_listed(uint64_t count, const uint64_t first[POLYMASS_DIAGNOSTIC
     return 1;
 }
 
-static void check_report(const polymass_diagnostics* d, int32_t status, uint64_t vertex_count,
+/* Face pairs: min(count, POLYMASS_DIAGNOSTIC_LOCATIONS) pairs (lower face,
+   higher face) below face_count, lowest pairs first, then POLYMASS_NONE
+   pairs; the count no more than the header says is counted. */
+static int pairs_listed(uint64_t count, const uint64_t first[POLYMASS_DIAGNOSTIC_LOCATIONS][2],
+                        uint64_t face_count) {
+    const uint64_t most =
+        count < POLYMASS_DIAGNOSTIC_LOCATIONS ? count : POLYMASS_DIAGNOSTIC_LOCATIONS;
+    size_t i;
+    if (count > POLYMASS_MAX_COUNTED_FACE_PAIRS) return 0;
+    for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+        if (i < most) {
+            if (first[i][0] >= first[i][1] || first[i][1] >= face_count) return 0;
+            if (i > 0 && (first[i][0] < first[i - 1][0] ||
+                          (first[i][0] == first[i - 1][0] && first[i][1] <= first[i - 1][1])))
+                return 0;
+        } else if (first[i][0] != POLYMASS_NONE || first[i][1] != POLYMASS_NONE) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* What an analysis with these option flags found. */
+static void check_report(const polymass_diagnostics* d, uint32_t flags, uint64_t vertex_count,
                          const polymass_context* context) {
+    const int32_t status = d->status;
+    const uint32_t all_checks =
+        POLYMASS_CHECKED_TOPOLOGY | POLYMASS_CHECKED_SHELLS | POLYMASS_CHECKED_INTERSECTIONS;
     CHECK(d->struct_size == sizeof *d, status, context);
-    CHECK(d->status == status, status, context);
+    CHECK(is_mesh_status(status) && status != POLYMASS_ERROR_INVALID_ARGUMENT &&
+              status != POLYMASS_ERROR_OUT_OF_MEMORY,
+          status, context);
+    CHECK(d->reserved == 0 && (d->checks & ~all_checks) == 0, status, context);
+    /* A check skipped by name did not run. */
+    if (flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS)
+        CHECK(!(d->checks & (POLYMASS_CHECKED_TOPOLOGY | POLYMASS_CHECKED_INTERSECTIONS)), status,
+              context);
+    if (flags & POLYMASS_OPTION_SKIP_INTERSECTION_CHECK)
+        CHECK(!(d->checks & POLYMASS_CHECKED_INTERSECTIONS), status, context);
+    /* A valid solid with no check skipped passed every check. */
+    if (status == POLYMASS_OK &&
+        !(flags & (POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_SKIP_INTERSECTION_CHECK)))
+        CHECK(d->checks == all_checks, status, context);
     /* Each finding lists min(count, POLYMASS_DIAGNOSTIC_LOCATIONS) locations,
        ascending and in range, then POLYMASS_NONE (bad indices are counted per
        index but listed per face: at least one face when there is any). */
@@ -221,11 +265,21 @@ static void check_report(const polymass_diagnostics* d, int32_t status, uint64_t
           context);
     CHECK(edges_listed(d->misoriented_edges, d->first_misoriented_edges, vertex_count), status,
           context);
+    CHECK(d->shell_count <= d->face_count, status, context);
+    CHECK(faces_listed(d->inverted_shells, d->first_inverted_shells, d->face_count, 1), status,
+          context);
+    CHECK(faces_listed(d->overlapping_shells, d->first_overlapping_shells, d->face_count, 1),
+          status, context);
+    CHECK(pairs_listed(d->intersecting_face_pairs, d->first_intersecting_face_pairs, d->face_count),
+          status, context);
+    CHECK(pairs_listed(d->touching_face_pairs, d->first_touching_face_pairs, d->face_count), status,
+          context);
     if (status == POLYMASS_OK) {
         CHECK(d->non_finite_vertices == 0 && d->out_of_range_indices == 0 && d->small_faces == 0,
               status, context);
         CHECK(d->open_edges == 0 && d->misoriented_edges == 0 && d->non_planar_faces == 0, status,
               context);
+        CHECK(d->intersecting_face_pairs == 0, status, context);
         CHECK(isfinite(d->signed_volume) && d->signed_volume != 0.0, status, context);
         CHECK(d->used_vertex_count <= vertex_count, status, context);
     }
@@ -255,7 +309,10 @@ static void check_properties(const polymass_mass_properties* p, uint32_t flags,
                              const polymass_context* context) {
     const uint32_t known = POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES |
                            POLYMASS_WARNING_UNCHECKED | POLYMASS_WARNING_NON_MANIFOLD |
-                           POLYMASS_WARNING_TOUCHING_FACES | mode_warnings;
+                           POLYMASS_WARNING_TOUCHING_FACES |
+                           POLYMASS_WARNING_INTERSECTIONS_UNCHECKED | mode_warnings;
+    const uint32_t skip_intersections =
+        POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS | POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     /* A repaired surface, a wall and a hull are judged with options of their own. */
     const int other_mode = (p->warnings & mode_warnings) != 0;
     CHECK(p->struct_size == sizeof *p, status, context);
@@ -278,10 +335,14 @@ static void check_properties(const polymass_mass_properties* p, uint32_t flags,
     check_rotation(p->principal_axes, status, context);
 
     CHECK((p->warnings & ~known) == 0, status, context);
-    if (!other_mode)
+    if (!other_mode) {
         CHECK(!!(p->warnings & POLYMASS_WARNING_UNCHECKED) ==
                   !!(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS),
               status, context);
+        CHECK(!!(p->warnings & POLYMASS_WARNING_INTERSECTIONS_UNCHECKED) ==
+                  !!(flags & skip_intersections),
+              status, context);
+    }
     if (p->warnings & POLYMASS_WARNING_INVERTED)
         CHECK(flags & POLYMASS_OPTION_ACCEPT_INVERTED, status, context);
     if (p->warnings & POLYMASS_WARNING_NON_MANIFOLD)
@@ -323,26 +384,29 @@ static void print_doubles(const char* name, const double* values, size_t count) 
     fprintf(stderr, "\n");
 }
 
-/* The decoded mesh, for POLYMASS_FUZZ_VERBOSE: positions in %a, exactly. */
-static void print_mesh(const polymass_mesh_desc* d) {
+/* Coordinate k of vertex i of a description whose stride is valid. */
+static double vertex_coordinate(const polymass_mesh_desc* d, uint64_t i, int k) {
     const size_t element = d->position_type == POLYMASS_POSITION_FLOAT32 ? 4 : 8;
     const size_t stride = d->position_stride ? (size_t)d->position_stride : 3 * element;
+    const unsigned char* at = (const unsigned char*)d->positions + i * stride + k * element;
+    double value;
+    if (element == 4) {
+        float f;
+        memcpy(&f, at, 4);
+        value = f;
+    } else {
+        memcpy(&value, at, 8);
+    }
+    return value;
+}
+
+/* The decoded mesh, for POLYMASS_FUZZ_VERBOSE: positions in %a, exactly. */
+static void print_mesh(const polymass_mesh_desc* d) {
     uint64_t i;
     int k;
     for (i = 0; i < d->vertex_count; ++i) {
         fprintf(stderr, "  v%llu", (unsigned long long)i);
-        for (k = 0; k < 3; ++k) {
-            const unsigned char* at = (const unsigned char*)d->positions + i * stride + k * element;
-            double value;
-            if (element == 4) {
-                float f;
-                memcpy(&f, at, 4);
-                value = f;
-            } else {
-                memcpy(&value, at, 8);
-            }
-            fprintf(stderr, " %a", value);
-        }
+        for (k = 0; k < 3; ++k) fprintf(stderr, " %a", vertex_coordinate(d, i, k));
         fprintf(stderr, "\n");
     }
     fprintf(stderr, "  indices");
@@ -366,7 +430,6 @@ static void print_properties(const polymass_mass_properties* p) {
     print_doubles("center_of_mass", p->center_of_mass, 3);
     print_doubles("inertia", p->inertia, 9);
     print_doubles("inertia_origin", p->inertia_origin, 9);
-    print_doubles("inertia_point", p->inertia_point, 9);
     print_doubles("principal_moments", p->principal_moments, 3);
     print_doubles("principal_axes", p->principal_axes, 9);
 }
@@ -431,6 +494,318 @@ static int in_chain(const uint32_t* modes, uint32_t mode) {
 }
 
 /* ------------------------------------------------------------------------ */
+/* One analysis and the questions to it                                     */
+/* ------------------------------------------------------------------------ */
+
+/* A mesh the library made, and its answers. */
+typedef struct analysis {
+    polymass_mesh* mesh; /* NULL when the analysis did not run */
+    int32_t status;
+    char message[1024];          /* the mesh's, or the context's without a mesh */
+    polymass_diagnostics report; /* with a mesh */
+    int32_t properties_status;   /* polymass_mesh_mass_properties, with a mesh */
+    char properties_message[1024];
+    polymass_mass_properties properties;
+    polymass_provenance provenance;
+} analysis;
+
+/* polymass_mesh_create: a mesh exactly when the analysis ran, whose status and
+   message are what it says; then its diagnostics. */
+static void analyse(analysis* a, polymass_context* context, const polymass_mesh_desc* desc,
+                    const polymass_options* options, uint64_t vertex_count) {
+    int32_t status;
+    current_call = "polymass_mesh_create";
+    a->mesh = (polymass_mesh*)&a->mesh; /* garbage: must become a mesh or NULL */
+    a->status = polymass_mesh_create(&a->mesh, context, desc, options);
+    CHECK(is_mesh_status(a->status), a->status, context);
+    if (a->mesh == NULL) {
+        /* It did not run: the caller's mistake, or no memory. */
+        CHECK(a->status == POLYMASS_ERROR_INVALID_ARGUMENT ||
+                  a->status == POLYMASS_ERROR_OUT_OF_MEMORY,
+              a->status, context);
+        check_status_and_message(a->status, context);
+        snprintf(a->message, sizeof a->message, "%s", polymass_context_message(context));
+        return;
+    }
+    CHECK(a->mesh != (polymass_mesh*)&a->mesh && a->status != POLYMASS_ERROR_INVALID_ARGUMENT &&
+              a->status != POLYMASS_ERROR_OUT_OF_MEMORY,
+          a->status, context);
+    current_call = "polymass_mesh_status";
+    CHECK(polymass_mesh_status(a->mesh) == a->status, a->status, context);
+    snprintf(a->message, sizeof a->message, "%s", polymass_mesh_message(a->mesh));
+
+    current_call = "polymass_mesh_diagnostics";
+    memset(&a->report, 0xA5, sizeof a->report);
+    a->report.struct_size = sizeof a->report;
+    status = polymass_mesh_diagnostics(&a->report, context, a->mesh);
+    CHECK(status == POLYMASS_OK, status, context);
+    check_status_and_message(status, context);
+    check_report(&a->report, options->flags, vertex_count, context);
+    /* The message says what is wrong with the surface, also when a later
+       mode answered, and why no mode answered: "" exactly for a mesh that
+       answered as the valid solid it is. */
+    current_call = "polymass_mesh_message";
+    CHECK((a->message[0] == '\0') == (a->status == POLYMASS_OK && a->report.status == POLYMASS_OK),
+          a->status, context);
+    if (verbose)
+        fprintf(stderr,
+                "fuzz_mesh: create %d (%s)\n  report: status %d, checks 0x%x, faces %llu, used "
+                "vertices %llu, edges %llu, shells %llu, degenerate faces %llu, max non-planarity "
+                "%.17g, signed volume %.17g\n",
+                (int)a->status, a->message, (int)a->report.status, (unsigned)a->report.checks,
+                (unsigned long long)a->report.face_count,
+                (unsigned long long)a->report.used_vertex_count,
+                (unsigned long long)a->report.edge_count, (unsigned long long)a->report.shell_count,
+                (unsigned long long)a->report.degenerate_faces, a->report.max_non_planarity,
+                a->report.signed_volume);
+}
+
+/* The shells and the shell of each face: every face in one shell, shells
+   numbered in the order of their first faces, judged exactly when the
+   analysis judged them. */
+static void check_shells(const analysis* a, polymass_context* context) {
+    static polymass_shell shells[MAX_TOTAL_INDICES + 1];
+    /* Faces of 0 vertices are faces too: up to 255 per copy, 256 copies. */
+    static uint32_t shell_of_face[256 * 256];
+    const polymass_diagnostics* d = &a->report;
+    const int judged = (d->checks & POLYMASS_CHECKED_SHELLS) != 0;
+    uint64_t count = UINT64_MAX, s, f, faces = 0;
+    int32_t status;
+
+    current_call = "polymass_mesh_shells";
+    status = polymass_mesh_shells(NULL, 0, &count, context, a->mesh);
+    CHECK(status == POLYMASS_OK && count == d->shell_count, status, context);
+    CHECK(count <= MAX_TOTAL_INDICES, status, context);
+    /* Room for one: only the first is written. */
+    memset(shells, 0xA5, 2 * sizeof shells[0]);
+    polymass_shell_init(&shells[0], sizeof shells[0]);
+    status = polymass_mesh_shells(shells, 1, &count, context, a->mesh);
+    CHECK(status == POLYMASS_OK && count == d->shell_count, status, context);
+    CHECK(shells[1].struct_size == 0xA5A5A5A5u, status, context);
+    for (s = 0; s < count; ++s) polymass_shell_init(&shells[s], sizeof shells[s]);
+    status = polymass_mesh_shells(shells, count, &count, context, a->mesh);
+    CHECK(status == POLYMASS_OK && count == d->shell_count, status, context);
+    check_status_and_message(status, context);
+    for (s = 0; s < count; ++s) {
+        const polymass_shell* shell = &shells[s];
+        if (verbose)
+            fprintf(stderr, "  shell %llu: kind %d, %llu faces from %llu, signed volume %.17g\n",
+                    (unsigned long long)s, (int)shell->kind, (unsigned long long)shell->face_count,
+                    (unsigned long long)shell->first_face, shell->signed_volume);
+        CHECK(shell->kind >= POLYMASS_SHELL_UNJUDGED && shell->kind <= POLYMASS_SHELL_NO_VOLUME,
+              status, context);
+        CHECK((shell->kind != POLYMASS_SHELL_UNJUDGED) == judged, status, context);
+        /* NaN when unjudged, or for a shell of no volume whose volume is
+           beyond a double's range (coordinates near overflow). */
+        if (!judged)
+            CHECK(isnan(shell->signed_volume), status, context);
+        else if (shell->kind != POLYMASS_SHELL_NO_VOLUME)
+            CHECK(!isnan(shell->signed_volume), status, context);
+        CHECK(shell->face_count > 0 && shell->first_face < d->face_count, status, context);
+        CHECK(s == 0 ? shell->first_face == 0 : shell->first_face > shells[s - 1].first_face,
+              status, context);
+        faces += shell->face_count;
+    }
+    CHECK(count == 0 || faces == d->face_count, status, context);
+
+    current_call = "polymass_mesh_shell_of_face";
+    CHECK(d->face_count <= sizeof shell_of_face / sizeof shell_of_face[0], -1, context);
+    status = polymass_mesh_shell_of_face(shell_of_face, d->face_count, context, a->mesh);
+    check_status_and_message(status, context);
+    if (status != POLYMASS_OK) {
+        CHECK(status == a->status && (status == POLYMASS_ERROR_NON_FINITE ||
+                                      status == POLYMASS_ERROR_INDEX_OUT_OF_RANGE ||
+                                      status == POLYMASS_ERROR_FACE_TOO_SMALL),
+              status, context);
+        return;
+    }
+    for (f = 0, s = 0; f < d->face_count; ++f) {
+        /* A new shell's number is the next one, and it starts where its
+           polymass_shell says. */
+        CHECK(shell_of_face[f] <= s && shell_of_face[f] < count, status, context);
+        if (shell_of_face[f] == s) CHECK(shells[s++].first_face == f, status, context);
+    }
+    CHECK(s == count, status, context);
+}
+
+/* The answers of a mesh: its mass properties, provenance and moments exactly
+   when it answered (the mesh's status and message otherwise), the output
+   untouched on a failure, and the inertia about the input's point. */
+static void ask(analysis* a, polymass_context* context, const polymass_mass_desc* mass,
+                int mass_valid, uint32_t flags, const double point[3]) {
+    polymass_mass_properties untouched;
+    polymass_provenance provenance_untouched;
+    polymass_moments moments, moments_untouched;
+    int32_t status;
+
+    current_call = "polymass_mesh_mass_properties";
+    memset(&a->properties, 0xA5, sizeof a->properties);
+    a->properties.struct_size = sizeof a->properties;
+    untouched = a->properties;
+    a->properties_status = polymass_mesh_mass_properties(&a->properties, context, a->mesh, mass);
+    check_status_and_message(a->properties_status, context);
+    snprintf(a->properties_message, sizeof a->properties_message, "%s",
+             polymass_context_message(context));
+    if (verbose)
+        fprintf(stderr, "fuzz_mesh: mesh_mass_properties %d (%s)\n", (int)a->properties_status,
+                a->properties_message);
+    if (!mass_valid && a->properties_status == POLYMASS_ERROR_INVALID_ARGUMENT) {
+        /* the mass refused, whatever the mesh */
+    } else if (a->status != POLYMASS_OK) {
+        CHECK(a->properties_status == a->status, a->properties_status, context);
+        CHECK(strcmp(a->properties_message, a->message) == 0, a->properties_status, context);
+    } else {
+        CHECK(mass_valid, a->properties_status, context);
+        CHECK(a->properties_status == POLYMASS_OK ||
+                  a->properties_status == POLYMASS_ERROR_OUT_OF_MEMORY ||
+                  a->properties_status == POLYMASS_ERROR_OVERFLOW,
+              a->properties_status, context);
+    }
+    if (a->properties_status == POLYMASS_OK) {
+        const char* violation;
+        if (verbose) print_properties(&a->properties);
+        check_properties(&a->properties, flags, mass, a->properties_status, context);
+        violation = inertia_about_violation(&a->properties, point);
+        if (violation) fail(__FILE__, __LINE__, violation, a->properties_status, context);
+    } else {
+        CHECK(memcmp(&a->properties, &untouched, sizeof untouched) == 0, a->properties_status,
+              context);
+    }
+
+    current_call = "polymass_mesh_provenance";
+    memset(&a->provenance, 0xA5, sizeof a->provenance);
+    a->provenance.struct_size = sizeof a->provenance;
+    provenance_untouched = a->provenance;
+    status = polymass_mesh_provenance(&a->provenance, context, a->mesh);
+    check_status_and_message(status, context);
+    CHECK(status == a->status, status, context);
+    if (status != POLYMASS_OK)
+        CHECK(memcmp(&a->provenance, &provenance_untouched, sizeof a->provenance) == 0, status,
+              context);
+
+    current_call = "polymass_mesh_moments";
+    memset(&moments, 0xA5, sizeof moments);
+    moments.struct_size = sizeof moments;
+    moments_untouched = moments;
+    status = polymass_mesh_moments(&moments, context, a->mesh);
+    check_status_and_message(status, context);
+    /* The mesh's status, or (reported to the lead: the header does not say
+       it) the overflow of moments about the reference point of a body whose
+       mass properties fit. */
+    CHECK(status == a->status || (a->status == POLYMASS_OK && status == POLYMASS_ERROR_OVERFLOW),
+          status, context);
+    if (status == POLYMASS_OK) {
+        CHECK(!(moments.flags & POLYMASS_MOMENTS_PARTIAL), status, context);
+        CHECK(all_finite(moments.reference, 3) && isfinite(moments.volume) &&
+                  moments.volume > 0.0 && moments.mass == moments.volume &&
+                  all_finite(moments.first, 3) && all_finite(moments.second, 6),
+              status, context);
+    } else {
+        CHECK(memcmp(&moments, &moments_untouched, sizeof moments) == 0, status, context);
+    }
+}
+
+/* polymass_mass_properties_compute is the analysis polymass_mesh_create
+   makes: the same status (and message, with the solid alone), and on a
+   success the same properties and provenance, bit for bit. A refused mass may be refused before the
+   surface is read. */
+static void check_one_call(const analysis* a, polymass_context* context,
+                           const polymass_mesh_desc* desc, const polymass_options* options,
+                           const polymass_mass_desc* mass, int mass_valid) {
+    polymass_mass_properties properties, untouched;
+    polymass_provenance provenance, provenance_untouched;
+    int32_t status;
+    current_call = "polymass_mass_properties_compute";
+    memset(&properties, 0xA5, sizeof properties);
+    properties.struct_size = sizeof properties;
+    untouched = properties;
+    memset(&provenance, 0xA5, sizeof provenance);
+    provenance.struct_size = sizeof provenance;
+    provenance_untouched = provenance;
+    status =
+        polymass_mass_properties_compute(&properties, &provenance, context, desc, options, mass);
+    CHECK(is_mesh_status(status), status, context);
+    check_status_and_message(status, context);
+    if (verbose)
+        fprintf(stderr, "fuzz_mesh: compute %d (%s)\n", (int)status,
+                polymass_context_message(context));
+    if (a->mesh == NULL) {
+        CHECK(status == a->status, status, context);
+        if (mass_valid)
+            CHECK(strcmp(polymass_context_message(context), a->message) == 0, status, context);
+    } else if (!mass_valid && status == POLYMASS_ERROR_INVALID_ARGUMENT) {
+        /* the mass refused first */
+    } else {
+        CHECK(status == a->properties_status, status, context);
+        /* The same words with the solid alone; a chain's names each mode,
+           the solid too, where the mesh's leads with the surface's defect. */
+        if (options->modes[0] == POLYMASS_MODE_NONE ||
+            (options->modes[0] == POLYMASS_MODE_SOLID && options->modes[1] == POLYMASS_MODE_NONE))
+            CHECK(strcmp(polymass_context_message(context), a->properties_message) == 0, status,
+                  context);
+    }
+    if (status == POLYMASS_OK) {
+        CHECK(memcmp(&properties, &a->properties, sizeof properties) == 0, status, context);
+        CHECK(memcmp(&provenance, &a->provenance, sizeof provenance) == 0, status, context);
+    } else {
+        CHECK(memcmp(&properties, &untouched, sizeof properties) == 0, status, context);
+        CHECK(memcmp(&provenance, &provenance_untouched, sizeof provenance) == 0, status, context);
+    }
+}
+
+/* A NaN's bits with the quiet bit set: the exact weld reads coordinates as
+   values (-0 is +0, a NaN is quiet), so NaNs of one payload are one. */
+static uint64_t quiet_bits(double value) {
+    uint64_t bits;
+    memcpy(&bits, &value, sizeof bits);
+    return bits | (UINT64_C(1) << 51);
+}
+
+/* polymass_weld_positions over the description's positions: each vertex
+   welded to the lowest of its group (itself for the group's lowest, which
+   the distinct count counts), at the same position when the tolerance is 0
+   (+0 and -0 one, NaNs of one payload one); non-finite coordinates an error only
+   above 0; a stride smaller than a vertex refused. */
+static void check_weld(polymass_context* context, const polymass_mesh_desc* desc, int stride_valid,
+                       double tolerance) {
+    static uint32_t vertex_of[MAX_TOTAL_VERTICES];
+    uint64_t distinct = UINT64_MAX, own = 0, i;
+    int finite = 1, k;
+    int32_t status;
+    current_call = "polymass_weld_positions";
+    status =
+        polymass_weld_positions(vertex_of, &distinct, context, desc->positions, desc->position_type,
+                                desc->vertex_count, desc->position_stride, tolerance);
+    check_status_and_message(status, context);
+    if (verbose)
+        fprintf(stderr, "fuzz_mesh: weld (tolerance %g) %d (%s), %llu distinct\n", tolerance,
+                (int)status, polymass_context_message(context), (unsigned long long)distinct);
+    CHECK(status == POLYMASS_OK || status == POLYMASS_ERROR_NON_FINITE ||
+              status == POLYMASS_ERROR_INVALID_ARGUMENT,
+          status, context);
+    if (desc->vertex_count == 0) return; /* nothing to weld: no verdict on the rest */
+    CHECK((status == POLYMASS_ERROR_INVALID_ARGUMENT) == !stride_valid, status, context);
+    if (!stride_valid) return;
+    for (i = 0; i < desc->vertex_count && finite; ++i)
+        for (k = 0; k < 3; ++k) finite = finite && isfinite(vertex_coordinate(desc, i, k));
+    CHECK((status == POLYMASS_ERROR_NON_FINITE) == (tolerance > 0.0 && !finite), status, context);
+    if (status != POLYMASS_OK) return;
+    for (i = 0; i < desc->vertex_count; ++i) {
+        const uint32_t root = vertex_of[i];
+        CHECK(root <= i && vertex_of[root] == root, status, context);
+        own += root == i;
+        if (tolerance == 0.0)
+            for (k = 0; k < 3; ++k) {
+                const double a = vertex_coordinate(desc, i, k),
+                             b = vertex_coordinate(desc, root, k);
+                CHECK(a == b || (isnan(a) && isnan(b) && quiet_bits(a) == quiet_bits(b)), status,
+                      context);
+            }
+    }
+    CHECK(distinct == own, status, context);
+}
+
+/* ------------------------------------------------------------------------ */
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
@@ -444,24 +819,22 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     uint64_t stride;
     uint8_t one_sizes[256];
     polymass_context* context = NULL;
-    polymass_options options, effective;
+    polymass_options options, chain_options;
     polymass_mass_desc mass_desc, *mass = NULL;
     polymass_mesh_desc desc;
-    polymass_diagnostics report;
-    polymass_mass_properties p_mesh, p_compute, p_modes, untouched;
-    polymass_provenance provenance;
-    polymass_options chain_options;
     const uint32_t* chain;
     polymass_polygon_properties q, q_untouched;
-    polymass_mesh* mesh;
     buffer positions_buffer, indices_buffer;
     uint8_t *positions, *indices, *one_positions, *one_indices;
     uint32_t* face_sizes = NULL;
     double* points;
+    double point[3];
     size_t point_count;
     uint64_t point_stride;
-    int32_t status_check, status_create, status_mesh_props = -1, status_compute, status_polygon;
-    char check_message[1024], create_message[1024];
+    int32_t status_polygon;
+    int mass_valid;
+    /* static: large, and one execution at a time */
+    static analysis solid, chained;
 
     if (verbose < 0) verbose = getenv("POLYMASS_FUZZ_VERBOSE") != NULL;
 
@@ -590,10 +963,15 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                                          : 2u + (header[3] >> 2);
             memcpy(&mass_desc.density, header + 8, 8);
             memcpy(&mass_desc.mass, header + 8, 8);
-            memcpy(mass_desc.point, header + 16, 24);
             mass = &mass_desc;
             break;
     }
+    memcpy(point, header + 16, sizeof point);
+    mass_valid =
+        !mass ||
+        (mass->mass_mode == POLYMASS_MASS_FROM_DENSITY && isfinite(mass->density) &&
+         mass->density > 0.0) ||
+        (mass->mass_mode == POLYMASS_MASS_FROM_TOTAL && isfinite(mass->mass) && mass->mass > 0.0);
 
     if (verbose)
         fprintf(stderr,
@@ -609,178 +987,87 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 : mass->mass_mode == POLYMASS_MASS_FROM_DENSITY ? "density"
                 : mass->mass_mode == POLYMASS_MASS_FROM_TOTAL   ? "total"
                                                                 : "unknown",
-                mass ? mass->density : 0.0, mass ? mass->point[0] : 0.0,
-                mass ? mass->point[1] : 0.0, mass ? mass->point[2] : 0.0);
+                mass ? mass->density : 0.0, point[0], point[1], point[2]);
     if (verbose) print_mesh(&desc);
 
-    /* --- context and options -------------------------------------------- */
+    /* --- the options, per call ------------------------------------------- */
     current_call = "polymass_context_create";
     CHECK(polymass_context_create(&context, NULL) == POLYMASS_OK && context, -1, NULL);
-    memset(&options, 0, sizeof options);
-    options.struct_size = sizeof options;
+    polymass_options_init(&options, sizeof options);
     options.flags = flags;
     options.planarity_tolerance = tolerances[header[2] % 8];
     options.weld_tolerance = weld_tolerances[header[2] / 8 % 4];
-    current_call = "polymass_context_set_options";
-    {
-        const int32_t status = polymass_context_set_options(context, &options);
-        check_status_and_message(status, context);
-        CHECK(status == (options.planarity_tolerance < 1.0 ? POLYMASS_OK
-                                                           : POLYMASS_ERROR_INVALID_ARGUMENT),
-              status, context);
-    }
-    memset(&effective, 0, sizeof effective);
-    effective.struct_size = sizeof effective;
-    current_call = "polymass_context_get_options";
-    CHECK(polymass_context_get_options(&effective, context) == POLYMASS_OK, -1, context);
-    CHECK(effective.planarity_tolerance > 0.0 && effective.planarity_tolerance < 1.0, -1, context);
-    flags = effective.flags;
-
-    /* --- polymass_mesh_check --------------------------------------------- */
-    current_call = "polymass_mesh_check";
-    memset(&report, 0xA5, sizeof report);
-    report.struct_size = sizeof report;
-    status_check = polymass_mesh_check(&report, context, &desc);
-    CHECK(is_mesh_status(status_check), status_check, context);
-    snprintf(check_message, sizeof check_message, "%s", polymass_context_message(context));
-    if (verbose)
-        fprintf(stderr,
-                "fuzz_mesh: check %d (%s)\n  report: faces %llu, used vertices %llu, edges %llu, "
-                "degenerate faces %llu, max non-planarity %.17g, signed volume %.17g\n",
-                (int)status_check, check_message, (unsigned long long)report.face_count,
-                (unsigned long long)report.used_vertex_count, (unsigned long long)report.edge_count,
-                (unsigned long long)report.degenerate_faces, report.max_non_planarity,
-                report.signed_volume);
-    check_status_and_message(status_check, context);
-    check_report(&report, status_check, total_v, context);
-
-    /* --- polymass_mesh_shells: every face in a shell, numbered in order --- */
-    current_call = "polymass_mesh_shells";
-    if (report.face_count <= MAX_TOTAL_INDICES) {
-        static uint32_t shell_of_face[MAX_TOTAL_INDICES];
-        uint64_t shell_count = UINT64_MAX, next = 0, f;
-        const int32_t status = polymass_mesh_shells(shell_of_face, &shell_count, context, &desc);
-        check_status_and_message(status, context);
-        CHECK(is_mesh_status(status), status, context);
-        if (status == POLYMASS_OK) {
-            CHECK(shell_count <= report.face_count && (shell_count > 0) == (report.face_count > 0),
-                  status, context);
-            for (f = 0; f < report.face_count; ++f) {
-                /* a new shell's number is the next one */
-                CHECK(shell_of_face[f] <= next && shell_of_face[f] < shell_count, status, context);
-                if (shell_of_face[f] == next) ++next;
-            }
-            CHECK(next == shell_count, status, context);
-        }
-    }
-
-    /* --- polymass_mesh_create + polymass_mesh_mass_properties ------------ */
-    current_call = "polymass_mesh_create";
-    mesh = (polymass_mesh*)&mesh; /* garbage: must become NULL on failure */
-    status_create = polymass_mesh_create(&mesh, context, &desc);
-    CHECK(is_mesh_status(status_create), status_create, context);
-    check_status_and_message(status_create, context);
-    snprintf(create_message, sizeof create_message, "%s", polymass_context_message(context));
-    if (verbose) fprintf(stderr, "fuzz_mesh: create %d (%s)\n", (int)status_create, create_message);
-    /* polymass_mesh_check returns what polymass_mesh_create would with the
-       topology checks on, with the same message. */
-    if (!(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS)) {
-        CHECK(status_check == status_create, status_create, context);
-        CHECK(strcmp(check_message, create_message) == 0, status_create, context);
-    }
-    if (status_create != POLYMASS_OK) {
-        CHECK(mesh == NULL, status_create, context);
-    } else {
-        CHECK(mesh != NULL && mesh != (polymass_mesh*)&mesh, status_create, context);
-        current_call = "polymass_mesh_mass_properties";
-        memset(&p_mesh, 0xA5, sizeof p_mesh);
-        p_mesh.struct_size = sizeof p_mesh;
-        untouched = p_mesh;
-        status_mesh_props = polymass_mesh_mass_properties(&p_mesh, context, mesh, mass);
-        check_status_and_message(status_mesh_props, context);
-        CHECK(status_mesh_props == POLYMASS_OK ||
-                  status_mesh_props == POLYMASS_ERROR_INVALID_ARGUMENT ||
-                  status_mesh_props == POLYMASS_ERROR_OUT_OF_MEMORY ||
-                  status_mesh_props == POLYMASS_ERROR_OVERFLOW,
-              status_mesh_props, context);
-        if (verbose && status_mesh_props == POLYMASS_OK) print_properties(&p_mesh);
-        if (status_mesh_props == POLYMASS_OK)
-            check_properties(&p_mesh, flags, mass, status_mesh_props, context);
-        else
-            CHECK(memcmp(&p_mesh, &untouched, sizeof p_mesh) == 0, status_mesh_props, context);
-        if (verbose)
-            fprintf(stderr, "fuzz_mesh: mesh_mass_properties %d (%s)\n", (int)status_mesh_props,
-                    polymass_context_message(context));
-        polymass_mesh_destroy(mesh);
-    }
-
-    /* --- polymass_mass_properties_compute: create + mass_properties ------ */
-    current_call = "polymass_mass_properties_compute";
-    memset(&p_compute, 0xA5, sizeof p_compute);
-    p_compute.struct_size = sizeof p_compute;
-    untouched = p_compute;
-    status_compute = polymass_mass_properties_compute(&p_compute, context, &desc, mass);
-    CHECK(is_mesh_status(status_compute), status_compute, context);
-    check_status_and_message(status_compute, context);
-    if (verbose)
-        fprintf(stderr, "fuzz_mesh: compute %d (%s)\n", (int)status_compute,
-                polymass_context_message(context));
-    if (status_create != POLYMASS_OK) {
-        CHECK(status_compute == status_create, status_compute, context);
-        CHECK(strcmp(create_message, polymass_context_message(context)) == 0, status_compute,
+    if (!(options.planarity_tolerance < 1.0)) {
+        /* Refused before any analysis; the rest of the run takes the defaults
+           (as the inputs meant when options were a context's). */
+        analyse(&solid, context, &desc, &options, total_v);
+        CHECK(solid.mesh == NULL && solid.status == POLYMASS_ERROR_INVALID_ARGUMENT, solid.status,
               context);
-    } else {
-        CHECK(status_compute == status_mesh_props, status_compute, context);
+        polymass_options_init(&options, sizeof options);
     }
-    if (status_compute == POLYMASS_OK) {
-        check_properties(&p_compute, flags, mass, status_compute, context);
-        CHECK(memcmp(&p_compute, &p_mesh, sizeof p_compute) == 0, status_compute, context);
-    } else {
-        CHECK(memcmp(&p_compute, &untouched, sizeof p_compute) == 0, status_compute, context);
-    }
+    flags = options.flags;
 
-    /* --- polymass_mass_properties_with_provenance with a chain of modes ---- */
-    current_call = "polymass_mass_properties_with_provenance";
-    chain_options = effective;
+    /* --- one analysis, the solid alone, and its questions ---------------- */
+    analyse(&solid, context, &desc, &options, total_v);
+    if (solid.mesh != NULL) {
+        /* With the solid alone, the mesh's status is the surface's verdict
+           (or the overflow of a valid solid's moments). */
+        CHECK(solid.report.status == solid.status ||
+                  (solid.status == POLYMASS_ERROR_OVERFLOW && solid.report.status == POLYMASS_OK),
+              solid.status, context);
+        check_shells(&solid, context);
+        ask(&solid, context, mass, mass_valid, flags, point);
+        if (solid.status == POLYMASS_OK)
+            CHECK(solid.provenance.mode == POLYMASS_MODE_SOLID, solid.status, context);
+    }
+    /* The one call: the same analysis. */
+    check_one_call(&solid, context, &desc, &options, mass, mass_valid);
+
+    /* --- a chain of modes ------------------------------------------------ */
+    chain_options = options;
     memcpy(chain_options.modes, chain, sizeof chain_options.modes);
     chain_options.shell_thickness = 1e-3;
-    memset(&p_modes, 0xA5, sizeof p_modes);
-    p_modes.struct_size = sizeof p_modes;
-    untouched = p_modes;
-    memset(&provenance, 0, sizeof provenance);
-    provenance.struct_size = sizeof provenance;
-    {
-        const int32_t status = polymass_mass_properties_with_provenance(
-            &p_modes, &provenance, context, &desc, mass, &chain_options);
-        CHECK(is_mesh_status(status), status, context);
-        check_status_and_message(status, context);
+    analyse(&chained, context, &desc, &chain_options, total_v);
+    CHECK((chained.mesh == NULL) == (solid.mesh == NULL), chained.status, context);
+    if (chained.mesh != NULL) {
         if (verbose)
-            fprintf(stderr, "fuzz_mesh: modes %u,%u,%u,%u: %d mode %d (%s)\n", (unsigned)chain[0],
-                    (unsigned)chain[1], (unsigned)chain[2], (unsigned)chain[3], (int)status,
-                    (int)provenance.mode, polymass_context_message(context));
-        if (status == POLYMASS_OK) {
-            check_properties(&p_modes, flags, mass, status, context);
-            CHECK(in_chain(chain, (uint32_t)provenance.mode) ||
-                      (provenance.mode == POLYMASS_MODE_SOLID &&
-                       in_chain(chain, POLYMASS_MODE_REPAIR)),
-                  status, context);
-            CHECK(!!(p_modes.warnings & POLYMASS_WARNING_REPAIRED) ==
-                          (provenance.mode == POLYMASS_MODE_REPAIR) &&
-                      !!(p_modes.warnings & POLYMASS_WARNING_SHELL) ==
-                          (provenance.mode == POLYMASS_MODE_SHELL) &&
-                      !!(p_modes.warnings & POLYMASS_WARNING_HULL) ==
-                          (provenance.mode == POLYMASS_MODE_HULL),
-                  status, context);
-        } else {
-            CHECK(memcmp(&p_modes, &untouched, sizeof p_modes) == 0, status, context);
+            fprintf(stderr, "fuzz_mesh: modes %u,%u,%u,%u\n", (unsigned)chain[0],
+                    (unsigned)chain[1], (unsigned)chain[2], (unsigned)chain[3]);
+        /* What the checks found does not depend on the modes. */
+        CHECK(memcmp(&chained.report, &solid.report, sizeof chained.report) == 0, chained.status,
+              context);
+        ask(&chained, context, mass, mass_valid, flags, point);
+        if (chained.status == POLYMASS_OK) {
+            const int32_t mode = chained.provenance.mode;
+            CHECK(in_chain(chain, (uint32_t)mode) ||
+                      (mode == POLYMASS_MODE_SOLID && in_chain(chain, POLYMASS_MODE_REPAIR)),
+                  chained.status, context);
+        }
+        if (chained.properties_status == POLYMASS_OK) {
+            const uint32_t warnings = chained.properties.warnings;
+            const int32_t mode = chained.provenance.mode;
+            CHECK(!!(warnings & POLYMASS_WARNING_REPAIRED) == (mode == POLYMASS_MODE_REPAIR) &&
+                      !!(warnings & POLYMASS_WARNING_SHELL) == (mode == POLYMASS_MODE_SHELL) &&
+                      !!(warnings & POLYMASS_WARNING_HULL) == (mode == POLYMASS_MODE_HULL),
+                  chained.status, context);
         }
         /* A mesh the solid accepts is the solid's answer, bit for bit. */
-        if (status_compute == POLYMASS_OK &&
+        if (solid.status == POLYMASS_OK &&
             (chain[0] == POLYMASS_MODE_SOLID || chain[0] == POLYMASS_MODE_REPAIR)) {
-            CHECK(status == POLYMASS_OK && provenance.mode == POLYMASS_MODE_SOLID, status, context);
-            CHECK(memcmp(&p_modes, &p_compute, sizeof p_modes) == 0, status, context);
+            CHECK(chained.status == POLYMASS_OK && chained.provenance.mode == POLYMASS_MODE_SOLID &&
+                      chained.properties_status == solid.properties_status,
+                  chained.status, context);
+            if (solid.properties_status == POLYMASS_OK)
+                CHECK(memcmp(&chained.properties, &solid.properties, sizeof solid.properties) == 0,
+                      chained.status, context);
         }
     }
+    check_one_call(&chained, context, &desc, &chain_options, mass, mass_valid);
+    polymass_mesh_destroy(solid.mesh);
+    polymass_mesh_destroy(chained.mesh);
+
+    /* --- welding over the positions alone -------------------------------- */
+    check_weld(context, &desc, stride_choice != 3, weld_tolerances[header[2] / 8 % 4]);
 
     /* --- polymass_polygon_compute on the coordinates as 2D points ---------- */
     if (!float32 && !packed_pairs) {

@@ -1,6 +1,7 @@
 /* libFuzzer target: arbitrary bytes as a program over the moments API
- * (polymass_moments_*): bodies made from a cube mesh or written raw, then
- * composed, and their mass properties taken.
+ * (polymass_moments_*): bodies made from a cube mesh (polymass_mesh_create,
+ * polymass_mesh_moments) or written raw, then composed, and their mass
+ * properties taken, with the inertia about a point.
  *
  * Input format (bytes past the end read as 0):
  *   repeated until the input ends, one operation per record:
@@ -9,7 +10,7 @@
  *              starting as the unit cube's moments)
  *     then the operation's arguments, raw doubles (8 bytes each):
  *       0 compute     3 scale factors and 3 offsets of the cube's vertices
- *                     (polymass_moments_compute)
+ *                     (polymass_mesh_create + polymass_mesh_moments)
  *       1 raw         the 19 doubles of a polymass_moments (reference to
  *                     second, then the 5 error bounds), then a flags byte
  *       2 add, 3 subtract   target = target op operand (no arguments)
@@ -17,13 +18,18 @@
  *                     and 3 of a translation
  *       5 scale       3 factors
  *       6 weight      a mode byte and a value
- *       7 mass properties   a mode byte, a value and a point (3 doubles)
+ *       7 mass properties   a mode byte, a value and a point (3 doubles):
+ *                     polymass_moments_mass_properties, then
+ *                     polymass_inertia_about the point
  *
  * Invariants: every status is one the API documents for the call (never
  * POLYMASS_ERROR_INTERNAL) and the message is "" exactly after a success;
  * after a failure the output is untouched; after a success the moments'
  * numbers are finite, and mass properties are finite with a positive volume
- * and mass, ascending principal moments and orthonormal axes. */
+ * and mass, ascending principal moments and orthonormal axes; the inertia
+ * about a point is refused (INVALID_ARGUMENT) exactly when the point is not
+ * finite, and is finite when given, with a trace that is the centre of mass's
+ * plus 2 m |d|^2 (the parallel-axis theorem). */
 #include <math.h>
 #include <polymass/polymass.h>
 #include <stddef.h>
@@ -31,6 +37,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "fuzz_checks.h"
 #include "fuzz_input.h"
 
 static const char* current_call = "";
@@ -45,13 +52,6 @@ static void fail(int line, const char* what, int32_t status, const polymass_cont
 
 #define CHECK(condition, status, context) \
     ((condition) ? (void)0 : fail(__LINE__, #condition, status, context))
-
-static int all_finite(const double* values, size_t count) {
-    size_t i;
-    for (i = 0; i < count; ++i)
-        if (!isfinite(values[i])) return 0;
-    return 1;
-}
 
 /* After a call writing *out (size bytes) from a copy `before`. */
 static void check_call(int32_t status, const void* out, const void* before, size_t size,
@@ -115,7 +115,15 @@ static int32_t cube_moments(polymass_moments* out, polymass_context* context, co
     desc.index_count = 24;
     desc.face_sizes = sizes;
     desc.face_count = 6;
-    return polymass_moments_compute(out, context, &desc, NULL);
+    /* One analysis (default options: every check); a refused cube's
+       polymass_mesh_moments gives the mesh's status and message. */
+    {
+        polymass_mesh* mesh = NULL;
+        int32_t status = polymass_mesh_create(&mesh, context, &desc, NULL);
+        if (mesh != NULL) status = polymass_mesh_moments(out, context, mesh);
+        polymass_mesh_destroy(mesh);
+        return status;
+    }
 }
 
 static polymass_mass_desc take_mass(reader* r) {
@@ -137,7 +145,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (polymass_context_create(&context, NULL) != POLYMASS_OK) __builtin_trap();
     memset(&slots[0], 0, sizeof slots[0]);
     slots[0].struct_size = sizeof slots[0];
-    current_call = "polymass_moments_compute (unit cube)";
+    current_call = "the unit cube's moments";
     status = cube_moments(&slots[0], context, unit, zero);
     CHECK(status == POLYMASS_OK, status, context);
     for (i = 1; i < 4; ++i) slots[i] = slots[0];
@@ -150,7 +158,7 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         before = *target;
         switch (code & 7) {
             case 0:
-                current_call = "polymass_moments_compute";
+                current_call = "a cube's moments";
                 for (i = 0; i < 6; ++i) values[i] = take_double(&r);
                 status = cube_moments(target, context, values, values + 3);
                 break;
@@ -187,7 +195,8 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             default: {
                 polymass_mass_properties properties, untouched;
                 polymass_mass_desc mass = take_mass(&r);
-                for (i = 0; i < 3; ++i) mass.point[i] = take_double(&r);
+                double point[3];
+                for (i = 0; i < 3; ++i) point[i] = take_double(&r);
                 current_call = "polymass_moments_mass_properties";
                 memset(&properties, 0xA5, sizeof properties);
                 properties.struct_size = sizeof properties;
@@ -196,6 +205,10 @@ int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                                                           (code & 0x80) ? NULL : &mass);
                 check_call(status, &properties, &untouched, sizeof properties, context);
                 check_properties(status, &properties, context);
+                if (status == POLYMASS_OK) {
+                    const char* violation = inertia_about_violation(&properties, point);
+                    if (violation) fail(__LINE__, violation, status, context);
+                }
                 continue;
             }
         }

@@ -268,7 +268,7 @@ def regressions():
         "made_cube_density_1e308_mass_overflow",
         encode(scaled(CUBE_VERTICES, 2.0), CUBE_QUADS, mass_mode=MASS_DENSITY, mass_value=1e308),
     )
-    # The unit cube about a point at x = 1e200: inertia_point overflows.
+    # The unit cube about a point at x = 1e200: its inertia about it overflows.
     yield (
         "made_cube_point_1e200_overflow",
         encode(

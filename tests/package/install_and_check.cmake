@@ -3,7 +3,7 @@
 #
 #   cmake -DBUILD_DIR=... -DPREFIX=... -DCONFIG=... -DLIBDIR=lib -DINCLUDEDIR=include
 #         -DCMAKEDIR=lib/cmake/polymass -DPKGCONFIGDIR=lib/pkgconfig
-#         -DSONAME=libpolymass.so.1 [-DREADELF=readelf] -P install_and_check.cmake
+#         -DSONAME=libpolymass.so.2 [-DREADELF=readelf] -P install_and_check.cmake
 #
 # Checks: the runtime component is exactly the versioned shared library and
 # its SONAME link; the development component is the headers, the namelink,

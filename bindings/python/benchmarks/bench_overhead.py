@@ -3,11 +3,11 @@
     python bindings/python/benchmarks/bench_overhead.py [--triangles N] [--repeat N]
 
 Times, interleaved and each as the median of N runs: the C function itself
-(polymass_mass_properties_compute called through cffi on arrays already
-described, the context's options set once: what a C caller pays, plus the
+(polymass_mass_properties_compute with its provenance, called through cffi on
+arrays already described, with default options: what a C caller pays, plus the
 call's sub-microsecond cffi cost) and `polymass.mass_properties` on the same
-NumPy arrays (describing them, setting the options, the call with its
-provenance, building the result). Prints the figures; asserts nothing.
+NumPy arrays (describing them, gathering and translating the options, the
+call, building the result). Prints the figures; asserts nothing.
 """
 
 from __future__ import annotations
@@ -22,8 +22,7 @@ import numpy as np
 
 import polymass
 from polymass._arrays import mesh_description
-from polymass._library import context, ffi, lib, new_struct
-from polymass._options import apply_options
+from polymass._library import ffi, lib, new_struct, working_context
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from shapes import torus
@@ -39,11 +38,15 @@ def main() -> None:
     faces = np.ascontiguousarray(faces, dtype=np.uint32)
     vertices = np.ascontiguousarray(vertices + 1e3)
     description = mesh_description(vertices, faces, None)
-    ctx = context()
+    ctx = working_context(None)  # one thread, as mass_properties uses by default
     out = new_struct("polymass_mass_properties")
+    provenance = new_struct("polymass_provenance")
 
     def c_call() -> None:
-        if lib.polymass_mass_properties_compute(out, ctx, description.desc, ffi.NULL) != 0:
+        status = lib.polymass_mass_properties_compute(
+            out, provenance, ctx, description.desc, ffi.NULL, ffi.NULL
+        )
+        if status != 0:
             raise RuntimeError(ffi.string(lib.polymass_context_message(ctx)).decode())
 
     def python_call() -> None:
@@ -52,8 +55,6 @@ def main() -> None:
     times: dict[str, list[float]] = {"C": [], "Python": []}
     for _ in range(arguments.repeat):
         for name, call in (("C", c_call), ("Python", python_call)):
-            if name == "C":
-                apply_options(ctx)  # the defaults, as mass_properties sets them
             start = time.perf_counter()
             call()
             times[name].append(time.perf_counter() - start)

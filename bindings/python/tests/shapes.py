@@ -77,6 +77,12 @@ def extrusion(rng: np.random.Generator, count: int = 9):
 SHAPES = {"star": star_polyhedron, "hull": convex_hull, "extrusion": extrusion}
 
 
+def soup(vertices: np.ndarray, faces) -> tuple[np.ndarray, np.ndarray]:
+    """Each face with its own vertices, as an STL file stores its triangles."""
+    faces = np.asarray(faces)
+    return vertices[faces.reshape(-1)], np.arange(faces.size).reshape(faces.shape)
+
+
 def random_rotation(rng: np.random.Generator) -> np.ndarray:
     """A uniformly random proper rotation (QR of a Gaussian matrix, det fixed to +1)."""
     q, r = np.linalg.qr(rng.normal(size=(3, 3)))

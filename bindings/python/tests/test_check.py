@@ -6,12 +6,7 @@ import numpy as np
 import pytest
 
 import polymass
-from shapes import SHAPES
-
-
-def _soup(vertices, triangles):
-    """Each triangle with its own three vertices, as an STL file stores them."""
-    return vertices[np.asarray(triangles).reshape(-1)], np.arange(3 * len(triangles)).reshape(-1, 3)
+from shapes import SHAPES, soup
 
 
 def test_a_closed_solid_is_ok_and_counted(tetrahedron):
@@ -76,7 +71,7 @@ def test_many_findings_list_the_lowest_eight(cube):
 @pytest.mark.parametrize("shape", ["star", "hull"])
 def test_welding_makes_a_triangle_soup_a_solid(shape):
     vertices, triangles = SHAPES[shape](np.random.default_rng(7))
-    soup_vertices, soup_faces = _soup(vertices, triangles)
+    soup_vertices, soup_faces = soup(vertices, triangles)
     assert polymass.check(soup_vertices, soup_faces).error is polymass.OpenSurfaceError
     welded = polymass.check(soup_vertices, soup_faces, weld=True)
     assert welded.ok and welded.used_vertex_count == len(vertices)
@@ -87,7 +82,7 @@ def test_welding_makes_a_triangle_soup_a_solid(shape):
 
 def test_a_weld_tolerance_joins_vertices_carrying_rounding_noise(tetrahedron):
     vertices, faces = tetrahedron
-    soup_vertices, soup_faces = _soup(vertices, faces)
+    soup_vertices, soup_faces = soup(vertices, faces)
     noisy = soup_vertices + np.random.default_rng(8).uniform(-1e-12, 1e-12, soup_vertices.shape)
     assert not polymass.check(noisy, soup_faces, weld=True).ok
     assert polymass.check(noisy, soup_faces, weld=1e-9).ok
@@ -95,7 +90,7 @@ def test_a_weld_tolerance_joins_vertices_carrying_rounding_noise(tetrahedron):
 
 def test_weld_is_a_boolean_or_a_float(tetrahedron):
     vertices, faces = tetrahedron
-    soup_vertices, soup_faces = _soup(vertices, faces)
+    soup_vertices, soup_faces = soup(vertices, faces)
     assert polymass.check(soup_vertices, soup_faces, weld=np.True_).ok
     assert polymass.check(soup_vertices, soup_faces, weld=0.0).ok  # a tolerance of 0: exact
     assert polymass.check(soup_vertices, soup_faces, weld=np.False_).error is (
@@ -115,18 +110,29 @@ def test_a_weld_tolerance_out_of_range_is_refused(tetrahedron, tolerance):
 def test_skip_checks_trusts_the_input_and_says_so(tetrahedron):
     vertices, faces = tetrahedron
     result = polymass.mass_properties(vertices, faces, skip_checks=True)
-    assert result.warnings & polymass.Warnings.UNCHECKED
+    assert result.warnings == (
+        polymass.Warnings.UNCHECKED | polymass.Warnings.INTERSECTIONS_UNCHECKED
+    )
     assert result.volume == pytest.approx(1 / 6, rel=1e-15)
+    # The report says which checks ran.
+    assert polymass.check(*tetrahedron).checks == (
+        polymass.Checks.TOPOLOGY | polymass.Checks.SHELLS | polymass.Checks.INTERSECTIONS
+    )
+    assert not polymass.check(*tetrahedron, skip_checks=True).checks & polymass.Checks.TOPOLOGY
+    skipped = polymass.check(*tetrahedron, skip_intersection_check=True).checks
+    assert skipped == polymass.Checks.TOPOLOGY | polymass.Checks.SHELLS
 
 
 def test_shells_split_as_welding_joins(cube):
     vertices, faces = cube
     apart = np.vstack([vertices, vertices + [3.0, 0.0, 0.0]])
     two = faces + [[i + 8 for i in face] for face in faces]
-    assert polymass.shells(apart, two).tolist() == [0] * 6 + [1] * 6
+    assert polymass.Mesh(apart, two).shell_of_face.tolist() == [0] * 6 + [1] * 6
     triangles = np.array([[f[0], f[k], f[k + 1]] for f in faces for k in (1, 2)])
-    soup_vertices, soup_faces = _soup(vertices, triangles)
-    assert polymass.shells(soup_vertices, soup_faces).max() == 11  # every triangle alone
-    assert polymass.shells(soup_vertices, soup_faces, weld=True).tolist() == [0] * 12
+    soup_vertices, soup_faces = soup(vertices, triangles)
+    unwelded = polymass.Mesh(soup_vertices, soup_faces)
+    assert unwelded.error is polymass.OpenSurfaceError
+    assert unwelded.shell_of_face.max() == 11  # every triangle alone
+    assert polymass.Mesh(soup_vertices, soup_faces, weld=True).shell_of_face.tolist() == [0] * 12
     with pytest.raises(polymass.IndexOutOfRangeError, match="face 1"):
-        polymass.shells(vertices, [faces[0], [0, 1, 99]])
+        _ = polymass.Mesh(vertices, [faces[0], [0, 1, 99]]).shell_of_face

@@ -1,7 +1,7 @@
 """Surfaces that bound a region twice (faces crossing, shells nested in a solid of the
 same sense, shells inside out) and those that only look alike (cavities, parts in
 hollows, parts resting on each other), as the library reports them: the binding's
-exception, keyword, report fields and shell list, not a judgement of its own.
+exception, option, report fields and shells, not a judgement of its own.
 
 Every verdict is also checked far from the origin and at tiny and huge scales: the
 library decides them with exact predicates, so they must not change.
@@ -160,6 +160,7 @@ def test_verdicts_everywhere(case, make, checked, unchecked, volume, name, scale
         assert with_check.volume == pytest.approx(volume * scale**3, rel=1e-12)
         assert with_check.warnings == 0
         _assert_identical(with_check, without)
+        assert without.warnings == polymass.Warnings.INTERSECTIONS_UNCHECKED
     # check() says what mass_properties does, with the same keyword.
     for keyword, expected in ((True, checked), (False, unchecked)):
         report = polymass.check(vertices, faces, skip_intersection_check=not keyword)
@@ -178,7 +179,6 @@ def _assert_identical(one: polymass.MassProperties, other: polymass.MassProperti
         "principal_axes",
     ):
         assert np.array_equal(getattr(one, field), getattr(other, field)), field
-    assert one.warnings == other.warnings
 
 
 def test_every_call_refuses_overlapping_cubes_by_default():
@@ -223,9 +223,13 @@ def test_overlapping_cubes_are_refused_naming_the_faces_and_accepted_double_skip
     report = polymass.check(vertices, faces)
     assert report.first_intersecting_face_pairs[0] == (first, second)
     assert report.message == error.message
-    # A Mesh checks too.
+    # A Mesh checks too: it is refused, and says why.
+    refused = polymass.Mesh(vertices, faces)
+    assert refused.error is polymass.IntersectingSurfaceError
+    assert refused.message == error.message
+    assert refused.diagnostics.first_intersecting_face_pairs[0] == (first, second)
     with pytest.raises(polymass.IntersectingSurfaceError):
-        polymass.Mesh(vertices, faces)
+        refused.mass_properties()
     # Skipped by name, the overlap is counted twice: what the library then reports.
     trusted = polymass.mass_properties(vertices, faces, skip_intersection_check=True)
     assert trusted.volume == pytest.approx(2.0, rel=1e-15)
@@ -279,11 +283,15 @@ def test_an_inside_out_shell_apart_is_refused_with_or_without_the_check():
         assert isinstance(raised.value, ValueError)
 
 
+def _shells(vertices, faces, **options) -> list[polymass.Shell]:
+    return polymass.Mesh(vertices, faces, **options).shells
+
+
 @pytest.mark.parametrize(("name", "scale", "translation"), PLACEMENTS, ids=PLACEMENT_IDS)
-def test_shell_list_describes_each_shell(name, scale, translation):
+def test_the_shells_are_described(name, scale, translation):
     s3 = scale**3
     surface = cube_with_cavity().box((6, 0, 0), (7, 1, 1), inside_out=True)
-    shells = polymass.shell_list(*surface.placed(scale, translation))
+    shells = _shells(*surface.placed(scale, translation))
     assert [s.kind for s in shells] == ["solid", "cavity", "inverted"]
     assert [(s.face_count, s.first_face) for s in shells] == [(6, 0), (6, 6), (6, 12)]
     expected = [64.0 * s3, -8.0 * s3, -1.0 * s3]
@@ -291,7 +299,7 @@ def test_shell_list_describes_each_shell(name, scale, translation):
         assert shell.signed_volume == pytest.approx(volume, rel=1e-12)
 
     def kinds_of(make, **keyword):
-        return [s.kind for s in polymass.shell_list(*make().placed(scale, translation), **keyword)]
+        return [s.kind for s in _shells(*make().placed(scale, translation), **keyword)]
 
     assert kinds_of(solid_in_solid) == ["solid", "overlapping"]
     assert kinds_of(part_in_hollow) == ["solid", "cavity", "solid"]
@@ -302,7 +310,7 @@ def test_shell_list_describes_each_shell(name, scale, translation):
     assert kinds_of(overlapping_cubes)[0] == "solid"
 
 
-def test_shell_list_names_every_kind_of_the_header():
+def test_shells_name_every_kind_of_the_header():
     from polymass import _header
     from polymass.diagnostics import _SHELL_KINDS
 
@@ -314,31 +322,42 @@ def test_shell_list_names_every_kind_of_the_header():
         .box((0, 0, 0), (1, 1, 1))
         .add([[3, 0, 0], [4, 0, 0], [3, 1, 0]], [[0, 1, 2], [0, 2, 1]])
     )
-    shells = polymass.shell_list(*sheet.placed(1.0, (0, 0, 0)))
+    shells = _shells(*sheet.placed(1.0, (0, 0, 0)))
     assert [(s.kind, s.face_count, s.signed_volume) for s in shells[1:]] == [("no_volume", 2, 0.0)]
 
 
-def test_shell_list_lists_many_shells():
+def test_many_shells_are_listed():
     surface = Surface()
-    for k in range(40):  # more than the first call makes room for
+    for k in range(40):
         surface.box((3 * k, 0, 0), (3 * k + 1, 1, 1 + k))
-    shells = polymass.shell_list(*surface.placed(1.0, (0, 0, 0)))
+    shells = _shells(*surface.placed(1.0, (0, 0, 0)))
     assert [s.kind for s in shells] == ["solid"] * 40
     assert [s.first_face for s in shells] == list(range(0, 240, 6))
     assert [s.signed_volume for s in shells] == pytest.approx([1.0 + k for k in range(40)])
     assert all(isinstance(s, polymass.Shell) for s in shells)
 
 
-def test_shell_list_raises_what_comes_before_the_shells(tetrahedron, cube):
+def test_shells_are_unjudged_only_when_a_check_before_them_failed(tetrahedron, cube):
     vertices, faces = tetrahedron
-    with pytest.raises(polymass.OpenSurfaceError, match="used by one face only"):
-        polymass.shell_list(vertices, faces[:3])
-    with pytest.raises(polymass.InvertedError):
-        polymass.shell_list(vertices, faces[:, ::-1])
-    turned = polymass.shell_list(vertices, faces[:, ::-1], accept_inverted=True)
+    open_surface = polymass.Mesh(vertices, faces[:3])
+    assert open_surface.error is polymass.OpenSurfaceError
+    assert "used by one face only" in open_surface.message
+    assert not open_surface.diagnostics.checks & polymass.Checks.SHELLS
+    [shell] = open_surface.shells
+    assert (shell.kind, shell.face_count, shell.first_face) == ("unjudged", 3, 0)
+    assert np.isnan(shell.signed_volume)
+    # Inside out as a whole: closed, manifold and oriented, so its shell is judged
+    # (signed as found) and the surface refused.
+    inverted = polymass.Mesh(vertices, faces[:, ::-1])
+    assert inverted.error is polymass.InvertedError
+    assert inverted.diagnostics.checks & polymass.Checks.SHELLS
+    [shell] = inverted.shells
+    assert (shell.kind, shell.face_count) == ("inverted", 4)
+    assert shell.signed_volume == pytest.approx(-1 / 6, rel=1e-15)
+    turned = _shells(vertices, faces[:, ::-1], accept_inverted=True)
     assert [(s.kind, s.face_count) for s in turned] == [("solid", 4)]
     assert turned[0].signed_volume == pytest.approx(1 / 6, rel=1e-15)
-    assert [s.kind for s in polymass.shell_list(*cube)] == ["solid"]
+    assert [s.kind for s in _shells(*cube)] == ["solid"]
 
 
 @pytest.mark.parametrize(
@@ -353,9 +372,9 @@ def test_valid_solids_give_bit_identical_results_with_the_check(shape, seed):
     vertices, faces = SHAPES[shape](rng)
     vertices = np.asarray(vertices) @ ROTATIONS[shape](rng).T + rng.uniform(-1e6, 1e6, 3)
     checked = polymass.mass_properties(vertices, faces)
-    _assert_identical(
-        checked, polymass.mass_properties(vertices, faces, skip_intersection_check=True)
-    )
+    unchecked = polymass.mass_properties(vertices, faces, skip_intersection_check=True)
+    _assert_identical(checked, unchecked)
+    assert (checked.warnings, unchecked.warnings) == (0, polymass.Warnings.INTERSECTIONS_UNCHECKED)
     report = polymass.check(vertices, faces)
     assert report.ok, report.message
     assert (report.intersecting_face_pairs, report.touching_face_pairs) == (0, 0)
@@ -394,7 +413,7 @@ def test_touching_faces_are_a_warning_with_locations(case, make, volume, name, s
     assert checked.warnings == polymass.Warnings.TOUCHING_FACES, f"{case}, {name}"
     assert checked.volume == pytest.approx(volume * scale**3, rel=1e-12)
     plain = polymass.mass_properties(vertices, faces, skip_intersection_check=True)
-    assert plain.warnings == 0
+    assert plain.warnings == polymass.Warnings.INTERSECTIONS_UNCHECKED
     assert np.array_equal(plain.inertia, checked.inertia)
     report = polymass.check(vertices, faces)
     assert report.ok and report.intersecting_face_pairs == 0

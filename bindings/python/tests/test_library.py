@@ -77,12 +77,23 @@ def test_a_struct_layout_that_disagrees_is_refused(minor, size_change):
         _library._check_struct_sizes(fake)
 
 
+def test_a_library_without_a_function_of_the_header_is_refused():
+    fake = _FakeLibrary(_header.POLYMASS_VERSION_NUMBER)
+
+    def missing():
+        raise AttributeError("undefined symbol: polymass_sizeof_shell")
+
+    fake.polymass_sizeof_shell = missing
+    with pytest.raises(ImportError, match="has no polymass_sizeof_shell"):
+        _library._check_struct_sizes(fake)
+
+
 def test_a_missing_library_is_an_import_error_naming_the_variable_and_soname():
-    result = _import_with({"POLYMASS_LIBRARY": "/nonexistent/libpolymass.so.1"})
+    result = _import_with({"POLYMASS_LIBRARY": "/nonexistent/libpolymass.so.2"})
     assert result.returncode != 0
     assert "ImportError" in result.stderr
-    assert "POLYMASS_LIBRARY=/nonexistent/libpolymass.so.1" in result.stderr
-    assert "libpolymass.so.1" in result.stderr.split("POLYMASS_LIBRARY=")[-1]
+    assert "POLYMASS_LIBRARY=/nonexistent/libpolymass.so.2" in result.stderr
+    assert "libpolymass.so.2" in result.stderr.split("POLYMASS_LIBRARY=")[-1]
 
 
 _LOADED_LIBRARY = (
@@ -109,16 +120,16 @@ def _loaded_library(environment: dict) -> Path:
 
 def test_without_the_variable_the_package_s_own_copy_is_loaded():
     loaded = _loaded_library({"POLYMASS_LIBRARY": ""})
-    assert loaded == Path(polymass.__file__).resolve().with_name("libpolymass.so.1")
+    assert loaded == Path(polymass.__file__).resolve().with_name("libpolymass.so.2")
 
 
 def test_the_variable_may_name_the_library_the_loader_finds(tmp_path):
-    """POLYMASS_LIBRARY=libpolymass.so.1 asks for the system's library (here: one on
+    """POLYMASS_LIBRARY=libpolymass.so.2 asks for the system's library (here: one on
     LD_LIBRARY_PATH) rather than the package's copy."""
-    system = tmp_path / "libpolymass.so.1"
+    system = tmp_path / "libpolymass.so.2"
     shutil.copyfile(_loaded_library({"POLYMASS_LIBRARY": ""}), system)
     loaded = _loaded_library(
-        {"POLYMASS_LIBRARY": "libpolymass.so.1", "LD_LIBRARY_PATH": str(tmp_path)}
+        {"POLYMASS_LIBRARY": "libpolymass.so.2", "LD_LIBRARY_PATH": str(tmp_path)}
     )
     assert loaded == system
 

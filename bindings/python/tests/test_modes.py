@@ -1,4 +1,4 @@
-"""The modes: repair, shell, hull and fallback chains, with their provenance."""
+"""The modes: repair, shell, hull and chains of them, with their provenance."""
 
 from __future__ import annotations
 
@@ -29,7 +29,7 @@ def test_a_hole_is_capped_within_its_bound(sphere):
     kept = triangles[np.linalg.norm(centroids - [0, 0, 1], axis=1) > 0.4]
     with pytest.raises(polymass.OpenSurfaceError):
         polymass.mass_properties(vertices, kept)
-    repaired = polymass.mass_properties(vertices, kept, repair=True)
+    repaired = polymass.mass_properties(vertices, kept, modes="repair")
     assert repaired.provenance.mode == "repaired"
     assert repaired.provenance.repairs["holes"].count == 1
     assert 0 < repaired.provenance.cap_area_fraction < 0.1
@@ -43,7 +43,7 @@ def test_flipped_faces_are_turned_exactly(sphere):
     exact = polymass.mass_properties(vertices, triangles)
     flipped = triangles.copy()
     flipped[::5] = flipped[::5, ::-1]
-    repaired = polymass.mass_properties(vertices, flipped, repair=True)
+    repaired = polymass.mass_properties(vertices, flipped, modes="repair")
     assert repaired.provenance.repairs["reoriented_faces"].count == len(flipped[::5])
     assert repaired.provenance.repairs["reoriented_faces"].first[:2] == (0, 5)
     assert repaired.provenance.approximation_bound["volume"] == 0
@@ -53,7 +53,11 @@ def test_flipped_faces_are_turned_exactly(sphere):
 def test_a_valid_solid_is_answered_as_without_modes(sphere):
     vertices, triangles = sphere
     exact = polymass.mass_properties(vertices, triangles)
-    for keywords in ({"repair": True}, {"fallback": ["repair", "hull"]}, {"fallback": "repair"}):
+    for keywords in (
+        {"modes": "repair"},
+        {"modes": ("solid", "repair", "hull")},
+        {"modes": "solid,repair"},
+    ):
         result = polymass.mass_properties(vertices, triangles, **keywords)
         assert result.provenance.mode == "solid"
         assert result.volume == exact.volume
@@ -67,8 +71,8 @@ def test_the_hull_answers_what_repair_cannot(tetrahedron):
     fin_vertices = np.vstack([vertices, [[2.0, 2.0, -1.0]]])
     fin_faces = np.vstack([faces, [[faces[0][0], faces[0][1], 4]]])
     with pytest.raises(polymass.OpenSurfaceError, match="repair: edge"):
-        polymass.mass_properties(fin_vertices, fin_faces, repair=True)
-    result = polymass.mass_properties(fin_vertices, fin_faces, fallback=["repair", "hull"])
+        polymass.mass_properties(fin_vertices, fin_faces, modes=["repair"])
+    result = polymass.mass_properties(fin_vertices, fin_faces, modes=["solid", "repair", "hull"])
     assert result.provenance.mode == "hull"
     assert result.provenance.hull_vertex_count == 5
     assert result.volume == pytest.approx(result.provenance.hull_volume)
@@ -81,7 +85,9 @@ def test_a_shell_is_a_thin_wall():
         [[x, y, z] for z in (0.0, 2.0) for y in (0.0, 2.0) for x in (0.0, 2.0)], dtype=float
     )
     quads = [[0, 2, 3, 1], [0, 1, 5, 4], [1, 3, 7, 5], [3, 2, 6, 7], [2, 0, 4, 6]]
-    result = polymass.mass_properties(vertices, quads, shell=0.01, density=7850.0)
+    result = polymass.mass_properties(
+        vertices, quads, modes="shell", shell_thickness=0.01, density=7850.0
+    )
     assert result.provenance.mode == "shell"
     assert result.provenance.shell_area == pytest.approx(20.0, rel=1e-14)
     assert result.mass == pytest.approx(7850.0 * 0.01 * 20.0, rel=1e-14)
@@ -90,12 +96,31 @@ def test_a_shell_is_a_thin_wall():
 @pytest.mark.parametrize(
     "keywords",
     [
-        {"repair": True, "hull": True},
-        {"fallback": ["repair", "bogus"]},
-        {"fallback": ["shell"]},
-        {"fallback": ["repair"], "hull": True},
+        {"modes": ["repair", "bogus"]},
+        {"modes": ["shell"]},
+        {"shell_thickness": 0.01},
+        {"modes": ()},
+        {"modes": ["solid", "repair", "shell", "hull", "solid"], "shell_thickness": 0.01},
     ],
 )
 def test_contradictory_modes_are_refused(tetrahedron, keywords):
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="mode"):
         polymass.mass_properties(*tetrahedron, **keywords)
+    with pytest.raises(ValueError, match="mode"):
+        polymass.Options(**keywords)
+
+
+def test_a_mesh_tells_which_mode_answered(sphere):
+    vertices, triangles = sphere
+    flipped = triangles.copy()
+    flipped[::5] = flipped[::5, ::-1]
+    mesh = polymass.Mesh(vertices, flipped, modes=("solid", "repair"))
+    # It answered; what is wrong with the surface as given is still said.
+    assert mesh.ok and mesh.error is None
+    assert mesh.diagnostics.solid_status == polymass.InconsistentOrientationError.status
+    assert mesh.message and mesh.message == polymass.Mesh(vertices, flipped).message
+    assert mesh.diagnostics.misoriented_edges > 0
+    assert mesh.provenance.mode == "repaired"
+    assert mesh.mass_properties().provenance == mesh.provenance
+    one_call = polymass.mass_properties(vertices, flipped, modes=("solid", "repair"))
+    assert one_call.volume == mesh.mass_properties().volume

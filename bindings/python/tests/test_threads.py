@@ -65,7 +65,8 @@ def test_library_threads_give_the_bits_of_one():
         assert many.error_bound == one.error_bound
         assert polymass.check(vertices, faces, threads=threads) == report
         assert np.array_equal(
-            polymass.shells(vertices, faces, threads=threads), polymass.shells(vertices, faces)
+            polymass.Mesh(vertices, faces, threads=threads).shell_of_face,
+            polymass.Mesh(vertices, faces).shell_of_face,
         )
 
 

@@ -13,7 +13,7 @@
 //!    where a CMake build tree (`build/<preset>/src`) and an install prefix keep
 //!    them.
 //! 2. `pkg-config polymass` (an installed library: `cmake --install`, or the
-//!    `libpolymass-dev` package), version 1.1 or a later 1.x (the version of
+//!    `libpolymass-dev` package), version 2.0 or a later 2.x (the version of
 //!    the header these bindings are written for).
 //! 3. The `release` build tree of the checkout this crate lives in
 //!    (`build/release/src`, made by `cmake --preset release && cmake --build
@@ -173,7 +173,7 @@ fn from_environment(static_link: bool) -> Result<Option<Library>, String> {
 fn from_pkg_config(static_link: bool) -> Result<Library, String> {
     // The link lines are emitted by emit_link_lines, alike for every source.
     let found = pkg_config::Config::new()
-        .range_version("1.1".."2")
+        .range_version("2.0".."3")
         .statik(static_link)
         .cargo_metadata(false)
         .env_metadata(true)

@@ -1,7 +1,7 @@
 //! The examples' binary STL reader: what it reads, what it refuses, and the
 //! carried data/l_bracket.stl against the bracket's exact mass properties.
 
-use polymass::{Body, Context, Options, Surface};
+use polymass::{Body, Options, Surface};
 use polymass_examples::binary_stl::{self, StlError};
 
 /// A binary STL of the given triangles (zero normals, as many exporters write).
@@ -40,8 +40,8 @@ fn reads_every_vertex_in_file_order() {
 fn a_welded_soup_is_the_solid() {
     let soup = binary_stl::parse(&stl_bytes(&TETRAHEDRON)).unwrap();
     let surface = Surface::triangles(&soup.positions, &soup.triangles);
-    let mut context = Context::with_options(&Options::new().weld_vertices(true)).unwrap();
-    let p = context.mass_properties(&surface, &Body::default()).unwrap();
+    let welding = Options::new().weld_vertices(true);
+    let p = polymass::mass_properties(&surface, &welding, &Body::default()).unwrap();
     assert!((p.volume - 1.0 / 6.0).abs() <= 1e-15);
 }
 
@@ -80,8 +80,8 @@ fn the_bundled_robot_link_has_its_exact_properties() {
     let soup = binary_stl::parse(&bytes).unwrap();
     assert_eq!(soup.triangles.len(), 28);
     let surface = Surface::triangles(&soup.positions, &soup.triangles);
-    let mut context = Context::with_options(&Options::new().weld_vertices(true)).unwrap();
-    let p = context.mass_properties(&surface, &Body::default()).unwrap();
+    let welding = Options::new().weld_vertices(true);
+    let p = polymass::mass_properties(&surface, &welding, &Body::default()).unwrap();
     // Exact values from examples/data/generate.py (rational arithmetic), in mm.
     let volume = 143360.0;
     let centre = [80.0, 0.0, 20.0];

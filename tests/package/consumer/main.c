@@ -10,8 +10,8 @@ int main(void) {
                                        1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
     static const uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
     polymass_context* context = NULL;
-    polymass_mesh_desc desc = {0};
-    polymass_mass_properties properties = {0};
+    polymass_mesh_desc desc = POLYMASS_MESH_DESC_INIT;
+    polymass_mass_properties properties = POLYMASS_MASS_PROPERTIES_INIT;
     int32_t status;
 
     if (polymass_version() / 10000 != POLYMASS_VERSION_MAJOR) {
@@ -26,7 +26,6 @@ int main(void) {
         fprintf(stderr, "context: %s\n", polymass_status_string(status));
         return 1;
     }
-    desc.struct_size = sizeof desc;
     desc.position_type = POLYMASS_POSITION_FLOAT64;
     desc.positions = corners;
     desc.vertex_count = 8;
@@ -35,8 +34,8 @@ int main(void) {
     desc.index_count = 24;
     desc.face_sizes = sizes;
     desc.face_count = 6;
-    properties.struct_size = sizeof properties;
-    status = polymass_mass_properties_compute(&properties, context, &desc, NULL);
+    /* No provenance, default options (every check), unit density. */
+    status = polymass_mass_properties_compute(&properties, NULL, context, &desc, NULL, NULL);
     if (status != POLYMASS_OK) {
         fprintf(stderr, "compute: %s: %s\n", polymass_status_string(status),
                 polymass_context_message(context));

@@ -8,16 +8,24 @@ Units are the caller's (lengths L, density M/L^3, mass M, inertia M*L^2). The
 inertia tensor has the negated products of inertia off its diagonal
 (Ixy = -integral rho x y dV), as URDF, SDFormat, MuJoCo, PhysX and Bullet expect.
 Integration runs about a point inside the mesh, so parts far from the origin
-keep their digits. The C library is the copy the package carries, unless the
-environment variable POLYMASS_LIBRARY names another (a path, or libpolymass.so.1
-for the one the loader finds).
+keep their digits.
+
+Options are per call: ``options=polymass.Options(...)``, or its fields as keywords
+(``weld=True``, ``skip_intersection_check=True``, ``modes=("solid", "repair")``).
+`Mesh` analyses a surface once and answers every question from it (its verdict,
+diagnostics, shells, provenance, moments, mass properties of any density).
+
+The C library is the copy the package carries, unless the environment variable
+POLYMASS_LIBRARY names another (a path, or libpolymass.so.2 for the one the loader
+finds).
 """
 
 from . import _header
 from ._library import ffi as _ffi
 from ._library import lib as _lib
+from ._options import Options
 from .batch import batch
-from .diagnostics import Diagnostics, Shell, check, shell_list, shells
+from .diagnostics import Checks, Diagnostics, Shell
 from .errors import (
     Error,
     FaceTooSmallError,
@@ -37,17 +45,19 @@ from .errors import (
     ZeroAreaError,
     ZeroVolumeError,
 )
+from .mesh import Mesh, check
 from .moments import Moments, moments
+from .packed import PackedMassProperties, packed_mass_properties
 from .polygons import PolygonProperties, polygon_properties
 from .solids import (
     ErrorBound,
     MassProperties,
-    Mesh,
     Provenance,
     Repair,
     Warnings,
     mass_properties,
 )
+from .welding import Welded, weld
 
 __version__: str = _header.POLYMASS_VERSION_STRING
 """The version of the header this binding was built from (the package's version)."""
@@ -59,6 +69,7 @@ def library_version() -> str:
 
 
 __all__ = [
+    "Checks",
     "Diagnostics",
     "Error",
     "ErrorBound",
@@ -76,7 +87,9 @@ __all__ = [
     "NonManifoldError",
     "NonPlanarFaceError",
     "OpenSurfaceError",
+    "Options",
     "OutOfMemoryError",
+    "PackedMassProperties",
     "PolygonProperties",
     "Provenance",
     "Repair",
@@ -84,6 +97,7 @@ __all__ = [
     "Shell",
     "TopologyError",
     "Warnings",
+    "Welded",
     "ZeroAreaError",
     "ZeroVolumeError",
     "__version__",
@@ -92,7 +106,7 @@ __all__ = [
     "library_version",
     "mass_properties",
     "moments",
+    "packed_mass_properties",
     "polygon_properties",
-    "shell_list",
-    "shells",
+    "weld",
 ]

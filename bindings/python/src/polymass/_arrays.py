@@ -7,9 +7,11 @@ read in place when they are C-contiguous uint32, uint16, or int32 (checked
 non-negative, then read as uint32). Anything else is converted to such an array
 first, which copies it.
 
-Read in place means read while the call runs, with the GIL released: another
-thread must not write to those arrays meanwhile (an index changed between the
-library's range check and its use could make it read out of bounds).
+The library is handed pointers made with ``ffi.from_buffer``, which hold the
+arrays alive as long as the description. Read in place means read while the
+call runs, with the GIL released: another thread must not write to those arrays
+meanwhile (an index changed between the library's range check and its use could
+make it read out of bounds).
 """
 
 from __future__ import annotations
@@ -65,14 +67,30 @@ def as_positions(values: npt.ArrayLike, columns: int, *, name: str, keep_float32
     return array
 
 
+def position_type(positions: np.ndarray) -> int:
+    """The POLYMASS_POSITION_* of positions `as_positions` made."""
+    if positions.dtype == np.float64:
+        return _header.POLYMASS_POSITION_FLOAT64
+    return _header.POLYMASS_POSITION_FLOAT32
+
+
 def row_stride(array: np.ndarray) -> int:
     """The byte stride to hand to the library (0: packed, for a single row)."""
     return array.strides[0] if len(array) > 1 else 0
 
 
-def address(array: np.ndarray):
-    """A pointer to the array's first element; the caller keeps ``array`` alive."""
-    return ffi.cast("const void *", array.__array_interface__["data"][0])
+def rows_buffer(array: np.ndarray):
+    """A ``char[]`` over the rows of a 2-D array read in place, from its first
+    element to its last row's end (the gaps between rows of a strided view
+    included); it keeps ``array`` alive. The rows' elements must be consecutive.
+    """
+    if array.flags.c_contiguous:
+        return ffi.from_buffer(array)
+    # The bytes of every row, rows still apart: then the one run of memory from
+    # the first row's start to the last row's end (inside the array viewed).
+    row_bytes = array.view(np.uint8)
+    span = (len(array) - 1) * array.strides[0] + row_bytes.shape[1]
+    return ffi.from_buffer(np.lib.stride_tricks.as_strided(row_bytes, (span,), (1,)))
 
 
 def _out_of_range(indices: np.ndarray, position: int, face_of_position) -> IndexOutOfRangeError:
@@ -105,12 +123,14 @@ def _as_indices(indices: np.ndarray, face_of_position) -> np.ndarray:
 
 @dataclass
 class MeshDescription:
-    """A polymass_mesh_desc and the arrays its pointers point into."""
+    """A polymass_mesh_desc, the arrays its pointers point into, and the buffers
+    (``ffi.from_buffer``) that hold them while the description lives."""
 
     desc: Any
     vertices: np.ndarray
     indices: np.ndarray
     face_sizes: np.ndarray | None
+    buffers: tuple
 
 
 def mesh_description(
@@ -119,12 +139,9 @@ def mesh_description(
     positions = as_positions(vertices, 3, name="vertices")
     indices, sizes = _faces(faces, face_sizes)
     desc = new_struct("polymass_mesh_desc")
-    desc.position_type = (
-        _header.POLYMASS_POSITION_FLOAT64
-        if positions.dtype == np.float64
-        else _header.POLYMASS_POSITION_FLOAT32
-    )
-    desc.positions = address(positions)
+    desc.position_type = position_type(positions)
+    buffers = [rows_buffer(positions), ffi.from_buffer(indices)]
+    desc.positions = buffers[0]
     desc.vertex_count = len(positions)
     desc.position_stride = row_stride(positions)
     desc.index_type = (
@@ -132,12 +149,13 @@ def mesh_description(
         if indices.dtype == np.uint16
         else _header.POLYMASS_INDEX_UINT32
     )
-    desc.indices = address(indices)
+    desc.indices = buffers[1]
     desc.index_count = indices.size
     if sizes is not None:
-        desc.face_sizes = ffi.cast("const uint32_t *", address(sizes))
+        buffers.append(ffi.from_buffer("uint32_t[]", sizes))
+        desc.face_sizes = buffers[-1]
         desc.face_count = sizes.size
-    return MeshDescription(desc, positions, indices, sizes)
+    return MeshDescription(desc, positions, indices, sizes, tuple(buffers))
 
 
 def _faces(faces: FacesLike, face_sizes: npt.ArrayLike | None):

@@ -3,9 +3,9 @@
 Which library (the first that applies):
 
 1. the environment variable ``POLYMASS_LIBRARY``: a path (an installed or locally
-   built ``libpolymass.so.1``), or a bare file name such as ``libpolymass.so.1``,
+   built ``libpolymass.so.2``), or a bare file name such as ``libpolymass.so.2``,
    which the loader looks up in its search path (``ldconfig``, ``LD_LIBRARY_PATH``):
-   the system's library, e.g. from the ``libpolymass1`` package;
+   the system's library, e.g. from the ``libpolymass2`` package;
 2. the copy the wheel carries beside this module, built from the same sources as the
    header the declarations come from.
 
@@ -14,10 +14,13 @@ cffi's ABI mode calls it with the GIL released, so threads compute in parallel.
 
 from __future__ import annotations
 
+import numbers
 import os
 import sys
 import threading
 from pathlib import Path
+
+import numpy as np
 
 from . import _header
 from ._polymass_cffi import ffi
@@ -76,7 +79,14 @@ def _check_struct_sizes(library) -> None:
     prefix = "polymass_sizeof_"
     for function in sorted(name for name in dir(library) if name.startswith(prefix)):
         struct = "polymass_" + function[len(prefix) :]
-        ours, theirs = ffi.sizeof(struct), getattr(library, function)()
+        try:
+            theirs = getattr(library, function)()
+        except (AttributeError, ffi.error) as error:
+            raise ImportError(
+                f"polymass: the loaded library has no {function}: it is not a build of the "
+                "header this binding was built from"
+            ) from error
+        ours = ffi.sizeof(struct)
         if theirs < ours or (same_version and theirs != ours):
             raise ImportError(
                 f"polymass: {struct} is {theirs} bytes in the loaded library and {ours} in this "
@@ -101,6 +111,36 @@ def context():
         raise_for_status(lib.polymass_context_create(out, ffi.NULL), None)
         current = ffi.gc(out[0], lib.polymass_context_destroy)
         _thread_state.context = current
+        _thread_state.threads = 1
+    return current
+
+
+def _thread_count(threads: int | None) -> int:
+    """The ``threads`` of a call: None (one thread) or a positive integer, which the
+    library bounds."""
+    if threads is None:
+        return 1
+    if (
+        isinstance(threads, (bool, np.bool_))
+        or not isinstance(threads, numbers.Integral)
+        or threads < 1
+    ):
+        raise ValueError(f"threads must be a positive integer (or None), not {threads!r}")
+    # Beyond uint32_t the library's own check would never see the value.
+    return min(int(threads), 2**32 - 1)
+
+
+def working_context(threads: int | None):
+    """This thread's context, set to use ``threads`` threads (None: one) for the
+    calls that analyse a surface. The context keeps its workers while the count
+    stays the same, so it is set only when it changes."""
+    count = _thread_count(threads)
+    current = context()
+    if _thread_state.threads != count:
+        from .errors import raise_for_status
+
+        raise_for_status(lib.polymass_context_set_threads(current, count), current)
+        _thread_state.threads = count
     return current
 
 

@@ -1,20 +1,35 @@
-"""The keyword options of `Mesh`, `mass_properties`, `moments` and `check`: polymass_options."""
+"""`Options`: what one analysis checks and accepts, and how it makes the surface a body.
+
+Every call that analyses a surface (`mass_properties`, `Mesh`, `check`, `moments`,
+`batch`) takes an ``options=Options(...)`` and/or the same fields as keywords, which
+replace those of ``options``; `gather` makes them one `Options`, and `c_options`
+translates it into the polymass_options of that call. Nothing is kept between calls.
+"""
 
 from __future__ import annotations
 
+import dataclasses
 import numbers
 from collections.abc import Sequence
-from typing import Union
+from dataclasses import dataclass
+from typing import Any, Union
 
 import numpy as np
 
 from . import _header
-from ._library import lib, new_struct
-from .errors import raise_for_status
+from ._library import new_struct
 
 # weld: False (no welding), True (exactly equal positions are one vertex) or a
 # tolerance relative to the mesh's largest bounding-box extent.
 Weld = Union[bool, float]
+
+# The names of polymass_options.modes, in the order of the header.
+_MODES = {
+    "solid": _header.POLYMASS_MODE_SOLID,
+    "repair": _header.POLYMASS_MODE_REPAIR,
+    "shell": _header.POLYMASS_MODE_SHELL,
+    "hull": _header.POLYMASS_MODE_HULL,
+}
 
 
 def _weld_tolerance(weld: Weld) -> float | None:
@@ -32,100 +47,126 @@ def _weld_tolerance(weld: Weld) -> float | None:
     )
 
 
-def _threads(threads: int | None) -> int:
-    """polymass_options.threads: None (the library's default, one thread) or a
-    positive integer, which the library bounds."""
-    if threads is None:
-        return 0
-    if (
-        isinstance(threads, (bool, np.bool_))
-        or not isinstance(threads, numbers.Integral)
-        or threads < 1
-    ):
-        raise ValueError(f"threads must be a positive integer (or None), not {threads!r}")
-    # Beyond uint32_t the library's own check would never see the value.
-    return min(int(threads), 2**32 - 1)
+def _mode_names(modes: str | Sequence[str]) -> tuple[str, ...]:
+    """The chain as a tuple of names: a sequence of names, or one comma-separated string."""
+    names = tuple(part.strip() for part in modes.split(",")) if isinstance(modes, str) else modes
+    names = tuple(names)
+    unknown = [name for name in names if name not in _MODES]
+    if unknown:
+        raise ValueError(f"modes are {', '.join(map(repr, _MODES))}; got {unknown!r}")
+    if not names or len(names) > _header.POLYMASS_MAX_MODES:
+        raise ValueError(
+            f"modes lists 1 to {_header.POLYMASS_MAX_MODES} modes, tried in order; got {names!r}"
+        )
+    return names
 
 
-_MODES = {
-    "repair": _header.POLYMASS_MODE_REPAIR,
-    "shell": _header.POLYMASS_MODE_SHELL,
-    "hull": _header.POLYMASS_MODE_HULL,
-}
+@dataclass(frozen=True)
+class Options:
+    """What an analysis checks and accepts, and how it makes the surface a body.
 
+    The defaults are the safe ones: every check that can change the answer, and
+    the exact solid alone. Skipping a check or accepting an approximation is
+    asked for by name. An immutable value: build it once, pass it to any number
+    of calls (``options=``), or give its fields as keywords of the call.
 
-def _modes(repair: bool, shell: float | None, hull: bool, fallback: Sequence[str]) -> list[int]:
-    """The chain of modes the keywords ask for (POLYMASS_MODE_* values).
+    weld: for triangle soups (STL): True treats vertices at exactly the same
+        position as one for the topology checks; a float is a tolerance relative
+        to the largest extent of the mesh (at most 1e-3; CAD exports carrying
+        rounding noise want about 1e-9). The integrals do not depend on it.
+    skip_checks: trusted input: skip the closed, manifold, orientation and
+        planarity checks, and the intersection check with them (indices and
+        finiteness are always checked); the result carries Warnings.UNCHECKED.
+    skip_intersection_check: for trusted input only. By default faces that
+        cross each other and shells inside a solid of the same sense (whose
+        volume would be counted twice: overlapping parts exported as one file)
+        are refused with IntersectingSurfaceError, how shells nest judged
+        exactly, and faces that only touch give Warnings.TOUCHING_FACES. True
+        skips that check, most of an analysis's time (see the README): two
+        overlapping parts then pass with their overlap counted twice, and the
+        result carries Warnings.INTERSECTIONS_UNCHECKED. The check never changes
+        a result it accepts.
+    accept_inverted: a solid whose faces are all reversed gives the properties
+        of the solid turned the right way, with Warnings.INVERTED, instead of
+        raising InvertedError.
+    accept_non_manifold: accept edges shared by more than two faces when they
+        are traversed as often one way as the other (solids touching at an edge).
+    planarity_tolerance: how far a polygon face's vertex may be off its plane,
+        relative to the face's diameter (None: 1e-6).
+    modes: how the surface becomes a body, tried in order until one answers:
+        "solid" (exact, for a valid closed solid; the default), "repair" (a
+        surface that is not a valid solid repaired where the fix is unique:
+        orientation, duplicate and two-vertex faces, non-planar polygons,
+        holes, balanced non-manifold edges; docs/repair.md), "shell" (a thin
+        wall of ``shell_thickness``: mass = density * thickness * area; open
+        surfaces are fine), "hull" (the convex hull of the vertices, an upper
+        bound). A sequence such as ("solid", "repair", "hull"), or one string
+        ("repair" or "solid,repair,hull"). A result's `provenance` says which
+        mode answered and what it did, its error_bound how far off it can be.
+        A valid solid is answered exactly by "repair" too.
+    shell_thickness: the wall's thickness (L) of the "shell" mode: given when,
+        and only when, the modes hold "shell".
+    """
 
-    repair, shell (a thickness) and hull each choose one mode; fallback is a
-    list of "repair", "shell" (with shell=thickness) and "hull" tried in order
-    after the solid."""
-    if isinstance(fallback, str):
-        fallback = [part for part in fallback.split(",") if part]
-    chosen = bool(repair) + (shell is not None) + bool(hull)
-    if fallback:
-        if repair or hull:
-            raise ValueError("give repair, shell, hull, or fallback with a list of them")
-        unknown = [name for name in fallback if name not in _MODES]
-        if unknown:
+    weld: Weld = False
+    skip_checks: bool = False
+    skip_intersection_check: bool = False
+    accept_inverted: bool = False
+    accept_non_manifold: bool = False
+    planarity_tolerance: float | None = None
+    modes: tuple[str, ...] = ("solid",)
+    shell_thickness: float | None = None
+
+    def __post_init__(self) -> None:
+        _weld_tolerance(self.weld)
+        # Frozen: the normalised chain is written the way dataclasses do it.
+        object.__setattr__(self, "modes", _mode_names(self.modes))
+        if ("shell" in self.modes) != (self.shell_thickness is not None):
             raise ValueError(
-                f'fallback lists modes from "repair", "shell", "hull"; got {unknown!r}'
+                'the "shell" mode wants its thickness: shell_thickness=T with modes holding '
+                '"shell" (and only then)'
             )
-        if ("shell" in fallback) != (shell is not None):
-            raise ValueError("a shell in the fallback wants its thickness: shell=T (and only then)")
-        chain = [_header.POLYMASS_MODE_SOLID]
-        for name in fallback:
-            if _MODES[name] not in chain:
-                chain.append(_MODES[name])
-        return chain
-    if chosen > 1:
-        raise ValueError("give repair, shell, hull, or fallback with a list of them")
-    if repair:
-        return [_header.POLYMASS_MODE_REPAIR]
-    if shell is not None:
-        return [_header.POLYMASS_MODE_SHELL]
-    if hull:
-        return [_header.POLYMASS_MODE_HULL]
-    return [_header.POLYMASS_MODE_SOLID]
 
 
-def apply_options(context, **keywords) -> None:
-    """Sets the options of this thread's context for the next call through it."""
-    raise_for_status(lib.polymass_context_set_options(context, call_options(**keywords)), context)
+_FIELDS = tuple(field.name for field in dataclasses.fields(Options))
 
 
-def call_options(
-    *,
-    weld: Weld = False,
-    skip_checks: bool = False,
-    accept_inverted: bool = False,
-    accept_non_manifold: bool = False,
-    planarity_tolerance: float | None = None,
-    skip_intersection_check: bool = False,
-    repair: bool = False,
-    shell: float | None = None,
-    hull: bool = False,
-    fallback: Sequence[str] = (),
-    threads: int | None = None,
-):
-    """The keywords as a polymass_options, for a call that takes its own options."""
-    options = new_struct("polymass_options")
-    options.threads = _threads(threads)
-    chain = _modes(repair, shell, hull, fallback)
-    options.modes = chain + [_header.POLYMASS_MODE_NONE] * (_header.POLYMASS_MAX_MODES - len(chain))
-    options.shell_thickness = 0.0 if shell is None else shell
+def gather(options: Options | None, keywords: dict[str, Any]) -> Options:
+    """The options of one call: ``options`` (None: the defaults) with the fields
+    given as keywords replacing its own."""
+    unknown = sorted(keywords.keys() - set(_FIELDS))
+    if unknown:
+        raise TypeError(
+            f"unknown option {', '.join(unknown)}; the options are {', '.join(_FIELDS)}"
+        )
+    if options is None:
+        return Options(**keywords)
+    if not isinstance(options, Options):
+        raise TypeError(f"options must be a polymass.Options; got {type(options).__name__}")
+    return dataclasses.replace(options, **keywords) if keywords else options
+
+
+def c_options(options: Options):
+    """``options`` as the polymass_options of one call."""
+    c = new_struct("polymass_options")
+    chain = [_MODES[name] for name in options.modes]
+    c.modes = chain + [_header.POLYMASS_MODE_NONE] * (_header.POLYMASS_MAX_MODES - len(chain))
+    c.shell_thickness = 0.0 if options.shell_thickness is None else options.shell_thickness
+    c.planarity_tolerance = (
+        0.0 if options.planarity_tolerance is None else options.planarity_tolerance
+    )
     flags = 0
-    if skip_checks:
+    if options.skip_checks:
         flags |= _header.POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS
-    if accept_inverted:
-        flags |= _header.POLYMASS_OPTION_ACCEPT_INVERTED
-    if accept_non_manifold:
-        flags |= _header.POLYMASS_OPTION_ACCEPT_NON_MANIFOLD
-    if skip_intersection_check:
+    if options.skip_intersection_check:
         flags |= _header.POLYMASS_OPTION_SKIP_INTERSECTION_CHECK
-    if _weld_tolerance(weld) is not None:
+    if options.accept_inverted:
+        flags |= _header.POLYMASS_OPTION_ACCEPT_INVERTED
+    if options.accept_non_manifold:
+        flags |= _header.POLYMASS_OPTION_ACCEPT_NON_MANIFOLD
+    tolerance = _weld_tolerance(options.weld)
+    if tolerance is not None:
         flags |= _header.POLYMASS_OPTION_WELD_VERTICES
-        options.weld_tolerance = _weld_tolerance(weld)
-    options.flags = flags
-    options.planarity_tolerance = 0.0 if planarity_tolerance is None else planarity_tolerance
-    return options
+        c.weld_tolerance = tolerance
+    c.flags = flags
+    return c

@@ -150,6 +150,32 @@ def error_class(status: int) -> type[Error]:
     return _BY_STATUS.get(status, Error)
 
 
+class Verdict:
+    """What an analysis concluded: ``status``, 0 (POLYMASS_OK) when a mode of the
+    options' chain answered, else an error status; and the library's ``message``
+    saying what is wrong with the surface as given, and where ("" for a valid
+    solid; kept when a later mode answered, then followed by each later mode's
+    reason when none did)."""
+
+    status: int
+    message: str
+
+    @property
+    def ok(self) -> bool:
+        """Whether the analysis gave an answer."""
+        return self.status == _header.POLYMASS_OK
+
+    @property
+    def error(self) -> type[Error] | None:
+        """The exception class of the status, or None when OK."""
+        return None if self.ok else error_class(self.status)
+
+    def raise_if_error(self) -> None:
+        """Raises the exception of the status, with the message, unless OK."""
+        if not self.ok:
+            raise error_class(self.status)(self.message, self.status)
+
+
 def raise_for_status(status: int, context) -> None:
     """Raises the exception of a failed call, with the message ``context`` holds."""
     if status == _header.POLYMASS_OK:

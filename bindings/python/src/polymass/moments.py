@@ -15,16 +15,17 @@ or a mass (``weighted``), and become mass properties about any point
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
 from . import _header
 from ._arrays import FacesLike, mesh_description
-from ._library import context, ffi, lib, new_struct
-from ._options import Weld, call_options
+from ._library import context, ffi, lib, new_struct, working_context
+from ._options import Options, c_options, gather
 from .errors import raise_for_status
-from .solids import About, MassProperties, _mass_desc
+from .solids import About, MassProperties, mass_desc, reference_point
 
 
 def _call(function, *arguments) -> Moments:
@@ -162,8 +163,7 @@ class Moments:
         the whole mass distribution rescaled to that mean density or total mass."""
         if density is None and mass is None:
             raise ValueError("give a density or a mass")
-        desc, _ = _mass_desc(density, mass, "com")
-        return _call(lib.polymass_moments_weight, self._c, desc)
+        return _call(lib.polymass_moments_weight, self._c, mass_desc(density, mass))
 
     def mass_properties(
         self, *, density: float | None = None, mass: float | None = None, about: About = "com"
@@ -171,16 +171,11 @@ class Moments:
         """Mass properties of the body, weighted as by `weighted` when a density or
         mass is given (otherwise as the moments are). ``surface_area`` is NaN:
         moments do not keep the surface."""
-        desc, point = _mass_desc(density, mass, about)
-        if density is None and mass is None:
-            if point is None:
-                desc = ffi.NULL  # as weighted, inertia_point unused
-            else:  # the point only: rescaled to the mass it has, a factor of exactly 1
-                desc.mass_mode = _header.POLYMASS_MASS_FROM_TOTAL
-                desc.mass = self.mass
+        body = ffi.NULL if density is None and mass is None else mass_desc(density, mass)
+        point = reference_point(about)
         result = new_struct("polymass_mass_properties")
         ctx = context()
-        raise_for_status(lib.polymass_moments_mass_properties(result, ctx, self._c, desc), ctx)
+        raise_for_status(lib.polymass_moments_mass_properties(result, ctx, self._c, body), ctx)
         return MassProperties._from_c(result, point)
 
     def __repr__(self) -> str:
@@ -198,43 +193,43 @@ def moments(
     face_sizes: npt.ArrayLike | None = None,
     face_range: tuple[int, int] | None = None,
     reference: npt.ArrayLike | None = None,
-    weld: Weld = False,
-    skip_checks: bool = False,
-    accept_inverted: bool = False,
-    accept_non_manifold: bool = False,
-    planarity_tolerance: float | None = None,
-    skip_intersection_check: bool = False,
+    options: Options | None = None,
     threads: int | None = None,
+    **option_fields: Any,
 ) -> Moments:
     """The moments (unit density) of a closed surface; arguments as `mass_properties`.
 
+    Without ``face_range``: ``Mesh(...).moments``, raising the surface's error.
     face_range: (first, count): only those faces, about ``reference`` (required
-        then: the same point for every range of one surface). The result is
-        ``partial``: ranges add only to each other, and their sum, once it covers
-        the whole surface, is made a body with `Moments.completed`.
+        then: the same point for every range of one surface). Indices and
+        coordinates are checked, and polygon faces' planarity unless the options
+        skip the topology checks; whether the whole is closed is the whole's
+        question. The result is ``partial``: ranges add only to each other, and
+        their sum, once it covers the whole surface, is made a body with
+        `Moments.completed`.
     """
-    mesh = mesh_description(vertices, faces, face_sizes)
-    options = call_options(
-        weld=weld,
-        skip_checks=skip_checks,
-        accept_inverted=accept_inverted,
-        accept_non_manifold=accept_non_manifold,
-        planarity_tolerance=planarity_tolerance,
-        skip_intersection_check=skip_intersection_check,
-        threads=threads,
-    )
     if face_range is None:
         if reference is not None:
             raise ValueError("reference is for a face_range; a whole surface chooses its own")
-        return _call(lib.polymass_moments_compute, mesh.desc, options)
+        from .mesh import Mesh  # mesh imports this module: import on use
+
+        return Mesh(
+            vertices,
+            faces,
+            face_sizes=face_sizes,
+            options=options,
+            threads=threads,
+            **option_fields,
+        ).moments
     if reference is None:
         raise ValueError("a face_range needs a reference point, the same for every range")
+    chosen = c_options(gather(options, option_fields))
+    description = mesh_description(vertices, faces, face_sizes)
     first, count = face_range
-    return _call(
-        lib.polymass_moments_compute_faces,
-        mesh.desc,
-        int(first),
-        int(count),
-        _vector3(reference, "reference"),
-        options,
+    out = new_struct("polymass_moments")
+    ctx = working_context(threads)
+    status = lib.polymass_moments_compute_faces(
+        out, ctx, description.desc, int(first), int(count), _vector3(reference, "reference"), chosen
     )
+    raise_for_status(status, ctx)
+    return Moments._wrap(out)

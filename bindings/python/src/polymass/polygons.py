@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from ._arrays import address, as_positions, row_stride
+from ._arrays import as_positions, row_stride, rows_buffer
 from ._library import context, ffi, lib, new_struct
 from .errors import raise_for_status
 
@@ -61,8 +61,9 @@ def polygon_properties(points: npt.ArrayLike) -> PolygonProperties:
     array = as_positions(points, 2, name="points", keep_float32=False)
     result = new_struct("polymass_polygon_properties")
     ctx = context()
+    buffer = rows_buffer(array)  # held while the library reads it
     status = lib.polymass_polygon_compute(
-        result, ctx, ffi.cast("const double *", address(array)), len(array), row_stride(array)
+        result, ctx, ffi.cast("const double *", buffer), len(array), row_stride(array)
     )
     raise_for_status(status, ctx)
     return PolygonProperties(

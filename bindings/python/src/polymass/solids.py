@@ -1,4 +1,5 @@
-"""Mass properties of closed polyhedral surfaces: `mass_properties` and `Mesh`.
+"""Mass properties of closed polyhedral surfaces: `mass_properties`, one call, and
+what it returns (`MassProperties`, `Provenance`, `Warnings`).
 
 Units are the caller's: lengths in L, density in M/L^3, mass in M, inertia in
 M*L^2; without a density or a mass the density is 1, so mass == volume.
@@ -17,16 +18,16 @@ from __future__ import annotations
 import enum
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Literal, Union
+from typing import Any, Literal, Union
 
 import numpy as np
 import numpy.typing as npt
 
 from . import _header
 from ._arrays import FacesLike, mesh_description
-from ._library import context, ffi, lib, new_struct
-from ._options import Weld, apply_options
-from .errors import raise_for_status
+from ._library import ffi, lib, new_struct, working_context
+from ._options import Options, c_options, gather
+from .errors import error_class, raise_for_status
 
 # Where `inertia_point` is taken: the centre of mass, the origin, or any point.
 About = Union[Literal["com", "origin"], Sequence[float], npt.NDArray[np.floating]]
@@ -41,6 +42,9 @@ class Warnings(enum.IntFlag):
     """Some faces have zero area: harmless."""
     UNCHECKED = _header.POLYMASS_WARNING_UNCHECKED
     """The topology checks were skipped (skip_checks=True)."""
+    INTERSECTIONS_UNCHECKED = _header.POLYMASS_WARNING_INTERSECTIONS_UNCHECKED
+    """The intersection check did not run (skip_intersection_check=True, or
+    skip_checks=True): overlapping parts would have been counted twice."""
     NON_MANIFOLD = _header.POLYMASS_WARNING_NON_MANIFOLD
     """Non-manifold edges were accepted (accept_non_manifold=True)."""
     TOUCHING_FACES = _header.POLYMASS_WARNING_TOUCHING_FACES
@@ -49,7 +53,7 @@ class Warnings(enum.IntFlag):
     REPAIRED = _header.POLYMASS_WARNING_REPAIRED
     """Not a valid solid: the surface was repaired (see `Provenance`)."""
     SHELL = _header.POLYMASS_WARNING_SHELL
-    """Computed as a thin wall (shell=thickness), not as a solid."""
+    """Computed as a thin wall (the "shell" mode), not as a solid."""
     HULL = _header.POLYMASS_WARNING_HULL
     """The convex hull, not the solid (an upper bound)."""
 
@@ -91,7 +95,7 @@ class Repair:
 
 @dataclass(frozen=True)
 class Provenance:
-    """How the answer was reached (`mass_properties` with repair, shell, hull or fallback).
+    """How the answer was reached: which of the `Options.modes` answered, and what it did.
 
     mode: "solid" (exact, as given), "repaired", "shell" or "hull".
     repairs: for "repaired", each kind of fix made, by name: reoriented_faces,
@@ -198,7 +202,9 @@ class MassProperties:
     provenance: Provenance = field(default_factory=Provenance)
 
     @classmethod
-    def _from_c(cls, result, point: np.ndarray | None, provenance=None) -> MassProperties:
+    def _from_c(
+        cls, result, point: np.ndarray | None, provenance: Provenance | None = None
+    ) -> MassProperties:
         """From a polymass_mass_properties; ``point`` None means about the centre of mass."""
         center = _frozen(result.center_of_mass, (3,))
         inertia = _frozen(result.inertia, (3, 3))
@@ -210,7 +216,7 @@ class MassProperties:
             center_of_mass=center,
             inertia=inertia,
             inertia_origin=_frozen(result.inertia_origin, (3, 3)),
-            inertia_point=inertia if point is None else _frozen(result.inertia_point, (3, 3)),
+            inertia_point=inertia if point is None else _inertia_about(result, point),
             point=center if point is None else point,
             principal_moments=_frozen(result.principal_moments, (3,)),
             principal_axes=_frozen(result.principal_axes, (3, 3)),
@@ -222,12 +228,21 @@ class MassProperties:
                 principal_moments=result.error_bound_principal_moments,
                 principal_axes=result.error_bound_principal_axes,
             ),
-            provenance=Provenance() if provenance is None else Provenance._from_c(provenance),
+            provenance=Provenance() if provenance is None else provenance,
         )
 
 
-def _mass_desc(density: float | None, mass: float | None, about: About):
-    """(polymass_mass_desc, the point as an array or None for the centre of mass)."""
+def _inertia_about(result, point: np.ndarray) -> np.ndarray:
+    """The inertia tensor of a polymass_mass_properties about ``point``."""
+    out = ffi.new("double[9]")
+    status = lib.polymass_inertia_about(out, result, point.tolist())
+    if status != _header.POLYMASS_OK:
+        raise error_class(status)(f"the inertia about the point {point.tolist()}", status)
+    return _frozen(out, (3, 3))
+
+
+def mass_desc(density: float | None, mass: float | None):
+    """The polymass_mass_desc of a body of this density or mass (neither: density 1)."""
     if density is not None and mass is not None:
         raise ValueError("give density or mass, not both")
     desc = new_struct("polymass_mass_desc")
@@ -237,9 +252,14 @@ def _mass_desc(density: float | None, mass: float | None, about: About):
     else:
         desc.mass_mode = _header.POLYMASS_MASS_FROM_DENSITY
         desc.density = 1.0 if density is None else density
+    return desc
+
+
+def reference_point(about: About) -> np.ndarray | None:
+    """The point of ``inertia_point`` (read-only), or None for the centre of mass."""
     if isinstance(about, str):
         if about == "com":
-            return desc, None
+            return None
         if about != "origin":
             raise ValueError(f'about must be "com", "origin" or a point (x, y, z); got {about!r}')
         point = np.zeros(3)
@@ -247,17 +267,8 @@ def _mass_desc(density: float | None, mass: float | None, about: About):
         point = np.array(about, dtype=np.float64)
         if point.shape != (3,):
             raise ValueError(f"about must be a point (x, y, z); got shape {point.shape}")
-    desc.point = point.tolist()
     point.setflags(write=False)
-    return desc, point
-
-
-def _properties(function, *arguments, density, mass, about) -> MassProperties:
-    desc, point = _mass_desc(density, mass, about)
-    result = new_struct("polymass_mass_properties")
-    ctx = context()
-    raise_for_status(function(result, ctx, *arguments, desc), ctx)
-    return MassProperties._from_c(result, point)
+    return point
 
 
 def mass_properties(
@@ -268,17 +279,9 @@ def mass_properties(
     density: float | None = None,
     mass: float | None = None,
     about: About = "com",
-    weld: Weld = False,
-    skip_checks: bool = False,
-    accept_inverted: bool = False,
-    accept_non_manifold: bool = False,
-    planarity_tolerance: float | None = None,
-    skip_intersection_check: bool = False,
-    repair: bool = False,
-    shell: float | None = None,
-    hull: bool = False,
-    fallback: Sequence[str] = (),
+    options: Options | None = None,
     threads: int | None = None,
+    **option_fields: Any,
 ) -> MassProperties:
     """Volume, mass, centre of mass, inertia and principal axes of a closed surface.
 
@@ -296,115 +299,28 @@ def mass_properties(
     face_sizes: the number of vertices of each face, adding up to len(faces).
     density: M/L^3, or ``mass``: M (not both). Neither: density 1.
     about: the point of ``inertia_point``: "com" (default), "origin" or (x, y, z).
-    weld: for triangle soups (STL): True treats vertices at exactly the same
-        position as one for the topology checks; a float is a tolerance relative
-        to the largest extent of the mesh (at most 1e-3). The integrals do not
-        depend on it.
-    skip_checks: trusted input: skip the closed, manifold, orientation and
-        planarity checks, and the intersection check with them (indices and
-        finiteness are always checked).
-    accept_inverted: a solid whose faces are all reversed gives the properties
-        of the solid turned the right way, with Warnings.INVERTED, instead of
-        raising InvertedError.
-    accept_non_manifold: accept edges shared by more than two faces when they
-        are traversed as often one way as the other (solids touching at an edge).
-    planarity_tolerance: how far a polygon face's vertex may be off its plane,
-        relative to the face's diameter (None or 0: 1e-6).
-    skip_intersection_check: for trusted input only. By default faces that
-        cross each other and shells inside a solid of the same sense (whose
-        volume would be counted twice: overlapping parts exported as one file)
-        are refused with IntersectingSurfaceError, how shells nest judged
-        exactly, and faces that only touch give Warnings.TOUCHING_FACES; True
-        skips that check, which is most of the call's time (see the README),
-        and two overlapping parts then pass with their overlap counted twice.
-        The check never changes a result it accepts.
-    repair: a surface that is not a valid solid is repaired where the fix is
-        unique (orientation, duplicate and two-vertex faces, non-planar
-        polygons, holes, balanced non-manifold edges); the result's
-        `provenance` says what was done and its error_bound how far off it
-        can be (docs/repair.md). A valid solid is answered exactly, as without.
-    shell: the surface as a thin wall of this thickness (L): mass =
-        density * thickness * area; open surfaces are fine.
-    hull: the convex hull of the vertices (an upper bound of the solid).
-    fallback: modes tried in order after the solid: a list (or a
-        comma-separated string) of "repair", "shell" (with shell=thickness)
-        and "hull", such as ["repair", "hull"].
-    threads: how many threads the library may use for the call (None: its
-        default, one); every count gives the same bits.
+    options: an `Options` (None: the defaults: every check, the exact solid);
+        its fields may also be given as keywords (``weld=True``,
+        ``skip_intersection_check=True``, ``modes=("solid", "repair")``, ...),
+        which replace those of ``options``.
+    threads: how many threads the library may use for the call (None: one);
+        every count gives the same bits.
 
-    Returns a `MassProperties`; raises a subclass of `polymass.Error` saying what
-    is wrong and where. The GIL is released while the library computes.
+    The one-call path: the analysis `Mesh` makes, stopping at the first defect,
+    with no mesh left. Returns a `MassProperties`; raises a subclass of
+    `polymass.Error` saying what is wrong and where. The GIL is released while
+    the library computes.
     """
-    mesh = mesh_description(vertices, faces, face_sizes)
-    apply_options(
-        context(),
-        weld=weld,
-        skip_checks=skip_checks,
-        accept_inverted=accept_inverted,
-        accept_non_manifold=accept_non_manifold,
-        planarity_tolerance=planarity_tolerance,
-        skip_intersection_check=skip_intersection_check,
-        repair=repair,
-        shell=shell,
-        hull=hull,
-        fallback=fallback,
-        threads=threads,
-    )
-    desc, point = _mass_desc(density, mass, about)
+    chosen = c_options(gather(options, option_fields))
+    description = mesh_description(vertices, faces, face_sizes)
+    body, point = mass_desc(density, mass), reference_point(about)
     result = new_struct("polymass_mass_properties")
     provenance = new_struct("polymass_provenance")
-    ctx = context()
+    ctx = working_context(threads)
     raise_for_status(
-        lib.polymass_mass_properties_with_provenance(
-            result, provenance, ctx, mesh.desc, desc, ffi.NULL
+        lib.polymass_mass_properties_compute(
+            result, provenance, ctx, description.desc, chosen, body
         ),
         ctx,
     )
-    return MassProperties._from_c(result, point, provenance)
-
-
-class Mesh:
-    """A validated, integrated solid: compute it once, then its properties as often as needed.
-
-    Takes the arguments of `mass_properties` that describe the surface and how it
-    is checked; it keeps the integrals, not the arrays. A Mesh is immutable and
-    may be used from many threads at once.
-    """
-
-    def __init__(
-        self,
-        vertices: npt.ArrayLike,
-        faces: FacesLike,
-        *,
-        face_sizes: npt.ArrayLike | None = None,
-        weld: Weld = False,
-        skip_checks: bool = False,
-        accept_inverted: bool = False,
-        accept_non_manifold: bool = False,
-        planarity_tolerance: float | None = None,
-        skip_intersection_check: bool = False,
-        threads: int | None = None,
-    ) -> None:
-        mesh = mesh_description(vertices, faces, face_sizes)
-        ctx = context()
-        apply_options(
-            ctx,
-            weld=weld,
-            skip_checks=skip_checks,
-            accept_inverted=accept_inverted,
-            accept_non_manifold=accept_non_manifold,
-            planarity_tolerance=planarity_tolerance,
-            skip_intersection_check=skip_intersection_check,
-            threads=threads,
-        )
-        out = ffi.new("polymass_mesh**")
-        raise_for_status(lib.polymass_mesh_create(out, ctx, mesh.desc), ctx)
-        self._handle = ffi.gc(out[0], lib.polymass_mesh_destroy)
-
-    def mass_properties(
-        self, *, density: float | None = None, mass: float | None = None, about: About = "com"
-    ) -> MassProperties:
-        """The properties as a body of this density (M/L^3) or mass (M); see `mass_properties`."""
-        return _properties(
-            lib.polymass_mesh_mass_properties, self._handle, density=density, mass=mass, about=about
-        )
+    return MassProperties._from_c(result, point, Provenance._from_c(provenance))

@@ -59,6 +59,16 @@ fn struct_sizes_match_the_library() {
                 size_of_u32::<sys::polymass_shell>(),
                 sys::polymass_sizeof_shell(),
             ),
+            (
+                "polymass_provenance",
+                size_of_u32::<sys::polymass_provenance>(),
+                sys::polymass_sizeof_provenance(),
+            ),
+            (
+                "polymass_batch_item",
+                size_of_u32::<sys::polymass_batch_item>(),
+                sys::polymass_sizeof_batch_item(),
+            ),
         ]
     };
     for (name, rust, library) in sizes {

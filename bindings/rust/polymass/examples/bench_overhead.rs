@@ -11,7 +11,7 @@
 
 use std::time::Instant;
 
-use polymass::{Body, Context, Surface};
+use polymass::{Body, Context, Options, Surface};
 use polymass_sys as sys;
 
 #[path = "../tests/common/torus.rs"]
@@ -48,6 +48,7 @@ fn main() {
     };
     let mut context = Context::new().unwrap();
     let surface = Surface::triangles(&positions, &triangles);
+    let options = Options::new();
     let body = Body::default();
 
     let (mut c_times, mut rust_times) = (Vec::new(), Vec::new());
@@ -57,14 +58,22 @@ fn main() {
             ..Default::default()
         };
         let start = Instant::now();
-        // SAFETY: live context; desc points into positions and triangles.
+        // SAFETY: live context; desc points into positions and triangles;
+        // NULL provenance, options (the defaults) and mass (unit density).
         let status = unsafe {
-            sys::polymass_mass_properties_compute(&mut out, raw_context, &desc, std::ptr::null())
+            sys::polymass_mass_properties_compute(
+                &mut out,
+                std::ptr::null_mut(),
+                raw_context,
+                &desc,
+                std::ptr::null(),
+                std::ptr::null(),
+            )
         };
         c_times.push(start.elapsed().as_secs_f64());
         assert_eq!(status, 0);
         let start = Instant::now();
-        let properties = context.mass_properties(&surface, &body).unwrap();
+        let properties = context.mass_properties(&surface, &options, &body).unwrap();
         rust_times.push(start.elapsed().as_secs_f64());
         assert_eq!(properties.volume, out.volume);
     }

@@ -1,14 +1,13 @@
-//! How a solid becomes a body: density or mass, and a reference point
-//! (`polymass_mass_desc`).
+//! How heavy a body is: a density or a mass (`polymass_mass_desc`).
 
 use polymass_sys as sys;
 
 use crate::surface::struct_size;
 
-/// The material and reference point for mass properties: a density or a
-/// total mass (positive and finite; the library checks), and the point
-/// [`MassProperties::inertia_point`](crate::MassProperties::inertia_point) is
-/// taken about. The default is unit density (mass == volume) about the origin.
+/// How heavy a body is: a density or a total mass (positive and finite; the
+/// library checks). The default is unit density (mass == volume). The inertia
+/// about any point comes from the mass properties afterwards
+/// ([`MassProperties::inertia_about`](crate::MassProperties::inertia_about)).
 ///
 /// Units are the caller's: lengths in L, density in M/L³, mass in M, inertia
 /// in M·L².
@@ -17,15 +16,12 @@ use crate::surface::struct_size;
 /// use polymass::Body;
 ///
 /// let aluminium = Body::density(2700.0); // kg/m^3 with positions in metres
-/// let about_hinge = Body::mass(1.5).about([0.1, 0.0, 0.0]); // 1.5 kg, inertia about a hinge
-/// assert_ne!(aluminium, about_hinge);
+/// let part = Body::mass(1.5); // 1.5 kg
+/// assert_ne!(aluminium, part);
 /// assert_eq!(Body::default(), Body::density(1.0));
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Body {
-    amount: Amount,
-    point: [f64; 3],
-}
+pub struct Body(Amount);
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Amount {
@@ -47,10 +43,7 @@ impl Body {
     /// # let _ = steel;
     /// ```
     pub fn density(density: f64) -> Body {
-        Body {
-            amount: Amount::Density(density),
-            point: [0.0; 3],
-        }
+        Body(Amount::Density(density))
     }
 
     /// A body of the given total mass (M), uniformly spread: density =
@@ -61,26 +54,11 @@ impl Body {
     /// # let _ = part;
     /// ```
     pub fn mass(mass: f64) -> Body {
-        Body {
-            amount: Amount::Mass(mass),
-            point: [0.0; 3],
-        }
-    }
-
-    /// The same body, with `inertia_point` taken about `point` instead of
-    /// the origin.
-    ///
-    /// ```
-    /// let body = polymass::Body::density(1000.0).about([0.0, 0.0, -0.5]);
-    /// # let _ = body;
-    /// ```
-    pub fn about(mut self, point: [f64; 3]) -> Body {
-        self.point = point;
-        self
+        Body(Amount::Mass(mass))
     }
 
     pub(crate) fn to_raw(self) -> sys::polymass_mass_desc {
-        let (mass_mode, density, mass) = match self.amount {
+        let (mass_mode, density, mass) = match self.0 {
             Amount::Density(density) => (sys::POLYMASS_MASS_FROM_DENSITY, density, 0.0),
             Amount::Mass(mass) => (sys::POLYMASS_MASS_FROM_TOTAL, 0.0, mass),
         };
@@ -89,7 +67,6 @@ impl Body {
             mass_mode,
             density,
             mass,
-            point: self.point,
         }
     }
 }

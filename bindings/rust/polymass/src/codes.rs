@@ -18,3 +18,46 @@ pub(crate) fn known_code<K: Copy + PartialEq>(table: &[(K, i32)], kind: K) -> i3
         .map(|(_, code)| *code)
         .expect("every known kind is in its table")
 }
+
+/// A set of the C library's flag bits as a type of its own (warnings,
+/// checks): named constants, `contains`, `is_empty`, `bits` and `|`. Bits
+/// this crate has no constant for are kept.
+macro_rules! bit_set {
+    ($(#[$meta:meta])* $name:ident { $($(#[$bit_meta:meta])* $bit:ident = $value:expr;)* }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+        pub struct $name(u32);
+
+        impl $name {
+            $($(#[$bit_meta])* pub const $bit: $name = $name($value);)*
+
+            /// Whether every bit of `other` is set.
+            pub fn contains(self, other: $name) -> bool {
+                self.0 & other.0 == other.0
+            }
+
+            /// Whether no bit is set.
+            pub fn is_empty(self) -> bool {
+                self.0 == 0
+            }
+
+            /// The raw bits, as the C library gives them.
+            pub fn bits(self) -> u32 {
+                self.0
+            }
+
+            pub(crate) fn from_bits(bits: u32) -> $name {
+                $name(bits)
+            }
+        }
+
+        impl std::ops::BitOr for $name {
+            type Output = $name;
+
+            fn bitor(self, other: $name) -> $name {
+                $name(self.0 | other.0)
+            }
+        }
+    };
+}
+pub(crate) use bit_set;

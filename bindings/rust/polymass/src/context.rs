@@ -1,31 +1,32 @@
-//! The library's per-thread working state (`polymass_context`).
+//! What belongs to a caller (`polymass_context`): worker threads, scratch
+//! memory, the last message.
 
 use std::ffi::CStr;
 use std::fmt;
-use std::mem::MaybeUninit;
 use std::ptr::{self, NonNull};
 
 use polymass_sys as sys;
 
 use crate::body::Body;
-use crate::diagnostics::Diagnostics;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::moments::Moments;
 use crate::options::Options;
 use crate::polygon::PolygonProperties;
 use crate::properties::MassProperties;
-use crate::provenance::Provenance;
-use crate::shell::Shell;
-use crate::surface::{struct_size, Surface};
+use crate::surface::{struct_size, Positions, Surface};
+use crate::weld::Weld;
 
-/// A context: the [`Options`] calls use and the message of the last failure.
+/// A context: what belongs to the caller, never how a surface is checked
+/// ([`Options`] are given per call). It holds the worker threads a call may
+/// use ([`set_threads`](Context::set_threads)), the scratch memory large
+/// calls reuse, and the message of the last failure.
 ///
 /// It is `Send` but not `Sync`: one thread at a time may use it, which every
 /// method taking `&mut self` enforces; threads computing at once each take
 /// their own. The free functions ([`mass_properties`](crate::mass_properties)
-/// and friends) and [`Mesh`]'s methods make a context per call; keep one to
-/// set options, or to save its allocation in a loop.
+/// and friends) and [`Mesh`]'s methods make a context per call; keep one for
+/// threads, or to save its allocation and scratch memory in a loop.
 ///
 /// ```
 /// use polymass::{Body, Context, Options, Surface, Warnings};
@@ -33,8 +34,10 @@ use crate::surface::{struct_size, Surface};
 /// // An inverted tetrahedron (every face reversed), accepted and turned.
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let reversed = [[0u32, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]];
-/// let mut context = Context::with_options(&Options::new().accept_inverted(true))?;
-/// let p = context.mass_properties(&Surface::triangles(&positions, &reversed), &Body::default())?;
+/// let mut context = Context::new()?;
+/// let accepting = Options::new().accept_inverted(true);
+/// let surface = Surface::triangles(&positions, &reversed);
+/// let p = context.mass_properties(&surface, &accepting, &Body::default())?;
 /// assert!(p.volume > 0.0 && p.warnings.contains(Warnings::INVERTED));
 /// # Ok::<(), polymass::Error>(())
 /// ```
@@ -55,7 +58,8 @@ pub struct Context {
 unsafe impl Send for Context {}
 
 impl Context {
-    /// A context with the default options (every check on).
+    /// A context of one thread (the calling one) and the default scratch
+    /// limit.
     ///
     /// ```
     /// let context = polymass::Context::new()?;
@@ -74,370 +78,165 @@ impl Context {
         Ok(Context { raw })
     }
 
-    /// A context with the given options.
+    /// A context whose calls may use `threads` threads; see
+    /// [`set_threads`](Context::set_threads).
     ///
     /// ```
-    /// use polymass::{Context, Options};
-    ///
-    /// let mut context = Context::with_options(&Options::new().weld_vertices(true))?;
-    /// assert!(context.options()?.welds_vertices());
+    /// let threads = std::thread::available_parallelism().map_or(1, |n| n.get() as u32);
+    /// let context = polymass::Context::with_threads(threads)?;
+    /// # drop(context);
     /// # Ok::<(), polymass::Error>(())
     /// ```
-    pub fn with_options(options: &Options) -> Result<Context> {
+    pub fn with_threads(threads: u32) -> Result<Context> {
         let mut context = Context::new()?;
-        context.set_options(options)?;
+        context.set_threads(threads)?;
         Ok(context)
     }
 
-    /// Sets the options later calls use; fails with
-    /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) for
-    /// a tolerance out of range, leaving the options as they were.
+    /// How many threads one call through this context may use: the calling
+    /// thread and `threads - 1` workers, started on first use, reused, and
+    /// joined when the context is dropped. 1, the default, starts no thread;
+    /// at most `POLYMASS_MAX_THREADS` (256). The passes over one surface's
+    /// faces and [`batch`](Context::batch)'s items are spread over them.
+    /// Every count gives the same bits.
     ///
     /// ```
-    /// use polymass::{Context, ErrorKind, Options};
+    /// use polymass::{Context, ErrorKind};
     ///
     /// let mut context = Context::new()?;
-    /// let too_coarse = Options::new().weld_vertices(true).weld_tolerance(0.5);
-    /// assert_eq!(context.set_options(&too_coarse).unwrap_err().kind(), ErrorKind::InvalidArgument);
+    /// context.set_threads(4)?;
+    /// assert_eq!(context.set_threads(100_000).unwrap_err().kind(), ErrorKind::InvalidArgument);
     /// # Ok::<(), polymass::Error>(())
     /// ```
-    pub fn set_options(&mut self, options: &Options) -> Result<()> {
-        let raw = options.to_raw();
-        // SAFETY: live context, used by this thread only (&mut self); the
-        // options struct outlives the call.
-        let status = unsafe { sys::polymass_context_set_options(self.raw.as_ptr(), &raw) };
+    pub fn set_threads(&mut self, threads: u32) -> Result<()> {
+        // SAFETY: live context, used by this thread only (&mut self).
+        let status = unsafe { sys::polymass_context_set_threads(self.raw.as_ptr(), threads) };
         self.result(status)
     }
 
-    /// The options in use, as the library holds them.
+    /// Bounds the scratch memory this context keeps between calls (the
+    /// topology check's edge lists, the shells' tables: up to about 16 bytes
+    /// per triangle), freeing what is beyond it now: 0 keeps nothing. By
+    /// default a context keeps what its largest recent call used, so that a
+    /// loop over large meshes does not map and fault fresh memory each time.
     ///
     /// ```
     /// let mut context = polymass::Context::new()?;
-    /// assert!(!context.options()?.accepts_inverted());
+    /// context.set_scratch_limit(64 << 20)?; // at most 64 MiB between calls
     /// # Ok::<(), polymass::Error>(())
     /// ```
-    pub fn options(&mut self) -> Result<Options> {
-        let mut raw = sys::polymass_options {
-            struct_size: struct_size::<sys::polymass_options>(),
-            ..Default::default()
-        };
-        // SAFETY: live context, this thread only; out-pointer to a local.
-        let status = unsafe { sys::polymass_context_get_options(&mut raw, self.raw.as_ptr()) };
-        self.result(status)?;
-        Ok(Options::from_raw(&raw))
+    pub fn set_scratch_limit(&mut self, max_kept_bytes: u64) -> Result<()> {
+        // SAFETY: live context, used by this thread only (&mut self).
+        let status =
+            unsafe { sys::polymass_context_set_scratch_limit(self.raw.as_ptr(), max_kept_bytes) };
+        self.result(status)
     }
 
-    /// Validates and integrates a surface once, for mass properties of any
-    /// number of bodies afterwards. The mesh keeps only the integrals: the
-    /// surface's slices may go once this returns.
+    /// Analyses a surface once with `options`: see [`Mesh`]. Fails only when
+    /// no analysis could run (an invalid argument, out of memory); a surface
+    /// that is not a valid solid gives a mesh that says so. The mesh keeps
+    /// none of the surface's data: they may go once this returns.
     ///
     /// ```
-    /// use polymass::{Body, Context, Surface};
+    /// use polymass::{Body, Context, Options, Surface};
     ///
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
     /// let mut context = Context::new()?;
-    /// let mesh = context.mesh(&Surface::triangles(&positions, &triangles))?;
+    /// let mesh = context.mesh(&Surface::triangles(&positions, &triangles), &Options::new())?;
     /// let light = context.mesh_mass_properties(&mesh, &Body::mass(1.0))?;
     /// let heavy = context.mesh_mass_properties(&mesh, &Body::mass(2.0))?;
     /// assert_eq!(2.0 * light.inertia[0][0], heavy.inertia[0][0]);
     /// # Ok::<(), polymass::Error>(())
     /// ```
-    pub fn mesh(&mut self, surface: &Surface<'_>) -> Result<Mesh> {
+    pub fn mesh(&mut self, surface: &Surface<'_>, options: &Options) -> Result<Mesh> {
         let desc = surface.desc();
+        let options = options.to_raw();
         let mut raw = ptr::null_mut();
-        // SAFETY: live context, this thread only; desc points into slices
-        // borrowed by `surface` for the whole call.
-        let status = unsafe { sys::polymass_mesh_create(&mut raw, self.raw.as_ptr(), &desc) };
-        self.result(status)?;
-        let raw = NonNull::new(raw).expect("polymass_mesh_create succeeded with NULL");
-        // SAFETY: a mesh polymass_mesh_create just made, owned by no one else.
-        Ok(unsafe { Mesh::from_raw(raw) })
+        // SAFETY: live context, this thread only; desc points into data
+        // borrowed by `surface` for the whole call; options outlive it.
+        let status =
+            unsafe { sys::polymass_mesh_create(&mut raw, self.raw.as_ptr(), &desc, &options) };
+        let Some(raw) = NonNull::new(raw) else {
+            self.result(status)?;
+            return Err(Error::new(
+                sys::POLYMASS_ERROR_INTERNAL,
+                "polymass_mesh_create succeeded without a mesh".to_owned(),
+            ));
+        };
+        // SAFETY: a mesh polymass_mesh_create just made, owned by no one
+        // else, of the surface's faces.
+        Ok(unsafe { Mesh::from_raw(raw, surface.face_count()) })
     }
 
-    /// The mass properties of a mesh made before, as `body`.
+    /// The mass properties of a mesh, as `body`: [`Mesh::mass_properties`]
+    /// through this context.
     ///
     /// ```
-    /// use polymass::{Body, Context, Mesh, Surface};
+    /// use polymass::{Body, Context, Mesh, Options, Surface};
     ///
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-    /// let mesh = Mesh::new(&Surface::triangles(&positions, &triangles))?;
+    /// let mesh = Mesh::new(&Surface::triangles(&positions, &triangles), &Options::new())?;
     /// let mut context = Context::new()?;
     /// for density in [1000.0, 2700.0, 7850.0] {
     ///     let p = context.mesh_mass_properties(&mesh, &Body::density(density))?;
-    ///     assert!((p.mass - density / 6.0).abs() < 1e-12 * p.mass);
+    ///     assert!((p.mass - density / 6.0).abs() < 1e-12);
     /// }
     /// # Ok::<(), polymass::Error>(())
     /// ```
     pub fn mesh_mass_properties(&mut self, mesh: &Mesh, body: &Body) -> Result<MassProperties> {
         let mass = body.to_raw();
-        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
-        // SAFETY: the zeroed struct is a valid polymass_mass_properties (all
-        // numbers); struct_size is set before the call reads it.
-        unsafe { (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>() };
+        let mut out = empty_properties();
         // SAFETY: live context, this thread only; the mesh is alive and may be
         // read by several threads at once; out and mass outlive the call.
         let status = unsafe {
-            sys::polymass_mesh_mass_properties(
-                out.as_mut_ptr(),
-                self.raw.as_ptr(),
-                mesh.as_raw(),
-                &mass,
-            )
+            sys::polymass_mesh_mass_properties(&mut out, self.raw.as_ptr(), mesh.as_raw(), &mass)
         };
         self.result(status)?;
-        // SAFETY: zero-initialised, and filled on success.
-        Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
+        Ok(MassProperties::from_raw(&out))
     }
 
-    /// Validates and integrates a surface and returns its mass properties as
-    /// `body`, keeping no mesh.
+    /// The mass properties of a surface as `body`, analysed with `options`,
+    /// keeping no mesh: the same analysis as [`mesh`](Context::mesh),
+    /// stopping at the first defect. An engine's load path.
     ///
     /// ```
-    /// use polymass::{Body, Context, Surface};
+    /// use polymass::{Body, Context, Options, Surface};
     ///
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
     /// let mut context = Context::new()?;
-    /// let p = context.mass_properties(&Surface::triangles(&positions, &triangles), &Body::default())?;
+    /// let surface = Surface::triangles(&positions, &triangles);
+    /// let p = context.mass_properties(&surface, &Options::new(), &Body::default())?;
     /// assert!((p.surface_area - (1.5 + 3f64.sqrt() / 2.0)).abs() < 1e-15);
     /// # Ok::<(), polymass::Error>(())
     /// ```
     pub fn mass_properties(
         &mut self,
         surface: &Surface<'_>,
+        options: &Options,
         body: &Body,
     ) -> Result<MassProperties> {
         let desc = surface.desc();
+        let options = options.to_raw();
         let mass = body.to_raw();
-        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
-        // SAFETY: as in mesh_mass_properties.
-        unsafe { (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>() };
-        // SAFETY: live context, this thread only; desc points into slices
-        // borrowed by `surface`; out, desc and mass outlive the call.
+        let mut out = empty_properties();
+        // SAFETY: live context, this thread only; desc points into data
+        // borrowed by `surface`; out, desc, options and mass outlive the
+        // call; no provenance asked.
         let status = unsafe {
-            sys::polymass_mass_properties_compute(out.as_mut_ptr(), self.raw.as_ptr(), &desc, &mass)
-        };
-        self.result(status)?;
-        // SAFETY: zero-initialised, and filled on success.
-        Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
-    }
-
-    /// [`mass_properties`](Context::mass_properties) by the options' chain of
-    /// modes ([`Options::repair`](crate::Options::repair),
-    /// [`Options::fallback`](crate::Options::fallback), ...), and which mode
-    /// answered, with what it did.
-    ///
-    /// ```
-    /// use polymass::{Body, Context, Mode, Options, Surface};
-    ///
-    /// // A fin on an edge of a tetrahedron: no repair is the right one; the hull answers.
-    /// let positions = [
-    ///     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [2.0, 2.0, -1.0],
-    /// ];
-    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], [0, 2, 4]];
-    /// let options = Options::new().fallback(&[Mode::Repair, Mode::Hull]);
-    /// let mut context = Context::with_options(&options)?;
-    /// let surface = Surface::triangles(&positions, &triangles);
-    /// let (p, provenance) = context.mass_properties_with_provenance(&surface, &Body::default())?;
-    /// assert_eq!(provenance.mode, Mode::Hull);
-    /// assert_eq!(provenance.hull_vertex_count, 5);
-    /// assert!(p.warnings.contains(polymass::Warnings::HULL));
-    /// # Ok::<(), polymass::Error>(())
-    /// ```
-    pub fn mass_properties_with_provenance(
-        &mut self,
-        surface: &Surface<'_>,
-        body: &Body,
-    ) -> Result<(MassProperties, Provenance)> {
-        let desc = surface.desc();
-        let mass = body.to_raw();
-        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
-        let mut provenance = MaybeUninit::<sys::polymass_provenance>::zeroed();
-        // SAFETY: as in mesh_mass_properties (both outputs zeroed, sized).
-        unsafe {
-            (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>();
-            (*provenance.as_mut_ptr()).struct_size = struct_size::<sys::polymass_provenance>();
-        }
-        // SAFETY: live context, this thread only; desc points into slices
-        // borrowed by `surface`; the outputs, desc and mass outlive the call.
-        let status = unsafe {
-            sys::polymass_mass_properties_with_provenance(
-                out.as_mut_ptr(),
-                provenance.as_mut_ptr(),
+            sys::polymass_mass_properties_compute(
+                &mut out,
+                ptr::null_mut(),
                 self.raw.as_ptr(),
                 &desc,
+                &options,
                 &mass,
-                std::ptr::null(),
             )
         };
         self.result(status)?;
-        // SAFETY: zero-initialised, and filled on success.
-        Ok(unsafe {
-            (
-                MassProperties::from_raw(out.assume_init_ref()),
-                Provenance::from_raw(provenance.assume_init_ref()),
-            )
-        })
-    }
-
-    /// Runs every check on a surface without stopping at the first finding
-    /// (the topology checks even when the options skip them; welding and the
-    /// tolerances apply). A bad surface is not an `Err`: its failure is in
-    /// [`Diagnostics::error`]. `Err` means no report could be made.
-    ///
-    /// Crossing faces, shells nested twice and touching faces are found too,
-    /// unless [`Options::skip_intersection_check`].
-    ///
-    /// ```
-    /// use polymass::{Context, Surface};
-    ///
-    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-    /// let report = Context::new()?.check(&Surface::triangles(&positions, &triangles))?;
-    /// assert_eq!((report.face_count, report.edge_count, report.used_vertex_count), (4, 6, 4));
-    /// # Ok::<(), polymass::Error>(())
-    /// ```
-    pub fn check(&mut self, surface: &Surface<'_>) -> Result<Diagnostics> {
-        let desc = surface.desc();
-        let mut report = MaybeUninit::<sys::polymass_diagnostics>::zeroed();
-        // The library writes the report whenever it can read the report's
-        // struct_size; a status left at a value no call returns tells that it
-        // could not (a library older than these bindings).
-        let unwritten = i32::MIN;
-        // SAFETY: the zeroed struct is a valid polymass_diagnostics (all
-        // numbers); these fields are set before the call reads them.
-        unsafe {
-            (*report.as_mut_ptr()).struct_size = struct_size::<sys::polymass_diagnostics>();
-            (*report.as_mut_ptr()).status = unwritten;
-        }
-        // SAFETY: live context, this thread only; desc points into slices
-        // borrowed by `surface`; report and desc outlive the call.
-        let status =
-            unsafe { sys::polymass_mesh_check(report.as_mut_ptr(), self.raw.as_ptr(), &desc) };
-        // SAFETY: zero-initialised, possibly filled.
-        let report = unsafe { report.assume_init_ref() };
-        if report.status != status {
-            self.result(status)?;
-            return Err(Error::new(
-                sys::POLYMASS_ERROR_INTERNAL,
-                format!(
-                    "polymass_mesh_check returned {status} but reported {}",
-                    report.status
-                ),
-            ));
-        }
-        // Failures of the call itself (a bad argument, out of memory) leave no
-        // report worth reading, whatever was written: they are the Err.
-        if matches!(
-            status,
-            sys::POLYMASS_ERROR_INVALID_ARGUMENT
-                | sys::POLYMASS_ERROR_OUT_OF_MEMORY
-                | sys::POLYMASS_ERROR_INTERNAL
-        ) {
-            self.result(status)?;
-        }
-        Ok(Diagnostics::from_raw(report, self.result(status).err()))
-    }
-
-    /// The shell (connected piece of surface) of each face, numbered from 0 in
-    /// the order of the shells' first faces. Faces sharing a vertex are in one
-    /// shell, after welding when the options weld (so a triangle soup splits
-    /// as its solid does). Indices out of range and non-finite coordinates are
-    /// errors; the topology is not checked.
-    ///
-    /// ```
-    /// use polymass::{Context, Options, Surface};
-    ///
-    /// // Two triangles apart, and a soup of two triangles sharing an edge.
-    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
-    ///                  [5.0, 0.0, 0.0], [6.0, 0.0, 0.0], [5.0, 1.0, 0.0]];
-    /// let apart = [[0u32, 1, 2], [3, 4, 5]];
-    /// let mut context = Context::new()?;
-    /// assert_eq!(context.shells(&Surface::triangles(&positions, &apart))?, vec![0, 1]);
-    /// let soup = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
-    ///             [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
-    /// let triangles = [[0u32, 1, 2], [3, 4, 5]];
-    /// context.set_options(&Options::new().weld_vertices(true))?;
-    /// assert_eq!(context.shells(&Surface::triangles(&soup, &triangles))?, vec![0, 0]);
-    /// # Ok::<(), polymass::Error>(())
-    /// ```
-    pub fn shells(&mut self, surface: &Surface<'_>) -> Result<Vec<u32>> {
-        let desc = surface.desc();
-        let mut of_face = vec![0u32; surface.face_count()];
-        let mut count = 0u64;
-        // SAFETY: live context, this thread only; desc points into slices
-        // borrowed by `surface`; of_face has room for every face of it.
-        let status = unsafe {
-            sys::polymass_mesh_shells(of_face.as_mut_ptr(), &mut count, self.raw.as_ptr(), &desc)
-        };
-        self.result(status)?;
-        Ok(of_face)
-    }
-
-    /// What each shell of a closed surface is: shell `i` of the list is the
-    /// one [`shells`](Context::shells) numbers `i`. The surface must pass the
-    /// checks that come before the shells (closed, manifold, oriented,
-    /// planar, with a volume), otherwise their error; the shells are
-    /// described whether or not they pass themselves, so an inside-out or
-    /// overlapping shell is listed, not an `Err`. The nesting of the shells
-    /// is counted exactly; with [`Options::skip_intersection_check`] it is
-    /// judged by bounding boxes, which can show a shell to be inside out but
-    /// take any negative shell within a solid's box for a cavity. Fails with
-    /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) when
-    /// the options skip the topology checks.
-    ///
-    /// ```
-    /// use polymass::{Context, Options, ShellKind, Surface};
-    ///
-    /// // A tetrahedron with legs 4 and, inside it, a cavity: a unit tetrahedron
-    /// // moved by (0.5, 0.5, 0.5), its faces reversed.
-    /// let positions = [
-    ///     [0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0],
-    ///     [0.5, 0.5, 0.5], [1.5, 0.5, 0.5], [0.5, 1.5, 0.5], [0.5, 0.5, 1.5],
-    /// ];
-    /// let triangles = [
-    ///     [0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3],
-    ///     [4, 5, 6], [4, 7, 5], [4, 6, 7], [5, 7, 6],
-    /// ];
-    /// let mut context = Context::with_options(&Options::new())?;
-    /// let shells = context.shell_list(&Surface::triangles(&positions, &triangles))?;
-    /// let kinds: Vec<ShellKind> = shells.iter().map(|shell| shell.kind).collect();
-    /// assert_eq!(kinds, [ShellKind::Solid, ShellKind::Cavity]);
-    /// assert!((shells[1].signed_volume + 1.0 / 6.0).abs() < 1e-15);
-    /// # Ok::<(), polymass::Error>(())
-    /// ```
-    pub fn shell_list(&mut self, surface: &Surface<'_>) -> Result<Vec<Shell>> {
-        // Room for this many in the first call: most surfaces need no second.
-        const FIRST_GUESS: usize = 16;
-        let desc = surface.desc();
-        let blank = sys::polymass_shell {
-            struct_size: struct_size::<sys::polymass_shell>(),
-            ..Default::default()
-        };
-        let mut described = vec![blank; FIRST_GUESS];
-        loop {
-            let mut count = 0u64;
-            // SAFETY: live context, this thread only; desc points into slices
-            // borrowed by `surface`; `described` holds as many shells, each
-            // with struct_size set, as the capacity passed.
-            let status = unsafe {
-                sys::polymass_mesh_shell_list(
-                    described.as_mut_ptr(),
-                    described.len() as u64,
-                    &mut count,
-                    self.raw.as_ptr(),
-                    &desc,
-                )
-            };
-            self.result(status)?;
-            let count = usize::try_from(count).expect("shells fit in memory as faces do");
-            if count <= described.len() {
-                return Ok(described[..count].iter().map(Shell::from_raw).collect());
-            }
-            described.resize(count, blank);
-        }
+        Ok(MassProperties::from_raw(&out))
     }
 
     /// Area, centroid and second moments of area of a simple polygon in the
@@ -452,17 +251,15 @@ impl Context {
     /// # Ok::<(), polymass::Error>(())
     /// ```
     pub fn polygon(&mut self, points: &[[f64; 2]]) -> Result<PolygonProperties> {
-        let mut out = MaybeUninit::<sys::polymass_polygon_properties>::zeroed();
-        // SAFETY: the zeroed struct is a valid polymass_polygon_properties
-        // (all numbers); struct_size is set before the call reads it.
-        unsafe {
-            (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_polygon_properties>()
+        let mut out = sys::polymass_polygon_properties {
+            struct_size: struct_size::<sys::polymass_polygon_properties>(),
+            ..Default::default()
         };
         // SAFETY: live context, this thread only; points.len() packed (x, y)
         // pairs (stride 0) that outlive the call.
         let status = unsafe {
             sys::polymass_polygon_compute(
-                out.as_mut_ptr(),
+                &mut out,
                 self.raw.as_ptr(),
                 points.as_flattened().as_ptr(),
                 points.len() as u64,
@@ -470,48 +267,29 @@ impl Context {
             )
         };
         self.result(status)?;
-        // SAFETY: zero-initialised, and filled on success.
-        Ok(PolygonProperties::from_raw(unsafe {
-            out.assume_init_ref()
-        }))
-    }
-
-    /// The moments (unit density) of a closed surface, checked with this
-    /// context's options.
-    ///
-    /// ```
-    /// use polymass::{Context, Surface};
-    ///
-    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-    /// let moments = Context::new()?.moments(&Surface::triangles(&positions, &triangles))?;
-    /// assert!((moments.volume() - 1.0 / 6.0).abs() < 1e-16);
-    /// # Ok::<(), polymass::Error>(())
-    /// ```
-    pub fn moments(&mut self, surface: &Surface<'_>) -> Result<Moments> {
-        let desc = surface.desc();
-        self.moments_call(|out, context| unsafe {
-            // SAFETY: desc points into slices borrowed by `surface`; NULL
-            // options: the context's. See moments_call.
-            sys::polymass_moments_compute(out, context, &desc, ptr::null())
-        })
+        Ok(PolygonProperties::from_raw(&out))
     }
 
     /// The moments of the faces `faces` of a surface about `reference` (the
     /// same point for every range of one surface), for a caller's own
     /// threads: the ranges added up, then
-    /// [`completed`](Moments::completed), are the surface's moments.
+    /// [`completed`](Moments::completed), are the surface's moments. Indices
+    /// and coordinates are checked, and polygon faces' planarity unless
+    /// `options` skip the topology checks; whether the whole is closed is the
+    /// whole's question. Face numbers in messages count from the range's
+    /// first face.
     ///
     /// ```
-    /// use polymass::{Context, Surface};
+    /// use polymass::{Context, Options, Surface};
     ///
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
     /// let surface = Surface::triangles(&positions, &triangles);
     /// let mut context = Context::new()?;
     /// let at = [0.25, 0.25, 0.25];
-    /// let sum = (context.moments_of_faces(&surface, 0..1, at)?
-    ///     + context.moments_of_faces(&surface, 1..4, at)?)?;
+    /// let options = Options::new();
+    /// let sum = (context.moments_of_faces(&surface, 0..1, at, &options)?
+    ///     + context.moments_of_faces(&surface, 1..4, at, &options)?)?;
     /// assert!(sum.is_partial());
     /// assert!((sum.completed().volume() - 1.0 / 6.0).abs() < 1e-16);
     /// # Ok::<(), polymass::Error>(())
@@ -521,12 +299,14 @@ impl Context {
         surface: &Surface<'_>,
         faces: std::ops::Range<usize>,
         reference: [f64; 3],
+        options: &Options,
     ) -> Result<Moments> {
         let desc = surface.desc();
+        let options = options.to_raw();
         let count = faces.end.saturating_sub(faces.start);
         self.moments_call(|out, context| unsafe {
-            // SAFETY: desc points into slices borrowed by `surface`;
-            // reference has 3 elements. See moments_call.
+            // SAFETY: desc points into data borrowed by `surface`; reference
+            // has 3 elements; options outlive the call. See moments_call.
             sys::polymass_moments_compute_faces(
                 out,
                 context,
@@ -534,7 +314,7 @@ impl Context {
                 faces.start as u64,
                 count as u64,
                 reference.as_ptr(),
-                ptr::null(),
+                &options,
             )
         })
     }
@@ -546,74 +326,78 @@ impl Context {
         body: Option<&Body>,
     ) -> Result<MassProperties> {
         let mass = body.map(|body| body.to_raw());
-        let mut out = MaybeUninit::<sys::polymass_mass_properties>::zeroed();
-        // SAFETY: as in mesh_mass_properties.
-        unsafe { (*out.as_mut_ptr()).struct_size = struct_size::<sys::polymass_mass_properties>() };
+        let mut out = empty_properties();
         // SAFETY: live context, this thread only; moments, mass and out
         // outlive the call; NULL mass: as the moments are weighted.
         let status = unsafe {
             sys::polymass_moments_mass_properties(
-                out.as_mut_ptr(),
+                &mut out,
                 self.raw.as_ptr(),
                 moments.as_raw(),
                 mass.as_ref().map_or(ptr::null(), |mass| mass as *const _),
             )
         };
         self.result(status)?;
-        // SAFETY: zero-initialised, and filled on success.
-        Ok(MassProperties::from_raw(unsafe { out.assume_init_ref() }))
+        Ok(MassProperties::from_raw(&out))
     }
 
-    /// The mass properties of many surfaces in one call, in order: each item
-    /// its own result, bit for bit [`mass_properties`](Context::mass_properties)'s,
-    /// or its own error, which does not stop the others. The outer `Err` is a
-    /// failure of the call itself.
+    /// The mass properties of many surfaces in one call, in order, each with
+    /// its own options and body: each item its own result, bit for bit
+    /// [`mass_properties`](Context::mass_properties)'s, or its own error,
+    /// which does not stop the others. With several threads
+    /// ([`set_threads`](Context::set_threads)) the items are spread over
+    /// them. The outer `Err` is a failure of the call itself.
     ///
     /// ```
-    /// use polymass::{Body, Context, ErrorKind, Surface};
+    /// use polymass::{Body, Context, ErrorKind, Options, Surface};
     ///
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let closed = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
     /// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
     /// let items = [
-    ///     (Surface::triangles(&positions, &closed), Body::density(2.0)),
-    ///     (Surface::triangles(&positions, &open), Body::default()),
+    ///     (Surface::triangles(&positions, &closed), Options::new(), Body::density(2.0)),
+    ///     (Surface::triangles(&positions, &open), Options::new(), Body::default()),
     /// ];
     /// let results = Context::new()?.batch(&items)?;
     /// assert!((results[0].as_ref().unwrap().mass - 2.0 / 6.0).abs() < 1e-15);
     /// assert_eq!(results[1].as_ref().unwrap_err().kind(), ErrorKind::Open);
     /// # Ok::<(), polymass::Error>(())
     /// ```
-    pub fn batch(&mut self, items: &[(Surface<'_>, Body)]) -> Result<Vec<Result<MassProperties>>> {
+    pub fn batch(
+        &mut self,
+        items: &[(Surface<'_>, Options, Body)],
+    ) -> Result<Vec<Result<MassProperties>>> {
         let descs: Vec<sys::polymass_mesh_desc> =
-            items.iter().map(|(surface, _)| surface.desc()).collect();
+            items.iter().map(|(surface, _, _)| surface.desc()).collect();
+        let options: Vec<sys::polymass_options> = items
+            .iter()
+            .map(|(_, options, _)| options.to_raw())
+            .collect();
         let masses: Vec<sys::polymass_mass_desc> =
-            items.iter().map(|(_, body)| body.to_raw()).collect();
-        let mut results = vec![
-            sys::polymass_mass_properties {
-                struct_size: struct_size::<sys::polymass_mass_properties>(),
-                ..Default::default()
-            };
-            items.len()
-        ];
+            items.iter().map(|(_, _, body)| body.to_raw()).collect();
+        let mut results = vec![empty_properties(); items.len()];
         let mut raw: Vec<sys::polymass_batch_item> = descs
             .iter()
+            .zip(&options)
             .zip(&masses)
             .zip(results.iter_mut())
-            .map(|((desc, mass), result)| sys::polymass_batch_item {
-                struct_size: struct_size::<sys::polymass_batch_item>(),
-                status: 0,
-                desc,
-                mass,
-                options: ptr::null(),
-                properties: result,
-                message: [0; sys::POLYMASS_BATCH_MESSAGE_SIZE as usize],
-            })
+            .map(
+                |(((desc, options), mass), result)| sys::polymass_batch_item {
+                    struct_size: struct_size::<sys::polymass_batch_item>(),
+                    status: 0,
+                    desc,
+                    options,
+                    mass,
+                    properties: result,
+                    provenance: ptr::null_mut(),
+                    message: [0; sys::POLYMASS_BATCH_MESSAGE_SIZE as usize],
+                },
+            )
             .collect();
         let mut failed = 0u64;
         // SAFETY: live context, this thread only; every item points into
-        // descs, masses and results (alive and not moved during the call),
-        // and the descs into slices borrowed by `items`.
+        // descs, options, masses and results (alive and not moved during the
+        // call), and the descs into data borrowed by `items`.
         let status = unsafe {
             sys::polymass_batch_compute(
                 raw.as_mut_ptr(),
@@ -640,6 +424,63 @@ impl Context {
             .collect())
     }
 
+    /// Welds positions alone, for a caller that numbers vertices before
+    /// handing a surface over (a triangle soup such as STL repeats a vertex
+    /// once per face): see [`Weld`]. `tolerance` is
+    /// [`Options::with_weld_tolerance`]'s, relative to the largest extent of
+    /// the positions' bounding box: 0 welds exactly equal positions (+0 and
+    /// -0 being one, and copies of the same NaN), above 0 chains of near
+    /// positions are one and non-finite coordinates are an error. At most
+    /// `u32::MAX` vertices.
+    ///
+    /// ```
+    /// use polymass::{Context, Positions};
+    ///
+    /// let soup = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0],
+    ///             [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 1e-12]];
+    /// let mut context = Context::new()?;
+    /// let exact = context.weld_positions(Positions::packed(&soup), 0.0)?;
+    /// assert_eq!((exact.vertex_of, exact.distinct_count), (vec![0, 1, 2, 1, 4, 5], 5));
+    /// let near = context.weld_positions(Positions::packed(&soup), 1e-9)?;
+    /// assert_eq!((near.vertex_of, near.distinct_count), (vec![0, 1, 2, 1, 4, 2], 4));
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn weld_positions(&mut self, positions: Positions<'_>, tolerance: f64) -> Result<Weld> {
+        let (position_type, bytes, stride) = positions.raw_parts();
+        let mut vertex_of = vec![0u32; positions.len()];
+        let mut distinct_count = 0u64;
+        // SAFETY: live context, this thread only; `positions` describes
+        // len() vertices within `bytes`, borrowed for the call; vertex_of has
+        // room for each.
+        let status = unsafe {
+            sys::polymass_weld_positions(
+                vertex_of.as_mut_ptr(),
+                &mut distinct_count,
+                self.raw.as_ptr(),
+                bytes.as_ptr().cast(),
+                position_type,
+                positions.len() as u64,
+                stride,
+                tolerance,
+            )
+        };
+        self.result(status)?;
+        Ok(Weld {
+            vertex_of,
+            distinct_count,
+        })
+    }
+
+    /// Runs a `polymass_mesh_*` question through this context. `call` must
+    /// pass the context it gets, a live mesh and outputs that outlive it.
+    pub(crate) fn mesh_call(
+        &mut self,
+        call: impl FnOnce(*mut sys::polymass_context) -> i32,
+    ) -> Result<()> {
+        let status = call(self.raw.as_ptr());
+        self.result(status)
+    }
+
     /// Runs a `polymass_moments_*` call writing to a fresh output struct
     /// through this context. `call` must pass the pointers it gets and
     /// arguments that outlive it.
@@ -664,6 +505,14 @@ impl Context {
         // copy below (&mut self borrows are not held across this).
         let message = unsafe { CStr::from_ptr(sys::polymass_context_message(self.raw.as_ptr())) };
         Err(Error::new(status, message.to_string_lossy().into_owned()))
+    }
+}
+
+/// An output struct for mass properties, its struct_size set.
+fn empty_properties() -> sys::polymass_mass_properties {
+    sys::polymass_mass_properties {
+        struct_size: struct_size::<sys::polymass_mass_properties>(),
+        ..Default::default()
     }
 }
 

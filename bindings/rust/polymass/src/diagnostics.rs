@@ -1,8 +1,9 @@
-//! What a full check of a surface finds (`polymass_diagnostics`).
+//! What the analysis of a surface finds (`polymass_diagnostics`).
 
 use polymass_sys as sys;
 
-use crate::error::Error;
+use crate::codes::bit_set;
+use crate::error::{Error, ErrorKind};
 
 /// How often a problem occurs and where: the first few locations.
 ///
@@ -47,19 +48,53 @@ impl Occurrences<[u64; 2]> {
     }
 }
 
-/// The report of [`check`](crate::check): every check run to the end, with
-/// counts and first few locations. Vertex numbers are the caller's indices
-/// (after welding: the lowest index at that position); edges are vertex pairs,
-/// face pairs `[lower, higher]`; shells are numbered as
-/// [`Context::shells`](crate::Context::shells) numbers them.
+bit_set! {
+    /// Which checks of an analysis ran to their end (`POLYMASS_CHECKED_*`):
+    /// those the options skip, and those after a finding that leaves nothing
+    /// to judge (unreadable faces; shells of a surface that is not closed),
+    /// did not.
+    ///
+    /// ```
+    /// use polymass::{Checks, Mesh, Options, Surface};
+    ///
+    /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// let surface = Surface::triangles(&positions, &triangles);
+    /// let every = Checks::TOPOLOGY | Checks::SHELLS | Checks::INTERSECTIONS;
+    /// assert_eq!(Mesh::new(&surface, &Options::new())?.diagnostics()?.checks, every);
+    /// let trusting = Options::new().skip_intersection_check(true);
+    /// let report = Mesh::new(&surface, &trusting)?.diagnostics()?;
+    /// assert!(!report.checks.contains(Checks::INTERSECTIONS));
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    Checks {
+        /// Closed, manifold, consistently oriented, planar polygon faces.
+        TOPOLOGY = sys::POLYMASS_CHECKED_TOPOLOGY;
+        /// The shells judged: their volumes and how they nest.
+        SHELLS = sys::POLYMASS_CHECKED_SHELLS;
+        /// Faces crossing or touching, shells counted twice.
+        INTERSECTIONS = sys::POLYMASS_CHECKED_INTERSECTIONS;
+    }
+}
+
+/// What the analysis of a surface found ([`Mesh::diagnostics`](crate::Mesh::diagnostics)):
+/// every check the options did not skip run to its end, with counts and
+/// first few locations. Vertex numbers are the caller's indices (after
+/// welding: the lowest index at that position); edges are vertex pairs, face
+/// pairs `[lower, higher]`; shells are numbered as
+/// [`Mesh::shells`](crate::Mesh::shells) numbers them. Faces of fewer than 3
+/// vertices, indices out of range and non-finite coordinates leave the faces
+/// unreadable: the report then holds only those findings.
 ///
 /// ```
-/// use polymass::{ErrorKind, Surface};
+/// use polymass::{ErrorKind, Mesh, Options, Surface};
 ///
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
-/// let report = polymass::check(&Surface::triangles(&positions, &open))?;
+/// let mesh = Mesh::new(&Surface::triangles(&positions, &open), &Options::new())?;
+/// let report = mesh.diagnostics()?;
 /// assert_eq!(report.error.as_ref().map(|e| e.kind()), Some(ErrorKind::Open));
+/// assert!(report.error.unwrap().message().contains("edge"));
 /// assert_eq!(report.open_edges.count, 3);
 /// assert_eq!(report.open_edges.first.len(), 3); // the rim of the missing face
 /// assert!(report.misoriented_edges.first.is_empty());
@@ -68,9 +103,13 @@ impl Occurrences<[u64; 2]> {
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct Diagnostics {
-    /// What creating a mesh would fail with (topology checks on), with the
-    /// same message; `None` for a valid solid.
+    /// The surface's own verdict, as the solid mode judges it whatever mode
+    /// answered: `None` for a valid solid, else its first defect with the
+    /// library's message saying where (when no mode answered, each later
+    /// mode's reason follows, as in [`Mesh::status`](crate::Mesh::status)).
     pub error: Option<Error>,
+    /// Which checks ran to their end.
+    pub checks: Checks,
     /// Number of faces.
     pub face_count: u64,
     /// Distinct vertices the faces use.
@@ -98,8 +137,8 @@ pub struct Diagnostics {
     /// Signed enclosed volume (negative for an inverted solid); `None` when
     /// the faces could not be integrated.
     pub signed_volume: Option<f64>,
-    /// Shells (connected pieces) of the surface, counted once it is closed
-    /// and oriented; 0 before.
+    /// Shells (connected pieces) of the surface; 0 when the faces are
+    /// unreadable.
     pub shell_count: u64,
     /// Shells inside out (negative volume) that lie inside no solid shell.
     pub inverted_shells: Occurrences<u64>,
@@ -116,9 +155,11 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
-    pub(crate) fn from_raw(raw: &sys::polymass_diagnostics, error: Option<Error>) -> Diagnostics {
+    /// The report, and the mesh's message, which is its status's.
+    pub(crate) fn from_raw(raw: &sys::polymass_diagnostics, message: String) -> Diagnostics {
         Diagnostics {
-            error,
+            error: ErrorKind::from_code(raw.status).map(|_| Error::new(raw.status, message)),
+            checks: Checks::from_bits(raw.checks),
             face_count: raw.face_count,
             used_vertex_count: raw.used_vertex_count,
             edge_count: raw.edge_count,
@@ -173,11 +214,12 @@ impl Diagnostics {
     /// Whether the surface is a valid solid (no [`error`](Diagnostics::error)).
     ///
     /// ```
-    /// use polymass::Surface;
+    /// use polymass::{Mesh, Options, Surface};
     ///
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-    /// assert!(polymass::check(&Surface::triangles(&positions, &triangles))?.is_solid());
+    /// let mesh = Mesh::new(&Surface::triangles(&positions, &triangles), &Options::new())?;
+    /// assert!(mesh.diagnostics()?.is_solid());
     /// # Ok::<(), polymass::Error>(())
     /// ```
     pub fn is_solid(&self) -> bool {

@@ -166,7 +166,7 @@ impl fmt::Display for ErrorKind {
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let open = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]]; // the slanted face is missing
 /// let surface = Surface::triangles(&positions, &open);
-/// let error = polymass::mass_properties(&surface, &Default::default()).unwrap_err();
+/// let error = polymass::mass_properties(&surface, &polymass::Options::new(), &Default::default()).unwrap_err();
 /// assert_eq!(error.kind(), ErrorKind::Open);
 /// assert!(error.message().contains("edge"));
 /// println!("{error}");

@@ -9,7 +9,7 @@ use crate::body::Body;
 use crate::context::Context;
 use crate::error::Result;
 use crate::properties::MassProperties;
-use crate::surface::{struct_size, Surface};
+use crate::surface::struct_size;
 
 /// The mass integrals of a body about its own reference point, near the body,
 /// so that a part far from the origin keeps its digits: a `Copy` value.
@@ -19,13 +19,15 @@ use crate::surface::{struct_size, Surface};
 /// many parts is one expression ending in `?`. The derivations are in the
 /// repository's `docs/moments.md`.
 ///
+/// A mesh gives the moments of its body ([`Mesh::moments`](crate::Mesh::moments)).
+///
 /// ```
-/// use polymass::{Body, Moments, Surface};
+/// use polymass::{Body, Mesh, Options, Surface};
 ///
 /// // Two unit tetrahedra, one moved 1e8 along x: the sum keeps every digit.
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-/// let part = Moments::of(&Surface::triangles(&positions, &triangles))?;
+/// let part = Mesh::new(&Surface::triangles(&positions, &triangles), &Options::new())?.moments()?;
 /// let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let far = part.transformed(&identity, [1e8, 0.0, 0.0])?;
 /// let steel = part.weighted(&Body::density(7850.0))?;
@@ -40,12 +42,6 @@ pub struct Moments {
 }
 
 impl Moments {
-    /// The moments (unit density) of a closed surface, checked with the
-    /// default options; see [`Context::moments`] to set options.
-    pub fn of(surface: &Surface<'_>) -> Result<Moments> {
-        Context::new()?.moments(surface)
-    }
-
     pub(crate) fn empty() -> sys::polymass_moments {
         sys::polymass_moments {
             struct_size: struct_size::<sys::polymass_moments>(),
@@ -127,8 +123,7 @@ impl Moments {
     }
 
     /// The body made of a material of `body`'s density, or of its mass: the
-    /// whole mass distribution rescaled to that mean density or total mass
-    /// (the point of `body` is not used).
+    /// whole mass distribution rescaled to that mean density or total mass.
     pub fn weighted(&self, body: &Body) -> Result<Moments> {
         let mass = body.to_raw();
         Context::new()?.moments_call(|out, context| unsafe {
@@ -137,10 +132,9 @@ impl Moments {
         })
     }
 
-    /// The mass properties of the body: as weighted (`None`, inertia_point
-    /// about the origin), or weighted as by [`weighted`](Moments::weighted)
-    /// with inertia_point about `body`'s point. `surface_area` is NaN:
-    /// moments do not keep the surface.
+    /// The mass properties of the body: as weighted (`None`), or weighted as
+    /// by [`weighted`](Moments::weighted). `surface_area` is NaN: moments do
+    /// not keep the surface.
     pub fn mass_properties(&self, body: Option<&Body>) -> Result<MassProperties> {
         Context::new()?.moments_mass_properties(self, body)
     }

@@ -1,23 +1,26 @@
-//! What a context checks and accepts (`polymass_options`).
+//! What one analysis checks and accepts (`polymass_options`), given per call.
 
 use polymass_sys as sys;
 
 use crate::surface::struct_size;
 
-/// How strictly surfaces are checked, set on a [`Context`](crate::Context)
-/// (or given to [`Mesh::with_options`](crate::Mesh::with_options)). Built
-/// with chained setters from the defaults: every check on, nothing welded,
-/// the default planarity tolerance. The library validates the values when
-/// the options are applied.
+/// What one analysis checks and accepts, and how it turns the surface into
+/// a body: a plain value given to every call that analyses a surface
+/// ([`mass_properties`](crate::mass_properties), [`Mesh::new`](crate::Mesh::new),
+/// a [`batch`](crate::batch) item, ...), never kept by a context. Built with
+/// chained setters from the defaults, the safe ones: every check on, nothing
+/// welded, the default planarity tolerance, the exact solid alone. The
+/// library validates the values in the call that takes them
+/// ([`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument)).
 ///
 /// ```
 /// use polymass::Options;
 ///
 /// // An STL triangle soup from a CAD export: weld vertices closer than 1e-9
 /// // of the part's size before checking that the surface is closed.
-/// let options = Options::new().weld_vertices(true).weld_tolerance(1e-9);
+/// let options = Options::new().weld_vertices(true).with_weld_tolerance(1e-9);
 /// assert!(options.welds_vertices());
-/// assert_eq!(options.weld_tolerance_value(), 1e-9);
+/// assert_eq!(options.weld_tolerance(), 1e-9);
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Options {
@@ -26,7 +29,6 @@ pub struct Options {
     weld_tolerance: f64,
     modes: [u32; sys::POLYMASS_MAX_MODES as usize],
     shell_thickness: f64,
-    threads: u32,
 }
 
 /// How a surface becomes a body (`POLYMASS_MODE_*`): see
@@ -145,7 +147,7 @@ impl Options {
     /// changes a result it accepts.
     ///
     /// ```
-    /// use polymass::{Body, Context, ErrorKind, Options, Surface};
+    /// use polymass::{Body, ErrorKind, Options, Surface};
     ///
     /// // Two unit tetrahedra, the second moved by (0.25, 0.25, 0.25) into the first.
     /// let positions = [
@@ -157,12 +159,12 @@ impl Options {
     ///     [4, 6, 5], [4, 5, 7], [4, 7, 6], [5, 6, 7],
     /// ];
     /// let surface = Surface::triangles(&positions, &triangles);
-    /// let error = polymass::mass_properties(&surface, &Body::default()).unwrap_err();
+    /// let error = polymass::mass_properties(&surface, &Options::new(), &Body::default()).unwrap_err();
     /// assert_eq!(error.kind(), ErrorKind::Intersecting);
     /// assert!(error.message().contains("cross each other"));
     /// // Skipped, the overlap is counted twice.
-    /// let mut context = Context::with_options(&Options::new().skip_intersection_check(true))?;
-    /// let twice = context.mass_properties(&surface, &Body::default())?;
+    /// let trusting = Options::new().skip_intersection_check(true);
+    /// let twice = polymass::mass_properties(&surface, &trusting, &Body::default())?;
     /// assert!((twice.volume - 2.0 / 6.0).abs() < 1e-15);
     /// # Ok::<(), polymass::Error>(())
     /// ```
@@ -175,10 +177,10 @@ impl Options {
     /// (`POLYMASS_DEFAULT_PLANARITY_TOLERANCE`, 1e-6).
     ///
     /// ```
-    /// let options = polymass::Options::new().planarity_tolerance(1e-4);
-    /// assert_eq!(options.planarity_tolerance_value(), 1e-4);
+    /// let options = polymass::Options::new().with_planarity_tolerance(1e-4);
+    /// assert_eq!(options.planarity_tolerance(), 1e-4);
     /// ```
-    pub fn planarity_tolerance(mut self, tolerance: f64) -> Options {
+    pub fn with_planarity_tolerance(mut self, tolerance: f64) -> Options {
         self.planarity_tolerance = tolerance;
         self
     }
@@ -189,10 +191,10 @@ impl Options {
     /// positions only; at most `POLYMASS_MAX_WELD_TOLERANCE` (1e-3).
     ///
     /// ```
-    /// let options = polymass::Options::new().weld_vertices(true).weld_tolerance(1e-9);
-    /// assert_eq!(options.weld_tolerance_value(), 1e-9);
+    /// let options = polymass::Options::new().weld_vertices(true).with_weld_tolerance(1e-9);
+    /// assert_eq!(options.weld_tolerance(), 1e-9);
     /// ```
-    pub fn weld_tolerance(mut self, tolerance: f64) -> Options {
+    pub fn with_weld_tolerance(mut self, tolerance: f64) -> Options {
         self.weld_tolerance = tolerance;
         self
     }
@@ -208,19 +210,19 @@ impl Options {
     /// Repair a surface that is not a valid solid where the fix is unique
     /// (orientation, duplicate and two-vertex faces, non-planar polygons,
     /// holes, balanced non-manifold edges); a valid solid is answered exactly
-    /// as without. [`Context::mass_properties_with_provenance`](crate::Context::mass_properties_with_provenance)
-    /// says what was done; the error bound says how far off it can be.
-    /// `false` goes back to the solid alone.
+    /// as without. [`Mesh::provenance`](crate::Mesh::provenance) says what
+    /// was done; the error bound says how far off it can be. `false` goes
+    /// back to the solid alone.
     ///
     /// ```
-    /// use polymass::{Body, Context, Mode, Options, Surface};
+    /// use polymass::{Body, Mesh, Mode, Options, Surface};
     ///
     /// // The unit corner tetrahedron without its slanted face: open.
     /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2]];
-    /// let mut context = Context::with_options(&Options::new().repair(true))?;
     /// let surface = Surface::triangles(&positions, &triangles);
-    /// let (p, provenance) = context.mass_properties_with_provenance(&surface, &Body::default())?;
+    /// let mesh = Mesh::new(&surface, &Options::new().repair(true))?;
+    /// let (p, provenance) = (mesh.mass_properties(&Body::default())?, mesh.provenance()?);
     /// assert_eq!(provenance.mode, Mode::Repair);
     /// assert_eq!(provenance.holes.count, 1);
     /// assert!((p.volume - 1.0 / 6.0).abs() <= p.error_bound.volume);
@@ -236,7 +238,7 @@ impl Options {
     /// ```
     /// let options = polymass::Options::new().shell(0.002);
     /// assert_eq!(options.modes(), vec![polymass::Mode::Shell]);
-    /// assert_eq!(options.shell_thickness_value(), 0.002);
+    /// assert_eq!(options.shell_thickness(), 0.002);
     /// ```
     pub fn shell(mut self, thickness: f64) -> Options {
         self.shell_thickness = thickness;
@@ -253,7 +255,7 @@ impl Options {
     }
 
     /// Modes tried in order after the solid, the first that answers giving
-    /// the answer (at most three; a shell wants [`shell_thickness`](Options::shell_thickness)).
+    /// the answer (at most three; a shell wants [`with_shell_thickness`](Options::with_shell_thickness)).
     ///
     /// ```
     /// use polymass::{Mode, Options};
@@ -269,7 +271,14 @@ impl Options {
     }
 
     /// The wall thickness of [`Mode::Shell`] in a [`fallback`](Options::fallback).
-    pub fn shell_thickness(mut self, thickness: f64) -> Options {
+    ///
+    /// ```
+    /// use polymass::{Mode, Options};
+    ///
+    /// let options = Options::new().fallback(&[Mode::Shell]).with_shell_thickness(0.5);
+    /// assert_eq!(options.shell_thickness(), 0.5);
+    /// ```
+    pub fn with_shell_thickness(mut self, thickness: f64) -> Options {
         self.shell_thickness = thickness;
         self
     }
@@ -293,32 +302,8 @@ impl Options {
     }
 
     /// The shell thickness (0: none given).
-    pub fn shell_thickness_value(&self) -> f64 {
+    pub fn shell_thickness(&self) -> f64 {
         self.shell_thickness
-    }
-
-    /// How many threads one call may use: the calling thread and `threads - 1`
-    /// of the context's workers, started on first use, reused and joined when
-    /// the context is dropped (at most `POLYMASS_MAX_THREADS`, checked when the
-    /// options are applied). 0, the default, means one: the library starts no
-    /// thread unless asked. [`Context::batch`](crate::Context::batch) spreads
-    /// its items over them. Every count gives the same bits.
-    ///
-    /// ```
-    /// use polymass::{Context, Options};
-    ///
-    /// let threads = std::thread::available_parallelism().map_or(1, |n| n.get() as u32);
-    /// let mut context = Context::with_options(&Options::new().threads(threads)).unwrap();
-    /// assert_eq!(context.options().unwrap().threads_value(), threads);
-    /// ```
-    pub fn threads(mut self, threads: u32) -> Options {
-        self.threads = threads;
-        self
-    }
-
-    /// The number of threads asked for (0: the library's default, one).
-    pub fn threads_value(&self) -> u32 {
-        self.threads
     }
 
     /// Whether the topology checks are skipped.
@@ -368,22 +353,21 @@ impl Options {
         self.flags & sys::POLYMASS_OPTION_SKIP_INTERSECTION_CHECK != 0
     }
 
-    /// The planarity tolerance (0: the library's default; options read back
-    /// from a [`Context`](crate::Context) give the default's value instead).
+    /// The planarity tolerance (0: the library's default).
     ///
     /// ```
-    /// assert_eq!(polymass::Options::new().planarity_tolerance_value(), 0.0);
+    /// assert_eq!(polymass::Options::new().planarity_tolerance(), 0.0);
     /// ```
-    pub fn planarity_tolerance_value(&self) -> f64 {
+    pub fn planarity_tolerance(&self) -> f64 {
         self.planarity_tolerance
     }
 
     /// The weld tolerance (0: exactly equal positions).
     ///
     /// ```
-    /// assert_eq!(polymass::Options::new().weld_tolerance_value(), 0.0);
+    /// assert_eq!(polymass::Options::new().weld_tolerance(), 0.0);
     /// ```
-    pub fn weld_tolerance_value(&self) -> f64 {
+    pub fn weld_tolerance(&self) -> f64 {
         self.weld_tolerance
     }
 
@@ -395,20 +379,6 @@ impl Options {
             weld_tolerance: self.weld_tolerance,
             modes: self.modes,
             shell_thickness: self.shell_thickness,
-            threads: self.threads,
-        }
-    }
-
-    /// Keeps every flag bit, known to this crate or not, so options read from
-    /// a context and set again are unchanged.
-    pub(crate) fn from_raw(raw: &sys::polymass_options) -> Options {
-        Options {
-            flags: raw.flags,
-            planarity_tolerance: raw.planarity_tolerance,
-            weld_tolerance: raw.weld_tolerance,
-            modes: raw.modes,
-            shell_thickness: raw.shell_thickness,
-            threads: raw.threads,
         }
     }
 }

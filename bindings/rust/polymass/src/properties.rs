@@ -2,6 +2,10 @@
 
 use polymass_sys as sys;
 
+use crate::codes::bit_set;
+use crate::error::{Error, Result};
+use crate::surface::struct_size;
+
 /// Mass properties of a solid body. Matrices are `[row][column]`; the inertia
 /// tensor is `I = ∫ρ(|r|²𝟙 − r rᵀ) dV`, so the diagonal holds the moments
 /// (`Ixx = ∫ρ(y² + z²)`) and the off-diagonal terms are the *negated*
@@ -9,12 +13,12 @@ use polymass_sys as sys;
 /// PhysX and Bullet take.
 ///
 /// ```
-/// use polymass::{Body, Surface};
+/// use polymass::{Body, Options, Surface};
 ///
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
 /// let surface = Surface::triangles(&positions, &triangles);
-/// let p = polymass::mass_properties(&surface, &Body::mass(6.0))?;
+/// let p = polymass::mass_properties(&surface, &Options::new(), &Body::mass(6.0))?;
 /// assert!((p.center_of_mass[0] - 0.25).abs() < 1e-15);
 /// // Principal moments ascending; the axes are the columns of a rotation.
 /// assert!(p.principal_moments[0] <= p.principal_moments[1]);
@@ -35,11 +39,9 @@ pub struct MassProperties {
     pub center_of_mass: [f64; 3],
     /// Inertia tensor about the centre of mass (M·L²).
     pub inertia: [[f64; 3]; 3],
-    /// Inertia tensor about the origin.
+    /// Inertia tensor about the origin; about any point:
+    /// [`inertia_about`](MassProperties::inertia_about).
     pub inertia_origin: [[f64; 3]; 3],
-    /// Inertia tensor about the body's reference point
-    /// ([`Body::about`](crate::Body::about)).
-    pub inertia_point: [[f64; 3]; 3],
     /// Eigenvalues of `inertia`, ascending.
     pub principal_moments: [f64; 3],
     /// A rotation `R` (det +1) whose column `i` is the axis of
@@ -57,11 +59,12 @@ pub struct MassProperties {
 /// given (its coordinates taken as exact).
 ///
 /// ```
-/// use polymass::{Body, Surface};
+/// use polymass::{Body, Options, Surface};
 ///
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-/// let p = polymass::mass_properties(&Surface::triangles(&positions, &triangles), &Body::default())?;
+/// let surface = Surface::triangles(&positions, &triangles);
+/// let p = polymass::mass_properties(&surface, &Options::new(), &Body::default())?;
 /// assert!((p.volume - 1.0 / 6.0).abs() <= p.error_bound.volume);
 /// assert!(p.error_bound.volume < 1e-12);
 /// # Ok::<(), polymass::Error>(())
@@ -93,10 +96,9 @@ impl MassProperties {
             center_of_mass: raw.center_of_mass,
             inertia: matrix(&raw.inertia),
             inertia_origin: matrix(&raw.inertia_origin),
-            inertia_point: matrix(&raw.inertia_point),
             principal_moments: raw.principal_moments,
             principal_axes: matrix(&raw.principal_axes),
-            warnings: Warnings(raw.warnings),
+            warnings: Warnings::from_bits(raw.warnings),
             error_bound: ErrorBound {
                 volume: raw.error_bound_volume,
                 center_of_mass: raw.error_bound_center_of_mass,
@@ -106,6 +108,64 @@ impl MassProperties {
             },
         }
     }
+
+    /// The C struct these properties were read from.
+    fn to_raw(self) -> sys::polymass_mass_properties {
+        sys::polymass_mass_properties {
+            struct_size: struct_size::<sys::polymass_mass_properties>(),
+            warnings: self.warnings.bits(),
+            volume: self.volume,
+            mass: self.mass,
+            density: self.density,
+            surface_area: self.surface_area,
+            center_of_mass: self.center_of_mass,
+            inertia: row_major(&self.inertia),
+            inertia_origin: row_major(&self.inertia_origin),
+            principal_moments: self.principal_moments,
+            principal_axes: row_major(&self.principal_axes),
+            error_bound_volume: self.error_bound.volume,
+            error_bound_center_of_mass: self.error_bound.center_of_mass,
+            error_bound_inertia: self.error_bound.inertia,
+            error_bound_principal_moments: self.error_bound.principal_moments,
+            error_bound_principal_axes: self.error_bound.principal_axes,
+        }
+    }
+
+    /// The inertia tensor of the body about `point` (M·L²), by the
+    /// parallel-axis theorem from the tensor about the centre of mass
+    /// (`polymass_inertia_about`). Fails with
+    /// [`ErrorKind::InvalidArgument`](crate::ErrorKind::InvalidArgument) for
+    /// a point that is not finite and
+    /// [`ErrorKind::Overflow`](crate::ErrorKind::Overflow) for a moment
+    /// beyond a double.
+    ///
+    /// ```
+    /// use polymass::{Body, Options, Surface};
+    ///
+    /// // A unit cube of mass 6 about a corner: 6 (1/6 + 1/2) = 4 on the
+    /// // diagonal, products -6 (1/2)(1/2) = -1.5 (negated) off it.
+    /// let positions = [
+    ///     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0],
+    ///     [0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.0, 1.0, 1.0],
+    /// ];
+    /// let indices = [0u32, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7];
+    /// let cube = Surface::polygons(&positions, &indices, &[4; 6]);
+    /// let p = polymass::mass_properties(&cube, &Options::new(), &Body::mass(6.0))?;
+    /// let corner = p.inertia_about([1.0, 1.0, 1.0])?;
+    /// assert!((corner[0][0] - 4.0).abs() < 1e-14 && (corner[0][1] + 1.5).abs() < 1e-14);
+    /// # Ok::<(), polymass::Error>(())
+    /// ```
+    pub fn inertia_about(&self, point: [f64; 3]) -> Result<[[f64; 3]; 3]> {
+        let raw = self.to_raw();
+        let mut out = [0.0; 9];
+        // SAFETY: out has 9 elements, point 3; raw is a complete struct.
+        let status = unsafe { sys::polymass_inertia_about(out.as_mut_ptr(), &raw, point.as_ptr()) };
+        if status != sys::POLYMASS_OK {
+            // The function takes no context, so has no message of its own.
+            return Err(Error::new(status, format!("inertia about {point:?}")));
+        }
+        Ok(matrix(&out))
+    }
 }
 
 /// A row-major 3x3 matrix as rows.
@@ -113,78 +173,49 @@ fn matrix(row_major: &[f64; 9]) -> [[f64; 3]; 3] {
     std::array::from_fn(|row| std::array::from_fn(|column| row_major[3 * row + column]))
 }
 
-/// What the library accepted while computing, as bits (`POLYMASS_WARNING_*`).
-/// Bits this crate has no constant for are kept.
-///
-/// ```
-/// use polymass::Warnings;
-///
-/// let warnings = Warnings::INVERTED | Warnings::UNCHECKED;
-/// assert!(warnings.contains(Warnings::INVERTED));
-/// assert!(!warnings.contains(Warnings::DEGENERATE_FACES));
-/// assert!(Warnings::default().is_empty());
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-pub struct Warnings(u32);
+/// Rows as a row-major 3x3 matrix.
+fn row_major(rows: &[[f64; 3]; 3]) -> [f64; 9] {
+    std::array::from_fn(|i| rows[i / 3][i % 3])
+}
 
-impl Warnings {
-    /// An inverted solid was accepted and turned
-    /// ([`Options::accept_inverted`](crate::Options::accept_inverted)).
-    pub const INVERTED: Warnings = Warnings(sys::POLYMASS_WARNING_INVERTED);
-    /// Some faces have zero area; they are harmless.
-    pub const DEGENERATE_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_DEGENERATE_FACES);
-    /// The topology checks were skipped
-    /// ([`Options::skip_topology_checks`](crate::Options::skip_topology_checks)).
-    pub const UNCHECKED: Warnings = Warnings(sys::POLYMASS_WARNING_UNCHECKED);
-    /// Balanced non-manifold edges were accepted
-    /// ([`Options::accept_non_manifold`](crate::Options::accept_non_manifold)).
-    pub const NON_MANIFOLD: Warnings = Warnings(sys::POLYMASS_WARNING_NON_MANIFOLD);
-    /// Faces touch without crossing, such as parts resting on each other;
-    /// found by the intersection check (on unless
-    /// [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)),
-    /// and listed by [`Diagnostics::touching_face_pairs`](crate::Diagnostics::touching_face_pairs).
-    pub const TOUCHING_FACES: Warnings = Warnings(sys::POLYMASS_WARNING_TOUCHING_FACES);
-    /// Not a valid solid: the surface was repaired ([`Options::repair`](crate::Options::repair)).
-    pub const REPAIRED: Warnings = Warnings(sys::POLYMASS_WARNING_REPAIRED);
-    /// Computed as a thin wall ([`Options::shell`](crate::Options::shell)).
-    pub const SHELL: Warnings = Warnings(sys::POLYMASS_WARNING_SHELL);
-    /// The convex hull, not the solid ([`Options::hull`](crate::Options::hull)).
-    pub const HULL: Warnings = Warnings(sys::POLYMASS_WARNING_HULL);
-
-    /// Whether every bit of `other` is set.
+bit_set! {
+    /// What the library accepted while computing, as bits
+    /// (`POLYMASS_WARNING_*`). Bits this crate has no constant for are kept.
     ///
     /// ```
     /// use polymass::Warnings;
     ///
-    /// assert!(Warnings::UNCHECKED.contains(Warnings::UNCHECKED));
+    /// let warnings = Warnings::INVERTED | Warnings::UNCHECKED;
+    /// assert!(warnings.contains(Warnings::INVERTED));
+    /// assert!(!warnings.contains(Warnings::DEGENERATE_FACES));
+    /// assert!(Warnings::default().is_empty());
+    /// assert_eq!(Warnings::INVERTED.bits(), 1);
     /// ```
-    pub fn contains(self, other: Warnings) -> bool {
-        self.0 & other.0 == other.0
-    }
-
-    /// Whether no warning is set.
-    ///
-    /// ```
-    /// assert!(polymass::Warnings::default().is_empty());
-    /// ```
-    pub fn is_empty(self) -> bool {
-        self.0 == 0
-    }
-
-    /// The raw `POLYMASS_WARNING_*` bits.
-    ///
-    /// ```
-    /// assert_eq!(polymass::Warnings::INVERTED.bits(), 1);
-    /// ```
-    pub fn bits(self) -> u32 {
-        self.0
-    }
-}
-
-impl std::ops::BitOr for Warnings {
-    type Output = Warnings;
-
-    fn bitor(self, other: Warnings) -> Warnings {
-        Warnings(self.0 | other.0)
+    Warnings {
+        /// An inverted solid was accepted and turned
+        /// ([`Options::accept_inverted`](crate::Options::accept_inverted)).
+        INVERTED = sys::POLYMASS_WARNING_INVERTED;
+        /// Some faces have zero area; they are harmless.
+        DEGENERATE_FACES = sys::POLYMASS_WARNING_DEGENERATE_FACES;
+        /// The topology checks were skipped
+        /// ([`Options::skip_topology_checks`](crate::Options::skip_topology_checks)).
+        UNCHECKED = sys::POLYMASS_WARNING_UNCHECKED;
+        /// Balanced non-manifold edges were accepted
+        /// ([`Options::accept_non_manifold`](crate::Options::accept_non_manifold)).
+        NON_MANIFOLD = sys::POLYMASS_WARNING_NON_MANIFOLD;
+        /// Faces touch without crossing, such as parts resting on each other;
+        /// found by the intersection check (on unless
+        /// [`Options::skip_intersection_check`](crate::Options::skip_intersection_check)),
+        /// and listed by [`Diagnostics::touching_face_pairs`](crate::Diagnostics::touching_face_pairs).
+        TOUCHING_FACES = sys::POLYMASS_WARNING_TOUCHING_FACES;
+        /// Not a valid solid: the surface was repaired ([`Options::repair`](crate::Options::repair)).
+        REPAIRED = sys::POLYMASS_WARNING_REPAIRED;
+        /// Computed as a thin wall ([`Options::shell`](crate::Options::shell)).
+        SHELL = sys::POLYMASS_WARNING_SHELL;
+        /// The convex hull, not the solid ([`Options::hull`](crate::Options::hull)).
+        HULL = sys::POLYMASS_WARNING_HULL;
+        /// The intersection check did not run (skipped by name, or with the
+        /// topology checks): overlapping parts would have passed, counted twice.
+        INTERSECTIONS_UNCHECKED = sys::POLYMASS_WARNING_INTERSECTIONS_UNCHECKED;
     }
 }

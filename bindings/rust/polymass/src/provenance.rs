@@ -6,7 +6,7 @@ use crate::diagnostics::Occurrences;
 use crate::options::Mode;
 
 /// Which mode of the options' chain answered and what it did: from
-/// [`Context::mass_properties_with_provenance`](crate::Context::mass_properties_with_provenance).
+/// [`Mesh::provenance`](crate::Mesh::provenance).
 /// Faces are the caller's face numbers, vertices its indices (after welding:
 /// the lowest index at that position).
 #[derive(Debug, Clone, PartialEq)]

@@ -1,4 +1,4 @@
-//! What each shell of a closed surface is (`polymass_shell`).
+//! What each shell of a surface is (`polymass_shell`).
 
 use polymass_sys as sys;
 
@@ -19,6 +19,10 @@ use crate::codes::{known_code, known_kind};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum ShellKind {
+    /// Not judged: the surface failed a check before the shells (not closed,
+    /// manifold, oriented or planar), or the options skip the topology
+    /// checks. Its signed volume is NaN.
+    Unjudged,
     /// Encloses positive volume and lies in no other solid (or in a cavity).
     Solid,
     /// Negative volume, inside a solid: a hollow.
@@ -35,7 +39,8 @@ pub enum ShellKind {
 }
 
 /// Each known kind with its code: the one table both directions use.
-const KNOWN_KINDS: [(ShellKind, i32); 5] = [
+const KNOWN_KINDS: [(ShellKind, i32); 6] = [
+    (ShellKind::Unjudged, sys::POLYMASS_SHELL_UNJUDGED),
     (ShellKind::Solid, sys::POLYMASS_SHELL_SOLID),
     (ShellKind::Cavity, sys::POLYMASS_SHELL_CAVITY),
     (ShellKind::Inverted, sys::POLYMASS_SHELL_INVERTED),
@@ -66,15 +71,17 @@ impl ShellKind {
     }
 }
 
-/// One shell of a closed surface, as
-/// [`Context::shell_list`](crate::Context::shell_list) describes it.
+/// One shell of a surface, as [`Mesh::shells`](crate::Mesh::shells)
+/// describes it: a connected piece, faces sharing a vertex (after welding,
+/// when the options weld) being in one shell.
 ///
 /// ```
-/// use polymass::{ShellKind, Surface};
+/// use polymass::{Mesh, Options, ShellKind, Surface};
 ///
 /// let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 /// let triangles = [[0u32, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
-/// let shells = polymass::shell_list(&Surface::triangles(&positions, &triangles))?;
+/// let mesh = Mesh::new(&Surface::triangles(&positions, &triangles), &Options::new())?;
+/// let shells = mesh.shells()?;
 /// assert_eq!(shells.len(), 1);
 /// assert_eq!((shells[0].kind, shells[0].face_count, shells[0].first_face), (ShellKind::Solid, 4, 0));
 /// assert!((shells[0].signed_volume - 1.0 / 6.0).abs() < 1e-16);
@@ -91,7 +98,7 @@ pub struct Shell {
     pub first_face: u64,
     /// Enclosed volume, signed so that the whole surface's volume is positive
     /// (a surface accepted inside out as a whole counts turned): a cavity's
-    /// is negative.
+    /// is negative; NaN when [unjudged](ShellKind::Unjudged).
     pub signed_volume: f64,
 }
 

@@ -4,10 +4,11 @@
 mod common;
 
 use common::*;
-use polymass::{Body, Surface};
+use polymass::{Body, Options, Surface};
 
 fn compute(shape: &Shape) -> polymass::MassProperties {
-    polymass::mass_properties(&shape.surface(), &Body::default()).expect("a valid solid")
+    polymass::mass_properties(&shape.surface(), &Options::new(), &Body::default())
+        .expect("a valid solid")
 }
 
 #[test]
@@ -25,7 +26,7 @@ fn boxes_of_unequal_sides_as_quads_and_as_triangles() {
     assert_matches(&compute(&shape), &exact, "box of quads");
     let triangles = shape.triangles();
     let as_triangles = Surface::triangles(&shape.positions, &triangles);
-    let p = polymass::mass_properties(&as_triangles, &Body::default()).unwrap();
+    let p = polymass::mass_properties(&as_triangles, &Options::new(), &Body::default()).unwrap();
     assert_matches(&p, &exact, "box of triangles");
 }
 

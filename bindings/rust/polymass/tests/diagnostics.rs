@@ -1,16 +1,26 @@
-//! check() reports every problem with counts and first locations, and
-//! nothing for a valid solid.
+//! A mesh's diagnostics report every problem with counts and first
+//! locations, and nothing for a valid solid.
 
 mod common;
 
 use common::*;
-use polymass::{Context, ErrorKind, Occurrences, Options, Surface};
+use polymass::{Body, Checks, Diagnostics, ErrorKind, Mesh, Occurrences, Options, Surface};
+
+fn report(surface: &Surface<'_>) -> Diagnostics {
+    Mesh::new(surface, &Options::new())
+        .unwrap()
+        .diagnostics()
+        .unwrap()
+}
 
 #[test]
 fn a_valid_solid_has_a_clean_report() {
     let shape = cuboid([0.0; 3], [1.0, 2.0, 3.0]);
-    let report = polymass::check(&shape.surface()).unwrap();
+    let report = report(&shape.surface());
     assert!(report.is_solid(), "{report:?}");
+    let every = Checks::TOPOLOGY | Checks::SHELLS | Checks::INTERSECTIONS;
+    assert_eq!(report.checks, every);
+    assert_eq!(report.shell_count, 1);
     assert_eq!(
         (
             report.face_count,
@@ -40,15 +50,18 @@ fn a_valid_solid_has_a_clean_report() {
 }
 
 #[test]
-fn an_open_surface_reports_its_edges_and_the_error_mesh_creation_gives() {
+fn an_open_surface_reports_its_edges_and_the_error_the_one_call_gives() {
     let mut shape = corner_tetrahedron(1.0, 1.0, 1.0);
     shape.indices.truncate(9); // the slanted face (1, 2, 3) is gone
     shape.face_sizes.truncate(3);
-    let report = polymass::check(&shape.surface()).unwrap();
+    let mesh = Mesh::new(&shape.surface(), &Options::new()).unwrap();
+    let report = mesh.diagnostics().unwrap();
     let error = report.error.clone().unwrap();
     assert_eq!(error.kind(), ErrorKind::Open);
-    let create_error = polymass::Mesh::new(&shape.surface()).unwrap_err();
-    assert_eq!(error, create_error);
+    let one_call =
+        polymass::mass_properties(&shape.surface(), &Options::new(), &Body::default()).unwrap_err();
+    assert_eq!(error, one_call);
+    assert_eq!(mesh.status(), Err(one_call));
     assert_eq!(report.open_edges.count, 3);
     // The rim of the missing face (1, 2, 3), each edge as its remaining
     // neighbour traverses it, lowest vertex pairs first.
@@ -62,8 +75,11 @@ fn every_problem_is_counted_not_only_the_first() {
     shape.positions[7][2] = 1.25; // the top quad (face 1) bends
     shape.indices.truncate(20); // and the face x = max is gone
     shape.face_sizes.truncate(5);
-    let report = polymass::check(&shape.surface()).unwrap();
-    assert_eq!(report.error.unwrap().kind(), ErrorKind::Open);
+    let report = report(&shape.surface());
+    assert_eq!(
+        report.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::Open)
+    );
     assert_eq!(report.open_edges.count, 4);
     assert_eq!(
         report.non_planar_faces,
@@ -87,8 +103,11 @@ fn many_problems_list_the_lowest_few() {
         .collect();
     let mut sizes = shape.face_sizes.clone();
     sizes.resize(16, 2);
-    let report = polymass::check(&Surface::polygons(&shape.positions, &indices, &sizes)).unwrap();
-    assert_eq!(report.error.unwrap().kind(), ErrorKind::FaceTooSmall);
+    let report = report(&Surface::polygons(&shape.positions, &indices, &sizes));
+    assert_eq!(
+        report.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::FaceTooSmall)
+    );
     assert_eq!(report.small_faces.count, 10);
     assert_eq!(
         report.small_faces.first,
@@ -98,8 +117,11 @@ fn many_problems_list_the_lowest_few() {
 
 #[test]
 fn an_inverted_solid_has_a_negative_signed_volume() {
-    let report = polymass::check(&corner_tetrahedron(1.0, 2.0, 3.0).reversed().surface()).unwrap();
-    assert_eq!(report.error.unwrap().kind(), ErrorKind::Inverted);
+    let report = report(&corner_tetrahedron(1.0, 2.0, 3.0).reversed().surface());
+    assert_eq!(
+        report.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::Inverted)
+    );
     assert_close(report.signed_volume.unwrap(), -1.0, "signed volume");
 }
 
@@ -107,26 +129,30 @@ fn an_inverted_solid_has_a_negative_signed_volume() {
 fn a_call_that_cannot_be_made_is_an_err_not_a_report() {
     let shape = cuboid([0.0; 3], [1.0; 3]);
     let short_sizes = &shape.face_sizes[..5]; // 20 of the 24 indices
-    let error = polymass::check(&Surface::polygons(
-        &shape.positions,
-        &shape.indices,
-        short_sizes,
-    ))
-    .unwrap_err();
+    let surface = Surface::polygons(&shape.positions, &shape.indices, short_sizes);
+    let error = Mesh::new(&surface, &Options::new()).unwrap_err();
     assert_eq!(error.kind(), ErrorKind::InvalidArgument, "{error}");
     assert!(error.to_string().contains("add up to"), "{error}");
 }
 
+/// The report is of the analysis the options asked for: checks skipped by
+/// name are not run, and it says which ran.
 #[test]
-fn checks_run_even_when_the_options_skip_them() {
+fn checks_the_options_skip_are_not_run() {
     let shape = one_face_flipped();
-    let mut context = Context::with_options(&Options::new().skip_topology_checks(true)).unwrap();
-    let report = context.check(&shape.surface()).unwrap();
+    let checked = report(&shape.surface());
     assert_eq!(
-        report.error.unwrap().kind(),
-        ErrorKind::InconsistentOrientation
+        checked.error.as_ref().map(|e| e.kind()),
+        Some(ErrorKind::InconsistentOrientation)
     );
-    assert_eq!(report.misoriented_edges.count, 3);
+    assert_eq!(checked.misoriented_edges.count, 3);
+    assert!(checked.checks.contains(Checks::TOPOLOGY));
+    let trusting = Options::new().skip_topology_checks(true);
+    let mesh = Mesh::new(&shape.surface(), &trusting).unwrap();
+    let skipped = mesh.diagnostics().unwrap();
+    assert!(skipped.checks.is_empty(), "{:?}", skipped.checks);
+    assert_eq!(skipped.misoriented_edges, Occurrences::default());
+    assert!(mesh.status().is_ok());
 }
 
 fn one_face_flipped() -> Shape {
@@ -138,10 +164,13 @@ fn one_face_flipped() -> Shape {
 #[test]
 fn shells_need_indices_in_range() {
     let positions = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
-    let error = Context::new()
-        .unwrap()
-        .shells(&Surface::triangles(&positions, &[[0u32, 1, 2], [0, 1, 7]]))
-        .unwrap_err();
+    let surface = Surface::triangles(&positions, &[[0u32, 1, 2], [0, 1, 7]]);
+    let mesh = Mesh::new(&surface, &Options::new()).unwrap();
+    let error = mesh.shell_of_face().unwrap_err();
     assert_eq!(error.kind(), ErrorKind::IndexOutOfRange, "{error}");
     assert!(error.to_string().contains("face 1"), "{error}");
+    assert_eq!(mesh.status(), Err(error));
+    let report = mesh.diagnostics().unwrap();
+    assert_eq!(report.out_of_range_indices.first, vec![1]);
+    assert_eq!(report.shell_count, 0);
 }

@@ -4,7 +4,7 @@
 mod common;
 
 use common::*;
-use polymass::Body;
+use polymass::{Body, Options};
 
 #[test]
 fn bounds_contain_the_error() {
@@ -24,9 +24,12 @@ fn bounds_contain_the_error() {
     ];
     for (shape, exact) in &cases {
         for offset in [[0.0; 3], [1e6, -1e6, 1e6], [1e8, 1e8, -1e8]] {
-            let p =
-                polymass::mass_properties(&shape.translated(offset).surface(), &Body::default())
-                    .unwrap();
+            let p = polymass::mass_properties(
+                &shape.translated(offset).surface(),
+                &Options::new(),
+                &Body::default(),
+            )
+            .unwrap();
             let e = translate_exact(exact, offset);
             let bound = p.error_bound;
             // The closed forms are rounded: half an ulp of slack.

@@ -4,12 +4,12 @@
 mod common;
 
 use common::*;
-use polymass::{Body, Context, ErrorKind, Options, Surface};
+use polymass::{Body, ErrorKind, Mesh, Options, Surface};
 
 /// Computes `shape` as `body` and checks the failure's kind and that its
 /// message names what is wrong.
 fn assert_fails(shape: &Shape, body: &Body, kind: ErrorKind, words: &[&str]) {
-    let error = polymass::mass_properties(&shape.surface(), body).unwrap_err();
+    let error = polymass::mass_properties(&shape.surface(), &Options::new(), body).unwrap_err();
     assert_eq!(error.kind(), kind, "{error}");
     assert_eq!(error.code(), kind.code());
     for word in words {
@@ -51,47 +51,62 @@ fn invalid_density_mass_and_face_sizes() {
         ErrorKind::InvalidArgument,
         &["mass"],
     );
-    let point = Body::default().about([f64::INFINITY, 0.0, 0.0]);
-    assert_fails(
-        &tetrahedron(),
-        &point,
-        ErrorKind::InvalidArgument,
-        &["point"],
-    );
     let mut sizes_short = tetrahedron();
     sizes_short.face_sizes.pop();
     assert_fails(&sizes_short, &unit, ErrorKind::InvalidArgument, &["face"]);
 }
 
 #[test]
-fn polygons_without_face_sizes_are_not_taken_for_triangles() {
-    let shape = tetrahedron();
-    let surface = Surface::polygons(&shape.positions, &shape.indices, &[]);
-    let error = polymass::mass_properties(&surface, &Body::default()).unwrap_err();
-    assert_eq!(error.kind(), ErrorKind::InvalidArgument, "{error}");
+fn inertia_about_a_point_that_is_not_finite() {
+    let p = polymass::mass_properties(&tetrahedron().surface(), &Options::new(), &Body::default())
+        .unwrap();
+    for point in [[f64::INFINITY, 0.0, 0.0], [0.0, f64::NAN, 0.0]] {
+        let error = p.inertia_about(point).unwrap_err();
+        assert_eq!(error.kind(), ErrorKind::InvalidArgument, "{error}");
+    }
+    let huge = p.inertia_about([1e300, 0.0, 0.0]).unwrap_err();
+    assert_eq!(huge.kind(), ErrorKind::Overflow, "{huge}");
 }
 
 #[test]
-fn invalid_options_are_refused_and_the_old_ones_kept() {
-    let mut context = Context::with_options(&Options::new().accept_inverted(true)).unwrap();
+fn polygons_without_face_sizes_are_not_taken_for_triangles() {
+    let shape = tetrahedron();
+    let surface = Surface::polygons(&shape.positions, &shape.indices, &[]);
+    let error = polymass::mass_properties(&surface, &Options::new(), &Body::default()).unwrap_err();
+    assert_eq!(error.kind(), ErrorKind::InvalidArgument, "{error}");
+}
+
+/// Options are checked by the call they are given to, each call alike.
+#[test]
+fn invalid_options_are_refused_by_every_call_that_takes_them() {
+    let shape = tetrahedron();
+    let surface = shape.surface();
+    let body = Body::default();
     for (options, word) in [
         (
-            Options::new().planarity_tolerance(-1.0),
+            Options::new().with_planarity_tolerance(-1.0),
             "planarity_tolerance",
         ),
         (
-            Options::new().planarity_tolerance(f64::NAN),
+            Options::new().with_planarity_tolerance(f64::NAN),
             "planarity_tolerance",
         ),
         (
-            Options::new().weld_vertices(true).weld_tolerance(0.1),
+            Options::new().weld_vertices(true).with_weld_tolerance(0.1),
             "weld_tolerance",
         ),
     ] {
-        let error = context.set_options(&options).unwrap_err();
-        assert_eq!(error.kind(), ErrorKind::InvalidArgument);
-        assert!(error.message().contains(word), "{error}");
-        assert!(context.options().unwrap().accepts_inverted());
+        let errors = [
+            polymass::mass_properties(&surface, &options, &body).unwrap_err(),
+            Mesh::new(&surface, &options).unwrap_err(),
+            polymass::batch(&[(surface, options, body)]).unwrap()[0]
+                .clone()
+                .unwrap_err(),
+        ];
+        for error in errors {
+            assert_eq!(error.kind(), ErrorKind::InvalidArgument, "{error}");
+            assert!(error.message().contains(word), "{error}");
+        }
     }
 }
 

@@ -6,7 +6,7 @@
 mod common;
 
 use common::*;
-use polymass::Body;
+use polymass::{Body, Options};
 
 const OFFSETS: [[f64; 3]; 4] = [
     [1e6, 1e6, 1e6],
@@ -17,8 +17,12 @@ const OFFSETS: [[f64; 3]; 4] = [
 
 fn check_far(shape: &Shape, exact: &Exact, what: &str) {
     for offset in OFFSETS {
-        let p = polymass::mass_properties(&shape.translated(offset).surface(), &Body::default())
-            .unwrap();
+        let p = polymass::mass_properties(
+            &shape.translated(offset).surface(),
+            &Options::new(),
+            &Body::default(),
+        )
+        .unwrap();
         assert_matches(
             &p,
             &translate_exact(exact, offset),
@@ -71,6 +75,7 @@ fn inertia_about_the_origin_follows_the_parallel_axis_theorem() {
     let offset = [1e6, 2e6, 3e6];
     let p = polymass::mass_properties(
         &cuboid([0.0; 3], [1.0; 3]).translated(offset).surface(),
+        &Options::new(),
         &Body::default(),
     )
     .unwrap();

@@ -4,7 +4,15 @@
 mod common;
 
 use common::*;
-use polymass::{Body, Context, ErrorKind, Moments};
+use polymass::{Body, Context, ErrorKind, Mesh, Moments, Options};
+
+/// The moments of a shape's solid, from one analysis with the defaults.
+fn moments(shape: &Shape) -> Moments {
+    Mesh::new(&shape.surface(), &Options::new())
+        .unwrap()
+        .moments()
+        .unwrap()
+}
 
 const IDENTITY: Matrix = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
@@ -27,8 +35,7 @@ fn parts_add_up_far_from_the_origin() {
     for offset in [[3.0, 0.0, 0.0], [1e6, 1e6, 0.0], [1e8, -1e8, 1e8]] {
         let block = cuboid([0.0; 3], [2.0, 1.0, 0.5]);
         let tetra = corner_tetrahedron(1.0, 2.0, 0.75).translated(offset);
-        let sum = (Moments::of(&block.surface()).unwrap() + Moments::of(&tetra.surface()).unwrap())
-            .unwrap();
+        let sum = (moments(&block) + moments(&tetra)).unwrap();
         let exact = combine(
             &cuboid_exact([0.0; 3], [2.0, 1.0, 0.5]),
             &translate_exact(&corner_tetrahedron_exact(1.0, 2.0, 0.75), offset),
@@ -45,8 +52,8 @@ fn parts_add_up_far_from_the_origin() {
 
 #[test]
 fn bore_removed_from_block() {
-    let block = Moments::of(&cuboid([0.0; 3], [4.0, 2.0, 2.0]).surface()).unwrap();
-    let bore = Moments::of(&cuboid([1.0, 0.5, 0.0], [2.0, 1.5, 2.0]).surface()).unwrap();
+    let block = moments(&cuboid([0.0; 3], [4.0, 2.0, 2.0]));
+    let bore = moments(&cuboid([1.0, 0.5, 0.0], [2.0, 1.5, 2.0]));
     let exact = combine(
         &cuboid_exact([0.0; 3], [4.0, 2.0, 2.0]),
         &cuboid_exact([1.0, 0.5, 0.0], [2.0, 1.5, 2.0]),
@@ -68,10 +75,7 @@ fn moved_moments_are_the_moved_solid() {
     let shape = triangular_prism(1.5, 0.75, 2.0);
     let exact = triangular_prism_exact(1.5, 0.75, 2.0);
     for offset in [[0.0; 3], [1e6, 0.0, -1e6], [1e8, 1e8, 1e8]] {
-        let moved = Moments::of(&shape.surface())
-            .unwrap()
-            .transformed(&rotation, offset)
-            .unwrap();
+        let moved = moments(&shape).transformed(&rotation, offset).unwrap();
         let expected = translate_exact(&rotate_exact(&exact, &rotation), offset);
         assert_body(
             &moved.mass_properties(None).unwrap(),
@@ -80,10 +84,7 @@ fn moved_moments_are_the_moved_solid() {
         );
     }
     let mirror = [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    let mirrored = Moments::of(&shape.surface())
-        .unwrap()
-        .transformed(&mirror, [0.0; 3])
-        .unwrap();
+    let mirrored = moments(&shape).transformed(&mirror, [0.0; 3]).unwrap();
     assert_body(
         &mirrored.mass_properties(None).unwrap(),
         &rotate_exact(&exact, &mirror),
@@ -95,7 +96,7 @@ fn moved_moments_are_the_moved_solid() {
 
 #[test]
 fn weighted_parts_and_sums_chain() {
-    let a = Moments::of(&cuboid([0.0; 3], [1.0; 3]).surface()).unwrap();
+    let a = moments(&cuboid([0.0; 3], [1.0; 3]));
     let b = a.transformed(&IDENTITY, [2.0, 0.0, 0.0]).unwrap();
     let c = a.transformed(&IDENTITY, [4.0, 0.0, 0.0]).unwrap();
     let total =
@@ -120,10 +121,19 @@ fn face_ranges_add_up() {
     let shape = corner_tetrahedron(1.0, 2.0, 0.75).translated([1e6, 0.0, 0.0]);
     let surface = shape.surface();
     let mut context = Context::new().unwrap();
-    let whole = context.moments(&surface).unwrap();
+    let whole = context
+        .mesh(&surface, &Options::new())
+        .unwrap()
+        .moments()
+        .unwrap();
     let at = whole.reference();
-    let first = context.moments_of_faces(&surface, 0..2, at).unwrap();
-    let rest = context.moments_of_faces(&surface, 2..4, at).unwrap();
+    let options = Options::new();
+    let first = context
+        .moments_of_faces(&surface, 0..2, at, &options)
+        .unwrap();
+    let rest = context
+        .moments_of_faces(&surface, 2..4, at, &options)
+        .unwrap();
     let sum = (first + rest).unwrap();
     assert!(sum.is_partial());
     assert!(sum.mass_properties(None).is_err());

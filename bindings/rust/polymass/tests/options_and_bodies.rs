@@ -1,11 +1,11 @@
 //! What Options accept (welding, trusted input, inverted and non-manifold
-//! solids) and what Body changes (density or mass, reference point), each
-//! against exact values.
+//! solids), that they hold for their call alone, what Body changes (density
+//! or mass) and the inertia about any point, each against exact values.
 
 mod common;
 
 use common::*;
-use polymass::{Body, Context, ErrorKind, Mesh, Options, Surface, Warnings};
+use polymass::{Body, Context, ErrorKind, Mesh, Options, Positions, Surface, Warnings};
 
 /// The shape as an STL-style soup: three fresh vertices per triangle.
 fn soup(shape: &Shape) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
@@ -25,11 +25,21 @@ fn soup(shape: &Shape) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
 fn welding_closes_a_triangle_soup() {
     let (positions, triangles) = soup(&cuboid([0.0; 3], [1.0, 2.0, 3.0]));
     let surface = Surface::triangles(&positions, &triangles);
-    let open = polymass::mass_properties(&surface, &Body::default()).unwrap_err();
+    let open = polymass::mass_properties(&surface, &Options::new(), &Body::default()).unwrap_err();
     assert_eq!(open.kind(), ErrorKind::Open);
-    let mut context = Context::with_options(&Options::new().weld_vertices(true)).unwrap();
-    let p = context.mass_properties(&surface, &Body::default()).unwrap();
+    let welding = Options::new().weld_vertices(true);
+    let p = polymass::mass_properties(&surface, &welding, &Body::default()).unwrap();
     assert_matches(&p, &cuboid_exact([0.0; 3], [1.0, 2.0, 3.0]), "welded soup");
+    // Welded by the caller first, the indexed solid is the same.
+    let weld = polymass::weld_positions(Positions::packed(&positions), 0.0).unwrap();
+    assert_eq!(weld.distinct_count, 8);
+    let indexed: Vec<[u32; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|i| weld.vertex_of[i as usize]))
+        .collect();
+    let welded = Surface::triangles(&positions, &indexed);
+    let q = polymass::mass_properties(&welded, &Options::new(), &Body::default()).unwrap();
+    assert_same_body(&p, &q, "welded by the caller");
 }
 
 #[test]
@@ -41,27 +51,31 @@ fn weld_tolerance_closes_a_soup_with_rounding_noise() {
     }
     let surface = Surface::triangles(&positions, &triangles);
     let exact_only = Options::new().weld_vertices(true);
-    let error = Context::with_options(&exact_only)
-        .unwrap()
-        .mass_properties(&surface, &Body::default());
+    let error = polymass::mass_properties(&surface, &exact_only, &Body::default());
     assert_eq!(error.unwrap_err().kind(), ErrorKind::Open);
-    let tolerant = exact_only.weld_tolerance(1e-9);
-    let p = Context::with_options(&tolerant)
-        .unwrap()
-        .mass_properties(&surface, &Body::default())
-        .unwrap();
+    let tolerant = exact_only.with_weld_tolerance(1e-9);
+    let p = polymass::mass_properties(&surface, &tolerant, &Body::default()).unwrap();
     assert!((p.volume - 1.0).abs() < 1e-13, "volume {}", p.volume);
+    // Welding alone finds the eight corners with the tolerance, not without.
+    let near = polymass::weld_positions(Positions::packed(&positions), 1e-9).unwrap();
+    assert_eq!(near.distinct_count, 8);
+    let exact = polymass::weld_positions(Positions::packed(&positions), 0.0).unwrap();
+    assert!(exact.distinct_count > 8);
 }
 
 #[test]
 fn skipping_the_checks_is_reported() {
     let shape = cuboid([0.0; 3], [1.0; 3]);
     let trusted = Options::new().skip_topology_checks(true);
-    let p = Mesh::with_options(&shape.surface(), &trusted)
+    let p = Mesh::new(&shape.surface(), &trusted)
         .unwrap()
         .mass_properties(&Body::default())
         .unwrap();
-    assert_eq!(p.warnings, Warnings::UNCHECKED);
+    // Skipping the topology checks skips the intersection check with them.
+    assert_eq!(
+        p.warnings,
+        Warnings::UNCHECKED | Warnings::INTERSECTIONS_UNCHECKED
+    );
     assert_close(p.volume, 1.0, "volume");
 }
 
@@ -69,10 +83,7 @@ fn skipping_the_checks_is_reported() {
 fn an_accepted_inverted_solid_is_turned() {
     let shape = corner_tetrahedron(1.0, 2.0, 3.0).reversed();
     let options = Options::new().accept_inverted(true);
-    let p = Context::with_options(&options)
-        .unwrap()
-        .mass_properties(&shape.surface(), &Body::default())
-        .unwrap();
+    let p = polymass::mass_properties(&shape.surface(), &options, &Body::default()).unwrap();
     assert_eq!(p.warnings, Warnings::INVERTED);
     let exact = corner_tetrahedron_exact(1.0, 2.0, 3.0);
     assert_close(p.volume, exact.volume, "volume");
@@ -83,10 +94,7 @@ fn an_accepted_inverted_solid_is_turned() {
 fn balanced_non_manifold_edges_can_be_accepted() {
     let shape = tetrahedra_sharing_an_edge();
     let options = Options::new().accept_non_manifold(true);
-    let p = Context::with_options(&options)
-        .unwrap()
-        .mass_properties(&shape.surface(), &Body::default())
-        .unwrap();
+    let p = polymass::mass_properties(&shape.surface(), &options, &Body::default()).unwrap();
     assert!(
         p.warnings.contains(Warnings::NON_MANIFOLD),
         "{:?}",
@@ -95,24 +103,45 @@ fn balanced_non_manifold_edges_can_be_accepted() {
     assert_close(p.volume, 2.0 / 6.0, "volume of two tetrahedra");
 }
 
+/// Options belong to the call they are given to: a context used with
+/// relaxed options checks the next call with that call's own.
 #[test]
-fn a_context_keeps_the_options_it_was_given() {
+fn options_hold_for_their_call_alone() {
+    let inverted = corner_tetrahedron(1.0, 2.0, 3.0).reversed();
+    let surface = inverted.surface();
+    let accepting = Options::new().accept_inverted(true);
+    let mut context = Context::new().unwrap();
+    let body = Body::default();
+    assert!(context.mass_properties(&surface, &accepting, &body).is_ok());
+    let refused = context
+        .mass_properties(&surface, &Options::new(), &body)
+        .unwrap_err();
+    assert_eq!(refused.kind(), ErrorKind::Inverted);
+    let accepted = context.mesh(&surface, &accepting).unwrap();
+    let checked = context.mesh(&surface, &Options::new()).unwrap();
+    assert!(accepted.status().is_ok());
+    assert_eq!(checked.status().unwrap_err().kind(), ErrorKind::Inverted);
     let options = Options::new()
         .weld_vertices(true)
         .accept_inverted(true)
         .skip_intersection_check(true)
-        .planarity_tolerance(1e-3)
-        .weld_tolerance(1e-9);
-    let mut context = Context::with_options(&options).unwrap();
-    assert_eq!(context.options().unwrap(), options);
-    let cleared = Options::new().planarity_tolerance(1e-3);
-    context.set_options(&cleared).unwrap();
-    assert_eq!(context.options().unwrap(), cleared);
+        .with_planarity_tolerance(1e-3)
+        .with_weld_tolerance(1e-9);
+    assert!(options.welds_vertices() && options.accepts_inverted());
+    assert!(options.skips_intersection_check() && !options.skips_topology_checks());
+    assert_eq!(
+        (options.planarity_tolerance(), options.weld_tolerance()),
+        (1e-3, 1e-9)
+    );
 }
 
 #[test]
 fn mass_mode_sets_the_mass_and_derives_the_density() {
-    let mesh = Mesh::new(&cuboid([0.0; 3], [1.0, 2.0, 4.0]).surface()).unwrap();
+    let mesh = Mesh::new(
+        &cuboid([0.0; 3], [1.0, 2.0, 4.0]).surface(),
+        &Options::new(),
+    )
+    .unwrap();
     let p = mesh.mass_properties(&Body::mass(3.0)).unwrap();
     assert_eq!(p.mass, 3.0);
     assert_close(p.density, 3.0 / 8.0, "density");
@@ -130,20 +159,27 @@ fn mass_mode_sets_the_mass_and_derives_the_density() {
 #[test]
 fn inertia_about_a_point_is_the_parallel_axis_transfer() {
     let exact = corner_tetrahedron_exact(1.0, 2.0, 3.0);
-    let mesh = Mesh::new(&corner_tetrahedron(1.0, 2.0, 3.0).surface()).unwrap();
+    let mesh = Mesh::new(
+        &corner_tetrahedron(1.0, 2.0, 3.0).surface(),
+        &Options::new(),
+    )
+    .unwrap();
     let point = [-1.5, 0.25, 4.0];
     let density = 2.5;
-    let p = mesh
-        .mass_properties(&Body::density(density).about(point))
-        .unwrap();
+    let p = mesh.mass_properties(&Body::density(density)).unwrap();
     let mass = density * exact.volume;
     let d: [f64; 3] = std::array::from_fn(|axis| exact.center_of_mass[axis] - point[axis]);
     let at_com = scaled(&exact.inertia, density);
     assert_matrix_close(&p.inertia, &at_com, "about the centre of mass");
     assert_matrix_close(
-        &p.inertia_point,
+        &p.inertia_about(point).unwrap(),
         &add(&at_com, &parallel_axis(mass, &d), 1.0),
         "about the point",
+    );
+    assert_matrix_close(
+        &p.inertia_about(p.center_of_mass).unwrap(),
+        &at_com,
+        "about the centre of mass",
     );
     let from_origin = add(&at_com, &parallel_axis(mass, &exact.center_of_mass), 1.0);
     assert_matrix_close(&p.inertia_origin, &from_origin, "about the origin");

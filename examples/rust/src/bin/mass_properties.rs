@@ -9,7 +9,7 @@
 
 use std::process::ExitCode;
 
-use polymass::{Body, MassProperties, Surface};
+use polymass::{Body, MassProperties, Options, Surface};
 
 /// The L profile, counter-clockwise seen from +z, at z = 0 (vertices 0-5) and
 /// at z = 0.02 (vertices 6-11).
@@ -49,7 +49,7 @@ const DENSITY: f64 = 2700.0;
 fn main() -> ExitCode {
     println!("libpolymass {}", polymass::version());
     let bracket = Surface::polygons(&POSITIONS, &INDICES, &FACE_SIZES);
-    match polymass::mass_properties(&bracket, &Body::density(DENSITY)) {
+    match polymass::mass_properties(&bracket, &Options::new(), &Body::density(DENSITY)) {
         Ok(properties) => {
             print_properties(&properties);
             ExitCode::SUCCESS

@@ -5,11 +5,12 @@
 //! Lengths are the file's (STL from CAD is usually in millimetres); DENSITY
 //! is in mass per length unit cubed (aluminium: 2.7e-6 kg/mm³), 1 by default.
 //! STL files are triangle soups, so vertices at equal positions are welded
-//! for the checks.
+//! for the checks. The file is analysed once: a surface that is refused is
+//! reported from the same analysis, every problem with its first locations.
 
 use std::process::ExitCode;
 
-use polymass::{Body, Context, Options, Surface};
+use polymass::{Body, Mesh, Options, Surface};
 use polymass_examples::binary_stl;
 
 fn main() -> ExitCode {
@@ -45,13 +46,13 @@ fn run(path: &str, density: f64) -> Result<(), String> {
     // by default, crossing faces too (parts that overlap would have their
     // common volume counted twice).
     let options = Options::new().weld_vertices(true);
-    let mut context = Context::with_options(&options).map_err(|error| error.to_string())?;
-    // On failure, the full report says everything that is wrong, not just the
-    // first problem.
-    let properties = match context.mass_properties(&surface, &Body::density(density)) {
+    let mesh = Mesh::new(&surface, &options).map_err(|error| error.to_string())?;
+    // On failure, the analysis's report says everything that is wrong, not
+    // just the first problem.
+    let properties = match mesh.mass_properties(&Body::density(density)) {
         Ok(properties) => properties,
         Err(error) => {
-            if let Ok(report) = context.check(&surface) {
+            if let Ok(report) = mesh.diagnostics() {
                 eprintln!("{report:#?}");
             }
             return Err(error.to_string());

@@ -394,3 +394,27 @@ pub fn assert_matches(actual: &polymass::MassProperties, exact: &Exact, what: &s
         actual.warnings
     );
 }
+
+/// Every quantity of two bodies equal to the last bit; the warnings aside.
+pub fn assert_same_body(a: &polymass::MassProperties, b: &polymass::MassProperties, what: &str) {
+    let scalars = |p: &polymass::MassProperties| {
+        let bound = p.error_bound;
+        [
+            p.volume,
+            p.mass,
+            p.density,
+            p.surface_area,
+            bound.volume,
+            bound.center_of_mass,
+            bound.inertia,
+            bound.principal_moments,
+            bound.principal_axes,
+        ]
+    };
+    assert_eq!(scalars(a), scalars(b), "{what}");
+    assert_eq!(a.center_of_mass, b.center_of_mass, "{what}");
+    assert_eq!(a.inertia, b.inertia, "{what}");
+    assert_eq!(a.inertia_origin, b.inertia_origin, "{what}");
+    assert_eq!(a.principal_moments, b.principal_moments, "{what}");
+    assert_eq!(a.principal_axes, b.principal_axes, "{what}");
+}

@@ -1,0 +1,246 @@
+// polymass_packed_compute: a dataset's many triangle meshes in shared arrays,
+// each answered as polymass_mass_properties_compute answers it alone (the
+// same reading of its surface, the same analysis, the same weighting), the
+// results written in columns. The set's arguments are checked once; a mesh's
+// own failure is its row's.
+#include <polymass/polymass.h>
+
+#include <atomic>
+#include <cstring>
+#include <limits>
+#include <memory_resource>
+#include <vector>
+
+#include "api_guard.hpp"
+#include "item_threads.hpp"
+#include "mass_properties.hpp"
+#include "mesh.hpp"
+#include "mesh_input.hpp"
+#include "struct_io.hpp"
+
+namespace polymass::capi {
+namespace {
+
+using u64 = unsigned long long;  // for printf
+
+// The set as checked: the caller's structs read, the stride resolved.
+struct PackedSet {
+    polymass_packed_meshes meshes;
+    polymass_packed_results results;
+    polymass_options options;
+    uint64_t position_stride = 0;
+    uint64_t index_bytes = 0;
+};
+
+// Each array of offsets: mesh_count + 1 of them, ascending from 0; the
+// indices' in steps of whole triangles.
+int32_t check_offsets(polymass_context* context, const uint64_t* offsets, uint64_t mesh_count,
+                      const char* name, uint64_t step) {
+    if (!offsets) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
+    if (offsets[0] != 0)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s[0] is %llu; offsets start at 0",
+                             name, u64(offsets[0]));
+    for (uint64_t i = 0; i < mesh_count; ++i) {
+        if (offsets[i + 1] < offsets[i])
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "%s[%llu] is %llu, less than %s[%llu] (%llu): offsets ascend",
+                                 name, u64(i + 1), u64(offsets[i + 1]), name, u64(i),
+                                 u64(offsets[i]));
+        if ((offsets[i + 1] - offsets[i]) % step != 0)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "mesh %llu has %llu indices (%s[%llu] - %s[%llu]), not a "
+                                 "multiple of 3: every face is a triangle",
+                                 u64(i), u64(offsets[i + 1] - offsets[i]), name, u64(i + 1), name,
+                                 u64(i));
+    }
+    return POLYMASS_OK;
+}
+
+// Everything about the set as a whole; `set` is written on success.
+int32_t read_set(polymass_context* context, const polymass_packed_results* results,
+                 const polymass_packed_meshes* meshes, const polymass_options* options,
+                 PackedSet& set) {
+    if (const int32_t status = check_struct(context, results, "results")) return status;
+    if (const int32_t status = check_struct(context, meshes, "meshes")) return status;
+    set.results = read_struct(*results, StructVersions<polymass_packed_results>::defaults());
+    set.meshes = read_struct(*meshes, StructVersions<polymass_packed_meshes>::defaults());
+    const polymass_packed_meshes& m = set.meshes;
+    if (set.results.reserved != 0 || m.reserved != 0)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s->reserved is %u; it must be 0",
+                             m.reserved ? "meshes" : "results",
+                             unsigned(m.reserved ? m.reserved : set.results.reserved));
+    if (m.index_base != POLYMASS_INDICES_LOCAL && m.index_base != POLYMASS_INDICES_GLOBAL)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "meshes->index_base %u is not POLYMASS_INDICES_LOCAL (0) or "
+                             "POLYMASS_INDICES_GLOBAL (1)",
+                             unsigned(m.index_base));
+    if (m.mass_mode != POLYMASS_MASS_FROM_DENSITY && m.mass_mode != POLYMASS_MASS_FROM_TOTAL)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "meshes->mass_mode %u is not POLYMASS_MASS_FROM_DENSITY (0) or "
+                             "POLYMASS_MASS_FROM_TOTAL (1)",
+                             unsigned(m.mass_mode));
+    if (m.index_type != POLYMASS_INDEX_UINT32 && m.index_type != POLYMASS_INDEX_UINT16)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "meshes->index_type %u is not POLYMASS_INDEX_UINT32 (0) or "
+                             "POLYMASS_INDEX_UINT16 (1)",
+                             unsigned(m.index_type));
+    if (const int32_t status = read_options(context, options, set.options)) return status;
+    // The arrays of offsets (mesh_count + 1 each) must be addressable.
+    if (m.mesh_count == UINT64_MAX || !span_fits(m.vertex_offsets, m.mesh_count + 1, 8, 8) ||
+        !span_fits(m.index_offsets, m.mesh_count + 1, 8, 8))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "mesh_count %llu is larger than any array can be", u64(m.mesh_count));
+    if (const int32_t status =
+            check_offsets(context, m.vertex_offsets, m.mesh_count, "vertex_offsets", 1))
+        return status;
+    if (const int32_t status =
+            check_offsets(context, m.index_offsets, m.mesh_count, "index_offsets", 3))
+        return status;
+    const uint64_t vertex_count = m.vertex_offsets[m.mesh_count];
+    const uint64_t index_count = m.index_offsets[m.mesh_count];
+    // The whole arrays, once: each mesh's are parts of them.
+    MeshInput whole;
+    if (const int32_t status = read_positions(context, m.positions, m.position_type, vertex_count,
+                                              m.position_stride, whole))
+        return status;
+    set.position_stride = whole.position_stride;
+    set.index_bytes = m.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    if (index_count > 0 && !m.indices)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "indices is NULL but index_offsets[%llu] is %llu", u64(m.mesh_count),
+                             u64(index_count));
+    if (!span_fits(m.indices, index_count, set.index_bytes, set.index_bytes))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "index_offsets[%llu] %llu is larger than any array can be",
+                             u64(m.mesh_count), u64(index_count));
+    // A mesh's first vertex is subtracted from its global indices in 32 bits.
+    if (m.index_base == POLYMASS_INDICES_GLOBAL && vertex_count > (uint64_t{1} << 32))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "POLYMASS_INDICES_GLOBAL over %llu vertices: 32-bit indices name "
+                             "at most 2^32",
+                             u64(vertex_count));
+    return POLYMASS_OK;
+}
+
+template <class Index>
+void rebase_as(const unsigned char* indices, std::size_t count, uint32_t first, uint32_t* out) {
+    for (std::size_t i = 0; i < count; ++i) {
+        Index index;
+        std::memcpy(&index, indices + i * sizeof index, sizeof index);
+        out[i] = uint32_t(index) - first;
+    }
+}
+
+// A mesh's global indices counted from its own first vertex instead, in
+// `local`, which the input then reads: the mesh is then read as a mesh of
+// its own (nothing of the packed array outside its part), at the cost of one
+// pass over its indices. In 32 bits, modulo 2^32: an index below `first`
+// wraps past every vertex of the mesh (read_set made first + vertex count at
+// most 2^32), so it is out of range as it should be; messages add `first`
+// back.
+void rebase(MeshInput& input, uint32_t first, std::pmr::vector<uint32_t>& local) {
+    local.resize(input.index_count);
+    if (input.index_type == POLYMASS_INDEX_UINT16)
+        rebase_as<uint16_t>(input.indices, input.index_count, first, local.data());
+    else
+        rebase_as<uint32_t>(input.indices, input.index_count, first, local.data());
+    input.index_type = POLYMASS_INDEX_UINT32;
+    input.indices = reinterpret_cast<const unsigned char*>(local.data());
+    input.index_base = first;
+}
+
+// Mesh i of the set, answered as polymass_mass_properties_compute answers a
+// mesh given alone (its surface read from a polymass_mesh_desc of its part of
+// the arrays); the status, with the message in the context.
+int32_t compute_mesh(const PackedSet& set, uint64_t i, polymass_context* context,
+                     polymass_mass_properties& out) {
+    const polymass_packed_meshes& m = set.meshes;
+    const uint64_t first_vertex = m.vertex_offsets[i], first_index = m.index_offsets[i];
+    // Mesh i's part of an array (whose span read_set checked; a null array
+    // has no part but the empty one at its start).
+    auto part = [](const void* array, uint64_t first, uint64_t bytes) {
+        return static_cast<const unsigned char*>(array) + first * bytes;
+    };
+    polymass_mesh_desc desc = StructVersions<polymass_mesh_desc>::defaults();
+    desc.position_type = m.position_type;
+    desc.positions = part(m.positions, first_vertex, set.position_stride);
+    desc.vertex_count = m.vertex_offsets[i + 1] - first_vertex;
+    desc.position_stride = set.position_stride;
+    desc.index_type = m.index_type;
+    desc.indices = part(m.indices, first_index, set.index_bytes);
+    desc.index_count = m.index_offsets[i + 1] - first_index;
+    MeshInput input;
+    if (const int32_t status = read_mesh_desc(context, &desc, input)) return status;
+    std::pmr::vector<uint32_t> rebased(&context->memory);
+    if (m.index_base == POLYMASS_INDICES_GLOBAL) rebase(input, uint32_t(first_vertex), rebased);
+    Answer answer;
+    if (const int32_t status = analyse_surface(context, input, set.options, answer, nullptr))
+        return status;
+    if (!m.mass_values) return mass_properties(&out, context, answer.body, nullptr);
+    polymass_mass_desc mass = StructVersions<polymass_mass_desc>::defaults();
+    mass.mass_mode = m.mass_mode;
+    (m.mass_mode == POLYMASS_MASS_FROM_TOTAL ? mass.mass : mass.density) = m.mass_values[i];
+    return mass_properties(&out, context, answer.body, &mass);
+}
+
+// Row i of each wanted column: the properties, or the status and NaN.
+void write_row(const polymass_packed_results& results, uint64_t i, int32_t status,
+               const polymass_mass_properties& properties, const char* message) {
+    const bool answered = status == POLYMASS_OK;
+    auto put = [&](double* column, const double* values, std::size_t count) {
+        if (!column) return;
+        for (std::size_t k = 0; k < count; ++k)
+            column[i * count + k] = answered ? values[k] : std::numeric_limits<double>::quiet_NaN();
+    };
+    if (results.status) results.status[i] = status;
+    if (results.warnings) results.warnings[i] = answered ? properties.warnings : 0;
+    put(results.volume, &properties.volume, 1);
+    put(results.mass, &properties.mass, 1);
+    put(results.surface_area, &properties.surface_area, 1);
+    put(results.center_of_mass, properties.center_of_mass, 3);
+    put(results.inertia, properties.inertia, 9);
+    put(results.principal_moments, properties.principal_moments, 3);
+    put(results.principal_axes, properties.principal_axes, 9);
+    put(results.error_bound_volume, &properties.error_bound_volume, 1);
+    put(results.error_bound_center_of_mass, &properties.error_bound_center_of_mass, 1);
+    put(results.error_bound_inertia, &properties.error_bound_inertia, 1);
+    if (results.messages) {
+        char* row = results.messages + i * POLYMASS_BATCH_MESSAGE_SIZE;
+        std::strncpy(row, answered ? "" : message, POLYMASS_BATCH_MESSAGE_SIZE - 1);
+        row[POLYMASS_BATCH_MESSAGE_SIZE - 1] = '\0';
+    }
+}
+
+}  // namespace
+}  // namespace polymass::capi
+
+using namespace polymass::capi;
+
+extern "C" {
+
+POLYMASS_API int32_t polymass_packed_compute(const polymass_packed_results* results,
+                                             uint64_t* out_failed, polymass_context* context,
+                                             const polymass_packed_meshes* meshes,
+                                             const polymass_options* options) {
+    return guarded(context, [&] {
+        if (out_failed) *out_failed = 0;
+        PackedSet set;
+        if (const int32_t status = read_set(context, results, meshes, options, set)) return status;
+        std::atomic<uint64_t> failed{0};
+        for_each_item(context, set.meshes.mesh_count, [&](uint64_t i, polymass_context* own) {
+            polymass_mass_properties properties =
+                StructVersions<polymass_mass_properties>::defaults();
+            // Each mesh guarded on its own: running out of memory on one
+            // fails that mesh only.
+            const int32_t status =
+                guarded(own, [&] { return compute_mesh(set, i, own, properties); });
+            write_row(set.results, i, status, properties, own->message);
+            if (status != POLYMASS_OK) failed.fetch_add(1, std::memory_order_relaxed);
+        });
+        context->clear_message();
+        if (out_failed) *out_failed = failed;
+        return int32_t(POLYMASS_OK);
+    });
+}
+
+}  // extern "C"
