@@ -8,6 +8,7 @@
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
 #include "library/solid_moments.hpp"
+#include "library/surface_analysis.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/provenance.hpp"
 
@@ -125,45 +126,35 @@ polymass_moments mujoco_ellipsoid_surface(const Eigen::Vector3d& radii) {
     return centred_moments(area, second);
 }
 
-// A mesh as the library's modes answer it, first answer first (docs/repair.md),
-// at unit density (a sheet: unit area density). Its moments are written
-// about its centre of mass from the mass properties: there the first
-// moments vanish and the second ones are S = tr(I)/2 * 1 - I, since
-// I = tr(S) * 1 - S. The message says what was done and how far off it can
-// be (or, when no mode answers, why).
+// A mesh as the library's chain of modes answers it, first answer first
+// (docs/repair.md), in one analysis, at unit density (a sheet: unit area
+// density). When the body is not the exact solid, the message says what was
+// done and how far off it can be; when no mode answers, why each did not.
+// diagnostics: the surface's own verdict as a solid.
 Measured measured_by_modes(const Library& library, polymass_options options, const Model& model,
-                           const std::vector<uint32_t>& modes) {
+                           const std::vector<uint32_t>& modes, polymass_diagnostics& diagnostics) {
     std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
     std::copy(modes.begin(), modes.end(), std::begin(options.modes));
     options.shell_thickness = 1.0;
-    const Part whole = combined_part(model);  // describe() points into it
-    const polymass_mesh_desc desc = describe(model, whole);
-    polymass_mass_properties p{};
-    polymass_mass_properties_init(&p, sizeof p);
-    polymass_provenance provenance{};
-    polymass_provenance_init(&provenance, sizeof provenance);
+    const SurfaceAnalysis analysis(library, model, combined_part(model), options);
+    diagnostics = analysis.diagnostics();
     Measured measured;
-    const int32_t status = polymass_mass_properties_with_provenance(
-        &p, &provenance, library.context(), &desc, nullptr, &options);
-    if (status != POLYMASS_OK) {
-        measured.message = "not measured: " + library.message();
+    if (!analysis.valid()) {
+        measured.message = "not measured: " + analysis.failure().message;
+        return measured;
+    }
+    polymass_mass_desc unit{};
+    polymass_mass_desc_init(&unit, sizeof unit);
+    const SolidResult answer = analysis.properties(library, unit);
+    if (answer.status != POLYMASS_OK) {
+        measured.message = "not measured: " + answer.message;
         return measured;
     }
     measured.ok = true;
-    polymass_moments_init(&measured.moments, sizeof measured.moments);
-    measured.moments.volume = p.volume;
-    measured.moments.mass = p.mass;
-    const double half_trace = (p.inertia[0] + p.inertia[4] + p.inertia[8]) / 2;
-    const double second[6] = {half_trace - p.inertia[0],
-                              half_trace - p.inertia[4],
-                              half_trace - p.inertia[8],
-                              -p.inertia[1],
-                              -p.inertia[5],
-                              -p.inertia[2]};
-    for (int k = 0; k < 3; ++k) measured.moments.reference[k] = p.center_of_mass[k];
-    for (int k = 0; k < 6; ++k) measured.moments.second[k] = second[k];
-    measured.message =
-        provenance_text(provenance) + " (off by at most " + error_bound_text(p) + ")";
+    measured.moments = analysis.moments(library);
+    if (answer.provenance.mode != POLYMASS_MODE_SOLID)
+        measured.message = provenance_text(answer.provenance) + " (off by at most " +
+                           error_bound_text(answer.properties) + ")";
     return measured;
 }
 
@@ -199,25 +190,25 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
         }
     }
     Measured measured;
+    polymass_diagnostics diagnostics{};
     if (body != MeshBody::kSolid) {
         measured = measured_by_modes(library, options, model,
                                      {body == MeshBody::kHull ? uint32_t(POLYMASS_MODE_HULL)
-                                                              : uint32_t(POLYMASS_MODE_SHELL)});
+                                                              : uint32_t(POLYMASS_MODE_SHELL)},
+                                     diagnostics);
         if (!measured.ok) return failure("bad_geometry", path + ": " + measured.message);
         measured.message.clear();  // the body asked for, exact: nothing to report
-    } else if (const IntegratedSolid solid(library, model, combined_part(model), options);
-               solid.valid()) {
-        measured.moments = solid.moments(library);
     } else {
-        const SolidResult why = solid.failure();
-        const std::string not_a_solid = path + ": " + category_of(why.status) + ": " + why.message;
-        measured =
-            measured_by_modes(library, options, model, {POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL});
-        if (!measured.ok) {
-            return failure("not_a_solid", not_a_solid + "; " + measured.message);
+        // The solid, else the surface repaired, else its hull.
+        measured = measured_by_modes(
+            library, options, model,
+            {POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL}, diagnostics);
+        const std::string not_a_solid = path + ": " + category_of(diagnostics.status);
+        if (!measured.ok) return failure("not_a_solid", not_a_solid + "; " + measured.message);
+        if (!measured.message.empty()) {
+            measured.kind = "approximated_geometry";
+            measured.message = not_a_solid + "; measured as " + measured.message;
         }
-        measured.kind = "approximated_geometry";
-        measured.message = not_a_solid + "; measured as " + measured.message;
     }
     measured.ok = true;
     for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
