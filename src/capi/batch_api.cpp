@@ -17,8 +17,8 @@ namespace {
 // The item's result is the single call's, so it is bit for bit the same; the
 // context's message is copied into the item before the next item replaces it.
 void compute_item(polymass_batch_item& item, polymass_context* context) {
-    const int32_t status = polymass_mass_properties_compute_with_options(
-        item.properties, context, item.desc, item.mass, item.options);
+    const int32_t status = polymass_mass_properties_compute(
+        item.properties, item.provenance, context, item.desc, item.options, item.mass);
     item.status = status;
     std::strncpy(item.message, polymass_context_message(context), sizeof item.message - 1);
     item.message[sizeof item.message - 1] = '\0';
@@ -27,12 +27,6 @@ void compute_item(polymass_batch_item& item, polymass_context* context) {
 }  // namespace
 
 extern "C" {
-
-POLYMASS_API uint32_t polymass_sizeof_batch_item(void) { return sizeof(polymass_batch_item); }
-
-POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_t struct_size) {
-    return init_struct(item, struct_size, StructVersions<polymass_batch_item>::defaults());
-}
 
 POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t item_count,
                                             uint64_t* out_failed, polymass_context* context) {
@@ -57,8 +51,7 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
         auto item = [&](uint64_t i) -> polymass_batch_item& {
             return *reinterpret_cast<polymass_batch_item*>(bytes + i * stride);
         };
-        const std::size_t threads =
-            std::min<uint64_t>(std::max<uint32_t>(context->options.threads, 1), item_count);
+        const std::size_t threads = std::min<uint64_t>(context->threads(), item_count);
         if (threads == 1) {
             for (uint64_t i = 0; i < item_count; ++i) compute_item(item(i), context);
         } else {
@@ -66,7 +59,7 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
             // through its own context: the results do not depend on which.
             for (std::size_t thread = 0; thread < threads; ++thread) context->batch_context(thread);
             std::atomic<uint64_t> next{0};
-            context->tasks(context->options).run(threads, [&](std::size_t thread) {
+            context->tasks().run(threads, [&](std::size_t thread) {
                 polymass_context* own = context->batch_context(thread);
                 for (uint64_t i = next++; i < item_count; i = next++) compute_item(item(i), own);
             });

@@ -36,12 +36,20 @@ void HookMemoryResource::do_deallocate(void* pointer, std::size_t, std::size_t) 
 }
 
 polymass_allocator allocator_or_default(const polymass_allocator* allocator) {
-    if (allocator) return *allocator;
-    return {default_allocate, default_deallocate, nullptr};
+    polymass_allocator malloc_backed = StructVersions<polymass_allocator>::defaults();
+    if (allocator && allocator->allocate) return read_struct(*allocator, malloc_backed);
+    malloc_backed.allocate = default_allocate;
+    malloc_backed.deallocate = default_deallocate;
+    return malloc_backed;
 }
 
 int32_t read_options(polymass_context* context, const polymass_options* options,
                      polymass_options& out) {
+    if (!options) {
+        out = StructVersions<polymass_options>::defaults();
+        out.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
+        return POLYMASS_OK;
+    }
     if (const int32_t status = check_struct(context, options, "options")) return status;
     const polymass_options read =
         read_struct(*options, StructVersions<polymass_options>::defaults());
@@ -81,23 +89,9 @@ int32_t read_options(polymass_context* context, const polymass_options* options,
                              "options->shell_thickness is %g; it must be finite, and positive "
                              "when the modes hold POLYMASS_MODE_SHELL",
                              thickness);
-    if (read.threads > POLYMASS_MAX_THREADS)
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "options->threads is %u; it must be at most %u (0 selects the "
-                             "default, 1)",
-                             unsigned(read.threads), unsigned(POLYMASS_MAX_THREADS));
     out = read;
     if (tolerance == 0.0) out.planarity_tolerance = POLYMASS_DEFAULT_PLANARITY_TOLERANCE;
     return POLYMASS_OK;
-}
-
-int32_t call_options(polymass_context* context, const polymass_options* options,
-                     polymass_options& out) {
-    if (!options) {
-        out = context->options;
-        return POLYMASS_OK;
-    }
-    return read_options(context, options, out);
 }
 
 }  // namespace polymass::capi
@@ -106,12 +100,11 @@ polymass_context::~polymass_context() {
     for (polymass_context* batch : batch_contexts) polymass::capi::destroy_object(batch);
 }
 
-polymass::core::TaskRunner& polymass_context::tasks(const polymass_options& call_options) {
-    const std::size_t threads = serial_only_ ? 1 : std::max<uint32_t>(call_options.threads, 1);
-    if (threads == 1) return serial_;
-    if (!workers_ || workers_->thread_count() != threads) {
+polymass::core::TaskRunner& polymass_context::tasks() {
+    if (threads() == 1) return serial_;
+    if (!workers_ || workers_->thread_count() != threads()) {
         workers_.reset();
-        workers_.emplace(threads, &hook_memory);
+        workers_.emplace(threads(), &hook_memory);
     }
     return *workers_;
 }
@@ -132,9 +125,7 @@ polymass_context* polymass_context::batch_context(std::size_t thread) {
         batch->set_scratch_limit(scratch_limit_);
         batch_contexts.push_back(batch);
     }
-    polymass_context* batch = batch_contexts[thread];
-    batch->options = options;
-    return batch;
+    return batch_contexts[thread];
 }
 
 int32_t polymass_context::fail(int32_t status, const char* format, ...) {
@@ -153,7 +144,9 @@ POLYMASS_API int32_t polymass_context_create(polymass_context** out_context,
                                              const polymass_allocator* allocator) {
     if (!out_context) return POLYMASS_ERROR_INVALID_ARGUMENT;
     *out_context = nullptr;
-    if (allocator && (!allocator->allocate || !allocator->deallocate))
+    // No context yet to hold a message: a wrong allocator is only a status.
+    if (allocator && (!is_known_size<polymass_allocator>(allocator->struct_size) ||
+                      allocator->reserved != 0 || !allocator->allocate != !allocator->deallocate))
         return POLYMASS_ERROR_INVALID_ARGUMENT;
     const polymass_allocator hook = allocator_or_default(allocator);
     *out_context = create_object<polymass_context>(hook, hook);
@@ -162,17 +155,14 @@ POLYMASS_API int32_t polymass_context_create(polymass_context** out_context,
 
 POLYMASS_API void polymass_context_destroy(polymass_context* context) { destroy_object(context); }
 
-POLYMASS_API int32_t polymass_context_set_options(polymass_context* context,
-                                                  const polymass_options* options) {
-    return guarded(context, [&] { return read_options(context, options, context->options); });
-}
-
-POLYMASS_API int32_t polymass_context_get_options(polymass_options* out_options,
-                                                  polymass_context* context) {
+POLYMASS_API int32_t polymass_context_set_threads(polymass_context* context, uint32_t threads) {
     return guarded(context, [&] {
-        if (const int32_t status = check_struct(context, out_options, "out_options")) return status;
-        write_struct(out_options, context->options);
-        return POLYMASS_OK;
+        if (threads < 1 || threads > POLYMASS_MAX_THREADS)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "threads is %u; it must be in [1, %u]", unsigned(threads),
+                                 unsigned(POLYMASS_MAX_THREADS));
+        context->set_threads(threads);
+        return int32_t(POLYMASS_OK);
     });
 }
 

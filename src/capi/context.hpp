@@ -1,6 +1,7 @@
-// The context behind polymass_context: options, the caller's allocator (as a
-// std::pmr::memory_resource for core/, keeping scratch blocks between calls),
-// the library's workers, and the last detailed error message.
+// The context behind polymass_context: what belongs to the caller - its
+// allocator (as a std::pmr::memory_resource for core/, keeping scratch blocks
+// between calls), the library's workers, and the last detailed error message.
+// Options are per call, never the context's.
 #pragma once
 
 #include <polymass/polymass.h>
@@ -56,15 +57,11 @@ void destroy_object(Object* object) {
     allocator.deallocate(allocator.user_data, object);
 }
 
-// Checks the caller's options and writes them, tolerances resolved (0: the
-// default), to `out`; or returns the status with the message in the context.
-// `out` is written only on success.
+// Checks the options of one call (NULL: the defaults, every check and SOLID
+// alone) and writes them, tolerances resolved (0: the default), to `out`; or
+// returns the status with the message in the context. `out` is written only
+// on success.
 int32_t read_options(polymass_context* context, const polymass_options* options,
-                     polymass_options& out);
-
-// The options of one call: the caller's (checked as by read_options) or, when
-// NULL, the context's.
-int32_t call_options(polymass_context* context, const polymass_options* options,
                      polymass_options& out);
 
 }  // namespace polymass::capi
@@ -83,17 +80,18 @@ struct polymass_context {
     polymass_allocator allocator;
     polymass::capi::HookMemoryResource hook_memory;
     polymass::capi::ScratchMemoryResource memory;  // what core/ allocates from
-    polymass_options options{
-        sizeof(polymass_options), 0, POLYMASS_DEFAULT_PLANARITY_TOLERANCE, 0.0, {}, 0.0, 0};
     char message[512] = "";
 
     void clear_message() { message[0] = '\0'; }
     // Formats the message and returns status, so that `return fail(...)` reads naturally.
     int32_t fail(int32_t status, const char* format, ...) __attribute__((format(printf, 3, 4)));
 
-    // What runs the pieces of a call with these (checked) options: the
-    // calling thread alone, or the context's workers, started on first use.
-    polymass::core::TaskRunner& tasks(const polymass_options& call_options);
+    // What runs the pieces of a call: the calling thread alone, or the
+    // context's workers, started on first use.
+    polymass::core::TaskRunner& tasks();
+    // How many threads a call may use (polymass_context_set_threads).
+    std::size_t threads() const { return serial_only_ ? 1 : threads_; }
+    void set_threads(uint32_t threads) { threads_ = threads; }
     // One context per thread of a batch (each item needs its own message and
     // scratch), created on first use and kept; their own calls run serially.
     polymass_context* batch_context(std::size_t thread);
@@ -105,5 +103,6 @@ private:
     std::optional<polymass::core::WorkerPool> workers_;
     std::pmr::vector<polymass_context*> batch_contexts;
     uint64_t scratch_limit_ = UINT64_MAX;
+    std::size_t threads_ = 1;
     bool serial_only_ = false;  // a batch's context: its thread is one of the workers
 };

@@ -16,7 +16,7 @@ namespace {
 
 using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
-// A NULL mass description means unit density, inertia_point about the origin.
+// A NULL mass description means unit density.
 int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass,
                        polymass_mass_desc& out) {
     out = StructVersions<polymass_mass_desc>::defaults();
@@ -34,11 +34,6 @@ int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "mass->%s is %g; it must be positive and finite",
                              from_density ? "density" : "mass", value);
-    for (int axis = 0; axis < 3; ++axis)
-        if (!std::isfinite(read.point[axis]))
-            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                                 "mass->point[%d] is %g; it must be finite", axis,
-                                 read.point[axis]);
     out = read;
     return POLYMASS_OK;
 }
@@ -59,17 +54,16 @@ bool result_in_range(const polymass_mass_properties& p) {
         Eigen::Map<const Eigen::Vector3d>(p.principal_moments).cwiseAbs().maxCoeff();
     return all_finite(scalars) && !std::isinf(p.surface_area) && p.mass >= DBL_MIN &&
            p.density >= DBL_MIN && largest_moment >= DBL_MIN && all_finite(p.center_of_mass) &&
-           all_finite(p.inertia) && all_finite(p.inertia_origin) && all_finite(p.inertia_point) &&
+           all_finite(p.inertia) && all_finite(p.inertia_origin) &&
            all_finite(p.principal_moments) && all_finite(p.principal_axes);
 }
 
-// The body's properties, with inertia_point about `point`, written to *out
-// when they fit in doubles. `moments` are those the body was computed from,
-// for the error bounds.
+// The body's properties, written to *out when they fit in doubles. `moments`
+// are those the body was computed from, for the error bounds.
 int32_t write_body(polymass_mass_properties* out, polymass_context* context,
-                   const core::RigidBody& body, const core::Moments& moments,
-                   const Eigen::Vector3d& point, double surface_area, uint32_t warnings,
-                   const core::ApproximationBound& approximation = {}, bool mass_given = false) {
+                   const core::RigidBody& body, const core::Moments& moments, double surface_area,
+                   uint32_t warnings, const core::ApproximationBound& approximation = {},
+                   bool mass_given = false) {
     const core::PrincipalAxes principal = core::principal_axes(body.inertia);
     const core::ResultBounds bounds = core::widen(moments.result_bounds(body, principal),
                                                   approximation, body, mass_given, principal);
@@ -83,7 +77,6 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
     copy_vector(body.center_of_mass, result.center_of_mass);
     copy_matrix(body.inertia, result.inertia);
     copy_matrix(core::inertia_about(body, Eigen::Vector3d::Zero()), result.inertia_origin);
-    copy_matrix(core::inertia_about(body, point), result.inertia_point);
     copy_vector(principal.moments, result.principal_moments);
     copy_matrix(principal.axes, result.principal_axes);
     result.error_bound_volume = bounds.volume;
@@ -95,10 +88,9 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
         return context->fail(
             POLYMASS_ERROR_OVERFLOW,
             "the mass properties do not fit in a double (mass %g, density %g, "
-            "largest coordinate of the centre of mass or point %g): scale the "
-            "coordinates, the density or mass, or the point",
-            result.mass, result.density,
-            std::max(body.center_of_mass.cwiseAbs().maxCoeff(), point.cwiseAbs().maxCoeff()));
+            "largest coordinate of the centre of mass %g): scale the coordinates, or the "
+            "density or mass",
+            result.mass, result.density, body.center_of_mass.cwiseAbs().maxCoeff());
     write_struct(out, result);
     return POLYMASS_OK;
 }
@@ -106,33 +98,24 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
 }  // namespace
 
 int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
-                        const polymass_mesh& mesh, const polymass_mass_desc* mass,
-                        polymass_provenance* provenance) {
+                        const Body& answered, const polymass_mass_desc* mass) {
     polymass_mass_desc body_desc;
     if (const int32_t status = read_mass_desc(context, mass, body_desc)) return status;
     const double density = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL
-                               ? body_desc.mass / mesh.integrals.volume
+                               ? body_desc.mass / answered.integrals.volume
                                : body_desc.density;
-    const core::RigidBody body = core::rigid_body(mesh.integrals, mesh.reference, density);
+    const core::RigidBody body = core::rigid_body(answered.integrals, answered.reference, density);
     const core::Moments moments =
-        core::Moments::of_solid(mesh.integrals, mesh.bounds, mesh.reference, density);
+        core::Moments::of_solid(answered.integrals, answered.bounds, answered.reference, density);
     const bool mass_given = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL;
-    if (provenance) {
-        provenance->approximation_bound_volume = mesh.approximation.volume;
-        provenance->approximation_bound_center_of_mass = mesh.approximation.center_of_mass;
-        provenance->approximation_bound_inertia =
-            core::approximation_inertia(mesh.approximation, body, mass_given);
-    }
-    return write_body(out, context, body, moments,
-                      Eigen::Map<const Eigen::Vector3d>(body_desc.point), mesh.surface_area,
-                      mesh.warnings, mesh.approximation, mass_given);
+    return write_body(out, context, body, moments, answered.surface_area, answered.warnings,
+                      answered.approximation, mass_given);
 }
 
 int32_t weight_moments(polymass_context* context, const core::Moments& moments,
-                       const polymass_mass_desc* mass, core::Moments& out, Eigen::Vector3d* point) {
+                       const polymass_mass_desc* mass, core::Moments& out) {
     if (!mass) {
         out = moments;
-        if (point) point->setZero();
         return POLYMASS_OK;
     }
     polymass_mass_desc body_desc;
@@ -147,24 +130,39 @@ int32_t weight_moments(polymass_context* context, const core::Moments& moments,
                               ? body_desc.mass / moments.mass.volume
                               : body_desc.density * (moments.volume / moments.mass.volume);
     out = moments.weighted(factor);
-    if (point) *point = Eigen::Map<const Eigen::Vector3d>(body_desc.point);
     return POLYMASS_OK;
 }
 
 int32_t moments_mass_properties(polymass_mass_properties* out, polymass_context* context,
                                 const core::Moments& moments, const polymass_mass_desc* mass) {
     core::Moments weighted;
-    Eigen::Vector3d point;
-    if (const int32_t status = weight_moments(context, moments, mass, weighted, &point))
-        return status;
+    if (const int32_t status = weight_moments(context, moments, mass, weighted)) return status;
     if (!(weighted.volume > 0.0 && weighted.mass.volume > 0.0))
         return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
                              "the moments have volume %g and mass %g; mass properties need a "
                              "body of positive volume and mass (a difference larger than what "
                              "it is taken from?)",
                              weighted.volume, weighted.mass.volume);
-    return write_body(out, context, weighted.rigid_body(), weighted, point,
+    return write_body(out, context, weighted.rigid_body(), weighted,
                       std::numeric_limits<double>::quiet_NaN(), 0);
+}
+
+int32_t inertia_about(double* out, const polymass_mass_properties& properties,
+                      const Eigen::Vector3d& point) {
+    if (!is_known_size<polymass_mass_properties>(properties.struct_size) || !point.allFinite())
+        return POLYMASS_ERROR_INVALID_ARGUMENT;
+    // The body as the properties give it: the parallel-axis step is the one
+    // the properties' inertia_origin came from.
+    core::RigidBody body;
+    body.mass = properties.mass;
+    body.center_of_mass = Eigen::Map<const Eigen::Vector3d>(properties.center_of_mass);
+    body.inertia = RowMajor3d::Map(properties.inertia);
+    if (!(std::isfinite(body.mass) && body.center_of_mass.allFinite() && body.inertia.allFinite()))
+        return POLYMASS_ERROR_INVALID_ARGUMENT;
+    const Eigen::Matrix3d inertia = core::inertia_about(body, point);
+    if (!inertia.allFinite()) return POLYMASS_ERROR_OVERFLOW;
+    RowMajor3d::Map(out) = inertia;
+    return POLYMASS_OK;
 }
 
 }  // namespace polymass::capi

@@ -1,46 +1,80 @@
-// The object behind polymass_mesh: a validated solid, kept as its integrals.
+// The object behind polymass_mesh: one analysis of a surface, kept as what
+// its questions need (the verdict, the diagnostics, the shells, the
+// provenance and the body that answered), not as the caller's arrays.
 #pragma once
 
 #include <polymass/polymass.h>
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory_resource>
+#include <vector>
 
+#include "context.hpp"
 #include "core/approximation_bound.hpp"
 #include "core/volume_integrals.hpp"
 
-// A solid: its integrals, not the caller's arrays.
-struct polymass_mesh {
-    polymass_allocator allocator;               // to free it with; the context may be gone by then
-    polymass::core::VolumeIntegrals integrals;  // about `reference`, outward-oriented
-    polymass::core::IntegralBounds bounds;      // on their rounding errors
+namespace polymass::capi {
+
+// The body a mode of the chain gave: its integrals and what is known of them.
+struct Body {
+    core::VolumeIntegrals integrals;  // about `reference`, outward-oriented
+    core::IntegralBounds bounds;      // on their rounding errors
     Eigen::Vector3d reference = Eigen::Vector3d::Zero();
     double surface_area = 0.0;
     uint32_t warnings = 0;
     // How far the body can be from the caller's solid when a mode other than
     // SOLID answered (zero otherwise), at unit density.
-    polymass::core::ApproximationBound approximation;
+    core::ApproximationBound approximation;
+};
+
+// What the chain of modes answered: the body and which mode gave it, how.
+struct Answer {
+    Body body;
+    polymass_provenance provenance{};
+};
+
+}  // namespace polymass::capi
+
+struct polymass_mesh {
+    explicit polymass_mesh(const polymass_allocator& hook)
+        : allocator(hook), memory(hook), shells(&memory), shell_of_face(&memory) {}
+
+    polymass_allocator allocator;               // to free it with; the context may be gone by then
+    polymass::capi::HookMemoryResource memory;  // the mesh's own arrays below
+    int32_t status = POLYMASS_OK;               // POLYMASS_OK when a mode answered
+    char message[sizeof(polymass_context::message)] = "";  // why none did
+    polymass_diagnostics diagnostics{};
+    std::pmr::vector<polymass_shell> shells;
+    std::pmr::vector<uint32_t> shell_of_face;  // empty when the faces are unreadable
+    polymass::capi::Answer answer;             // when status is POLYMASS_OK
 };
 
 namespace polymass::capi {
 
-// Validates (with the call's options) and integrates the caller's surface
-// into `mesh`: the body of polymass_mesh_create. Returns the status, with the
-// message in the context.
-int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc,
-                   const polymass_options& options, polymass_mesh& mesh);
-
 struct MeshInput;
 
-// build_mesh on an input already read: the SOLID mode.
-int32_t build_solid(polymass_context* context, const MeshInput& input,
-                    const polymass_options& options, polymass_mesh& mesh);
+// The one analysis of a surface read into `input`, shared by
+// polymass_mesh_create and polymass_mass_properties_compute: the surface
+// judged as a solid, then the options' chain of modes (docs/repair.md).
+// With `findings` (a mesh being made), every check runs to its end and the
+// diagnostics and shells are written to it; without, the analysis stops at
+// the first problem and judges only what the chain needs. Returns the status
+// with the message in the context (when no mode answers: each mode's reason)
+// and, on success, the answer.
+int32_t answer_surface(polymass_context* context, const MeshInput& input,
+                       const polymass_options& options, Answer& answer, polymass_mesh* findings);
 
-// The mesh as the first mode of the options' chain that answers gives it
-// (docs/repair.md), and what that mode did. Returns the status, with the
-// message in the context (when no mode answers: each mode's reason).
-int32_t build_answer(polymass_context* context, const polymass_mesh_desc* desc,
-                     const polymass_options& options, polymass_mesh& mesh,
-                     polymass_provenance& provenance);
+// POLYMASS_OK when a mode answered, else the mesh's status with its message
+// in the context: what the getters of the answer return.
+inline int32_t unanswered(polymass_context* context, const polymass_mesh& mesh) {
+    if (mesh.status == POLYMASS_OK) return POLYMASS_OK;
+    return context->fail(mesh.status, "%s", mesh.message);
+}
+
+// The SOLID mode on a surface of its own (a repaired one, a hull): judged,
+// stopping at the first problem, and integrated into `body`.
+int32_t build_solid(polymass_context* context, const MeshInput& input,
+                    const polymass_options& options, Body& body);
 
 }  // namespace polymass::capi

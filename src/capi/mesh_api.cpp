@@ -1,71 +1,173 @@
-// polymass_mesh_*: from the caller's arrays to a validated, integrated solid.
+// polymass_mesh_* and polymass_mass_properties_compute: one analysis of the
+// caller's surface (mode_chain.cpp), kept in a mesh or answered at once.
 #include <polymass/polymass.h>
 
+#include <algorithm>
+#include <cstring>
+#include <memory>
+
 #include "api_guard.hpp"
+#include "core/moments.hpp"
 #include "mass_properties.hpp"
 #include "mesh.hpp"
-#include "mesh_findings.hpp"
 #include "mesh_input.hpp"
 #include "struct_io.hpp"
 
 namespace polymass::capi {
+namespace {
 
-int32_t build_mesh(polymass_context* context, const polymass_mesh_desc* desc,
-                   const polymass_options& options, polymass_mesh& mesh) {
-    MeshInput input;
-    if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
-    return build_solid(context, input, options, mesh);
+using u64 = unsigned long long;  // for printf
+
+struct MeshDeleter {
+    void operator()(polymass_mesh* mesh) const { destroy_object(mesh); }
+};
+
+// Reads the call's options and surface; the status of the arguments.
+int32_t read_call(polymass_context* context, const polymass_mesh_desc* desc,
+                  const polymass_options* options, polymass_options& call, MeshInput& input) {
+    if (const int32_t status = read_options(context, options, call)) return status;
+    return read_mesh_desc(context, desc, input);
 }
 
-int32_t build_solid(polymass_context* context, const MeshInput& input,
-                    const polymass_options& options, polymass_mesh& mesh) {
-    const core::MeshAnalysis analysis = analyse(context, input, options, false);
-    uint32_t warnings = 0;
-    if (const int32_t status = report_verdict(context, input, options, analysis, warnings))
-        return status;
-    const core::IntegrationResult& integration = *analysis.integration;
-    mesh.integrals = (warnings & POLYMASS_WARNING_INVERTED) ? integration.integrals.negated()
-                                                            : integration.integrals;
-    mesh.bounds = integration.bounds;
-    mesh.reference = analysis.scan.reference_point();
-    mesh.surface_area = integration.surface_area;
-    mesh.warnings = warnings;
-    return POLYMASS_OK;
-}
-
+}  // namespace
 }  // namespace polymass::capi
 
+using namespace polymass;
 using namespace polymass::capi;
 
 extern "C" {
 
-POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_context* context,
-                                          const polymass_mesh_desc* desc) {
-    return polymass_mesh_create_with_options(out_mesh, context, desc, nullptr);
-}
-
-POLYMASS_API int32_t polymass_mesh_create_with_options(polymass_mesh** out_mesh,
-                                                       polymass_context* context,
-                                                       const polymass_mesh_desc* desc,
-                                                       const polymass_options* options) {
-    if (out_mesh) *out_mesh = nullptr;  // on every failure, even without a context
+POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* out_properties,
+                                                      polymass_provenance* out_provenance,
+                                                      polymass_context* context,
+                                                      const polymass_mesh_desc* desc,
+                                                      const polymass_options* options,
+                                                      const polymass_mass_desc* mass) {
     return guarded(context, [&] {
-        if (!out_mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_mesh is NULL");
-        polymass_options call;
-        if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0, {}};
-        polymass_provenance provenance{};
-        if (const int32_t status = build_answer(context, desc, call, mesh, provenance))
+        if (const int32_t status = check_struct(context, out_properties, "out_properties"))
             return status;
-        *out_mesh = create_object<polymass_mesh>(context->allocator, mesh);
-        if (!*out_mesh)
-            return context->fail(POLYMASS_ERROR_OUT_OF_MEMORY,
-                                 "out of memory: the allocator could not provide the mesh");
+        if (out_provenance)
+            if (const int32_t status = check_struct(context, out_provenance, "out_provenance"))
+                return status;
+        polymass_options call;
+        MeshInput input;
+        if (const int32_t status = read_call(context, desc, options, call, input)) return status;
+        Answer answer;
+        if (const int32_t status = answer_surface(context, input, call, answer, nullptr))
+            return status;
+        if (const int32_t status = mass_properties(out_properties, context, answer.body, mass))
+            return status;
+        if (out_provenance) write_struct(out_provenance, answer.provenance);
         return POLYMASS_OK;
     });
 }
 
+POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_context* context,
+                                          const polymass_mesh_desc* desc,
+                                          const polymass_options* options) {
+    if (out_mesh) *out_mesh = nullptr;  // on every failure, even without a context
+    return guarded(context, [&] {
+        if (!out_mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_mesh is NULL");
+        polymass_options call;
+        MeshInput input;
+        if (const int32_t status = read_call(context, desc, options, call, input)) return status;
+        if (input.face_count > UINT32_MAX)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "the mesh has %llu faces; a mesh numbers its shells for up to %u",
+                                 u64(input.face_count), UINT32_MAX);
+        std::unique_ptr<polymass_mesh, MeshDeleter> mesh(
+            create_object<polymass_mesh>(context->allocator, context->allocator));
+        if (!mesh)
+            return context->fail(POLYMASS_ERROR_OUT_OF_MEMORY,
+                                 "out of memory: the allocator could not provide the mesh");
+        mesh->status = answer_surface(context, input, call, mesh->answer, mesh.get());
+        std::memcpy(mesh->message, context->message, sizeof mesh->message);
+        *out_mesh = mesh.release();
+        return (*out_mesh)->status;
+    });
+}
+
 POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh) { destroy_object(mesh); }
+
+POLYMASS_API int32_t polymass_mesh_status(const polymass_mesh* mesh) {
+    return mesh ? mesh->status : POLYMASS_ERROR_INVALID_ARGUMENT;
+}
+
+POLYMASS_API const char* polymass_mesh_message(const polymass_mesh* mesh) {
+    return mesh ? mesh->message : "mesh is NULL";
+}
+
+POLYMASS_API int32_t polymass_mesh_diagnostics(polymass_diagnostics* out_diagnostics,
+                                               polymass_context* context,
+                                               const polymass_mesh* mesh) {
+    return guarded(context, [&] {
+        if (const int32_t status = check_struct(context, out_diagnostics, "out_diagnostics"))
+            return status;
+        if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
+        write_struct(out_diagnostics, mesh->diagnostics);
+        return int32_t(POLYMASS_OK);
+    });
+}
+
+POLYMASS_API int32_t polymass_mesh_shells(polymass_shell* out_shells, uint64_t capacity,
+                                          uint64_t* out_shell_count, polymass_context* context,
+                                          const polymass_mesh* mesh) {
+    return guarded(context, [&] {
+        if (!out_shell_count)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "out_shell_count is NULL");
+        if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
+        // The caller's elements lie its sizeof(polymass_shell) apart, which
+        // is the struct_size it set in each.
+        auto element = [&](uint64_t i) {
+            return reinterpret_cast<polymass_shell*>(reinterpret_cast<unsigned char*>(out_shells) +
+                                                     i * out_shells[0].struct_size);
+        };
+        if (capacity > 0) {
+            if (const int32_t status = check_struct(context, out_shells, "out_shells"))
+                return status;
+            for (uint64_t i = 1; i < capacity; ++i)
+                if (element(i)->struct_size != out_shells[0].struct_size)
+                    return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                         "out_shells[%llu].struct_size is %u, not %u as in "
+                                         "out_shells[0]",
+                                         u64(i), unsigned(element(i)->struct_size),
+                                         unsigned(out_shells[0].struct_size));
+        }
+        const uint64_t written = std::min<uint64_t>(capacity, mesh->shells.size());
+        for (uint64_t i = 0; i < written; ++i) write_struct(element(i), mesh->shells[i]);
+        *out_shell_count = mesh->shells.size();
+        return int32_t(POLYMASS_OK);
+    });
+}
+
+POLYMASS_API int32_t polymass_mesh_shell_of_face(uint32_t* out_shell_of_face, uint64_t capacity,
+                                                 polymass_context* context,
+                                                 const polymass_mesh* mesh) {
+    return guarded(context, [&] {
+        if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
+        if (!out_shell_of_face && capacity > 0)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "out_shell_of_face is NULL but capacity is %llu", u64(capacity));
+        // Faces that could not be read have no shells.
+        if (mesh->shell_of_face.empty()) return unanswered(context, *mesh);
+        const uint64_t written = std::min<uint64_t>(capacity, mesh->shell_of_face.size());
+        std::copy_n(mesh->shell_of_face.begin(), written, out_shell_of_face);
+        return int32_t(POLYMASS_OK);
+    });
+}
+
+POLYMASS_API int32_t polymass_mesh_provenance(polymass_provenance* out_provenance,
+                                              polymass_context* context,
+                                              const polymass_mesh* mesh) {
+    return guarded(context, [&] {
+        if (const int32_t status = check_struct(context, out_provenance, "out_provenance"))
+            return status;
+        if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
+        if (const int32_t status = unanswered(context, *mesh)) return status;
+        write_struct(out_provenance, mesh->answer.provenance);
+        return int32_t(POLYMASS_OK);
+    });
+}
 
 POLYMASS_API int32_t polymass_mesh_mass_properties(polymass_mass_properties* out_properties,
                                                    polymass_context* context,
@@ -75,67 +177,16 @@ POLYMASS_API int32_t polymass_mesh_mass_properties(polymass_mass_properties* out
         if (const int32_t status = check_struct(context, out_properties, "out_properties"))
             return status;
         if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
-        return mass_properties(out_properties, context, *mesh, mass);
+        if (const int32_t status = unanswered(context, *mesh)) return status;
+        return mass_properties(out_properties, context, mesh->answer.body, mass);
     });
 }
 
-POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* out_properties,
-                                                      polymass_context* context,
-                                                      const polymass_mesh_desc* desc,
-                                                      const polymass_mass_desc* mass) {
-    return polymass_mass_properties_compute_with_options(out_properties, context, desc, mass,
-                                                         nullptr);
-}
-
-POLYMASS_API int32_t polymass_mass_properties_compute_with_options(
-    polymass_mass_properties* out_properties, polymass_context* context,
-    const polymass_mesh_desc* desc, const polymass_mass_desc* mass,
-    const polymass_options* options) {
-    return guarded(context, [&] {
-        if (const int32_t status = check_struct(context, out_properties, "out_properties"))
-            return status;
-        polymass_options call;
-        if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0, {}};
-        polymass_provenance provenance{};
-        if (const int32_t status = build_answer(context, desc, call, mesh, provenance))
-            return status;
-        return mass_properties(out_properties, context, mesh, mass);
-    });
-}
-
-POLYMASS_API int32_t polymass_mesh_check(polymass_diagnostics* out_report,
-                                         polymass_context* context,
-                                         const polymass_mesh_desc* desc) {
-    return polymass_mesh_check_with_options(out_report, context, desc, nullptr);
-}
-
-POLYMASS_API int32_t polymass_mesh_check_with_options(polymass_diagnostics* out_report,
-                                                      polymass_context* context,
-                                                      const polymass_mesh_desc* desc,
-                                                      const polymass_options* options) {
-    const bool report_valid =
-        out_report && is_known_size<polymass_diagnostics>(out_report->struct_size);
-    const int32_t status = guarded(context, [&] {
-        if (const int32_t status = check_struct(context, out_report, "out_report")) return status;
-        polymass_options call;
-        if (const int32_t status = call_options(context, options, call)) return status;
-        MeshInput input;
-        polymass_diagnostics report;
-        int32_t found = read_mesh_desc(context, desc, input);
-        fill_report(report, input, nullptr);  // what the arguments tell, if anything
-        if (found == POLYMASS_OK) {
-            const polymass::core::MeshAnalysis analysis = analyse(context, input, call, true);
-            uint32_t warnings = 0;
-            found = report_verdict(context, input, call, analysis, warnings);
-            fill_report(report, input, &analysis);
-        }
-        write_struct(out_report, report);
-        return found;
-    });
-    // Also when the checks could not finish (out of memory) or there is no context.
-    if (report_valid) out_report->status = status;
-    return status;
+POLYMASS_API int32_t polymass_inertia_about(double out_inertia[9],
+                                            const polymass_mass_properties* properties,
+                                            const double point[3]) {
+    if (!out_inertia || !properties || !point) return POLYMASS_ERROR_INVALID_ARGUMENT;
+    return inertia_about(out_inertia, *properties, Eigen::Map<const Eigen::Vector3d>(point));
 }
 
 }  // extern "C"

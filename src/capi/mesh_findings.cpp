@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "struct_versions.hpp"
+
 namespace polymass::capi {
 namespace {
 
@@ -14,7 +16,8 @@ static_assert(core::kWarningInverted == POLYMASS_WARNING_INVERTED &&
                   core::kWarningDegenerate == POLYMASS_WARNING_DEGENERATE_FACES &&
                   core::kWarningUnchecked == POLYMASS_WARNING_UNCHECKED &&
                   core::kWarningNonManifold == POLYMASS_WARNING_NON_MANIFOLD &&
-                  core::kWarningTouching == POLYMASS_WARNING_TOUCHING_FACES,
+                  core::kWarningTouching == POLYMASS_WARNING_TOUCHING_FACES &&
+                  core::kWarningIntersectionsUnchecked == POLYMASS_WARNING_INTERSECTIONS_UNCHECKED,
               "the core's warning bits are the API's");
 
 int32_t fail_on_edge(polymass_context* context, int32_t status, const core::EdgeFinding& edges,
@@ -38,8 +41,7 @@ int32_t fail_on_shell(polymass_context* context, int32_t status, const core::She
 core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
                            const polymass_options& options, bool full_report) {
     core::AnalysisSettings settings;
-    settings.check_topology =
-        full_report || !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    settings.check_topology = !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
     // On unless skipped by name; the trusted path (no topology checks) has
     // no shells to nest, and skips it too.
     settings.check_intersections =
@@ -47,14 +49,23 @@ core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
     settings.weld = options.flags & POLYMASS_OPTION_WELD_VERTICES;
     settings.weld_tolerance = options.weld_tolerance;
     settings.stop_at_first_problem = !full_report;
+    settings.list_shells = full_report;
     settings.planarity_tolerance = options.planarity_tolerance;
     settings.policy.accept_inverted = options.flags & POLYMASS_OPTION_ACCEPT_INVERTED;
     settings.policy.accept_balanced_non_manifold =
         options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-    settings.tasks = &context->tasks(options);
+    settings.tasks = &context->tasks();
     return visit_mesh(input, [&](const auto& view) {
         return core::analyse_mesh(view, settings, &context->memory);
     });
+}
+
+int32_t report_small_faces(polymass_context* context, const MeshInput& input) {
+    if (input.small_faces.count == 0) return POLYMASS_OK;
+    const std::size_t face = input.small_faces.first();
+    return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
+                         "face %llu has %u vertices; a face needs at least 3 (%llu such faces)",
+                         u64(face), input.face_sizes[face], u64(input.small_faces.count));
 }
 
 int32_t report_verdict(polymass_context* context, const MeshInput& input,
@@ -182,21 +193,8 @@ void copy_finding(const core::Finding& found, uint64_t& count,
 
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
                  const core::MeshAnalysis* analysis) {
-    report = polymass_diagnostics{};
-    report.struct_size = sizeof report;
-    // Every location POLYMASS_NONE until a finding fills it: the struct is
-    // nothing but counts, locations and the two doubles set below.
-    for (uint64_t* location :
-         {&report.first_non_finite_vertices[0], &report.first_out_of_range_faces[0],
-          &report.first_small_faces[0], &report.first_degenerate_faces[0],
-          &report.first_non_planar_faces[0], &report.first_inverted_shells[0],
-          &report.first_overlapping_shells[0]})
-        std::fill_n(location, POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
-    for (uint64_t* pair :
-         {&report.first_open_edges[0][0], &report.first_non_manifold_edges[0][0],
-          &report.first_misoriented_edges[0][0], &report.first_intersecting_face_pairs[0][0],
-          &report.first_touching_face_pairs[0][0]})
-        std::fill_n(pair, 2 * POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
+    // Every location POLYMASS_NONE until a finding fills it.
+    report = StructVersions<polymass_diagnostics>::defaults();
     report.face_count = input.face_count;
     report.signed_volume = std::numeric_limits<double>::quiet_NaN();
     copy_finding(input.small_faces, report.small_faces, report.first_small_faces);
@@ -208,6 +206,9 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
     // Counted per index, located per face.
     report.out_of_range_indices = scan.out_of_range_indices;
     copy_locations(scan.out_of_range_faces, report.first_out_of_range_faces);
+    if (analysis->topology && analysis->integration) report.checks |= POLYMASS_CHECKED_TOPOLOGY;
+    if (analysis->shells) report.checks |= POLYMASS_CHECKED_SHELLS;
+    if (analysis->overlaps) report.checks |= POLYMASS_CHECKED_INTERSECTIONS;
     if (const auto& topology = analysis->topology) {
         report.edge_count = topology->edge_count;
         copy_finding(topology->open, report.open_edges, report.first_open_edges);
@@ -226,6 +227,10 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
     }
     if (const auto& shells = analysis->shells) {
         report.shell_count = shells->shells.count;
+    } else if (analysis->unjudged_shells) {
+        report.shell_count = analysis->unjudged_shells->count;
+    }
+    if (const auto& shells = analysis->shells) {
         copy_finding(shells->inverted, report.inverted_shells, report.first_inverted_shells);
         copy_finding(shells->overlapping, report.overlapping_shells,
                      report.first_overlapping_shells);
@@ -236,6 +241,55 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
         copy_finding(overlaps->touching, report.touching_face_pairs,
                      report.first_touching_face_pairs);
     }
+}
+
+namespace {
+
+int32_t shell_kind(core::ShellKind kind) {
+    switch (kind) {
+        case core::ShellKind::solid:
+            return POLYMASS_SHELL_SOLID;
+        case core::ShellKind::cavity:
+            return POLYMASS_SHELL_CAVITY;
+        case core::ShellKind::inverted:
+            return POLYMASS_SHELL_INVERTED;
+        case core::ShellKind::overlapping:
+            return POLYMASS_SHELL_OVERLAPPING;
+        case core::ShellKind::no_volume:
+            return POLYMASS_SHELL_NO_VOLUME;
+    }
+    return POLYMASS_SHELL_UNJUDGED;
+}
+
+}  // namespace
+
+void list_shells(const core::MeshAnalysis& analysis, std::pmr::vector<polymass_shell>& shells,
+                 std::pmr::vector<uint32_t>& shell_of_face) {
+    polymass_shell shell = StructVersions<polymass_shell>::defaults();
+    if (const auto& survey = analysis.shells) {
+        shells.reserve(survey->summary.size());
+        for (const core::ShellSummary& summary : survey->summary) {
+            shell.kind = shell_kind(summary.kind);
+            shell.face_count = summary.face_count;
+            shell.first_face = summary.first_face;
+            shell.signed_volume = summary.signed_volume;
+            shells.push_back(shell);
+        }
+        shell_of_face.assign(survey->shells.of_face.begin(), survey->shells.of_face.end());
+        return;
+    }
+    if (!analysis.unjudged_shells) return;
+    // Connected pieces only: their sizes and first faces from the numbering.
+    const core::Shells& pieces = *analysis.unjudged_shells;
+    shell.kind = POLYMASS_SHELL_UNJUDGED;
+    shell.signed_volume = std::numeric_limits<double>::quiet_NaN();
+    shells.assign(pieces.count, shell);
+    for (std::size_t face = pieces.of_face.size(); face-- > 0;) {
+        polymass_shell& piece = shells[pieces.of_face[face]];
+        ++piece.face_count;
+        piece.first_face = face;
+    }
+    shell_of_face.assign(pieces.of_face.begin(), pieces.of_face.end());
 }
 
 }  // namespace polymass::capi

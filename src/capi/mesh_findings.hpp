@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory_resource>
+#include <vector>
 
 #include "context.hpp"
 #include "core/mesh_analysis.hpp"
@@ -11,10 +13,15 @@
 
 namespace polymass::capi {
 
-// Runs core::analyse_mesh with the call's options; full_report runs every
-// check (topology even when the options skip it) without stopping early.
+// Runs core::analyse_mesh with the call's options: every check the options
+// do not skip; with full_report, each to its end (every finding counted, not
+// only the first) and the shells listed even when they are not judged.
 core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
                            const polymass_options& options, bool full_report);
+
+// POLYMASS_ERROR_FACE_TOO_SMALL with its message when the input has faces
+// of fewer than 3 vertices, else POLYMASS_OK.
+int32_t report_small_faces(polymass_context* context, const MeshInput& input);
 
 // The status of the analysis's verdict, with its message in the context; the
 // warnings it accepted, as POLYMASS_WARNING_* bits, in `warnings`. options
@@ -36,8 +43,14 @@ void copy_finding(const EdgeOrPairFinding& found, uint64_t& count,
     }
 }
 
-// The report of what the arguments (and, when given, the analysis) show.
+// The report of what the arguments (and, when given, the analysis) show;
+// its status is the caller's to set.
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
                  const core::MeshAnalysis* analysis);
+
+// The analysis's shells (judged, or listed unjudged) and the shell of each
+// face; both left empty when the analysis has none (faces unreadable).
+void list_shells(const core::MeshAnalysis& analysis, std::pmr::vector<polymass_shell>& shells,
+                 std::pmr::vector<uint32_t>& shell_of_face);
 
 }  // namespace polymass::capi

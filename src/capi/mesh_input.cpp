@@ -35,7 +35,6 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
                                  "so every face is a triangle)",
                                  u64(desc.index_count));
         input.face_count = std::size_t(desc.index_count / 3);
-        input.sizes_add_up = true;
         return POLYMASS_OK;
     }
     if (!span_fits(desc.face_sizes, desc.face_count, sizeof(uint32_t), sizeof(uint32_t)))
@@ -53,14 +52,6 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
     }
     input.face_sizes = desc.face_sizes;
     input.face_count = std::size_t(desc.face_count);
-    input.sizes_add_up = total == desc.index_count;
-    if (input.small_faces.count > 0)
-        return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
-                             "face %llu has %u vertices; a face needs at least 3 "
-                             "(%llu such faces)",
-                             u64(input.small_faces.first()),
-                             desc.face_sizes[input.small_faces.first()],
-                             u64(input.small_faces.count));
     if (total != desc.index_count)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "face_sizes add up to %llu indices but index_count is %llu",
@@ -70,17 +61,41 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
 
 }  // namespace
 
+int32_t read_positions(polymass_context* context, const void* positions, uint32_t position_type,
+                       uint64_t vertex_count, uint64_t position_stride, MeshInput& input) {
+    if (position_type != POLYMASS_POSITION_FLOAT64 && position_type != POLYMASS_POSITION_FLOAT32)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "position_type %u is not POLYMASS_POSITION_FLOAT64 (0) or "
+                             "POLYMASS_POSITION_FLOAT32 (1)",
+                             unsigned(position_type));
+    const uint64_t vertex_bytes = position_type == POLYMASS_POSITION_FLOAT32 ? 12 : 24;
+    const uint64_t stride = position_stride ? position_stride : vertex_bytes;
+    if (stride < vertex_bytes)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "position_stride %llu is smaller than a vertex (%llu bytes)",
+                             u64(stride), u64(vertex_bytes));
+    if (vertex_count > 0 && !positions)
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "positions is NULL but vertex_count is %llu", u64(vertex_count));
+    if (!span_fits(positions, vertex_count, stride, vertex_bytes))
+        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                             "vertex_count %llu at stride %llu is larger than any array can be",
+                             u64(vertex_count), u64(stride));
+    input.position_type = position_type;
+    input.positions = static_cast<const unsigned char*>(positions);
+    input.vertex_count = std::size_t(vertex_count);
+    input.position_stride = std::size_t(stride);
+    return POLYMASS_OK;
+}
+
 int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* caller_desc,
                        MeshInput& input) {
     if (const int32_t status = check_struct(context, caller_desc, "desc")) return status;
     const polymass_mesh_desc desc =
         read_struct(*caller_desc, StructVersions<polymass_mesh_desc>::defaults());
-    if (desc.position_type != POLYMASS_POSITION_FLOAT64 &&
-        desc.position_type != POLYMASS_POSITION_FLOAT32)
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "position_type %u is not POLYMASS_POSITION_FLOAT64 (0) or "
-                             "POLYMASS_POSITION_FLOAT32 (1)",
-                             unsigned(desc.position_type));
+    if (const int32_t status = read_positions(context, desc.positions, desc.position_type,
+                                              desc.vertex_count, desc.position_stride, input))
+        return status;
     if (desc.index_type != POLYMASS_INDEX_UINT32 && desc.index_type != POLYMASS_INDEX_UINT16)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "index_type %u is not POLYMASS_INDEX_UINT32 (0) or "
@@ -90,23 +105,9 @@ int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* call
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "reserved is %u; it must be 0",
                              unsigned(desc.reserved));
 
-    const uint64_t vertex_bytes = desc.position_type == POLYMASS_POSITION_FLOAT32 ? 12 : 24;
-    const uint64_t stride = desc.position_stride ? desc.position_stride : vertex_bytes;
-    if (stride < vertex_bytes)
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "position_stride %llu is smaller than a vertex (%llu bytes)",
-                             u64(stride), u64(vertex_bytes));
-    if (desc.vertex_count > 0 && !desc.positions)
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "positions is NULL but vertex_count is %llu", u64(desc.vertex_count));
-    if (!span_fits(desc.positions, desc.vertex_count, stride, vertex_bytes))
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "vertex_count %llu at stride %llu is larger than any array can be",
-                             u64(desc.vertex_count), u64(stride));
-
     const uint64_t index_bytes = desc.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
-    // Faces listed without indices are faces too small (read_face_sizes says
-    // which); no faces at all is not a mesh.
+    // Faces listed without indices are faces too small (recorded by
+    // read_face_sizes); no faces at all is not a mesh.
     const bool faces_listed = desc.face_sizes && desc.face_count > 0;
     if (desc.index_count == 0 && !faces_listed)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
@@ -119,11 +120,7 @@ int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* call
                              "index_count %llu is larger than any array can be",
                              u64(desc.index_count));
 
-    input.position_type = desc.position_type;
     input.index_type = desc.index_type;
-    input.positions = static_cast<const unsigned char*>(desc.positions);
-    input.vertex_count = std::size_t(desc.vertex_count);
-    input.position_stride = std::size_t(stride);
     input.indices = static_cast<const unsigned char*>(desc.indices);
     input.index_count = std::size_t(desc.index_count);
     return read_face_sizes(context, desc, input);

@@ -23,16 +23,19 @@ struct MeshInput {
     std::size_t index_count = 0;
     const uint32_t* face_sizes = nullptr;
     std::size_t face_count = 0;
-    // Faces of fewer than 3 vertices (found while adding up face_sizes).
+    // Faces of fewer than 3 vertices (found while adding up face_sizes): not
+    // a solid's, but readable (repair drops them).
     core::Finding small_faces;
-    // face_sizes add up to index_count: with faces too small, the input is
-    // still readable (repair drops them).
-    bool sizes_add_up = false;
 };
 
-// Fills `input` and returns POLYMASS_OK, POLYMASS_ERROR_INVALID_ARGUMENT or
-// POLYMASS_ERROR_FACE_TOO_SMALL (input then says which faces), with the message.
+// Fills `input` and returns POLYMASS_OK or POLYMASS_ERROR_INVALID_ARGUMENT,
+// with the message. Faces too small are recorded, not refused.
 int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc, MeshInput& input);
+
+// The positions part of read_mesh_desc: fills input's positions, or returns
+// POLYMASS_ERROR_INVALID_ARGUMENT with the message.
+int32_t read_positions(polymass_context* context, const void* positions, uint32_t position_type,
+                       uint64_t vertex_count, uint64_t position_stride, MeshInput& input);
 
 // Narrows an input read by read_mesh_desc to its faces [first_face,
 // first_face + face_count), or returns POLYMASS_ERROR_INVALID_ARGUMENT with

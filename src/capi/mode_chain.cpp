@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "core/convex_hull.hpp"
 #include "core/mesh_repair.hpp"
@@ -48,18 +49,6 @@ private:
     std::size_t length_ = 0;
 };
 
-polymass_provenance blank_provenance() {
-    polymass_provenance provenance = zeroed<polymass_provenance>();
-    for (uint64_t* location :
-         {&provenance.first_reoriented_faces[0], &provenance.first_turned_shells[0],
-          &provenance.first_duplicate_faces[0], &provenance.first_degenerate_faces[0],
-          &provenance.first_triangulated_faces[0], &provenance.first_holes[0]})
-        std::fill_n(location, POLYMASS_DIAGNOSTIC_LOCATIONS, POLYMASS_NONE);
-    std::fill_n(&provenance.first_split_edges[0][0], 2 * POLYMASS_DIAGNOSTIC_LOCATIONS,
-                POLYMASS_NONE);
-    return provenance;
-}
-
 void record_repairs(const core::RepairReport& report, double surface_area,
                     polymass_provenance& provenance) {
     copy_finding(report.reoriented_faces, provenance.reoriented_faces,
@@ -91,7 +80,6 @@ MeshInput triangles_input(const std::pmr::vector<double>& positions,
     input.indices = reinterpret_cast<const unsigned char*>(indices.data());
     input.index_count = indices.size();
     input.face_count = indices.size() / 3;
-    input.sizes_add_up = true;
     return input;
 }
 
@@ -118,18 +106,27 @@ int32_t fail_repair(polymass_context* context, const core::RepairReport& report)
     return POLYMASS_OK;
 }
 
+// The scan repair, shell and hull start from; the scan's status (indices out
+// of range, coordinates not finite or overflowing: no body) when they cannot.
+template <class View>
+int32_t scan_for(polymass_context* context, const MeshInput& input, const View& view,
+                 core::MeshScan& scan) {
+    core::MeshAnalysis scanned(core::scan_mesh(view, &context->memory, context->tasks()));
+    scanned.verdict = core::judge(scanned, {});
+    uint32_t warnings = 0;
+    const polymass_options defaults = StructVersions<polymass_options>::defaults();
+    if (const int32_t status = report_verdict(context, input, defaults, scanned, warnings))
+        return status;
+    scan = std::move(scanned.scan);
+    return POLYMASS_OK;
+}
+
 // The REPAIR mode once the surface is known not to be a valid solid.
 int32_t build_repaired(polymass_context* context, const MeshInput& input,
-                       const polymass_options& options, polymass_mesh& mesh,
-                       polymass_provenance& provenance) {
+                       const polymass_options& options, Answer& answer) {
     return visit_mesh(input, [&](const auto& view) -> int32_t {
-        const core::MeshScan scan =
-            core::scan_mesh(view, &context->memory, context->tasks(options));
-        if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0 ||
-            !std::isfinite(scan.diagonal()))
-            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                                 "indices out of range and coordinates that are not finite or "
-                                 "overflow have no repair");
+        core::MeshScan scan(&context->memory);
+        if (const int32_t status = scan_for(context, input, view, scan)) return status;
         const core::RepairSettings settings{options.weld_tolerance, options.planarity_tolerance};
         const core::RepairedMesh repaired =
             core::repair_mesh(view, scan, settings, &context->memory);
@@ -142,7 +139,8 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
         polymass_options judged = options;
         judged.flags = (options.flags & POLYMASS_OPTION_SKIP_INTERSECTION_CHECK) |
                        POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-        if (const int32_t status = build_solid(context, fixed, judged, mesh)) {
+        Body& body = answer.body;
+        if (const int32_t status = build_solid(context, fixed, judged, body)) {
             char reason[sizeof context->message];
             std::memcpy(reason, context->message, sizeof reason);
             return context->fail(status,
@@ -150,48 +148,35 @@ int32_t build_repaired(polymass_context* context, const MeshInput& input,
                                  "triangles): %s",
                                  u64(fixed.face_count), reason);
         }
-        mesh.warnings |= POLYMASS_WARNING_REPAIRED;
-        mesh.approximation = core::approximation_bound(
-            repaired.uncertain, core::rigid_body(mesh.integrals, mesh.reference, 1.0),
+        body.warnings |= POLYMASS_WARNING_REPAIRED;
+        body.approximation = core::approximation_bound(
+            repaired.uncertain, core::rigid_body(body.integrals, body.reference, 1.0),
             repaired.bounds);
-        record_repairs(repaired.report, mesh.surface_area, provenance);
+        record_repairs(repaired.report, body.surface_area, answer.provenance);
         return POLYMASS_OK;
     });
 }
 
-// The scan shell and hull start from; a status when they cannot.
-template <class View>
-int32_t scan_for(polymass_context* context, const View& view, const polymass_options& options,
-                 core::MeshScan& scan) {
-    scan = core::scan_mesh(view, &context->memory, context->tasks(options));
-    if (scan.out_of_range_indices > 0 || scan.non_finite.count > 0 ||
-        !std::isfinite(scan.diagonal()))
-        return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "indices out of range and coordinates that are not finite or "
-                             "overflow give no body");
-    return POLYMASS_OK;
-}
-
 // The SHELL mode: the surface as a sheet of area density shell_thickness.
 int32_t build_shell(polymass_context* context, const MeshInput& input,
-                    const polymass_options& options, polymass_mesh& mesh,
-                    polymass_provenance& provenance) {
+                    const polymass_options& options, Answer& answer) {
     return visit_mesh(input, [&](const auto& view) -> int32_t {
         core::MeshScan scan(&context->memory);
-        if (const int32_t status = scan_for(context, view, options, scan)) return status;
+        if (const int32_t status = scan_for(context, input, view, scan)) return status;
         const core::ThinShell shell = core::thin_shell_moments(
             view, options.shell_thickness, scan.reference_point(), scan.diagonal());
         if (!(shell.moments.mass.volume >= DBL_MIN))
             return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
                                  "the surface has no area to make a wall of (area %g)", shell.area);
-        mesh.integrals = shell.moments.mass;
-        mesh.bounds = shell.moments.mass_bounds;
-        mesh.reference = shell.moments.reference;
-        mesh.surface_area = shell.area;
-        mesh.warnings = POLYMASS_WARNING_SHELL;
-        mesh.approximation = shell.wall_bound;
-        provenance.shell_thickness = options.shell_thickness;
-        provenance.shell_area = shell.area;
+        Body& body = answer.body;
+        body.integrals = shell.moments.mass;
+        body.bounds = shell.moments.mass_bounds;
+        body.reference = shell.moments.reference;
+        body.surface_area = shell.area;
+        body.warnings = POLYMASS_WARNING_SHELL;
+        body.approximation = shell.wall_bound;
+        answer.provenance.shell_thickness = options.shell_thickness;
+        answer.provenance.shell_area = shell.area;
         return POLYMASS_OK;
     });
 }
@@ -215,11 +200,10 @@ const char* hull_failure(core::HullStatus status) {
 // 0 <= I_true <= I_hull, so each entry is off by at most twice the hull's
 // largest moment.
 int32_t build_hull(polymass_context* context, const MeshInput& input,
-                   const polymass_options& options, polymass_mesh& mesh,
-                   polymass_provenance& provenance) {
+                   const polymass_options& options, Answer& answer) {
     return visit_mesh(input, [&](const auto& view) -> int32_t {
         core::MeshScan scan(&context->memory);
-        if (const int32_t status = scan_for(context, view, options, scan)) return status;
+        if (const int32_t status = scan_for(context, input, view, scan)) return status;
         const core::ConvexHull hull = core::convex_hull(view, scan, &context->memory);
         if (hull.status == core::HullStatus::beyond_exact_range)
             return context->fail(POLYMASS_ERROR_OVERFLOW,
@@ -232,77 +216,126 @@ int32_t build_hull(polymass_context* context, const MeshInput& input,
         const MeshInput solid = triangles_input(hull.coordinates, hull.indices);
         polymass_options judged = options;
         judged.flags = 0;
-        if (const int32_t status = build_solid(context, solid, judged, mesh)) return status;
-        mesh.warnings |= POLYMASS_WARNING_HULL;
-        const core::RigidBody body = core::rigid_body(mesh.integrals, mesh.reference, 1.0);
-        mesh.approximation.volume = body.volume;
-        mesh.approximation.center_of_mass = scan.bounds.sizes().maxCoeff();
-        mesh.approximation.inertia = 2.0 * body.inertia.diagonal().maxCoeff();
-        provenance.hull_vertex_count = solid.vertex_count;
-        provenance.hull_triangle_count = solid.face_count;
-        provenance.hull_volume = body.volume;
+        Body& body = answer.body;
+        if (const int32_t status = build_solid(context, solid, judged, body)) return status;
+        body.warnings |= POLYMASS_WARNING_HULL;
+        const core::RigidBody hull_body = core::rigid_body(body.integrals, body.reference, 1.0);
+        body.approximation.volume = hull_body.volume;
+        body.approximation.center_of_mass = scan.bounds.sizes().maxCoeff();
+        body.approximation.inertia = 2.0 * hull_body.inertia.diagonal().maxCoeff();
+        answer.provenance.hull_vertex_count = solid.vertex_count;
+        answer.provenance.hull_triangle_count = solid.face_count;
+        answer.provenance.hull_volume = hull_body.volume;
         return POLYMASS_OK;
     });
 }
 
+// The body of a valid solid, from its analysis.
+void solid_body(const core::MeshAnalysis& analysis, uint32_t warnings, Body& body) {
+    const core::IntegrationResult& integration = *analysis.integration;
+    body.integrals = (warnings & POLYMASS_WARNING_INVERTED) ? integration.integrals.negated()
+                                                            : integration.integrals;
+    body.bounds = integration.bounds;
+    body.reference = analysis.scan.reference_point();
+    body.surface_area = integration.surface_area;
+    body.warnings = warnings;
+    body.approximation = {};
+}
+
+// The options' chain, SOLID alone when it is empty.
+struct Chain {
+    uint32_t modes[POLYMASS_MAX_MODES] = {POLYMASS_MODE_SOLID};
+    std::size_t length = 0;
+
+    explicit Chain(const polymass_options& options) {
+        while (length < POLYMASS_MAX_MODES && options.modes[length] != POLYMASS_MODE_NONE) {
+            modes[length] = options.modes[length];
+            ++length;
+        }
+        length = std::max<std::size_t>(length, 1);
+    }
+    // Whether the surface's verdict as a solid can answer: SOLID and REPAIR
+    // answer a valid solid as it is.
+    bool judges_solid() const {
+        return std::any_of(modes, modes + length, [](uint32_t mode) {
+            return mode == POLYMASS_MODE_SOLID || mode == POLYMASS_MODE_REPAIR;
+        });
+    }
+};
+
 }  // namespace
 
-int32_t build_answer(polymass_context* context, const polymass_mesh_desc* desc,
-                     const polymass_options& options, polymass_mesh& mesh,
-                     polymass_provenance& provenance) {
-    MeshInput input;
-    const int32_t read = read_mesh_desc(context, desc, input);
-    // Faces too small are the solid's error, which repair can mend.
-    if (read != POLYMASS_OK && !(read == POLYMASS_ERROR_FACE_TOO_SMALL && input.sizes_add_up))
-        return read;
-    uint32_t chain[POLYMASS_MAX_MODES] = {POLYMASS_MODE_SOLID};
-    std::size_t length = 0;
-    while (length < POLYMASS_MAX_MODES && options.modes[length] != POLYMASS_MODE_NONE) {
-        chain[length] = options.modes[length];
-        ++length;
-    }
-    length = std::max<std::size_t>(length, 1);
+int32_t build_solid(polymass_context* context, const MeshInput& input,
+                    const polymass_options& options, Body& body) {
+    const core::MeshAnalysis analysis = analyse(context, input, options, false);
+    uint32_t warnings = 0;
+    if (const int32_t status = report_verdict(context, input, options, analysis, warnings))
+        return status;
+    solid_body(analysis, warnings, body);
+    return POLYMASS_OK;
+}
 
-    provenance = blank_provenance();
+int32_t answer_surface(polymass_context* context, const MeshInput& input,
+                       const polymass_options& options, Answer& answer, polymass_mesh* findings) {
+    const Chain chain(options);
+    // The surface judged as a solid, once: in full for a mesh's findings,
+    // otherwise only when the chain can take a valid solid as its answer.
+    std::optional<core::MeshAnalysis> analysis;
+    int32_t solid_status = report_small_faces(context, input);
+    uint32_t solid_warnings = 0;
+    if (solid_status == POLYMASS_OK && (findings || chain.judges_solid())) {
+        analysis.emplace(analyse(context, input, options, findings != nullptr));
+        solid_status = report_verdict(context, input, options, *analysis, solid_warnings);
+    }
+    if (findings) {
+        fill_report(findings->diagnostics, input, analysis ? &*analysis : nullptr);
+        findings->diagnostics.status = solid_status;
+        if (analysis) list_shells(*analysis, findings->shells, findings->shell_of_face);
+    }
+
+    answer.provenance = StructVersions<polymass_provenance>::defaults();
     Reasons reasons;
     int32_t first_status = POLYMASS_OK;
     auto failed = [&](uint32_t mode, int32_t status) {
         reasons.add(mode, context->message);
         if (first_status == POLYMASS_OK) first_status = status;
     };
-    bool solid_tried = false;
-    int32_t solid_status = POLYMASS_OK;
-    for (std::size_t i = 0; i < length; ++i) {
-        const uint32_t mode = chain[i];
+    bool solid_reported = false;
+    for (std::size_t i = 0; i < chain.length; ++i) {
+        const uint32_t mode = chain.modes[i];
         int32_t status = POLYMASS_OK;
         if (mode == POLYMASS_MODE_SOLID || mode == POLYMASS_MODE_REPAIR) {
-            // A valid solid is its own answer, in either mode; it is judged once.
-            if (!solid_tried) {
-                solid_tried = true;
-                solid_status =
-                    read != POLYMASS_OK ? read : build_solid(context, input, options, mesh);
-                if (solid_status != POLYMASS_OK) failed(POLYMASS_MODE_SOLID, solid_status);
-            }
+            // A valid solid is its own answer, in either mode; its verdict
+            // is the analysis's.
             if (solid_status == POLYMASS_OK) {
-                provenance.mode = POLYMASS_MODE_SOLID;
+                solid_body(*analysis, solid_warnings, answer.body);
+                answer.provenance.mode = POLYMASS_MODE_SOLID;
                 return POLYMASS_OK;
             }
+            if (!solid_reported) {
+                solid_reported = true;
+                failed(POLYMASS_MODE_SOLID, solid_status);
+            }
             if (mode == POLYMASS_MODE_SOLID) continue;
-            status = build_repaired(context, input, options, mesh, provenance);
+            status = build_repaired(context, input, options, answer);
         } else if (mode == POLYMASS_MODE_SHELL) {
-            status = build_shell(context, input, options, mesh, provenance);
+            status = build_shell(context, input, options, answer);
         } else {
-            status = build_hull(context, input, options, mesh, provenance);
+            status = build_hull(context, input, options, answer);
         }
         if (status == POLYMASS_OK) {
-            provenance.mode = int32_t(mode);
+            const core::ApproximationBound& approximation = answer.body.approximation;
+            answer.provenance.mode = int32_t(mode);
+            answer.provenance.approximation_bound_volume = approximation.volume;
+            answer.provenance.approximation_bound_center_of_mass = approximation.center_of_mass;
+            answer.provenance.approximation_bound_inertia = approximation.inertia;
             context->clear_message();  // the modes before it failed: a success says nothing
             return POLYMASS_OK;
         }
         failed(mode, status);
     }
     // The solid alone keeps its own message, as before there were modes.
-    if (length == 1 && chain[0] == POLYMASS_MODE_SOLID) return first_status;
+    if (chain.length == 1 && chain.modes[0] == POLYMASS_MODE_SOLID) return first_status;
     return context->fail(first_status, "%s", reasons.text());
 }
 

@@ -155,15 +155,16 @@ int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* 
                              point.z());
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
+    if (const int32_t status = report_small_faces(context, input)) return status;
     if (const int32_t status = select_faces(context, input, first_face, face_count)) return status;
     return visit_mesh(input, [&](const auto& view) {
-        core::MeshAnalysis piece(core::scan_mesh(view, &context->memory, context->tasks(options)));
+        core::MeshAnalysis piece(core::scan_mesh(view, &context->memory, context->tasks()));
         uint32_t warnings = 0;
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))
             return status;
         piece.integration = core::integrate_mesh(view, range_settings(piece.scan, point, options),
-                                                 context->tasks(options));
+                                                 context->tasks());
         piece.verdict = core::judge_piece(piece);
         if (const int32_t status = report_verdict(context, input, options, piece, warnings))
             return status;
@@ -200,28 +201,6 @@ using namespace polymass::capi;
 
 extern "C" {
 
-POLYMASS_API uint32_t polymass_sizeof_moments(void) { return sizeof(polymass_moments); }
-
-POLYMASS_API int32_t polymass_moments_init(polymass_moments* moments, uint32_t struct_size) {
-    return init_struct(moments, struct_size, StructVersions<polymass_moments>::defaults());
-}
-
-POLYMASS_API int32_t polymass_moments_compute(polymass_moments* out_moments,
-                                              polymass_context* context,
-                                              const polymass_mesh_desc* desc,
-                                              const polymass_options* options) {
-    return guarded(context, [&] {
-        if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
-        polymass_options call;
-        if (const int32_t status = call_options(context, options, call)) return status;
-        polymass_mesh mesh{context->allocator, {}, {}, Eigen::Vector3d::Zero(), 0.0, 0, {}};
-        if (const int32_t status = build_mesh(context, desc, call, mesh)) return status;
-        MomentsValue value;
-        value.moments = core::Moments::of_solid(mesh.integrals, mesh.bounds, mesh.reference);
-        return write_moments(context, out_moments, value);
-    });
-}
-
 POLYMASS_API int32_t polymass_moments_compute_faces(polymass_moments* out_moments,
                                                     polymass_context* context,
                                                     const polymass_mesh_desc* desc,
@@ -231,7 +210,7 @@ POLYMASS_API int32_t polymass_moments_compute_faces(polymass_moments* out_moment
     return guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
         polymass_options call;
-        if (const int32_t status = call_options(context, options, call)) return status;
+        if (const int32_t status = read_options(context, options, call)) return status;
         MomentsValue value;
         if (const int32_t status =
                 face_range_moments(context, desc, first_face, face_count, reference, call, value))
@@ -245,8 +224,10 @@ POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polyma
     return guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
         if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
+        if (const int32_t status = unanswered(context, *mesh)) return status;
+        const Body& body = mesh->answer.body;
         MomentsValue value;
-        value.moments = core::Moments::of_solid(mesh->integrals, mesh->bounds, mesh->reference);
+        value.moments = core::Moments::of_solid(body.integrals, body.bounds, body.reference);
         return write_moments(context, out_moments, value);
     });
 }
@@ -304,7 +285,7 @@ POLYMASS_API int32_t polymass_moments_weight(polymass_moments* out_moments,
     return guarded(context, [&] {
         return unary(out_moments, context, moments, "weighted", [&](core::Moments& m) {
             if (!mass) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mass is NULL");
-            return weight_moments(context, m, mass, m, nullptr);
+            return weight_moments(context, m, mass, m);
         });
     });
 }

@@ -23,7 +23,7 @@ template <class Struct>
 constexpr bool is_known_size(uint32_t size) {
     static_assert(std::is_trivially_copyable_v<Struct>, "public structs are plain data");
     if (size == sizeof(Struct)) return true;
-    for (const uint32_t end : StructVersions<Struct>::ends) {
+    for (const uint32_t end : StructVersions<Struct>::earlier) {
         const uint32_t padded = (end + alignof(Struct) - 1) / alignof(Struct) * alignof(Struct);
         if (size == end || size == padded) return true;
     }
@@ -35,10 +35,10 @@ int32_t check_struct(polymass_context* context, const Struct* value, const char*
     if (!value) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s is NULL", name);
     if (!is_known_size<Struct>(value->struct_size))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "%s->struct_size is %u; this library (version %s) expects %u or "
-                             "the size of an earlier version of the struct (from %u)",
+                             "%s->struct_size is %u; this library (version %s) expects %u, or "
+                             "the size of an earlier %d.x version of the struct",
                              name, unsigned(value->struct_size), POLYMASS_VERSION_STRING,
-                             unsigned(sizeof(Struct)), unsigned(StructVersions<Struct>::ends[0]));
+                             unsigned(sizeof(Struct)), POLYMASS_VERSION_MAJOR);
     return POLYMASS_OK;
 }
 

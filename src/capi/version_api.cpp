@@ -15,9 +15,12 @@ POLYMASS_API uint32_t polymass_sizeof_mass_properties(void) {
     return sizeof(polymass_mass_properties);
 }
 POLYMASS_API uint32_t polymass_sizeof_diagnostics(void) { return sizeof(polymass_diagnostics); }
+POLYMASS_API uint32_t polymass_sizeof_shell(void) { return sizeof(polymass_shell); }
+POLYMASS_API uint32_t polymass_sizeof_provenance(void) { return sizeof(polymass_provenance); }
+POLYMASS_API uint32_t polymass_sizeof_moments(void) { return sizeof(polymass_moments); }
 POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void) {
     return sizeof(polymass_polygon_properties);
 }
-POLYMASS_API uint32_t polymass_sizeof_shell(void) { return sizeof(polymass_shell); }
+POLYMASS_API uint32_t polymass_sizeof_batch_item(void) { return sizeof(polymass_batch_item); }
 
 }  // extern "C"

@@ -1,5 +1,6 @@
-// polymass_mesh_weld: the library's welding on its own, for a caller (a
-// triangle-soup reader) that numbers vertices before it hands a mesh over.
+// polymass_weld_positions: the library's welding on its own, over positions
+// alone, for a caller (a triangle-soup reader) that numbers vertices before it
+// hands a mesh over.
 #include <polymass/polymass.h>
 
 #include <algorithm>
@@ -7,51 +8,55 @@
 
 #include "api_guard.hpp"
 #include "core/welding.hpp"
-#include "mesh_findings.hpp"
 #include "mesh_input.hpp"
 
 using namespace polymass;
 using namespace polymass::capi;
 
+namespace {
+
+using u64 = unsigned long long;  // for printf
+
+}  // namespace
+
 extern "C" {
 
-POLYMASS_API int32_t polymass_mesh_weld(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
-                                        polymass_context* context, const polymass_mesh_desc* desc) {
+POLYMASS_API int32_t polymass_weld_positions(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
+                                             polymass_context* context, const void* positions,
+                                             uint32_t position_type, uint64_t vertex_count,
+                                             uint64_t position_stride, double weld_tolerance) {
     return guarded(context, [&] {
-        if (!out_vertex_of || !out_distinct_count)
+        if ((!out_vertex_of && vertex_count > 0) || !out_distinct_count)
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "%s is NULL",
-                                 out_vertex_of ? "out_distinct_count" : "out_vertex_of");
-        MeshInput input;
-        if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
-        if (input.vertex_count > UINT32_MAX)
+                                 out_distinct_count ? "out_vertex_of" : "out_distinct_count");
+        if (!(weld_tolerance >= 0.0 && weld_tolerance <= POLYMASS_MAX_WELD_TOLERANCE))
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                                 "the mesh has %llu vertices; welding numbers up to %u",
-                                 static_cast<unsigned long long>(input.vertex_count), UINT32_MAX);
-        const double tolerance = context->options.weld_tolerance;
-        return visit_mesh(input, [&](const auto& view) {
-            std::pmr::memory_resource* memory = &context->memory;
-            core::MeshAnalysis scanned(
-                core::scan_mesh(view, memory, context->tasks(context->options)));
-            scanned.verdict = core::judge(scanned, {});
-            // An exact weld compares bits, so only indices out of range stop
-            // it; a weld within a tolerance measures distances, which need
-            // finite coordinates.
-            const core::Defect defect = scanned.verdict.defect;
-            if (defect == core::Defect::index_out_of_range ||
-                (tolerance > 0.0 && defect == core::Defect::non_finite)) {
-                uint32_t warnings = 0;
-                return report_verdict(context, input, context->options, scanned, warnings);
-            }
-            const std::pmr::vector<std::uint32_t> welded =
-                core::weld_vertices(view, scanned.scan, tolerance, memory);
-            // welded stops at the index type's reach (65,536 vertices for
-            // 16-bit indices): the vertices past it are used by no face.
-            std::copy(welded.begin(), welded.end(), out_vertex_of);
-            for (std::size_t vertex = welded.size(); vertex < input.vertex_count; ++vertex)
-                out_vertex_of[vertex] = std::uint32_t(vertex);
-            *out_distinct_count = core::distinct_vertices(welded, scanned.scan);
-            return int32_t(POLYMASS_OK);
-        });
+                                 "weld_tolerance is %g; it must be in [0, %g]", weld_tolerance,
+                                 POLYMASS_MAX_WELD_TOLERANCE);
+        if (vertex_count > UINT32_MAX)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "there are %llu positions; welding numbers up to %u",
+                                 u64(vertex_count), UINT32_MAX);
+        MeshInput input;
+        if (const int32_t status = read_positions(context, positions, position_type, vertex_count,
+                                                  position_stride, input))
+            return status;
+        auto weld = [&](auto scalar) {
+            using Scalar = decltype(scalar);
+            const core::PositionArray<Scalar> array{input.positions, input.position_stride};
+            return core::weld_positions(array, input.vertex_count, weld_tolerance,
+                                        &context->memory);
+        };
+        const core::WeldedPositions welded =
+            input.position_type == POLYMASS_POSITION_FLOAT32 ? weld(float{}) : weld(double{});
+        if (welded.vertex_of.size() != input.vertex_count)
+            return context->fail(POLYMASS_ERROR_NON_FINITE,
+                                 "position %llu has a NaN or infinite coordinate (%llu such "
+                                 "positions): a weld within a tolerance needs finite ones",
+                                 u64(welded.non_finite.first()), u64(welded.non_finite.count));
+        std::copy(welded.vertex_of.begin(), welded.vertex_of.end(), out_vertex_of);
+        *out_distinct_count = welded.distinct;
+        return int32_t(POLYMASS_OK);
     });
 }
 

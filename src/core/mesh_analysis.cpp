@@ -1,5 +1,6 @@
 #include "mesh_analysis.hpp"
 
+#include "shells.hpp"
 #include "welding.hpp"
 
 namespace polymass::core {
@@ -25,16 +26,21 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     }
 
     std::pmr::vector<std::uint32_t> welded(memory);
-    if (settings.check_topology) {
-        if (settings.weld) {
-            welded = weld_vertices(mesh, scan, settings.weld_tolerance, memory);
-            analysis.used_vertex_count = distinct_vertices(welded, scan);
-        }
-        analysis.topology =
-            analyse_topology(mesh, settings.weld ? welded.data() : nullptr, tasks, memory);
-        if (stop()) return analysis;
+    if (settings.weld && (settings.check_topology || settings.list_shells)) {
+        welded = weld_vertices(mesh, scan, settings.weld_tolerance, memory);
+        analysis.used_vertex_count = distinct_vertices(welded, scan);
     }
     const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
+    // The shells as connected pieces, when they were not judged.
+    auto finish = [&] {
+        if (settings.list_shells && !analysis.shells)
+            analysis.unjudged_shells = find_shells(mesh, scan, vertex_ids, tasks, memory);
+        return std::move(analysis);
+    };
+    if (settings.check_topology) {
+        analysis.topology = analyse_topology(mesh, vertex_ids, tasks, memory);
+        if (stop()) return finish();
+    }
 
     IntegrationSettings integration;
     integration.reference = scan.reference_point();
@@ -42,7 +48,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     integration.check_planarity = settings.check_topology;
     integration.planarity_tolerance = settings.planarity_tolerance;
     analysis.integration = integrate_mesh(mesh, integration, tasks);
-    if (stop()) return analysis;
+    if (stop()) return finish();
 
     // Shells are judged on a closed, oriented surface with a volume.
     if (analysis.topology &&
@@ -51,7 +57,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         analysis.shells =
             survey_shells(mesh, scan, vertex_ids, integration.reference, analysis.verdict.outward,
                           analysis.integration->integrals.volume, tasks, memory);
-        if (stop()) return analysis;
+        if (stop()) return finish();
     }
     if (settings.check_intersections && std::isfinite(scan.diagonal())) {
         const Shells* shells = analysis.shells ? &analysis.shells->shells : nullptr;
@@ -62,7 +68,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
                                 analysis.verdict.outward);
     }
     stop();
-    return analysis;
+    return finish();
 }
 
 #define POLYMASS_INSTANTIATE(Scalar, Index)            \

@@ -26,6 +26,10 @@ struct AnalysisSettings {
     bool weld = false;                 // identify coincident vertices first
     double weld_tolerance = 0;         // relative to the mesh's extent; 0: exact
     bool stop_at_first_problem = true;
+    // Lists the shells (welded as the topology is) even when they are not
+    // judged: a surface that fails a check before them, or whose topology
+    // is not checked. Faces that cannot be read have none.
+    bool list_shells = false;
     double planarity_tolerance = 1e-6;
     Policy policy;
     // Runs the pieces of the passes over the faces; null: the calling thread.
@@ -38,6 +42,7 @@ struct MeshAnalysis {
     std::optional<TopologyReport> topology;        // when checked
     std::optional<IntegrationResult> integration;  // about scan.reference_point()
     std::optional<ShellSurvey> shells;             // when checked and closed
+    std::optional<Shells> unjudged_shells;         // when listed and not judged
     std::optional<SurfaceOverlaps> overlaps;       // when asked for
     Verdict verdict;
 

@@ -80,6 +80,8 @@ Verdict judge(const MeshAnalysis& analysis, const Policy& policy) {
     if (const auto& overlaps = analysis.overlaps) {
         if (overlaps->crossing.count > 0) return refuse(Defect::crossing);
         if (overlaps->touching.count > 0) verdict.warnings |= kWarningTouching;
+    } else {
+        verdict.warnings |= kWarningIntersectionsUnchecked;
     }
     if (shells && shells->overlapping.count > 0) return refuse(Defect::overlapping_shells);
     return verdict;

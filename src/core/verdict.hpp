@@ -37,6 +37,9 @@ enum Warning : std::uint32_t {
     kWarningUnchecked = 1u << 2,    // topology not checked (trusted input)
     kWarningNonManifold = 1u << 3,  // balanced non-manifold edges
     kWarningTouching = 1u << 4,     // faces touch without crossing
+    // The intersection check did not run (skipped by name or with the
+    // topology): faces may cross and regions count twice unseen.
+    kWarningIntersectionsUnchecked = 1u << 8,
 };
 
 struct Verdict {

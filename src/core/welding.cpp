@@ -217,6 +217,35 @@ std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mes
     return representative;
 }
 
+template <class Scalar>
+WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size_t count,
+                               double tolerance, std::pmr::memory_resource* memory) {
+    // A scan of the positions as if every one were used by a face.
+    MeshScan scan(memory);
+    scan.used.assign((count + 63) / 64, ~std::uint64_t{0});
+    scan.used_vertex_count = count;
+    WeldedPositions result(memory);
+    for (std::size_t vertex = 0; vertex < count; ++vertex) {
+        const Eigen::Vector3d p = positions[vertex];
+        if (p.allFinite())
+            scan.bounds.extend(p);
+        else
+            result.non_finite.record(vertex);
+    }
+    scan.non_finite = result.non_finite;
+    if (tolerance > 0.0 && result.non_finite.count > 0) return result;
+    const MeshView<Scalar, std::uint32_t> mesh{positions, count, {}, 0, nullptr, 0};
+    result.vertex_of = weld_vertices(mesh, scan, tolerance, memory);
+    for (std::size_t vertex = 0; vertex < count; ++vertex)
+        result.distinct += result.vertex_of[vertex] == vertex;
+    return result;
+}
+
+template WeldedPositions weld_positions<double>(const PositionArray<double>&, std::size_t, double,
+                                                std::pmr::memory_resource*);
+template WeldedPositions weld_positions<float>(const PositionArray<float>&, std::size_t, double,
+                                               std::pmr::memory_resource*);
+
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                \
     template std::pmr::vector<std::uint32_t> weld_vertices<Scalar, Index>( \
         const MeshView<Scalar, Index>&, const MeshScan&, double, std::pmr::memory_resource*);

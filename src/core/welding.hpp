@@ -31,6 +31,25 @@ std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mes
                                               const MeshScan& scan, double tolerance,
                                               std::pmr::memory_resource* memory);
 
+// Welding a caller's positions alone, with no faces (polymass_weld_positions):
+// every position is a vertex.
+struct WeldedPositions {
+    // The lowest index welded to each position; empty when the weld did not run.
+    std::pmr::vector<std::uint32_t> vertex_of;
+    std::size_t distinct = 0;  // positions that are their own lowest
+    // Positions with a NaN or infinite coordinate: a weld within a tolerance
+    // measures distances, which they have none of, so it does not run.
+    Finding non_finite;
+
+    explicit WeldedPositions(std::pmr::memory_resource* memory) : vertex_of(memory) {}
+};
+
+// count < 2^32; tolerance as weld_vertices'. The extent is that of the
+// finite positions.
+template <class Scalar>
+WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size_t count,
+                               double tolerance, std::pmr::memory_resource* memory);
+
 // How many vertices are left once `welded` (weld_vertices' answer) is applied:
 // the used vertices that are their own smallest welded index.
 inline std::size_t distinct_vertices(const std::pmr::vector<std::uint32_t>& welded,
