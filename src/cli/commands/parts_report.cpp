@@ -43,6 +43,19 @@ polymass_mass_desc with_density(polymass_mass_desc mass, double density) {
     return mass;
 }
 
+// The parts are analysed without the intersection check (each by itself);
+// the check that covers them (the parts apart against each other, or the
+// whole) says whether it ran: a part's answer keeps the library's
+// POLYMASS_WARNING_INTERSECTIONS_UNCHECKED only when it did not.
+SolidResult part_properties(const Library& library, const JudgedParts& judged, size_t k,
+                            const polymass_mass_desc& mass) {
+    SolidResult result = judged.solids[k].properties(library, mass);
+    const std::optional<SurfaceAnalysis>& cover = judged.apart ? judged.between : judged.whole;
+    if (cover && (cover->diagnostics().checks & POLYMASS_CHECKED_INTERSECTIONS))
+        result.properties.warnings &= ~uint32_t(POLYMASS_WARNING_INTERSECTIONS_UNCHECKED);
+    return result;
+}
+
 // A part is not a solid by itself (a closed surface split into parts by
 // material, say), or only once turned (a cavity exported as a part): the
 // whole is computed as one surface, and the parts that are solids get its
@@ -77,12 +90,12 @@ void report_as_one(const Library& library, const Model& model, const Part& whole
         if (!solids[k].valid()) {
             set_result(part, solids[k].failure());
         } else if (own_materials) {
-            set_result(part, solids[k].properties(library, masses[k]));
+            set_result(part, part_properties(library, judged, k, masses[k]));
         } else if (density_known) {
             const polymass_mass_desc mass = whole.status == POLYMASS_OK
                                                 ? with_density(file_mass, whole.properties.density)
                                                 : file_mass;
-            set_result(part, solids[k].properties(library, mass));
+            set_result(part, part_properties(library, judged, k, mass));
         }
         report.parts.push_back(std::move(part));
     }
@@ -212,7 +225,7 @@ void report_parts(const Library& library, const std::string& path, const Model& 
             const polymass_mass_desc mass =
                 whole_mass ? with_density(file_mass, total.moments.mass / total.moments.volume)
                            : masses[k];
-            set_result(part, solids[k].properties(library, mass));
+            set_result(part, part_properties(library, judged, k, mass));
             const SolidResult& result = part.result;
             surface_area += result.status == POLYMASS_OK ? result.properties.surface_area
                                                          : std::numeric_limits<double>::quiet_NaN();
