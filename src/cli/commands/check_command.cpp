@@ -1,12 +1,12 @@
 // polymass check: every finding of the library's analysis of a file
-// (polymass_mesh_diagnostics) with its count and first few locations (vertex numbers are 0-based
-// positions in the file's vertex list, shown with their coordinates; face pairs with the shells the
-// faces are in), and the shells as the library judges them: a solid, a
-// cavity, inside out, overlapping another, or without volume. A file of
-// several parts is judged part by part, as polymass FILE judges it. Each
-// file (each part, and the parts together, for a file of several) is
-// analysed once: the findings, the shells and which mode answers are read
-// from that one analysis.
+// (polymass_mesh_diagnostics) with its count and first few locations
+// (vertex numbers are 0-based positions in the file's vertex list, shown
+// with their coordinates; face pairs with the shells the faces are in), and
+// the shells as the library judges them: a solid, a cavity, inside out,
+// overlapping another, or without volume. A file of several parts is judged
+// part by part, as polymass FILE judges it. Each file (each part, and the
+// parts together, for a file of several) is analysed once: the findings,
+// the shells and which mode answers are read from that one analysis.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -276,7 +276,7 @@ SolidResult answer_of(const Library& library, const std::string& path, const Mod
     FileReport report;
     report_parts(library, path, model, arguments, unit, *parts, report);
     SolidResult answer = report.solid.result;
-    if (answer.status == POLYMASS_OK || !answer.answering_option.empty()) return answer;
+    if (answer.status == POLYMASS_OK || answer.options_tried) return answer;
     // Refused: a chain of modes would answer the whole as one surface
     // (parts_report), so that surface says which option would answer.
     suggest_option(library, describe(model, all), answer.status, answer);

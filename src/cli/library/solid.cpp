@@ -94,6 +94,7 @@ SolidResult compute_solid(const Library& library, const Model& model, const Part
 
 void suggest_option(const Library& library, const polymass_mesh_desc& desc, int32_t status,
                     SolidResult& result) {
+    result.options_tried = true;
     if (!some_mode_may_answer(status)) return;
     // Whether a mode answers a surface the status does not rule out is
     // known only by trying it: a second analysis, of a refused surface only,

@@ -53,6 +53,7 @@ struct SolidResult {
     // "--shell T"), if one would, and what that mode would do.
     std::string answering_option;
     polymass_provenance answering_provenance{};
+    bool options_tried = false;  // suggest_option ran: the above is all there is
 };
 
 // result.properties as the library answered them, completed: its inertia

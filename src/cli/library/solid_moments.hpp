@@ -38,9 +38,10 @@ MomentsResult transformed(const Library& library, const polymass_moments& moment
 // The bodies as one, added in order (at least one).
 MomentsResult sum(const Library& library, const std::vector<polymass_moments>& bodies);
 
-// The mass properties of moments as weighted (exact solids added up: the
-// SOLID mode's provenance), inertia_point about the library's point; moments
-// keep no surface, so the area and warnings are the caller's.
+// The mass properties of moments as weighted, inertia_point about the
+// library's point, the SOLID mode's provenance (moments keep no other: the
+// warnings say what answered the bodies added up); moments keep no surface,
+// so the area and warnings are the caller's.
 SolidResult properties_of(const Library& library, const polymass_moments& moments,
                           double surface_area, uint32_t warnings);
 

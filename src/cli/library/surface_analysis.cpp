@@ -78,10 +78,10 @@ SolidResult SurfaceAnalysis::properties(const Library& library,
 }
 
 polymass_moments SurfaceAnalysis::moments(const Library& library) const {
+    if (!valid()) throw std::logic_error("the moments of a surface no mode answered");
     polymass_moments moments{};
     polymass_moments_init(&moments, sizeof moments);
-    // Reading a valid mesh's moments only copies its integrals.
-    if (!valid()) throw std::logic_error("the moments of a surface no mode answered");
+    // Reading an answered mesh's moments only copies its integrals.
     expect_ok(library, polymass_mesh_moments(&moments, library.context(), mesh_),
               "polymass_mesh_moments");
     return moments;
