@@ -426,7 +426,7 @@ typedef struct polymass_diagnostics {
     uint64_t first_non_finite_vertices[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t out_of_range_indices;
     uint64_t first_out_of_range_faces[POLYMASS_DIAGNOSTIC_LOCATIONS]; /* faces holding them */
-    uint64_t small_faces; /* fewer than 3 vertices */
+    uint64_t small_faces;                                             /* fewer than 3 vertices */
     uint64_t first_small_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t degenerate_faces; /* zero area: legal, harmless */
     uint64_t first_degenerate_faces[POLYMASS_DIAGNOSTIC_LOCATIONS];
@@ -775,12 +775,18 @@ POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_con
 POLYMASS_API void polymass_mesh_destroy(polymass_mesh* mesh);
 
 /* The mesh's status: POLYMASS_OK when a mode of the chain answered, else the
-   status polymass_mesh_create returned. Thread-safe. Since 2.0. */
+   status polymass_mesh_create returned. Thread-safe. Since 2.0.
+   Returns POLYMASS_OK, the status polymass_mesh_create returned (a surface
+   status or POLYMASS_ERROR_OVERFLOW), or POLYMASS_ERROR_INVALID_ARGUMENT for
+   a NULL mesh. */
 POLYMASS_API int32_t polymass_mesh_status(const polymass_mesh* mesh);
 
-/* Why no mode answered ("edge (4, 9) is used by 3 faces"; each mode's reason
-   when the chain has several), "" when one did. Valid as long as the mesh.
-   Never NULL. Thread-safe. Since 2.0. */
+/* What is wrong with the surface as given, in words: the message of
+   polymass_diagnostics.status ("edge (4, 9) is used by 3 faces"), kept when
+   a later mode of the chain answered; when no mode answered, each later
+   mode's reason follows ("...; hull: ..."). "" for a valid solid, "mesh is
+   NULL" for a NULL mesh. Valid as long as the mesh. Never NULL.
+   Thread-safe. Since 2.0. */
 POLYMASS_API const char* polymass_mesh_message(const polymass_mesh* mesh);
 
 /* Everything on the mesh below may be read by several threads at once, each
@@ -823,15 +829,14 @@ POLYMASS_API int32_t polymass_mesh_shell_of_face(uint32_t* out_shell_of_face, ui
    Returns POLYMASS_OK, or the mesh's status (with its message) when no mode
    answered. */
 POLYMASS_API int32_t polymass_mesh_provenance(polymass_provenance* out_provenance,
-                                              polymass_context* context,
-                                              const polymass_mesh* mesh);
+                                              polymass_context* context, const polymass_mesh* mesh);
 
 /* The moments (unit density) of the body that answered. Cheap: no pass over
    the faces. Since 2.0.
    Returns POLYMASS_OK, or the mesh's status (with its message) when no mode
    answered. */
-POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments,
-                                           polymass_context* context, const polymass_mesh* mesh);
+POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polymass_context* context,
+                                           const polymass_mesh* mesh);
 
 /* The mass properties of the body that answered, of the given density or mass
    (NULL: unit density). Cheap: no pass over the faces. Since 2.0.
@@ -981,11 +986,11 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
    vertex_count) the lowest vertex index welded to each vertex, and to
    *out_distinct_count how many vertices are their own lowest. weld_tolerance
    is polymass_options.weld_tolerance's, relative to the largest extent of
-   the positions' bounding box: 0 welds exactly equal positions (+0 and -0
-   being one, and copies of the same NaN: coordinates are compared bit for
-   bit) in one hashing pass; above 0 chains of near positions are one, and
-   then non-finite coordinates are an error. At most UINT32_MAX vertices.
-   Context: one thread at a time. Since 2.0.
+   the positions' bounding box: 0 welds exactly equal positions in one
+   hashing pass (coordinates compared by their bits once -0 is +0 and a NaN
+   is quiet: NaNs of one payload are one position); above 0 chains of near
+   positions are one, and then non-finite coordinates are an error. At most
+   UINT32_MAX vertices. Context: one thread at a time. Since 2.0.
    Returns POLYMASS_OK or POLYMASS_ERROR_NON_FINITE. */
 POLYMASS_API int32_t polymass_weld_positions(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
                                              polymass_context* context, const void* positions,
