@@ -49,14 +49,14 @@ void octahedron(pm_mesh* m, const double c[3], double r, int inside_out) {
 }
 
 int32_t verdicts(const pm_mesh* m, int32_t* unchecked, uint32_t* warnings, double* volume) {
-    polymass_context* plain = pm_context_new(UNCHECKED);
-    polymass_context* checked = pm_context_new(CHECKED);
+    polymass_context* plain = pm_context_new();
+    polymass_context* checked = pm_context_new();
     polymass_mass_properties p, q;
     int32_t status;
     pm_props_init(&p);
     pm_props_init(&q);
-    *unchecked = pm_compute(&p, plain, m, NULL);
-    status = pm_compute(&q, checked, m, NULL);
+    *unchecked = pm_compute_flags(&p, plain, m, UNCHECKED, NULL);
+    status = pm_compute_flags(&q, checked, m, CHECKED, NULL);
     if (status == POLYMASS_OK) {
         *warnings = q.warnings;
         *volume = q.volume;
@@ -68,6 +68,19 @@ int32_t verdicts(const pm_mesh* m, int32_t* unchecked, uint32_t* warnings, doubl
     }
     polymass_context_destroy(plain);
     polymass_context_destroy(checked);
+    return status;
+}
+
+int32_t shell_list(polymass_shell* shells, uint64_t capacity, uint64_t* count,
+                   polymass_context* ctx, const pm_mesh* m, uint32_t flags) {
+    const polymass_mesh_desc desc = pm_mesh_desc(m);
+    const polymass_options options = pm_options(flags, 0.0);
+    polymass_mesh* mesh = NULL;
+    int32_t status;
+    (void)polymass_mesh_create(&mesh, ctx, &desc, &options);
+    assert_non_null(mesh);
+    status = polymass_mesh_shells(shells, capacity, count, ctx, mesh);
+    polymass_mesh_destroy(mesh);
     return status;
 }
 

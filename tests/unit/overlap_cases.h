@@ -25,6 +25,11 @@ void octahedron(pm_mesh* m, const double c[3], double r, int inside_out);
    status. The unchecked status is `unchecked`. */
 int32_t verdicts(const pm_mesh* m, int32_t* unchecked, uint32_t* warnings, double* volume);
 
+/* polymass_mesh_shells of the mesh made with the flags: the first
+   min(capacity, count) shells and their count. */
+int32_t shell_list(polymass_shell* shells, uint64_t capacity, uint64_t* count,
+                   polymass_context* ctx, const pm_mesh* m, uint32_t flags);
+
 typedef struct expectation {
     int32_t checked;   /* status with the intersection check */
     int32_t unchecked; /* status without */

@@ -91,6 +91,7 @@ static void counting_init(counting_allocator* a, long fail_at, int fail_after) {
 
 static polymass_allocator counting_interface(counting_allocator* a) {
     polymass_allocator alloc;
+    assert_int_equal(polymass_allocator_init(&alloc, sizeof alloc), POLYMASS_OK);
     alloc.allocate = counting_allocate;
     alloc.deallocate = counting_deallocate;
     alloc.user_data = a;
@@ -171,11 +172,12 @@ static void run_scenario(const scenario_input* in, counting_allocator* a, scenar
         return;
     }
     o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0);
-    r->status[1] = polymass_context_set_options(ctx, &o);
+    /* Nothing kept between calls: every block goes back to the allocator. */
+    r->status[1] = polymass_context_set_scratch_limit(ctx, 0);
     {
         const polymass_mesh_desc d = pm_mesh_desc(&in->soup);
         mesh = (polymass_mesh*)&alloc;
-        r->status[2] = polymass_mesh_create(&mesh, ctx, &d);
+        r->status[2] = polymass_mesh_create(&mesh, ctx, &d, &o);
         if (r->status[2] != POLYMASS_OK) {
             assert_null(mesh);
         }
@@ -188,18 +190,18 @@ static void run_scenario(const scenario_input* in, counting_allocator* a, scenar
     {
         const polymass_mesh_desc d = pm_mesh_desc(&in->star);
         pm_props_init(&r->props[1]);
-        r->status[4] = polymass_mass_properties_compute(&r->props[1], ctx, &d, NULL);
+        r->status[4] = polymass_mass_properties_compute(&r->props[1], NULL, ctx, &d, NULL, NULL);
     }
     {
         const polymass_mesh_desc d = pm_mesh_desc(&in->soup);
         pm_diagnostics_init(&r->diag);
-        r->status[5] = polymass_mesh_check(&r->diag, ctx, &d);
+        r->status[5] = pm_diagnose(&r->diag, ctx, &d, &o);
     }
     {
         const polymass_mesh_desc d = pm_mesh_desc(&in->open_cube);
         polymass_mass_properties p;
         pm_props_init(&p);
-        r->status[6] = polymass_mass_properties_compute(&p, ctx, &d, NULL);
+        r->status[6] = polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, NULL);
         assert_true(strlen(polymass_context_message(ctx)) > 0);
     }
     pm_polygon_props_init(&r->polygon);
@@ -242,9 +244,9 @@ static void test_counting_allocator(void** state) {
 
     /* the same results as with malloc (NULL allocator) */
     {
-        polymass_context* ctx = pm_context_new(POLYMASS_OPTION_WELD_VERTICES);
-        pm_props_init(&plain.props[0]);
-        PM_ASSERT_OK(ctx, pm_compute(&plain.props[0], ctx, &in.soup, NULL));
+        polymass_context* ctx = pm_context_new();
+        PM_ASSERT_OK(ctx, pm_compute_flags(&plain.props[0], ctx, &in.soup,
+                                           POLYMASS_OPTION_WELD_VERTICES, NULL));
         PM_ASSERT_SAME_PROPERTIES("custom allocator vs malloc", &plain.props[0], &r.props[0]);
         polymass_context_destroy(ctx);
     }
@@ -274,7 +276,8 @@ static void test_allocator_is_copied(void** state) {
     counting_release(&a);
 }
 
-/* An allocator without functions is a caller error. */
+/* An allocator with one function of two, an unknown struct_size or reserved
+   bits is a caller error; one with neither function means malloc. */
 static void test_incomplete_allocator(void** state) {
     counting_allocator a;
     polymass_allocator alloc;
@@ -289,6 +292,19 @@ static void test_incomplete_allocator(void** state) {
     alloc.deallocate = NULL;
     assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_ERROR_INVALID_ARGUMENT);
     assert_null(ctx);
+    alloc = counting_interface(&a);
+    alloc.struct_size = sizeof alloc + 8;
+    assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_ERROR_INVALID_ARGUMENT);
+    assert_null(ctx);
+    alloc = counting_interface(&a);
+    alloc.reserved = 1;
+    assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_ERROR_INVALID_ARGUMENT);
+    assert_null(ctx);
+    assert_int_equal(a.allocations, 0);
+    assert_int_equal(polymass_allocator_init(&alloc, sizeof alloc), POLYMASS_OK);
+    assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_OK);
+    assert_non_null(ctx);
+    polymass_context_destroy(ctx);
     assert_int_equal(a.live_count, 0);
     counting_release(&a);
 }
@@ -299,7 +315,7 @@ static void test_mesh_outlives_context_with_allocator(void** state) {
     counting_allocator a;
     polymass_allocator alloc;
     polymass_context* maker = NULL;
-    polymass_context* reader = pm_context_new(0);
+    polymass_context* reader = pm_context_new();
     polymass_mesh* mesh = NULL;
     polymass_mass_properties p;
     const polymass_mesh_desc d = pm_reference_desc(&pm_reference_solids[PM_REF_CUBE_CAVITY]);
@@ -307,7 +323,7 @@ static void test_mesh_outlives_context_with_allocator(void** state) {
     counting_init(&a, -1, 0);
     alloc = counting_interface(&a);
     assert_int_equal(polymass_context_create(&maker, &alloc), POLYMASS_OK);
-    PM_ASSERT_OK(maker, polymass_mesh_create(&mesh, maker, &d));
+    PM_ASSERT_OK(maker, polymass_mesh_create(&mesh, maker, &d, NULL));
     polymass_context_destroy(maker);
     assert_true(a.live_count >= 1); /* the mesh */
     pm_props_init(&p);
@@ -425,7 +441,7 @@ static void test_out_of_memory_message(void** state) {
     assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_OK);
     a.fail_at = (long)a.allocations; /* everything from now on */
     a.fail_after = 1;
-    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OUT_OF_MEMORY, polymass_mesh_create(&mesh, ctx, &d));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OUT_OF_MEMORY, polymass_mesh_create(&mesh, ctx, &d, NULL));
     assert_null(mesh);
     assert_true(strlen(polymass_context_message(ctx)) > 0);
     assert_true(a.injected_failures >= 1);
@@ -455,11 +471,11 @@ static void test_context_keeps_scratch(void** state) {
     assert_int_equal(polymass_context_create(&ctx, &alloc), POLYMASS_OK);
     pm_props_init(&first);
     before = a.allocations;
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&first, ctx, &d, NULL));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&first, NULL, ctx, &d, NULL, NULL));
     first_call = a.allocations - before;
     pm_props_init(&p);
     before = a.allocations;
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, NULL));
     later_call = a.allocations - before;
     assert_memory_equal(&first, &p, sizeof p);
     assert_true(later_call < first_call);
@@ -468,13 +484,13 @@ static void test_context_keeps_scratch(void** state) {
     PM_ASSERT_OK(ctx, polymass_context_set_scratch_limit(ctx, 0));
     assert_int_equal(a.live_count, 1); /* the context alone */
     before = a.allocations;
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, NULL));
     unkept_call = a.allocations - before;
     assert_true(unkept_call >= first_call && unkept_call > later_call);
     assert_int_equal(a.live_count, 1);
     assert_memory_equal(&first, &p, sizeof p);
     PM_ASSERT_OK(ctx, polymass_context_set_scratch_limit(ctx, UINT64_MAX));
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, NULL));
     polymass_context_destroy(ctx);
     assert_clean(&a, "kept scratch");
     assert_int_equal(polymass_context_set_scratch_limit(NULL, 0), POLYMASS_ERROR_INVALID_ARGUMENT);

@@ -7,7 +7,7 @@
 
 /* Runs check on every reference solid, all through one context. */
 static void for_each_reference_solid(void (*check)(polymass_context*, const pm_reference_solid*)) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     int k;
     for (k = 0; k < PM_REF_COUNT; ++k) {
         check(ctx, &pm_reference_solids[k]);
@@ -42,14 +42,14 @@ static void check_reference_solid_via_mesh_object(polymass_context* ctx,
     polymass_diagnostics d;
     pm_props_init(&b);
     PM_ASSERT_OK(ctx, pm_compute_reference(&a, ctx, ref));
-    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc));
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc, NULL));
     assert_non_null(mesh);
     PM_ASSERT_OK(ctx, polymass_mesh_mass_properties(&b, ctx, mesh, NULL));
     PM_ASSERT_SAME_PROPERTIES(ref->name, &a, &b);
     polymass_mesh_destroy(mesh);
 
     pm_diagnostics_init(&d);
-    PM_ASSERT_OK(ctx, polymass_mesh_check(&d, ctx, &desc));
+    PM_ASSERT_OK(ctx, pm_diagnose(&d, ctx, &desc, NULL));
     assert_int_equal(d.status, POLYMASS_OK);
     assert_int_equal(d.face_count, ref->face_count);
     assert_int_equal(d.used_vertex_count, ref->vertex_count);
@@ -78,7 +78,7 @@ static void test_boxes_closed_form(void** state) {
         {{-3.5, -2.25, -1.125}, {-3, 1.75, 0.5}},
         {{10, 20, 30}, {10.0625, 20.5, 38}}, /* thin plate, far from the origin */
     };
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t k;
     int triangulate;
     (void)state;
@@ -99,7 +99,7 @@ static void test_boxes_closed_form(void** state) {
 /* The unit cube at the origin corner: simple numbers, products of inertia
    about the origin negative (I = integral (|r|^2 Id - r r^T)). */
 static void test_unit_cube_sign_convention(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     pm_mesh m;
     int i;
@@ -149,7 +149,7 @@ static pm_expected corner_tetra_expected(const double p[3], double a, double b, 
 static void test_corner_tetrahedron_closed_form(void** state) {
     static const double corners[][3] = {{0, 0, 0}, {0.5, 0.25, -0.125}, {-7, 3, 11}};
     static const double legs[][3] = {{1, 1, 1}, {2, 1.5, 0.75}, {0.25, 4, 1}};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t k;
     (void)state;
     for (k = 0; k < 3; ++k) {
@@ -188,7 +188,7 @@ static void test_regular_tetrahedron_closed_form(void** state) {
     const double edge = 1.5 * sqrt(2.0);
     const double volume = edge * edge * edge / (6 * sqrt(2.0));
     const double moment = volume * edge * edge / 20;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     int i;
     (void)state;
@@ -214,7 +214,7 @@ static void test_prisms_built_in_c_match_reference(void** state) {
     static const double ell[] = {-0.75, 0.125, 1.25,  0.125, 1.25,  0.625,
                                  -0.25, 0.625, -0.25, 1.625, -0.75, 1.625};
     const pm_expected e = pm_expected_from_reference(&pm_reference_solids[PM_REF_PRISM_L]);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     pm_mesh m;
     (void)state;
@@ -242,7 +242,7 @@ static void test_cube_with_cavity_closed_form(void** state) {
     static const double ilo[3] = {-0.25, 0.25, -0.125}, ihi[3] = {0.5, 1.0, 0.625};
     const pm_expected outer = pm_expected_box(olo, ohi);
     pm_expected inner = pm_expected_box(ilo, ihi), e;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     pm_mesh m, cavity;
     int i;
@@ -278,7 +278,7 @@ static void test_ring_of_boxes_closed_form(void** state) {
     static const double hi[4][3] = {
         {1.5, -0.75, 0.5}, {1.5, 1.5, 0.5}, {-0.75, 0.75, 0.5}, {1.5, 0.75, 0.5}};
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_RING_OF_BOXES];
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     pm_expected e = pm_expected_box(lo[0], hi[0]);
     int k;
@@ -298,7 +298,7 @@ static void test_ring_of_boxes_closed_form(void** state) {
 
 /* A quad cube and the same cube in triangles are the same solid. */
 static void test_cube_quads_equals_triangles(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties q, t;
     const double lo[3] = {0.25, -0.5, 0.75}, hi[3] = {1.75, 1.0, 2.25};
     const pm_expected e = pm_expected_box(lo, hi);

@@ -1,5 +1,6 @@
-/* polymass_batch_compute: every item bit for bit its single call's result,
- * per-item errors that do not stop the others, per-item options. */
+/* polymass_batch_compute: every item bit for bit its single call's result
+ * (properties and provenance), per-item errors that do not stop the others,
+ * per-item options (NULL: the defaults). */
 #include "test_support.h"
 
 #include <string.h>
@@ -7,11 +8,12 @@
 #define ITEMS 6
 
 static void test_batch_matches_single_calls(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     pm_mesh meshes[ITEMS];
     polymass_mesh_desc descs[ITEMS];
     polymass_mass_desc masses[ITEMS];
     polymass_mass_properties batch[ITEMS], single;
+    polymass_provenance provenances[ITEMS], single_provenance;
     polymass_batch_item items[ITEMS];
     polymass_options accept = pm_options(POLYMASS_OPTION_ACCEPT_INVERTED, 0.0);
     uint64_t failed = 99;
@@ -21,10 +23,12 @@ static void test_batch_matches_single_calls(void** state) {
         pm_mesh_from_reference(&meshes[i], &pm_reference_solids[i % PM_REF_COUNT]);
         masses[i] = pm_mass_density(1.0 + i);
         pm_props_init(&batch[i]);
+        assert_int_equal(polymass_provenance_init(&provenances[i], sizeof provenances[i]),
+                         POLYMASS_OK);
         assert_int_equal(polymass_batch_item_init(&items[i], sizeof items[i]), POLYMASS_OK);
     }
     pm_mesh_remove_face(&meshes[2], 0); /* open: fails */
-    pm_mesh_reverse_all(&meshes[4]);    /* inverted: fails with the context's options... */
+    pm_mesh_reverse_all(&meshes[4]);    /* inverted: fails with the default options... */
     pm_mesh_reverse_all(&meshes[5]);    /* ...and is accepted with the item's own */
     for (i = 0; i < ITEMS; ++i) {
         descs[i] = pm_mesh_desc(&meshes[i]);
@@ -32,18 +36,25 @@ static void test_batch_matches_single_calls(void** state) {
         items[i].mass = i == 0 ? NULL : &masses[i];
         items[i].options = i == 5 ? &accept : NULL;
         items[i].properties = &batch[i];
+        items[i].provenance = i % 2 ? &provenances[i] : NULL;
     }
     PM_ASSERT_OK(ctx, polymass_batch_compute(items, ITEMS, &failed, ctx));
     assert_int_equal(failed, 2);
     for (i = 0; i < ITEMS; ++i) {
         int32_t status;
         pm_props_init(&single);
-        status = polymass_mass_properties_compute_with_options(&single, ctx, &descs[i],
-                                                               items[i].mass, items[i].options);
+        polymass_provenance_init(&single_provenance, sizeof single_provenance);
+        status = polymass_mass_properties_compute(&single, &single_provenance, ctx, &descs[i],
+                                                  items[i].options, items[i].mass);
         assert_int_equal(items[i].status, status);
         assert_string_equal(items[i].message, polymass_context_message(ctx));
-        if (status == POLYMASS_OK)
+        if (status == POLYMASS_OK) {
             assert_memory_equal(&batch[i], &single, sizeof single); /* bit for bit */
+            if (items[i].provenance) {
+                assert_memory_equal(&provenances[i], &single_provenance, sizeof single_provenance);
+                assert_int_equal(provenances[i].mode, POLYMASS_MODE_SOLID);
+            }
+        }
     }
     assert_int_equal(items[2].status, POLYMASS_ERROR_OPEN);
     assert_int_equal(items[4].status, POLYMASS_ERROR_INVERTED);
@@ -55,7 +66,7 @@ static void test_batch_matches_single_calls(void** state) {
 }
 
 static void test_batch_refuses_bad_arrays(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_batch_item items[2];
     uint64_t failed = 7;
     (void)state;

@@ -1,7 +1,8 @@
 /* What the header promises to threads, exercised at once (run under
  * ThreadSanitizer by the tsan step of scripts/test.sh, with test_threads and
  * test_batch): calls that are "thread-safe" (context creation), one mesh read
- * through many contexts by moments, check and mass properties, batches run by
+ * through many contexts by moments, diagnostics and mass properties, meshes
+ * made and checked at once, batches run by
  * several threads each with its own context over shared descriptions, and
  * contexts created, configured and destroyed while others work. Every thread
  * must get the answer the main thread got, bit for bit. */
@@ -36,28 +37,36 @@ static void* work(void* arg) {
         polymass_batch_item items[BATCH];
         polymass_mass_properties out[BATCH];
         polymass_options options;
+        polymass_mesh* own = NULL;
         uint64_t failed = 1;
         int i;
-        /* A context of its own, with options of its own, every round. */
+        /* A context of its own, and options of its own, every round. */
         if (polymass_context_create(&ctx, NULL) != POLYMASS_OK) {
             w->failures++;
             continue;
         }
         options =
             pm_options((unsigned)(w->index + round) % 2 ? POLYMASS_OPTION_ACCEPT_INVERTED : 0, 0.0);
-        if (polymass_context_set_options(ctx, &options) != POLYMASS_OK) w->failures++;
         memset(&m, 0, sizeof m);
         m.struct_size = sizeof m;
         if (polymass_mesh_moments(&m, ctx, in->mesh) != POLYMASS_OK ||
             memcmp(&m, &in->moments, sizeof m) != 0)
             w->failures++;
         pm_diagnostics_init(&d);
-        if (polymass_mesh_check(&d, ctx, &in->descs[w->index % BATCH]) != POLYMASS_OK)
+        if (polymass_mesh_create(&own, ctx, &in->descs[w->index % BATCH], &options) !=
+                POLYMASS_OK ||
+            polymass_mesh_diagnostics(&d, ctx, own) != POLYMASS_OK || d.status != POLYMASS_OK)
+            w->failures++;
+        polymass_mesh_destroy(own);
+        pm_diagnostics_init(&d);
+        if (polymass_mesh_diagnostics(&d, ctx, in->mesh) != POLYMASS_OK ||
+            d.status != POLYMASS_OK || d.shell_count != 1)
             w->failures++;
         for (i = 0; i < BATCH; ++i) {
             memset(&items[i], 0, sizeof items[i]);
             items[i].struct_size = sizeof items[i];
             items[i].desc = &in->descs[i];
+            items[i].options = &options;
             pm_props_init(&out[i]);
             items[i].properties = &out[i];
         }
@@ -73,7 +82,7 @@ static void* work(void* arg) {
 static void test_many_threads_share_meshes_and_batches(void** state) {
     polymass_mesh_desc descs[BATCH];
     shared_input input;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mesh* mesh = NULL;
     pthread_t threads[THREADS];
     worker workers[THREADS];
@@ -82,13 +91,14 @@ static void test_many_threads_share_meshes_and_batches(void** state) {
     memset(&input, 0, sizeof input);
     for (i = 0; i < BATCH; ++i) descs[i] = pm_reference_desc(&pm_reference_solids[i]);
     input.descs = descs;
-    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &descs[BATCH - 1]));
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &descs[BATCH - 1], NULL));
     input.mesh = mesh;
     input.moments.struct_size = sizeof input.moments;
     PM_ASSERT_OK(ctx, polymass_mesh_moments(&input.moments, ctx, mesh));
     for (i = 0; i < BATCH; ++i) {
         pm_props_init(&input.batch[i]);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&input.batch[i], ctx, &descs[i], NULL));
+        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&input.batch[i], NULL, ctx, &descs[i],
+                                                           NULL, NULL));
     }
     for (i = 0; i < THREADS; ++i) {
         workers[i].input = &input;

@@ -95,14 +95,15 @@ static void expect_kind(uint64_t count, const uint64_t (*first)[2], const edge_f
     }
 }
 
-static void expect_findings_of_plain_count(polymass_context* ctx, const pm_mesh* m) {
+static void expect_findings_of_plain_count(polymass_context* ctx, const pm_mesh* m,
+                                           uint32_t flags) {
     const edge_findings e = count_edges(m);
     polymass_diagnostics d;
     int force_face_sizes;
     for (force_face_sizes = 0; force_face_sizes < 2; ++force_face_sizes) {
         const polymass_mesh_desc desc = pm_mesh_desc_ex(m, force_face_sizes);
-        pm_diagnostics_init(&d);
-        (void)polymass_mesh_check(&d, ctx, &desc);
+        const polymass_options options = pm_options(flags, 0.0);
+        (void)pm_diagnose(&d, ctx, &desc, &options);
         assert_int_equal(d.edge_count, e.edges);
         expect_kind(d.open_edges, d.first_open_edges, &e, OPEN);
         expect_kind(d.non_manifold_edges, d.first_non_manifold_edges, &e, NON_MANIFOLD);
@@ -149,7 +150,8 @@ static void test_findings_equal_a_plain_count(void** state) {
     static const double centre[3] = {0, 0, 0};
     /* The edges' findings are under test, twelve checks of 72,000 triangles:
        the intersection check is skipped. */
-    polymass_context* ctx = pm_context_new(POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
+    const uint32_t flags = POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     size_t face, numbering;
     (void)state;
@@ -157,16 +159,16 @@ static void test_findings_equal_a_plain_count(void** state) {
         pm_mesh_init(&m);
         pm_mesh_add_torus(&m, 300, 120, 10.0, 3.0, centre);
         if (numbering == 1) shuffle_vertices(&m);
-        expect_findings_of_plain_count(ctx, &m); /* closed: no findings */
+        expect_findings_of_plain_count(ctx, &m, flags); /* closed: no findings */
         for (face = 5; face < m.face_count; face += 1499) pm_mesh_reverse_face(&m, face);
         for (face = 11; face < m.face_count; face += 2999) append_face_of(&m, face, 0);
         for (face = 17; face < m.face_count; face += 4999) {
             append_face_of(&m, face, 0);
             append_face_of(&m, face, 1);
         }
-        expect_findings_of_plain_count(ctx, &m);
+        expect_findings_of_plain_count(ctx, &m, flags);
         for (face = m.face_count - 3; face > 997; face -= 997) pm_mesh_remove_face(&m, face);
-        expect_findings_of_plain_count(ctx, &m);
+        expect_findings_of_plain_count(ctx, &m, flags);
         pm_mesh_free(&m);
     }
     polymass_context_destroy(ctx);
@@ -176,7 +178,7 @@ static void test_findings_equal_a_plain_count(void** state) {
    repeats it on both sides of another vertex traverses that edge both ways. */
 static void test_repeated_corners(void** state) {
     static const double centre[3] = {0, 0, 0};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     (void)state;
     pm_mesh_init(&m);
@@ -184,7 +186,7 @@ static void test_repeated_corners(void** state) {
     pm_mesh_add_tri(&m, 100, 100, 900); /* a new edge, once each way */
     pm_mesh_add_tri(&m, 31, 31, 32);    /* an edge of the torus, twice each way */
     pm_mesh_add_tri(&m, 500, 500, 500); /* no edge */
-    expect_findings_of_plain_count(ctx, &m);
+    expect_findings_of_plain_count(ctx, &m, 0);
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }
@@ -196,7 +198,7 @@ static void test_repeated_corners(void** state) {
    traversals as edges then, but not each edge once each way. */
 static void test_open_and_non_manifold_edges_of_one_vertex(void** state) {
     static const double centre[3] = {0, 0, 0};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     uint32_t extra;
     (void)state;
@@ -204,7 +206,7 @@ static void test_open_and_non_manifold_edges_of_one_vertex(void** state) {
     pm_mesh_add_torus(&m, 40, 30, 10.0, 3.0, centre);
     extra = pm_mesh_add_vertex(&m, 20, 20, 20);
     pm_mesh_add_tri(&m, 100, 101, extra);
-    expect_findings_of_plain_count(ctx, &m);
+    expect_findings_of_plain_count(ctx, &m, 0);
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }

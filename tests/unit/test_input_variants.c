@@ -46,7 +46,7 @@ static pm_layout layout_number(size_t n) {
 }
 
 static void test_variants_equal_packed_double(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t s, n;
     (void)state;
     for (s = 0; s < SOLID_COUNT; ++s) {
@@ -67,7 +67,8 @@ static void test_variants_equal_packed_double(void** state) {
                      (unsigned)layout.stride, (unsigned)layout.misalign,
                      layout.index_type == POLYMASS_INDEX_UINT16 ? "uint16" : "uint32");
             pm_props_init(&p);
-            PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &laid_out.desc, NULL));
+            PM_ASSERT_OK(
+                ctx, polymass_mass_properties_compute(&p, NULL, ctx, &laid_out.desc, NULL, NULL));
             PM_ASSERT_SAME_PROPERTIES(label, &base, &p);
             pm_laid_out_free(&laid_out);
         }
@@ -81,7 +82,7 @@ static void test_variants_equal_packed_double(void** state) {
 static void test_unused_vertices(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_PRISM_12GON];
     const pm_expected e = pm_expected_from_reference(ref);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     polymass_diagnostics d;
     pm_mesh m;
@@ -117,7 +118,7 @@ static void test_unused_vertices(void** state) {
 /* The mesh keeps the integrals, not the caller's arrays. */
 static void test_mesh_does_not_keep_caller_arrays(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_HOUSE];
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties before, after;
     polymass_mesh* mesh = NULL;
     pm_mesh m;
@@ -126,7 +127,7 @@ static void test_mesh_does_not_keep_caller_arrays(void** state) {
     pm_mesh_from_reference(&m, ref);
     {
         const polymass_mesh_desc d = pm_mesh_desc(&m);
-        PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &d));
+        PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &d, NULL));
     }
     /* scribble over, then free the arrays (ASan catches any later read) */
     memset(m.positions, 0xFF, m.vertex_count * 3 * sizeof(double));
@@ -146,12 +147,12 @@ static void test_mesh_outlives_its_context(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_OCTAHEDRON_IRREGULAR];
     const polymass_mesh_desc d = pm_reference_desc(ref);
     const pm_expected e = pm_expected_from_reference(ref);
-    polymass_context* maker = pm_context_new(0);
-    polymass_context* reader = pm_context_new(0);
+    polymass_context* maker = pm_context_new();
+    polymass_context* reader = pm_context_new();
     polymass_mesh* mesh = NULL;
     polymass_mass_properties p;
     (void)state;
-    PM_ASSERT_OK(maker, polymass_mesh_create(&mesh, maker, &d));
+    PM_ASSERT_OK(maker, polymass_mesh_create(&mesh, maker, &d, NULL));
     polymass_context_destroy(maker);
     pm_props_init(&p);
     PM_ASSERT_OK(reader, polymass_mesh_mass_properties(&p, reader, mesh, NULL));
@@ -163,7 +164,7 @@ static void test_mesh_outlives_its_context(void** state) {
 /* A float32 vertex buffer whose values are not doubles' neighbours: the
    result is that of the float values widened to double. */
 static void test_float32_rounded_values(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     const float lo[3] = {0.1f, -0.3f, 0.7f}, hi[3] = {1.3f, 0.9f, 2.9f};
     const double dlo[3] = {lo[0], lo[1], lo[2]}, dhi[3] = {hi[0], hi[1], hi[2]};
     const pm_expected e = pm_expected_box(dlo, dhi);
@@ -183,7 +184,7 @@ static void test_float32_rounded_values(void** state) {
     d.position_type = POLYMASS_POSITION_FLOAT32;
     d.positions = positions;
     pm_props_init(&p);
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, NULL));
     PM_ASSERT_PROPERTIES("float32 box", &e, &p, PM_TOL);
     PM_ASSERT_OK(ctx, pm_compute(&pd, ctx, &m, NULL));
     PM_ASSERT_SAME_PROPERTIES("float32 box vs the same values in double", &pd, &p);

@@ -69,7 +69,7 @@ static void test_torus_through_itself(void** state) {
     pm_mesh_init(&m);
     pm_mesh_add_torus(&m, 24, 24, 2.0, 1.0, origin);
     {
-        polymass_context* ctx = pm_context_new(CHECKED);
+        polymass_context* ctx = pm_context_new();
         polymass_mass_properties p;
         pm_props_init(&p);
         PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
@@ -115,7 +115,7 @@ static void test_neighbours_folded_through_each_other(void** state) {
    computation stops at the zero volume before the check, so the check's own
    verdict is read from the full report, which runs it whatever the volume. */
 static void test_faces_folded_flat_onto_their_neighbours(void** state) {
-    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     size_t k;
     (void)state;
@@ -161,7 +161,7 @@ static void test_faces_folded_flat_onto_their_neighbours(void** state) {
 static void test_subnormal_surfaces(void** state) {
     const double scale = ldexp(1.0, -1050);
     pm_mesh m;
-    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_context* ctx = pm_context_new();
     polymass_diagnostics d;
     (void)state;
     pm_mesh_init(&m);
@@ -176,7 +176,7 @@ static void test_subnormal_surfaces(void** state) {
 
 static void test_report_lists_pairs_and_shells(void** state) {
     pm_mesh m;
-    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_context* ctx = pm_context_new();
     polymass_diagnostics d;
     polymass_shell shells[3];
     uint64_t count = 0, i;
@@ -214,10 +214,7 @@ static void test_report_lists_pairs_and_shells(void** state) {
         memset(&shells[i], 0, sizeof shells[i]);
         shells[i].struct_size = sizeof shells[i];
     }
-    {
-        polymass_mesh_desc desc = pm_mesh_desc(&m);
-        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 3, &count, ctx, &desc));
-    }
+    PM_ASSERT_OK(ctx, shell_list(shells, 3, &count, ctx, &m, CHECKED));
     assert_int_equal(count, 2);
     assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
     assert_int_equal(shells[0].face_count, 6);
@@ -237,13 +234,10 @@ static void test_report_lists_pairs_and_shells(void** state) {
     assert_int_equal(d.inverted_shells, 1);
     assert_int_equal(d.first_inverted_shells[0], 2);
     assert_true(d.first_inverted_shells[1] == POLYMASS_NONE);
-    {
-        polymass_mesh_desc desc = pm_mesh_desc(&m);
-        count = 0;
-        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(NULL, 0, &count, ctx, &desc));
-        assert_int_equal(count, 3);
-        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 3, &count, ctx, &desc));
-    }
+    count = 0;
+    PM_ASSERT_OK(ctx, shell_list(NULL, 0, &count, ctx, &m, CHECKED));
+    assert_int_equal(count, 3);
+    PM_ASSERT_OK(ctx, shell_list(shells, 3, &count, ctx, &m, CHECKED));
     assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
     assert_int_equal(shells[1].kind, POLYMASS_SHELL_CAVITY);
     assert_int_equal(shells[2].kind, POLYMASS_SHELL_INVERTED);
@@ -264,10 +258,7 @@ static void test_report_lists_pairs_and_shells(void** state) {
     pm_diagnostics_init(&d);
     PM_ASSERT_OK(ctx, pm_check(&d, ctx, &m));
     assert_int_equal(d.shell_count, 2);
-    {
-        polymass_mesh_desc desc = pm_mesh_desc(&m);
-        PM_ASSERT_OK(ctx, polymass_mesh_shell_list(shells, 3, &count, ctx, &desc));
-    }
+    PM_ASSERT_OK(ctx, shell_list(shells, 3, &count, ctx, &m, CHECKED));
     assert_int_equal(count, 2);
     assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
     assert_int_equal(shells[1].kind, POLYMASS_SHELL_NO_VOLUME);
@@ -300,7 +291,7 @@ static int32_t check_pile(polymass_diagnostics* d, polymass_context* ctx, int co
    lowest, those of a pile of four. Forty copies pass the limit for both kinds. */
 static void test_piles_of_copies_stop_counting(void** state) {
     static const double steps[] = {1e-3, 0.0}; /* crossing, then touching */
-    polymass_context* ctx = pm_context_new(CHECKED);
+    polymass_context* ctx = pm_context_new();
     polymass_diagnostics few, many;
     size_t s, i;
     (void)state;
@@ -382,7 +373,7 @@ static void test_copies_are_paired_as_triangles_are(void** state) {
     /* 0.4 radians about (1, 2, 3) / sqrt(14) */
     static const double turn[9] = {0.92669949,  -0.30095229, 0.22506836, 0.32350629, 0.94361500,
                                    -0.07024543, -0.19123736, 0.13790743, 0.97180750};
-    polymass_context* ctx = pm_context_new(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    polymass_context* ctx = pm_context_new();
     int turned_cube;
     (void)state;
     for (turned_cube = 0; turned_cube < 2; ++turned_cube) {
@@ -462,9 +453,9 @@ static void test_coinciding_faces_of_two_shells(void** state) {
    (a sheet of no thickness) cancels instead, and so does a cube beside its
    inside-out copy on the same vertices. */
 static void test_surface_welded_to_its_copy(void** state) {
-    const int32_t flags = CHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-    polymass_context* checked = pm_context_new(flags);
-    polymass_context* plain = pm_context_new(UNCHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD);
+    const uint32_t flags = CHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
+    polymass_context* checked = pm_context_new();
+    polymass_context* plain = pm_context_new();
     int triangulate, reversed;
     (void)state;
     for (triangulate = 0; triangulate < 2; ++triangulate) {
@@ -485,14 +476,18 @@ static void test_surface_welded_to_its_copy(void** state) {
             pm_diagnostics_init(&d);
             if (reversed) {
                 /* Nothing bounded: no face pair crosses. */
-                PM_ASSERT_STATUS(checked, POLYMASS_ERROR_ZERO_VOLUME, pm_check(&d, checked, &m));
+                PM_ASSERT_STATUS(checked, POLYMASS_ERROR_ZERO_VOLUME,
+                                 pm_check_flags(&d, checked, &m, flags));
                 assert_int_equal(d.intersecting_face_pairs, 0);
             } else {
-                PM_ASSERT_STATUS(checked, POLYMASS_ERROR_INTERSECTING, pm_check(&d, checked, &m));
+                PM_ASSERT_STATUS(checked, POLYMASS_ERROR_INTERSECTING,
+                                 pm_check_flags(&d, checked, &m, flags));
                 /* each face with its copy (quads: with both halves' copies) */
                 assert_true(d.intersecting_face_pairs >= copy.face_count);
                 /* Without the check the solid counts twice, as documented. */
-                PM_ASSERT_OK(plain, pm_compute(&p, plain, &m, NULL));
+                PM_ASSERT_OK(
+                    plain, pm_compute_flags(&p, plain, &m,
+                                            UNCHECKED | POLYMASS_OPTION_ACCEPT_NON_MANIFOLD, NULL));
                 PM_ASSERT_REL("volume counted twice", 2.0, p.volume, 1e-15);
             }
             pm_mesh_free(&copy);

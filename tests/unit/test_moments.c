@@ -18,9 +18,12 @@ static polymass_moments moments_of(polymass_context* ctx, const pm_mesh* m) {
     polymass_moments out;
     polymass_mesh_desc desc = pm_mesh_desc(m);
     assert_int_equal(polymass_moments_init(&out, sizeof out), POLYMASS_OK);
-    PM_ASSERT_OK(ctx, polymass_moments_compute(&out, ctx, &desc, NULL));
+    PM_ASSERT_OK(ctx, pm_moments(&out, ctx, &desc, NULL));
     return out;
 }
+
+/* A mirrored mesh is inverted; accepted, it is turned the right way. */
+static const uint32_t accept_inverted = POLYMASS_OPTION_ACCEPT_INVERTED;
 
 static polymass_mass_properties properties_of(polymass_context* ctx, const polymass_moments* m,
                                               const polymass_mass_desc* mass) {
@@ -48,7 +51,7 @@ static void without_area(pm_expected* e) { e->surface_area = NAN; }
 
 /* Each reference solid beside a second copy moved clear of it. */
 static void test_disjoint_parts_add_up(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     static const double offsets[][3] = {{8, 0.5, -0.25}, {1e6, 0, 0}, {1e8, -1e8, 0}};
     int k;
     size_t o;
@@ -97,7 +100,7 @@ static void test_disjoint_parts_add_up(void** state) {
 /* Same result whatever the grouping (to rounding), and the same bits for the
    same grouping and order. */
 static void test_sum_associative_and_deterministic(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_moments parts[3], left = POLYMASS_MOMENTS_INIT, right = POLYMASS_MOMENTS_INIT,
                                again = POLYMASS_MOMENTS_INIT;
     polymass_mass_properties p_left, p_right;
@@ -142,7 +145,7 @@ static const motion motions[] = {
 };
 
 static void test_moved_moments_equal_moved_mesh(void** state) {
-    polymass_context* ctx = pm_context_new(POLYMASS_OPTION_ACCEPT_INVERTED);
+    polymass_context* ctx = pm_context_new();
     size_t t;
     int k;
     (void)state;
@@ -163,7 +166,7 @@ static void test_moved_moments_equal_moved_mesh(void** state) {
             moved = properties_of(ctx, &moments, NULL);
             /* A mirrored mesh is inverted; accepted, it is turned the right way. */
             pm_mesh_transform(&m, mo->rotation, 1.0, mo->translation);
-            PM_ASSERT_OK(ctx, pm_compute(&mesh_moved, ctx, &m, NULL));
+            PM_ASSERT_OK(ctx, pm_compute_flags(&mesh_moved, ctx, &m, accept_inverted, NULL));
             snprintf(label, sizeof label, "%s, %s", ref->name, mo->name);
             e.size = pm_mesh_size(&m);
             without_area(&e);
@@ -177,7 +180,7 @@ static void test_moved_moments_equal_moved_mesh(void** state) {
 
 /* Per-axis scale by powers of two (exact on the mesh), with a mirror. */
 static void test_scaled_moments_equal_scaled_mesh(void** state) {
-    polymass_context* ctx = pm_context_new(POLYMASS_OPTION_ACCEPT_INVERTED);
+    polymass_context* ctx = pm_context_new();
     static const double factors[][3] = {{2, 0.5, 4}, {1024, 1024, 1024}, {-0.25, 1, 8}};
     size_t f;
     int k;
@@ -195,7 +198,7 @@ static void test_scaled_moments_equal_scaled_mesh(void** state) {
             PM_ASSERT_OK(ctx, polymass_moments_scale(&moments, ctx, &moments, s));
             scaled = properties_of(ctx, &moments, NULL);
             pm_mesh_transform(&m, diagonal, 1.0, NULL);
-            PM_ASSERT_OK(ctx, pm_compute(&mesh_scaled, ctx, &m, NULL));
+            PM_ASSERT_OK(ctx, pm_compute_flags(&mesh_scaled, ctx, &m, accept_inverted, NULL));
             snprintf(label, sizeof label, "%s scaled by (%g, %g, %g)", pm_reference_solids[k].name,
                      s[0], s[1], s[2]);
             assert_same_body(label, &mesh_scaled, &scaled, pm_mesh_size(&m), PM_TOL);
@@ -207,7 +210,7 @@ static void test_scaled_moments_equal_scaled_mesh(void** state) {
 
 /* cube_cavity is a cube with a box cavity: the block minus the bore. */
 static void test_difference_is_block_minus_bore(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     static const double lo[3] = {-0.75, -0.5, -1.125}, hi[3] = {1.25, 1.5, 0.875};
     static const double bore_lo[3] = {-0.25, 0.25, -0.125}, bore_hi[3] = {0.5, 1.0, 0.625};
     const pm_reference_solid* ref = NULL;
@@ -243,7 +246,7 @@ static void test_difference_is_block_minus_bore(void** state) {
 /* Three boxes of densities 1, 2 and a given mass, far from the origin: the
    exact composite from the closed forms of boxes and the parallel-axis theorem. */
 static void test_assembly_of_weighted_parts(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     static const double lo[3][3] = {{1e6, 1e6, 0}, {1e6 + 2, 1e6, 0}, {1e6, 1e6 + 3, 0.5}};
     static const double hi[3][3] = {
         {1e6 + 2, 1e6 + 1, 1}, {1e6 + 3, 1e6 + 2, 0.5}, {1e6 + 0.5, 1e6 + 4, 2}};
@@ -290,7 +293,7 @@ static void test_assembly_of_weighted_parts(void** state) {
 
 /* Ranges of faces about one point, added in order, are the whole surface. */
 static void test_face_ranges_add_up(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     static const double far[3] = {1e8, -1e6, 3};
     int k;
     (void)state;
@@ -333,7 +336,7 @@ static void test_face_ranges_add_up(void** state) {
 }
 
 static void test_moments_refuse_bad_arguments(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     polymass_moments moments, partial = POLYMASS_MOMENTS_INIT;
     polymass_mesh_desc desc;
@@ -397,11 +400,10 @@ static void test_moments_refuse_bad_arguments(void** state) {
     polymass_context_destroy(ctx);
 }
 
-/* Options given for one call apply to it alone; NULL takes the context's. */
+/* Options given for one call apply to it alone; NULL is the defaults. */
 static void test_options_per_call(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_options accept = pm_options(POLYMASS_OPTION_ACCEPT_INVERTED, 0.0), bad = accept;
-    polymass_options now = POLYMASS_OPTIONS_INIT;
     polymass_mass_properties p;
     polymass_diagnostics report;
     polymass_moments moments;
@@ -414,24 +416,22 @@ static void test_options_per_call(void** state) {
     desc = pm_mesh_desc(&m);
     pm_props_init(&p);
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED,
-                     polymass_mass_properties_compute_with_options(&p, ctx, &desc, NULL, NULL));
-    PM_ASSERT_OK(ctx, polymass_mass_properties_compute_with_options(&p, ctx, &desc, NULL, &accept));
+                     polymass_mass_properties_compute(&p, NULL, ctx, &desc, NULL, NULL));
+    PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, NULL, ctx, &desc, &accept, NULL));
     assert_true(p.warnings & POLYMASS_WARNING_INVERTED);
     PM_ASSERT_REL("turned volume", 1.0, p.volume, PM_TOL);
-    PM_ASSERT_OK(ctx, polymass_mesh_create_with_options(&mesh, ctx, &desc, &accept));
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc, &accept));
     polymass_mesh_destroy(mesh);
     pm_diagnostics_init(&report);
-    PM_ASSERT_OK(ctx, polymass_mesh_check_with_options(&report, ctx, &desc, &accept));
+    PM_ASSERT_OK(ctx, pm_diagnose(&report, ctx, &desc, &accept));
     assert_int_equal(report.status, POLYMASS_OK);
     assert_int_equal(polymass_moments_init(&moments, sizeof moments), POLYMASS_OK);
-    PM_ASSERT_OK(ctx, polymass_moments_compute(&moments, ctx, &desc, &accept));
+    PM_ASSERT_OK(ctx, pm_moments(&moments, ctx, &desc, &accept));
     PM_ASSERT_REL("turned moments", 1.0, moments.volume, PM_TOL);
     bad.weld_tolerance = 1.0;
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mass_properties_compute_with_options(&p, ctx, &desc, NULL, &bad));
-    /* The context's own options are untouched. */
-    PM_ASSERT_OK(ctx, polymass_context_get_options(&now, ctx));
-    assert_int_equal(now.flags, 0);
+                     polymass_mass_properties_compute(&p, NULL, ctx, &desc, &bad, NULL));
+    /* Options last for their call only. */
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_compute(&p, ctx, &m, NULL));
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);

@@ -126,7 +126,7 @@ static void reverse_points(double* xy, size_t n) {
 static void test_rectangle(void** state) {
     static const double rects[][4] = {
         {0, 0, 1, 1}, {0, 0, 4, 1}, {-2.5, 1.25, 3, 0.5}, {1, -3, 0.25, 6}};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t k;
     (void)state;
     for (k = 0; k < sizeof rects / sizeof rects[0]; ++k) {
@@ -175,7 +175,7 @@ static polygon_expected triangle_expected(const double xy[6]) {
 }
 
 static void test_triangle(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_polygon_properties p;
     (void)state;
     /* right triangle, legs b = 3 (x) and h = 2 (y) at the origin:
@@ -216,7 +216,7 @@ static void test_l_shape(void** state) {
     const polygon_expected bar = rectangle_expected(0, 0, 4, 1);
     const polygon_expected upright = rectangle_expected(0, 1, 1, 2);
     polygon_expected e = combine(&bar, &upright);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_polygon_properties p;
     int start;
     (void)state;
@@ -244,7 +244,7 @@ static void test_l_shape(void** state) {
 /* Far from the origin the moments about the centroid keep their digits. */
 static void test_far_from_origin(void** state) {
     static const double offsets[][2] = {{1e8, 1e8}, {-1e8, 3e7}, {1e6, -1e6}, {134217728.0, 0}};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t k;
     (void)state;
     for (k = 0; k < sizeof offsets / sizeof offsets[0]; ++k) {
@@ -278,7 +278,7 @@ static void test_far_from_origin(void** state) {
    (brought into (-pi/2, pi/2]). */
 static void test_rotated_rectangle_principal_angle(void** state) {
     static const double angles[] = {0.3, -0.7, 1.2, 2.0, -2.5, PI / 2 - 0.01};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t k;
     (void)state;
     for (k = 0; k < sizeof angles / sizeof angles[0]; ++k) {
@@ -317,7 +317,7 @@ static void test_rotated_rectangle_principal_angle(void** state) {
 static void test_stride(void** state) {
     static const double xy[12] = {0, 0, 4, 0, 4, 1, 1, 1, 1, 3, 0, 3};
     static const size_t strides[] = {16, 24, 32, 40};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_polygon_properties packed, p;
     size_t k;
     (void)state;
@@ -344,7 +344,7 @@ static void test_stride(void** state) {
 }
 
 static void test_polygon_errors(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_polygon_properties p;
     double xy[8] = {0, 0, 1, 1, 2, 2, 3, 3};
     (void)state;

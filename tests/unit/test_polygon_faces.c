@@ -27,7 +27,7 @@ static void assert_agree(const char* what, const polymass_mass_properties* a,
    triangles (a signed fan is the same 2-chain even for a non-convex face, so
    volume and inertia agree; the area agrees where no fan triangle overlaps). */
 static void test_polygon_path_vs_triangle_path(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     int k, polygon_solids = 0;
     (void)state;
     for (k = 0; k < PM_REF_COUNT; ++k) {
@@ -92,7 +92,7 @@ static void test_star_prism_polygon_vs_correct_triangulation(void** state) {
     const pm_reference_solid* tris = &pm_reference_solids[PM_REF_PRISM_STAR_TRIS];
     const pm_reference_solid* fan = &pm_reference_solids[PM_REF_PRISM_STAR_FAN];
     const pm_expected e = pm_expected_from_reference(star);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p, t, f;
     pm_mesh fan_mesh;
     double fan_area;
@@ -125,7 +125,7 @@ static void test_star_prism_polygon_vs_correct_triangulation(void** state) {
 static void test_polygon_face_start_vertex_irrelevant(void** state) {
     static const int solids[] = {PM_REF_PRISM_STAR, PM_REF_PRISM_L, PM_REF_PRISM_12GON,
                                  PM_REF_HOUSE};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     size_t s;
     (void)state;
     for (s = 0; s < sizeof solids / sizeof solids[0]; ++s) {
@@ -160,7 +160,7 @@ static void test_mixed_triangles_and_polygons(void** state) {
     static const double lo[3] = {-0.5, 0.25, 1.5}, hi[3] = {2.0, 1.0, 2.125};
     const pm_expected box = pm_expected_box(lo, hi);
     const pm_expected hex = pm_expected_from_reference(&pm_reference_solids[PM_REF_PRISM_HEX]);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     pm_mesh quads, mixed;
     size_t f;
@@ -199,7 +199,7 @@ static void test_mixed_triangles_and_polygons(void** state) {
         d = pm_mesh_desc_ex(&t, 1);
         assert_non_null(d.face_sizes);
         pm_props_init(&p);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, ctx, &d, NULL));
+        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, NULL));
         PM_ASSERT_PROPERTIES("torus with explicit face sizes of 3", &e, &p, PM_TOL);
         pm_mesh_free(&t);
     }
@@ -212,7 +212,7 @@ static void test_mixed_triangles_and_polygons(void** state) {
 static void test_many_sided_polygon_faces(void** state) {
     enum { N = 64 };
     double xy[2 * N];
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p, t;
     pm_mesh poly, tris;
     int k;

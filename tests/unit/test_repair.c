@@ -38,13 +38,41 @@ static polymass_options chain(uint32_t flags, uint32_t first, uint32_t second, u
     return options;
 }
 
+/* The one-call answer, which a mesh made with the same options gives too:
+   the same status and message, the same bits, the same provenance. */
 static int32_t compute_with(polymass_mass_properties* out, polymass_provenance* provenance,
                             polymass_context* ctx, const pm_mesh* m,
                             const polymass_options* options) {
     const polymass_mesh_desc desc = pm_mesh_desc(m);
+    polymass_mass_properties from_mesh;
+    polymass_provenance mesh_provenance;
+    polymass_mesh* mesh = NULL;
+    char message[512];
+    int32_t status;
     pm_props_init(out);
     assert_int_equal(polymass_provenance_init(provenance, sizeof *provenance), POLYMASS_OK);
-    return polymass_mass_properties_with_provenance(out, provenance, ctx, &desc, NULL, options);
+    status = polymass_mass_properties_compute(out, provenance, ctx, &desc, options, NULL);
+    snprintf(message, sizeof message, "%s", polymass_context_message(ctx));
+    assert_int_equal(polymass_mesh_create(&mesh, ctx, &desc, options), status);
+    if (mesh == NULL) { /* the arguments: no analysis ran */
+        assert_int_equal(status, POLYMASS_ERROR_INVALID_ARGUMENT);
+        return status;
+    }
+    assert_string_equal(polymass_mesh_message(mesh), message);
+    pm_props_init(&from_mesh);
+    assert_int_equal(polymass_provenance_init(&mesh_provenance, sizeof mesh_provenance),
+                     POLYMASS_OK);
+    assert_int_equal(polymass_mesh_mass_properties(&from_mesh, ctx, mesh, NULL), status);
+    assert_int_equal(polymass_mesh_provenance(&mesh_provenance, ctx, mesh), status);
+    if (status == POLYMASS_OK) {
+        PM_ASSERT_SAME_PROPERTIES("one call and mesh", out, &from_mesh);
+        assert_memory_equal(provenance, &mesh_provenance, sizeof mesh_provenance);
+    }
+    polymass_mesh_destroy(mesh);
+    /* The one call's message back in the context. */
+    assert_int_equal(polymass_mass_properties_compute(&from_mesh, NULL, ctx, &desc, options, NULL),
+                     status);
+    return status;
 }
 
 /* An icosphere of radius 1: an icosahedron whose triangles are split in four
@@ -191,7 +219,7 @@ static int compare(const void* a, const void* b) {
    intact one's answer; returns the provenance of the last placement. */
 static polymass_provenance repair_and_check(const char* what, const pm_mesh* intact,
                                             const pm_mesh* damaged) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_provenance provenance;
     for (size_t p = 0; p < PLACEMENT_COUNT; ++p) {
         pm_mesh whole, broken;
@@ -449,7 +477,7 @@ static void test_median_ratio(void** state) {
 
 static void test_valid_solids_bit_identical(void** state) {
     (void)state;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     const polymass_options chains[] = {
         chain(0, POLYMASS_MODE_REPAIR, 0, 0),
         chain(0, POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL),
@@ -459,13 +487,14 @@ static void test_valid_solids_bit_identical(void** state) {
         const polymass_mesh_desc desc = pm_reference_desc(&pm_reference_solids[s]);
         polymass_mass_properties solid, moded;
         pm_props_init(&solid);
-        if (polymass_mass_properties_compute(&solid, ctx, &desc, NULL) != POLYMASS_OK) continue;
+        if (polymass_mass_properties_compute(&solid, NULL, ctx, &desc, NULL, NULL) != POLYMASS_OK)
+            continue;
         for (size_t c = 0; c < sizeof chains / sizeof chains[0]; ++c) {
             polymass_provenance provenance = POLYMASS_PROVENANCE_INIT;
             pm_props_init(&moded);
-            assert_int_equal(polymass_mass_properties_with_provenance(&moded, &provenance, ctx,
-                                                                      &desc, NULL, &chains[c]),
-                             POLYMASS_OK);
+            assert_int_equal(
+                polymass_mass_properties_compute(&moded, &provenance, ctx, &desc, &chains[c], NULL),
+                POLYMASS_OK);
             assert_int_equal(provenance.mode, POLYMASS_MODE_SOLID);
             assert_int_equal(provenance.holes, 0);
             assert_int_equal(provenance.first_holes[0], POLYMASS_NONE);
@@ -473,7 +502,7 @@ static void test_valid_solids_bit_identical(void** state) {
             /* The options' chain is followed by the older entry points too. */
             pm_props_init(&moded);
             assert_int_equal(
-                polymass_mass_properties_compute_with_options(&moded, ctx, &desc, NULL, &chains[c]),
+                polymass_mass_properties_compute(&moded, NULL, ctx, &desc, &chains[c], NULL),
                 POLYMASS_OK);
             assert_memory_equal(&solid, &moded, sizeof solid);
         }
@@ -487,7 +516,7 @@ static void test_valid_solids_bit_identical(void** state) {
 
 static void test_hull(void** state) {
     (void)state;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     const polymass_options hull = chain(0, POLYMASS_MODE_HULL, 0, 0);
     /* A convex solid: the hull is the solid. */
     pm_mesh cube;
@@ -542,7 +571,7 @@ static void test_hull(void** state) {
 
 static void test_shell(void** state) {
     (void)state;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_options shell = chain(0, POLYMASS_MODE_SHELL, 0, 0);
     shell.shell_thickness = 0.01;
     pm_mesh cube;
@@ -571,7 +600,7 @@ static void test_shell(void** state) {
 
 static void test_repair_gives_up(void** state) {
     (void)state;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     const polymass_options repair = chain(0, POLYMASS_MODE_REPAIR, 0, 0);
     polymass_mass_properties got;
     polymass_provenance provenance;
@@ -636,21 +665,70 @@ static void test_repair_gives_up(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* A NaN coordinate is POLYMASS_ERROR_NON_FINITE in every chain, one call or
+   a mesh alike (compute_with), saying which vertex. */
+static void expect_non_finite_in_chain(uint32_t mode) {
+    polymass_context* ctx = pm_context_new();
+    polymass_options options = chain(0, mode, 0, 0);
+    polymass_mass_properties got;
+    polymass_provenance provenance;
+    pm_mesh cube;
+    options.shell_thickness = 0.01;
+    pm_mesh_unit_cube(&cube, 1);
+    cube.positions[3 * 5 + 1] = NAN;
+    assert_int_equal(compute_with(&got, &provenance, ctx, &cube, &options),
+                     POLYMASS_ERROR_NON_FINITE);
+    PM_ASSERT_MENTIONS(ctx, "vertex", 5);
+    pm_mesh_free(&cube);
+    polymass_context_destroy(ctx);
+}
+
+static void test_non_finite_in_solid(void** state) {
+    (void)state;
+    expect_non_finite_in_chain(POLYMASS_MODE_SOLID);
+}
+
+static void test_non_finite_in_repair(void** state) {
+    (void)state;
+    expect_non_finite_in_chain(POLYMASS_MODE_REPAIR);
+}
+
+static void test_non_finite_in_shell(void** state) {
+    (void)state;
+    expect_non_finite_in_chain(POLYMASS_MODE_SHELL);
+}
+
+static void test_non_finite_in_hull(void** state) {
+    (void)state;
+    expect_non_finite_in_chain(POLYMASS_MODE_HULL);
+}
+
 static void test_options_checked(void** state) {
     (void)state;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_options options = chain(0, 7, 0, 0);
-    assert_int_equal(polymass_context_set_options(ctx, &options), POLYMASS_ERROR_INVALID_ARGUMENT);
+    polymass_mass_properties got;
+    polymass_provenance provenance;
+    pm_mesh cube;
+    pm_mesh_unit_cube(&cube, 1);
+    assert_int_equal(compute_with(&got, &provenance, ctx, &cube, &options),
+                     POLYMASS_ERROR_INVALID_ARGUMENT);
     message_says(ctx, "modes[0] is 7");
     options = chain(0, POLYMASS_MODE_SOLID, 0, 0);
     options.shell_thickness = NAN;
-    assert_int_equal(polymass_context_set_options(ctx, &options), POLYMASS_ERROR_INVALID_ARGUMENT);
-    /* A 1.1 caller's options (no modes) mean the solid alone. */
+    assert_int_equal(compute_with(&got, &provenance, ctx, &cube, &options),
+                     POLYMASS_ERROR_INVALID_ARGUMENT);
+    options = chain(0, POLYMASS_MODE_SHELL, 0, 0);
+    assert_int_equal(compute_with(&got, &provenance, ctx, &cube, &options),
+                     POLYMASS_ERROR_INVALID_ARGUMENT);
+    message_says(ctx, "shell_thickness");
+    /* Only the 2.0 layout of the options is known. */
     options = pm_options(0, 0.0);
     options.struct_size = (uint32_t)offsetof(polymass_options, modes);
-    assert_int_equal(polymass_context_set_options(ctx, &options), POLYMASS_OK);
-    /* The provenance of an older or unknown size is refused or written to its size. */
-    polymass_provenance provenance;
+    assert_int_equal(compute_with(&got, &provenance, ctx, &cube, &options),
+                     POLYMASS_ERROR_INVALID_ARGUMENT);
+    pm_mesh_free(&cube);
+    /* A provenance of an unknown size is refused. */
     assert_int_equal(polymass_provenance_init(&provenance, 3), POLYMASS_ERROR_INVALID_ARGUMENT);
     assert_int_equal(polymass_sizeof_provenance(), sizeof(polymass_provenance));
     polymass_context_destroy(ctx);
@@ -670,6 +748,10 @@ int main(void) {
         cmocka_unit_test(test_hull),
         cmocka_unit_test(test_shell),
         cmocka_unit_test(test_repair_gives_up),
+        cmocka_unit_test(test_non_finite_in_solid),
+        cmocka_unit_test(test_non_finite_in_repair),
+        cmocka_unit_test(test_non_finite_in_shell),
+        cmocka_unit_test(test_non_finite_in_hull),
         cmocka_unit_test(test_options_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

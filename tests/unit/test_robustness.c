@@ -11,9 +11,11 @@
  * What is asserted for every call:
  *   the status is one of the documented POLYMASS_* codes, and its string is
  *   not "unknown status";
- *   on failure the context message is non-empty; polymass_mesh_create leaves
- *   *out_mesh NULL; polymass_mesh_check's report.status is the returned
- *   status;
+ *   on failure the context message is non-empty; polymass_mesh_create
+ *   leaves *out_mesh NULL when the arguments are refused (or memory ran
+ *   out) and otherwise gives a mesh whose status is the returned one, whose
+ *   mass properties are refused with it, and whose diagnostics' status is
+ *   it when the topology is checked;
  *   on success every output double is finite, volume > 0, mass > 0, density
  *   > 0, the inertia tensors are symmetric, the principal moments ascending,
  *   the principal axes orthonormal with det +1 (to 1e-9), and the context
@@ -26,7 +28,7 @@
  * The perturbation test takes a cube of quads or of triangles, moves it
  * rigidly (translations up to 1e8), then splits a vertex, flips faces or
  * removes faces, and expects the exact status of each call with each set of
- * option flags, and the exact edge counts of polymass_mesh_check.
+ * option flags, and the exact edge counts of the mesh's diagnostics.
  *
  * After them, one small test per kind of finding, with the smallest input
  * found for it. To list every finding of the randomized tests instead of
@@ -217,10 +219,9 @@ static void print_trial(void) {
                     current.options->planarity_tolerance);
     }
     if (current.mass) {
-        print_error("  mass_desc: struct_size %u mode %u density %a mass %a point %a %a %a\n",
+        print_error("  mass_desc: struct_size %u mode %u density %a mass %a\n",
                     (unsigned)current.mass->struct_size, (unsigned)current.mass->mass_mode,
-                    current.mass->density, current.mass->mass, current.mass->point[0],
-                    current.mass->point[1], current.mass->point[2]);
+                    current.mass->density, current.mass->mass);
     }
     if (current.desc) {
         print_desc(current.desc);
@@ -304,7 +305,7 @@ static void end_phase(const char* main_call) {
     char what[160];
     snprintf(what, sizeof what, "%s: %s", current.phase, main_call);
     print_tally(what, &main_tally);
-    snprintf(what, sizeof what, "%s: polymass_mesh_check", current.phase);
+    snprintf(what, sizeof what, "%s: polymass_mesh_diagnostics", current.phase);
     print_tally(what, &check_tally);
 }
 
@@ -387,7 +388,8 @@ static void check_properties_at(const char* file, int line, const char* call,
                                 const polymass_mass_properties* p, int genuine_solid) {
     static const uint32_t known_warnings =
         POLYMASS_WARNING_INVERTED | POLYMASS_WARNING_DEGENERATE_FACES | POLYMASS_WARNING_UNCHECKED |
-        POLYMASS_WARNING_NON_MANIFOLD | POLYMASS_WARNING_TOUCHING_FACES;
+        POLYMASS_WARNING_NON_MANIFOLD | POLYMASS_WARNING_TOUCHING_FACES |
+        POLYMASS_WARNING_INTERSECTIONS_UNCHECKED;
     char what[300];
     double rt_r[9], rt[9];
     const double moment_scale = max_abs(p->principal_moments, 3);
@@ -399,7 +401,6 @@ static void check_properties_at(const char* file, int line, const char* call,
     check_finite_at(file, line, call, "center_of_mass", p->center_of_mass, 3);
     check_finite_at(file, line, call, "inertia", p->inertia, 9);
     check_finite_at(file, line, call, "inertia_origin", p->inertia_origin, 9);
-    check_finite_at(file, line, call, "inertia_point", p->inertia_point, 9);
     check_finite_at(file, line, call, "principal_moments", p->principal_moments, 3);
     check_finite_at(file, line, call, "principal_axes", p->principal_axes, 9);
     if (!(p->volume > 0 && p->mass > 0 && p->density > 0 && p->surface_area >= 0)) {
@@ -413,7 +414,6 @@ static void check_properties_at(const char* file, int line, const char* call,
     }
     check_symmetric_at(file, line, call, "inertia", p->inertia);
     check_symmetric_at(file, line, call, "inertia_origin", p->inertia_origin);
-    check_symmetric_at(file, line, call, "inertia_point", p->inertia_point);
     if (!(p->principal_moments[0] <= p->principal_moments[1] &&
           p->principal_moments[1] <= p->principal_moments[2])) {
         snprintf(what, sizeof what, "principal moments not ascending: %.17g %.17g %.17g",
@@ -828,10 +828,6 @@ static int random_options(rng* r, polymass_options* o) {
 static polymass_mass_desc random_mass(rng* r) {
     polymass_mass_desc m =
         rng_one_in(r, 2) ? pm_mass_density(random_amount(r)) : pm_mass_total(random_amount(r));
-    int axis;
-    for (axis = 0; axis < 3; ++axis) {
-        m.point[axis] = rng_one_in(r, 4) ? random_coordinate(r) : 0.0;
-    }
     switch (rng_below(r, 16)) {
         case 0:
             m.mass_mode = 2 + rng_below(r, 100);
@@ -854,43 +850,92 @@ static polymass_mass_desc random_mass(rng* r) {
 /* Hostile inputs to every entry point                                      */
 /* ------------------------------------------------------------------------ */
 
-/* One description through polymass_mesh_create (+ mass properties),
-   polymass_mass_properties_compute and polymass_mesh_check, with the options
-   the context has. statuses must agree where the contract says they do. */
+/* The inertia about a random point of a body's properties: a tensor of
+   finite, symmetric values, or POLYMASS_ERROR_OVERFLOW; a point that is not
+   finite is refused. */
+static void try_inertia_about(rng* r, const polymass_mass_properties* p) {
+    double point[3], inertia[9];
+    int32_t s;
+    int axis;
+    for (axis = 0; axis < 3; ++axis) point[axis] = rng_one_in(r, 4) ? random_coordinate(r) : 0.0;
+    s = polymass_inertia_about(inertia, p, point);
+    CHECK_STATUS("polymass_inertia_about", s, NULL);
+    if (!(isfinite(point[0]) && isfinite(point[1]) && isfinite(point[2]))) {
+        if (s != POLYMASS_ERROR_INVALID_ARGUMENT)
+            fail_trial_at(__FILE__, __LINE__, "polymass_inertia_about", "a point not finite taken");
+    } else if (s == POLYMASS_OK) {
+        check_finite_at(__FILE__, __LINE__, "polymass_inertia_about", "inertia", inertia, 9);
+        check_symmetric_at(__FILE__, __LINE__, "polymass_inertia_about", "inertia", inertia);
+    } else if (s != POLYMASS_ERROR_OVERFLOW) {
+        fail_trial_at(__FILE__, __LINE__, "polymass_inertia_about", "neither OK nor OVERFLOW");
+    }
+}
+
+/* One description through polymass_mesh_create (its mass properties and
+   diagnostics) and polymass_mass_properties_compute, with the options given
+   (invalid_options: they must be refused). Statuses must agree where the
+   contract says they do. */
 static void try_mesh(rng* r, polymass_context* ctx, const polymass_mesh_desc* desc,
-                     int genuine_solid, uint32_t flags, int flaky) {
+                     int genuine_solid, const polymass_options* options, int invalid_options,
+                     int flaky) {
     polymass_mesh* mesh = (polymass_mesh*)&mesh; /* garbage: must be overwritten */
     polymass_mass_properties p;
     polymass_diagnostics diag;
     polymass_mass_desc mass = random_mass(r);
     const polymass_mass_desc* mass_or_null = rng_one_in(r, 3) ? NULL : &mass;
-    int32_t created, computed, checked, properties = POLYMASS_OK;
+    int32_t created, computed, properties = POLYMASS_OK;
 
     current.mass = mass_or_null;
-    created = polymass_mesh_create(&mesh, ctx, desc);
+    created = polymass_mesh_create(&mesh, ctx, desc, options);
     tally(&main_tally, created);
-    if (created == POLYMASS_OK) {
+    if (mesh != NULL) {
         held.mesh = mesh;
     }
     CHECK_STATUS("polymass_mesh_create", created, ctx);
-    if (created == POLYMASS_OK) {
-        if (mesh == NULL) {
-            fail_trial_at(__FILE__, __LINE__, "polymass_mesh_create", "success with a NULL mesh");
+    if (invalid_options && created != POLYMASS_ERROR_INVALID_ARGUMENT) {
+        fail_trial_at(__FILE__, __LINE__, "polymass_mesh_create",
+                      "unknown flag or wrong struct_size accepted");
+    }
+    if (created == POLYMASS_ERROR_INVALID_ARGUMENT || created == POLYMASS_ERROR_OUT_OF_MEMORY ||
+        created == POLYMASS_ERROR_INTERNAL) {
+        if (mesh != NULL) {
+            fail_trial_at(__FILE__, __LINE__, "polymass_mesh_create",
+                          "*out_mesh not NULL when no analysis ran");
+        }
+    } else if (mesh == NULL) {
+        fail_trial_at(__FILE__, __LINE__, "polymass_mesh_create", "no mesh after an analysis");
+    } else {
+        if (polymass_mesh_status(mesh) != created) {
+            fail_trial_at(__FILE__, __LINE__, "polymass_mesh_status", "not what create returned");
         }
         pm_props_init(&p);
         properties = polymass_mesh_mass_properties(&p, ctx, mesh, mass_or_null);
         CHECK_STATUS("polymass_mesh_mass_properties", properties, ctx);
         if (properties == POLYMASS_OK) {
             CHECK_PROPERTIES("polymass_mesh_mass_properties", &p, genuine_solid);
+            try_inertia_about(r, &p);
+        } else if (created != POLYMASS_OK && properties != created &&
+                   properties != POLYMASS_ERROR_INVALID_ARGUMENT) {
+            fail_trial_at(__FILE__, __LINE__, "polymass_mesh_mass_properties",
+                          "a refused mesh's properties not refused with its status");
+        }
+        pm_diagnostics_init(&diag);
+        diag.status = -12345;
+        CHECK_STATUS("polymass_mesh_diagnostics", polymass_mesh_diagnostics(&diag, ctx, mesh), ctx);
+        tally(&check_tally, diag.status);
+        CHECK_STATUS("polymass_mesh_diagnostics status", diag.status, NULL);
+        /* With the topology checked, the verdict is the mesh's. */
+        if (!(options->flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS) && diag.status != created) {
+            char what[160];
+            snprintf(what, sizeof what, "status %d, but polymass_mesh_create's was %d",
+                     (int)diag.status, (int)created);
+            fail_trial_at(__FILE__, __LINE__, "polymass_mesh_diagnostics", what);
         }
         release_mesh_object();
-    } else if (mesh != NULL) {
-        fail_trial_at(__FILE__, __LINE__, "polymass_mesh_create",
-                      "*out_mesh not NULL after a failure");
     }
 
     pm_props_init(&p);
-    computed = polymass_mass_properties_compute(&p, ctx, desc, mass_or_null);
+    computed = polymass_mass_properties_compute(&p, NULL, ctx, desc, options, mass_or_null);
     CHECK_STATUS("polymass_mass_properties_compute", computed, ctx);
     if (computed == POLYMASS_OK) {
         CHECK_PROPERTIES("polymass_mass_properties_compute", &p, genuine_solid);
@@ -908,25 +953,6 @@ static void try_mesh(rng* r, polymass_context* ctx, const polymass_mesh_desc* de
             fail_trial_at(__FILE__, __LINE__, "polymass_mass_properties_compute", what);
         }
     }
-
-    pm_diagnostics_init(&diag);
-    diag.status = -12345;
-    checked = polymass_mesh_check(&diag, ctx, desc);
-    tally(&check_tally, checked);
-    CHECK_STATUS("polymass_mesh_check", checked, ctx);
-    if (diag.status != checked) {
-        char what[160];
-        snprintf(what, sizeof what, "returned %d but report.status is %d", (int)checked,
-                 (int)diag.status);
-        fail_trial_at(__FILE__, __LINE__, "polymass_mesh_check", what);
-    }
-    /* With the topology checks on, check returns what create returns. */
-    if (!flaky && !(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS) && checked != created) {
-        char what[160];
-        snprintf(what, sizeof what, "status %d, but polymass_mesh_create's was %d", (int)checked,
-                 (int)created);
-        fail_trial_at(__FILE__, __LINE__, "polymass_mesh_check", what);
-    }
     current.mass = NULL;
 }
 
@@ -940,21 +966,21 @@ static void try_null_arguments(rng* r, polymass_context* ctx, const polymass_mes
     pm_diagnostics_init(&diag);
     switch (rng_below(r, 6)) {
         case 0:
-            s = polymass_mesh_create(&mesh, NULL, desc);
+            s = polymass_mesh_create(&mesh, NULL, desc, NULL);
             break;
         case 1:
-            s = polymass_mesh_create(&mesh, ctx, NULL);
+            s = polymass_mesh_create(&mesh, ctx, NULL, NULL);
             break;
         case 2:
-            s = polymass_mesh_create(NULL, ctx, desc);
+            s = polymass_mesh_create(NULL, ctx, desc, NULL);
             mesh = NULL;
             break;
         case 3:
-            s = polymass_mass_properties_compute(NULL, ctx, desc, NULL);
+            s = polymass_mass_properties_compute(NULL, NULL, ctx, desc, NULL, NULL);
             mesh = NULL;
             break;
         case 4:
-            s = polymass_mesh_check(&diag, NULL, desc);
+            s = polymass_mesh_diagnostics(&diag, ctx, NULL);
             mesh = NULL;
             break;
         default:
@@ -974,7 +1000,8 @@ static void try_null_arguments(rng* r, polymass_context* ctx, const polymass_mes
 
 static void test_hostile_meshes(void** state) {
     static flaky_allocator flaky;
-    const polymass_allocator flaky_interface = {flaky_allocate, flaky_deallocate, &flaky};
+    const polymass_allocator flaky_interface = {sizeof(polymass_allocator), 0, flaky_allocate,
+                                                flaky_deallocate, &flaky};
     rng r = {0x5EED0001u};
     polymass_context* plain;
     polymass_context* fragile = NULL;
@@ -983,7 +1010,7 @@ static void test_hostile_meshes(void** state) {
     (void)state;
     flaky.random.state = 0x5EED0002u;
     flaky.one_in = 0;
-    plain = held.contexts[0] = pm_context_new(0);
+    plain = held.contexts[0] = pm_context_new();
     assert_int_equal(polymass_context_create(&fragile, &flaky_interface), POLYMASS_OK);
     held.contexts[1] = fragile;
     begin_phase("hostile meshes");
@@ -992,31 +1019,14 @@ static void test_hostile_meshes(void** state) {
         const int use_flaky = rng_one_in(&r, 8);
         polymass_context* ctx = use_flaky ? fragile : plain;
         int invalid_options;
-        int32_t s;
         current.iteration = i;
         make_hostile_mesh(&r, h);
         current.desc = &h->desc;
 
-        flaky.one_in = 0; /* the options themselves are set reliably */
         invalid_options = random_options(&r, &o);
         current.options = &o;
-        s = polymass_context_set_options(ctx, &o);
-        CHECK_STATUS("polymass_context_set_options", s, ctx);
-        if (invalid_options && s != POLYMASS_ERROR_INVALID_ARGUMENT) {
-            fail_trial_at(__FILE__, __LINE__, "polymass_context_set_options",
-                          "unknown flag or wrong struct_size accepted");
-        }
-        {
-            polymass_options now = pm_options(0, 0.0);
-            PM_ASSERT_OK(ctx, polymass_context_get_options(&now, ctx));
-            if (s == POLYMASS_OK && now.flags != o.flags) {
-                fail_trial_at(__FILE__, __LINE__, "polymass_context_get_options",
-                              "flags differ from those set");
-            }
-            o.flags = now.flags; /* what the calls below run with */
-        }
         flaky.one_in = use_flaky ? 1 + rng_below(&r, 12) : 0;
-        try_mesh(&r, ctx, &h->desc, h->genuine_solid, o.flags, use_flaky);
+        try_mesh(&r, ctx, &h->desc, h->genuine_solid, &o, invalid_options, use_flaky);
         flaky.one_in = 0;
         if (rng_one_in(&r, 4)) {
             try_null_arguments(&r, ctx, &h->desc);
@@ -1032,7 +1042,7 @@ static void test_hostile_meshes(void** state) {
    than a point and unaligned) and hostile coordinates. */
 static void test_hostile_polygons(void** state) {
     rng r = {0x5EED0003u};
-    polymass_context* ctx = held.contexts[0] = pm_context_new(0);
+    polymass_context* ctx = held.contexts[0] = pm_context_new();
     int i;
     (void)state;
     begin_phase("hostile polygons");
@@ -1081,7 +1091,8 @@ static void test_hostile_polygons(void** state) {
 }
 
 /* The entry points without a mesh: status strings of any code, the version,
-   contexts made and destroyed, options read into a wrong struct_size. */
+   contexts made and destroyed, given any count of threads, options
+   initialised at a wrong struct_size. */
 static void test_hostile_small_calls(void** state) {
     rng r = {0x5EED0004u};
     int i;
@@ -1106,10 +1117,11 @@ static void test_hostile_small_calls(void** state) {
         }
         assert_int_equal(polymass_context_create(&ctx, NULL), POLYMASS_OK);
         held.contexts[0] = ctx;
-        if (rng_one_in(&r, 2)) {
-            o[0].struct_size = rng_below(&r, sizeof o);
-        }
-        CHECK_STATUS("polymass_context_get_options", polymass_context_get_options(o, ctx), ctx);
+        o[0].struct_size = rng_one_in(&r, 2) ? rng_below(&r, sizeof o) : (uint32_t)sizeof o[0];
+        CHECK_STATUS("polymass_options_init", polymass_options_init(o, o[0].struct_size), NULL);
+        CHECK_STATUS("polymass_context_set_threads",
+                     polymass_context_set_threads(ctx, rng_below(&r, 2 * POLYMASS_MAX_THREADS)),
+                     ctx);
         polymass_context_destroy(ctx);
         held.contexts[0] = NULL;
     }
@@ -1370,7 +1382,7 @@ static void check_moved_cube_at(const char* file, int line, const polymass_mass_
 
 static void test_perturbed_cubes(void** state) {
     rng r = {0x5EED0005u};
-    polymass_context* ctx = held.contexts[0] = pm_context_new(0);
+    polymass_context* ctx = held.contexts[0] = pm_context_new();
     pm_laid_out_mesh* laid_out = &held.laid_out;
     pm_mesh* m = &held.cube;
     int i;
@@ -1418,35 +1430,40 @@ static void test_perturbed_cubes(void** state) {
         current.desc = &laid_out->desc;
         snprintf(call, sizeof call, "%s cube, %s, flags 0x%x",
                  triangulated ? "triangulated" : "quad", mutation_names[mu], (unsigned)flags);
-        PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
 
-        s = polymass_mesh_create(&mesh, ctx, &laid_out->desc);
+        s = polymass_mesh_create(&mesh, ctx, &laid_out->desc, &o);
         tally(&main_tally, s);
-        if (s == POLYMASS_OK) {
-            held.mesh = mesh;
-        }
+        held.mesh = mesh;
         CHECK_STATUS(call, s, ctx);
         if (expect_create >= 0) {
             expect_status_at(__FILE__, __LINE__, call, expect_create, s);
         }
-        if (s == POLYMASS_OK) {
+        if (mesh == NULL) {
+            fail_trial_at(__FILE__, __LINE__, call, "no mesh after an analysis");
+        } else {
             int32_t properties_status;
             pm_props_init(&p);
             properties_status = polymass_mesh_mass_properties(&p, ctx, mesh, &mass);
             CHECK_STATUS(call, properties_status, ctx);
-            if (expect_create == POLYMASS_OK) {
+            if (s != POLYMASS_OK) {
+                expect_status_at(__FILE__, __LINE__, call, s, properties_status);
+            } else if (expect_create == POLYMASS_OK) {
                 PM_ASSERT_OK(ctx, properties_status);
                 check_moved_cube_at(__FILE__, __LINE__, &p, density, center);
             } else if (properties_status == POLYMASS_OK) {
                 CHECK_PROPERTIES(call, &p, 0); /* open or flipped, unchecked */
             }
+            pm_diagnostics_init(&diag);
+            PM_ASSERT_OK(ctx, polymass_mesh_diagnostics(&diag, ctx, mesh));
+            if (((diag.checks & POLYMASS_CHECKED_TOPOLOGY) != 0) !=
+                !(flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS)) {
+                fail_trial_at(__FILE__, __LINE__, call, "diagnostics.checks not the options'");
+            }
             release_mesh_object();
-        } else if (mesh != NULL) {
-            fail_trial_at(__FILE__, __LINE__, call, "*out_mesh not NULL after a failure");
         }
 
         pm_props_init(&p);
-        s = polymass_mass_properties_compute(&p, ctx, &laid_out->desc, &mass);
+        s = polymass_mass_properties_compute(&p, NULL, ctx, &laid_out->desc, &o, &mass);
         CHECK_STATUS(call, s, ctx);
         if (expect_create >= 0) {
             expect_status_at(__FILE__, __LINE__, call, expect_create, s);
@@ -1464,12 +1481,13 @@ static void test_perturbed_cubes(void** state) {
             CHECK_PROPERTIES(call, &p, 0); /* open or flipped, unchecked */
         }
 
-        pm_diagnostics_init(&diag);
-        s = polymass_mesh_check(&diag, ctx, &laid_out->desc);
+        /* The findings with the topology checked, whatever the flags. */
+        o.flags &= ~POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+        s = pm_diagnose(&diag, ctx, &laid_out->desc, &o);
         tally(&check_tally, s);
         CHECK_STATUS(call, s, ctx);
         expect_status_at(__FILE__, __LINE__, call, expect_check, s);
-        expect_status_at(__FILE__, __LINE__, "polymass_mesh_check report", s, diag.status);
+        expect_status_at(__FILE__, __LINE__, "polymass_mesh_diagnostics", s, diag.status);
         EXPECT_COUNT("face_count", m->face_count, diag.face_count);
         EXPECT_COUNT("used_vertex_count", expected.used_vertices, diag.used_vertex_count);
         EXPECT_COUNT("edge_count", expected.edges, diag.edge_count);
@@ -1498,7 +1516,7 @@ typedef struct corner_tetra_case {
     uint32_t mass_mode;
     double amount; /* density or mass */
     double point_x;
-    const char* says; /* part of the message */
+    const char* says; /* part of the message; NULL: the inertia about (point_x, 0, 0) */
 } corner_tetra_case;
 
 static const corner_tetra_case corner_tetra_cases[] = {
@@ -1517,8 +1535,9 @@ static const corner_tetra_case corner_tetra_cases[] = {
      4.9406564584124654e-324, 0.0, "mass"},
     {"corner tetrahedron of side 4, density DBL_MAX: mass overflows", 4.0,
      POLYMASS_MASS_FROM_DENSITY, DBL_MAX, 0.0, "mass"},
-    {"unit corner tetrahedron, point (1e160, 0, 0): inertia_point overflows", 1.0,
-     POLYMASS_MASS_FROM_DENSITY, 1.0, 1e160, "or point 1e+160"},
+    /* The properties fit; the inertia about a point that far does not. */
+    {"unit corner tetrahedron, point (1e160, 0, 0): the inertia about it overflows", 1.0,
+     POLYMASS_MASS_FROM_DENSITY, 1.0, 1e160, NULL},
 };
 #define CORNER_TETRA_CASE_COUNT (sizeof corner_tetra_cases / sizeof corner_tetra_cases[0])
 
@@ -1530,11 +1549,10 @@ static void test_corner_tetra_case(void** state) {
     polymass_mass_desc mass = c->mass_mode == POLYMASS_MASS_FROM_TOTAL ? pm_mass_total(c->amount)
                                                                        : pm_mass_density(c->amount);
     polymass_mass_properties p;
-    polymass_context* ctx = held.contexts[0] = pm_context_new(0);
+    polymass_context* ctx = held.contexts[0] = pm_context_new();
     int32_t s;
     begin_phase(c->name);
     positions[3] = positions[7] = positions[11] = c->scale;
-    mass.point[0] = c->point_x;
     memset(&d, 0, sizeof d);
     d.struct_size = sizeof d;
     d.positions = positions;
@@ -1544,8 +1562,15 @@ static void test_corner_tetra_case(void** state) {
     current.desc = &d;
     current.mass = &mass;
     pm_props_init(&p);
-    s = polymass_mass_properties_compute(&p, ctx, &d, &mass);
+    s = polymass_mass_properties_compute(&p, NULL, ctx, &d, NULL, &mass);
     CHECK_STATUS("polymass_mass_properties_compute", s, ctx);
+    if (c->says == NULL) {
+        const double point[3] = {c->point_x, 0, 0};
+        double inertia[9];
+        PM_ASSERT_OK(ctx, s);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OVERFLOW, polymass_inertia_about(inertia, &p, point));
+        return;
+    }
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OVERFLOW, s);
     /* The message names what overflowed, not a NaN it led to. */
     if (strstr(polymass_context_message(ctx), "nan") ||
@@ -1570,7 +1595,7 @@ static void test_triangle_case(void** state) {
     const triangle_case* c = *state;
     double xy[6] = {0};
     polymass_polygon_properties p;
-    polymass_context* ctx = held.contexts[0] = pm_context_new(0);
+    polymass_context* ctx = held.contexts[0] = pm_context_new();
     int32_t s;
     begin_phase(c->name);
     xy[2] = xy[5] = c->scale;
@@ -1582,16 +1607,17 @@ static void test_triangle_case(void** state) {
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OVERFLOW, s);
 }
 
-/* polymass_mesh_check fills the report "whenever out_report itself is
-   valid": also when the allocator fails. */
-static void test_check_report_when_out_of_memory(void** state) {
+/* A mesh that cannot be made for want of memory: OUT_OF_MEMORY, no mesh, a
+   message. */
+static void test_mesh_create_when_out_of_memory(void** state) {
     static flaky_allocator always_failing;
-    const polymass_allocator failing = {flaky_allocate, flaky_deallocate, &always_failing};
-    polymass_diagnostics diag;
+    const polymass_allocator failing = {sizeof(polymass_allocator), 0, flaky_allocate,
+                                        flaky_deallocate, &always_failing};
+    polymass_mesh* mesh = (polymass_mesh*)&mesh;
     polymass_context* ctx = NULL;
     int32_t s;
     (void)state;
-    begin_phase("mesh_check out of memory");
+    begin_phase("mesh_create out of memory");
     always_failing.one_in = 0;
     assert_int_equal(polymass_context_create(&ctx, &failing), POLYMASS_OK);
     held.contexts[0] = ctx;
@@ -1599,14 +1625,12 @@ static void test_check_report_when_out_of_memory(void** state) {
     {
         const polymass_mesh_desc d = pm_mesh_desc(&held.cube);
         always_failing.one_in = 1; /* every allocation fails from here */
-        pm_diagnostics_init(&diag);
-        diag.status = -12345;
-        s = polymass_mesh_check(&diag, ctx, &d);
+        s = polymass_mesh_create(&mesh, ctx, &d, NULL);
         always_failing.one_in = 0;
     }
-    CHECK_STATUS("polymass_mesh_check", s, ctx);
-    assert_int_equal(s, POLYMASS_ERROR_OUT_OF_MEMORY);
-    PM_ASSERT_STATUS(ctx, s, diag.status);
+    CHECK_STATUS("polymass_mesh_create", s, ctx);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OUT_OF_MEMORY, s);
+    assert_null(mesh);
 }
 
 /* A test of the table: its name is the case's. */
@@ -1635,7 +1659,7 @@ int main(void) {
     for (k = 0; k < TRIANGLE_CASE_COUNT; ++k) {
         tests[n++] = case_test(triangle_cases[k].name, test_triangle_case, &triangle_cases[k]);
     }
-    tests[n++] = (struct CMUnitTest)cmocka_unit_test_teardown(test_check_report_when_out_of_memory,
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test_teardown(test_mesh_create_when_out_of_memory,
                                                               release_held);
     return _cmocka_run_group_tests("robustness", tests, n, NULL, NULL);
 }

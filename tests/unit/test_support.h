@@ -164,9 +164,9 @@ extern const size_t pm_status_count;
 /* The status is one of pm_all_statuses. */
 int pm_is_documented_status(int32_t status);
 
-/* A context with the given option flags (asserts success). */
-polymass_context* pm_context_new(uint32_t flags);
-void pm_context_set_flags(polymass_context* ctx, uint32_t flags);
+/* A context (asserts success). Options are per call: the helpers below
+   that take `flags` pass pm_options(flags, 0). */
+polymass_context* pm_context_new(void);
 /* Options with struct_size set (tolerance 0 means the default). */
 polymass_options pm_options(uint32_t flags, double planarity_tolerance);
 /* Output structs zeroed, with struct_size set. */
@@ -175,9 +175,26 @@ void pm_diagnostics_init(polymass_diagnostics* d);
 void pm_polygon_props_init(polymass_polygon_properties* p);
 polymass_mass_desc pm_mass_density(double density);
 polymass_mass_desc pm_mass_total(double mass);
+/* polymass_mass_properties_compute with the default options, or with the
+   option flags given. */
 int32_t pm_compute(polymass_mass_properties* out, polymass_context* ctx, const pm_mesh* m,
                    const polymass_mass_desc* mass);
+int32_t pm_compute_flags(polymass_mass_properties* out, polymass_context* ctx, const pm_mesh* m,
+                         uint32_t flags, const polymass_mass_desc* mass);
+/* The diagnostics of the mesh (polymass_mesh_create, then
+   polymass_mesh_diagnostics) with the default options, or the option flags
+   given; returns their status (the surface's verdict as a solid). The
+   context's message is then the mesh's (polymass_mesh_message). */
 int32_t pm_check(polymass_diagnostics* out, polymass_context* ctx, const pm_mesh* m);
+int32_t pm_check_flags(polymass_diagnostics* out, polymass_context* ctx, const pm_mesh* m,
+                       uint32_t flags);
+/* The same for a description and options (NULL: the defaults). */
+int32_t pm_diagnose(polymass_diagnostics* out, polymass_context* ctx,
+                    const polymass_mesh_desc* desc, const polymass_options* options);
+/* The moments of a surface (polymass_mesh_create with the options, NULL:
+   the defaults, then polymass_mesh_moments); the status of either. */
+int32_t pm_moments(polymass_moments* out, polymass_context* ctx, const polymass_mesh_desc* desc,
+                   const polymass_options* options);
 /* polymass_mass_properties_compute (unit density) of the committed arrays of
    a reference solid. */
 int32_t pm_compute_reference(polymass_mass_properties* out, polymass_context* ctx,

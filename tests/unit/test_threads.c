@@ -43,11 +43,12 @@ static void* read_mesh(void* arg) {
         if (round % 50 == 0) {
             polymass_diagnostics d;
             pm_props_init(&p);
-            if (polymass_mass_properties_compute(&p, ctx, r->desc, NULL) != POLYMASS_OK) {
+            if (polymass_mass_properties_compute(&p, NULL, ctx, r->desc, NULL, NULL) !=
+                POLYMASS_OK) {
                 r->failures++;
             }
             pm_diagnostics_init(&d);
-            if (polymass_mesh_check(&d, ctx, r->desc) != POLYMASS_OK) {
+            if (pm_diagnose(&d, ctx, r->desc, NULL) != POLYMASS_OK) {
                 r->failures++;
             }
         }
@@ -59,14 +60,14 @@ static void* read_mesh(void* arg) {
 static void test_concurrent_readers(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TORUS_TRIS];
     const polymass_mesh_desc desc = pm_reference_desc(ref);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_mesh* mesh = NULL;
     polymass_mass_properties expected;
     pthread_t threads[THREADS];
     reader readers[THREADS];
     int i;
     (void)state;
-    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc));
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &desc, NULL));
     pm_props_init(&expected);
     PM_ASSERT_OK(ctx, polymass_mesh_mass_properties(&expected, ctx, mesh, NULL));
     for (i = 0; i < THREADS; ++i) {
@@ -88,23 +89,21 @@ static void test_concurrent_readers(void** state) {
 
 /* A failure in one context leaves another context's message alone. */
 static void test_contexts_are_independent(void** state) {
-    polymass_context* a = pm_context_new(0);
-    polymass_context* b = pm_context_new(POLYMASS_OPTION_ACCEPT_INVERTED);
+    polymass_context* a = pm_context_new();
+    polymass_context* b = pm_context_new();
     pm_mesh m;
     polymass_mass_properties p;
-    polymass_options o;
     (void)state;
     pm_mesh_from_reference(&m, &pm_reference_solids[PM_REF_HOUSE]);
     pm_mesh_reverse_all(&m);
-    PM_ASSERT_OK(b, pm_compute(&p, b, &m, NULL));
+    PM_ASSERT_OK(b, pm_compute_flags(&p, b, &m, POLYMASS_OPTION_ACCEPT_INVERTED, NULL));
     PM_ASSERT_STATUS(a, POLYMASS_ERROR_INVERTED, pm_compute(&p, a, &m, NULL));
     assert_true(strlen(polymass_context_message(a)) > 0);
     assert_string_equal(polymass_context_message(b), "");
-    o = pm_options(0, 0.0);
-    PM_ASSERT_OK(a, polymass_context_get_options(&o, a));
-    assert_int_equal(o.flags, 0);
-    PM_ASSERT_OK(b, polymass_context_get_options(&o, b));
-    assert_int_equal(o.flags, POLYMASS_OPTION_ACCEPT_INVERTED);
+    PM_ASSERT_OK(b, polymass_context_set_threads(b, 2));
+    PM_ASSERT_STATUS(a, POLYMASS_ERROR_INVERTED, pm_compute(&p, a, &m, NULL));
+    PM_ASSERT_OK(b, pm_compute_flags(&p, b, &m, POLYMASS_OPTION_ACCEPT_INVERTED, NULL));
+    assert_true(strlen(polymass_context_message(a)) > 0);
     pm_mesh_free(&m);
     polymass_context_destroy(a);
     polymass_context_destroy(b);
@@ -117,10 +116,19 @@ static void test_contexts_are_independent(void** state) {
 static const uint32_t thread_counts[] = {1, 2, 3, 4, 7};
 enum { THREAD_COUNTS = sizeof thread_counts / sizeof thread_counts[0] };
 
-static polymass_options options_with_threads(uint32_t flags, uint32_t threads) {
-    polymass_options o = pm_options(flags, 0.0);
-    o.threads = threads;
-    return o;
+/* The shell of each face, as a mesh made with the options gives it. */
+static int32_t shell_of_each_face(polymass_context* ctx, const polymass_mesh_desc* desc,
+                                  const polymass_options* options, uint32_t* shell_of_face,
+                                  uint64_t face_count, uint64_t* shell_count) {
+    polymass_mesh* mesh = NULL;
+    (void)polymass_mesh_create(&mesh, ctx, desc, options);
+    assert_non_null(mesh);
+    PM_ASSERT_OK(ctx, polymass_mesh_shells(NULL, 0, shell_count, ctx, mesh));
+    {
+        const int32_t status = polymass_mesh_shell_of_face(shell_of_face, face_count, ctx, mesh);
+        polymass_mesh_destroy(mesh);
+        return status;
+    }
 }
 
 /* The checked path (scan, topology, integration, the shell) bit for bit for
@@ -128,7 +136,7 @@ static polymass_options options_with_threads(uint32_t flags, uint32_t threads) {
    blocks of faces. */
 static void test_thread_counts_give_the_same_bits(void** state) {
     static const double centre[3] = {3e6, -2e6, 1e6};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     polymass_mesh_desc desc;
     polymass_mass_properties first, p;
@@ -141,11 +149,11 @@ static void test_thread_counts_give_the_same_bits(void** state) {
     for (k = 0; k < THREAD_COUNTS; ++k) {
         /* The integrals' bits; the intersection check's findings have their
            own test (test_thread_counts_give_the_same_overlaps). */
-        const polymass_options o =
-            options_with_threads(POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, thread_counts[k]);
+        const polymass_options o = pm_options(POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, 0.0);
+        PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, thread_counts[k]));
         pm_props_init(k == 0 ? &first : &p);
-        PM_ASSERT_OK(ctx, polymass_mass_properties_compute_with_options(k == 0 ? &first : &p, ctx,
-                                                                        &desc, NULL, &o));
+        PM_ASSERT_OK(ctx, polymass_mass_properties_compute(k == 0 ? &first : &p, NULL, ctx, &desc,
+                                                           &o, NULL));
         if (k > 0) assert_memory_equal(&first, &p, sizeof p);
     }
     pm_mesh_free(&m);
@@ -157,7 +165,7 @@ static void test_thread_counts_give_the_same_bits(void** state) {
    count. */
 static void test_thread_counts_give_the_same_findings(void** state) {
     static const double centre[3] = {0, 0, 0};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     pm_mesh m;
     polymass_mesh_desc desc;
     polymass_diagnostics first, report;
@@ -178,25 +186,24 @@ static void test_thread_counts_give_the_same_findings(void** state) {
     assert_non_null(shells);
     for (k = 0; k < THREAD_COUNTS; ++k) {
         /* The topology's findings, as above. */
-        const polymass_options o =
-            options_with_threads(POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, thread_counts[k]);
+        const polymass_options o = pm_options(POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, 0.0);
+        PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, thread_counts[k]));
         polymass_mass_properties p;
         pm_diagnostics_init(k == 0 ? &first : &report);
-        PM_ASSERT_STATUS(
-            ctx, POLYMASS_ERROR_OPEN,
-            polymass_mesh_check_with_options(k == 0 ? &first : &report, ctx, &desc, &o));
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN,
+                         pm_diagnose(k == 0 ? &first : &report, ctx, &desc, &o));
         pm_props_init(&p);
         PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN,
-                         polymass_mass_properties_compute_with_options(&p, ctx, &desc, NULL, &o));
+                         polymass_mass_properties_compute(&p, NULL, ctx, &desc, &o, NULL));
         if (k == 0) {
             strcpy(first_message, polymass_context_message(ctx));
         } else {
             assert_memory_equal(&first, &report, sizeof report);
             assert_string_equal(first_message, polymass_context_message(ctx));
         }
-        PM_ASSERT_OK(ctx, polymass_mesh_shells_with_options(
-                              k == 0 ? first_shells : shells,
-                              k == 0 ? &first_shell_count : &shell_count, ctx, &desc, &o));
+        PM_ASSERT_OK(
+            ctx, shell_of_each_face(ctx, &desc, &o, k == 0 ? first_shells : shells, m.face_count,
+                                    k == 0 ? &first_shell_count : &shell_count));
         if (k > 0) {
             assert_int_equal(first_shell_count, shell_count);
             assert_memory_equal(first_shells, shells, m.face_count * sizeof *shells);
@@ -216,15 +223,14 @@ static void test_thread_counts_give_the_same_findings(void** state) {
 static polymass_diagnostics overlaps_for_every_count(const pm_mesh* m, int32_t status,
                                                      char first_message[512]) {
     const polymass_mesh_desc desc = pm_mesh_desc(m);
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     polymass_diagnostics first, report;
     int k;
     for (k = 0; k < THREAD_COUNTS; ++k) {
-        const polymass_options o = options_with_threads(0, thread_counts[k]);
+        const polymass_options o = pm_options(0, 0.0);
+        PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, thread_counts[k]));
         pm_diagnostics_init(k == 0 ? &first : &report);
-        PM_ASSERT_STATUS(
-            ctx, status,
-            polymass_mesh_check_with_options(k == 0 ? &first : &report, ctx, &desc, &o));
+        PM_ASSERT_STATUS(ctx, status, pm_diagnose(k == 0 ? &first : &report, ctx, &desc, &o));
         if (k == 0) {
             strcpy(first_message, polymass_context_message(ctx));
         } else {
@@ -289,7 +295,7 @@ static void test_batch_thread_counts_give_the_same_bits(void** state) {
     polymass_mesh_desc descs[ITEMS];
     polymass_mass_properties first[ITEMS], got[ITEMS];
     polymass_batch_item first_items[ITEMS], items[ITEMS];
-    const polymass_options own = options_with_threads(POLYMASS_OPTION_ACCEPT_INVERTED, 3);
+    const polymass_options own = pm_options(POLYMASS_OPTION_ACCEPT_INVERTED, 0.0);
     int i, k;
     (void)state;
     for (i = 0; i < ITEMS; ++i) {
@@ -299,12 +305,11 @@ static void test_batch_thread_counts_give_the_same_bits(void** state) {
         descs[i] = pm_mesh_desc(&meshes[i]);
     }
     for (k = 0; k < THREAD_COUNTS; ++k) {
-        polymass_context* ctx = pm_context_new(0);
-        const polymass_options o = options_with_threads(0, thread_counts[k]);
+        polymass_context* ctx = pm_context_new();
         polymass_batch_item* at = k == 0 ? first_items : items;
         polymass_mass_properties* props = k == 0 ? first : got;
         uint64_t failed = 99;
-        PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+        PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, thread_counts[k]));
         for (i = 0; i < ITEMS; ++i) {
             assert_int_equal(polymass_batch_item_init(&at[i], sizeof at[i]), POLYMASS_OK);
             pm_props_init(&props[i]);
@@ -327,27 +332,16 @@ static void test_batch_thread_counts_give_the_same_bits(void** state) {
     for (i = 0; i < ITEMS; ++i) pm_mesh_free(&meshes[i]);
 }
 
-/* threads is checked, read and kept; a caller of the 1.2 layout gets 1. */
-static void test_threads_option(void** state) {
-    polymass_context* ctx = pm_context_new(0);
-    polymass_options o = options_with_threads(0, POLYMASS_MAX_THREADS + 1);
-    polymass_options read;
+/* The context's threads are checked and kept; more threads than the
+   hardware has still give the answer. */
+static void test_threads_of_a_context(void** state) {
+    polymass_context* ctx = pm_context_new();
     polymass_mass_properties p;
     (void)state;
-    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, polymass_context_set_options(ctx, &o));
-    assert_non_null(strstr(polymass_context_message(ctx), "options->threads is 257"));
-    o.threads = 5;
-    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
-    read = pm_options(0, 0.0);
-    PM_ASSERT_OK(ctx, polymass_context_get_options(&read, ctx));
-    assert_int_equal(read.threads, 5);
-    o.struct_size = (uint32_t)offsetof(polymass_options, threads);
-    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
-    PM_ASSERT_OK(ctx, polymass_context_get_options(&read, ctx));
-    assert_int_equal(read.threads, 0);
-    /* threads beyond the hardware's still give the answer */
-    o = options_with_threads(0, POLYMASS_MAX_THREADS);
-    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_context_set_threads(ctx, POLYMASS_MAX_THREADS + 1));
+    assert_non_null(strstr(polymass_context_message(ctx), "threads is 257"));
+    PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, POLYMASS_MAX_THREADS));
     PM_ASSERT_REFERENCE_COMPUTE(ctx, &pm_reference_solids[PM_REF_TORUS_TRIS], &p);
     polymass_context_destroy(ctx);
 }
@@ -361,7 +355,7 @@ int main(void) {
         cmocka_unit_test(test_thread_counts_give_the_same_overlaps),
         cmocka_unit_test(test_thread_counts_give_the_same_piles),
         cmocka_unit_test(test_batch_thread_counts_give_the_same_bits),
-        cmocka_unit_test(test_threads_option),
+        cmocka_unit_test(test_threads_of_a_context),
     };
     return cmocka_run_group_tests_name("threads", tests, NULL, NULL);
 }

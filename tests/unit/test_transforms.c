@@ -72,7 +72,7 @@ static void assert_transform_exact(const pm_mesh* original, const pm_mesh* moved
 
 static void test_transform(void** state) {
     const transform* t = *state;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     double r[9];
     int k, i;
     for (i = 0; i < 9; ++i) {
@@ -92,8 +92,9 @@ static void test_transform(void** state) {
             assert_transform_exact(&original, &moved, t);
         }
         snprintf(label, sizeof label, "%s, %s", ref->name, t->name);
-        pm_context_set_flags(ctx, t->exact ? 0 : pm_reference_rounded_rotation_flags(ref));
-        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &moved, NULL));
+        PM_ASSERT_OK(
+            ctx, pm_compute_flags(&p, ctx, &moved,
+                                  t->exact ? 0 : pm_reference_rounded_rotation_flags(ref), NULL));
         PM_ASSERT_PROPERTIES(label, &e, &p, PM_TOL);
         pm_mesh_free(&moved);
         pm_mesh_free(&original);
@@ -155,7 +156,7 @@ static const double rounded_quaternions[][4] = {{0.9, 0.3, -0.2, 0.25}, {0.1, -0
    principal axes turn with the body: R_rot = Q R up to the order/sign of the
    columns, checked as Q^T I' Q = I. */
 static void test_rotation_invariants(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     double q[9];
     int k, i;
     (void)state;
@@ -166,11 +167,10 @@ static void test_rotation_invariants(void** state) {
         polymass_mass_properties a, b;
         double qt[9], back[9];
         pm_mesh_from_reference(&m, ref);
-        pm_context_set_flags(ctx, 0);
         PM_ASSERT_OK(ctx, pm_compute(&a, ctx, &m, NULL));
         pm_mesh_transform(&m, q, 1.0, NULL);
-        pm_context_set_flags(ctx, pm_reference_rounded_rotation_flags(ref));
-        PM_ASSERT_OK(ctx, pm_compute(&b, ctx, &m, NULL));
+        PM_ASSERT_OK(ctx,
+                     pm_compute_flags(&b, ctx, &m, pm_reference_rounded_rotation_flags(ref), NULL));
         PM_ASSERT_REL(ref->name, a.volume, b.volume, PM_TOL);
         if (!isnan(ref->surface_area)) {
             PM_ASSERT_REL(ref->name, a.surface_area, b.surface_area, PM_TOL);
@@ -192,7 +192,7 @@ static void test_rotation_invariants(void** state) {
 /* Scaling by a power of two is exact in binary: the results scale exactly
    as s^3, s^4 (first moments: C s), s^5 up to the library's own rounding. */
 static void test_power_of_two_scaling_is_consistent(void** state) {
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
     const double s = 1048576.0;
     int k, i;
     (void)state;

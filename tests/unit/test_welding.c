@@ -1,9 +1,10 @@
 /* Welding with a tolerance (polymass_options.weld_tolerance): CAD exports
  * repeat a vertex once per face with rounding noise in its coordinates; a
  * weld tolerance larger than the noise closes the surface, one smaller than
- * the gap between distinct features keeps them apart. And the shells
- * (polymass_mesh_shells), which split as welding joins; and the welding on
- * its own (polymass_mesh_weld). */
+ * the gap between distinct features keeps them apart. And the shells of a
+ * mesh (polymass_mesh_shells, polymass_mesh_shell_of_face), which split as
+ * welding joins; and the welding of positions on their own
+ * (polymass_weld_positions). */
 #include "test_support.h"
 
 #include <math.h>
@@ -41,13 +42,34 @@ static double largest_extent(const pm_mesh* m) {
     return extent;
 }
 
-static void set_weld_flags(polymass_context* ctx, double tolerance, uint32_t flags) {
+/* Options that weld within `tolerance`, with more flags. */
+static polymass_options weld_flags(double tolerance, uint32_t flags) {
     polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES | flags, 0.0);
     o.weld_tolerance = tolerance;
-    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
+    return o;
 }
 
-static void set_weld(polymass_context* ctx, double tolerance) { set_weld_flags(ctx, tolerance, 0); }
+static polymass_options weld(double tolerance) { return weld_flags(tolerance, 0); }
+
+static int32_t compute(polymass_mass_properties* p, polymass_context* ctx, const pm_mesh* m,
+                       const polymass_options* o) {
+    const polymass_mesh_desc d = pm_mesh_desc(m);
+    pm_props_init(p);
+    return polymass_mass_properties_compute(p, NULL, ctx, &d, o, NULL);
+}
+
+static int32_t check(polymass_diagnostics* report, polymass_context* ctx, const pm_mesh* m,
+                     const polymass_options* o) {
+    const polymass_mesh_desc d = pm_mesh_desc(m);
+    return pm_diagnose(report, ctx, &d, o);
+}
+
+/* polymass_weld_positions over the positions a description holds. */
+static int32_t weld_positions(uint32_t* of_vertex, uint64_t* distinct, polymass_context* ctx,
+                              const polymass_mesh_desc* d, double tolerance) {
+    return polymass_weld_positions(of_vertex, distinct, ctx, d->positions, d->position_type,
+                                   d->vertex_count, d->position_stride, tolerance);
+}
 
 static const pm_reference_solid* reference(const char* name) {
     size_t i;
@@ -68,7 +90,8 @@ static void test_noisy_soup_closes(void** state) {
     static const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     static const double far[3] = {1e6, -2e6, 3e6};
     const double tolerance = 1e-9;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     size_t n;
     (void)state;
     for (n = 0; n < sizeof names / sizeof names[0]; ++n) {
@@ -83,14 +106,14 @@ static void test_noisy_soup_closes(void** state) {
         pm_mesh_to_soup(&m);
         add_noise(&m, 0.4 * tolerance * largest_extent(&m), 7 + n);
 
-        set_weld(ctx, 0.0); /* exact welding leaves the copies apart */
-        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, pm_compute(&p, ctx, &m, NULL));
+        o = weld(0.0); /* exact welding leaves the copies apart */
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OPEN, compute(&p, ctx, &m, &o));
 
-        set_weld(ctx, tolerance);
-        PM_ASSERT_OK(ctx, pm_check(&d, ctx, &m));
+        o = weld(tolerance);
+        PM_ASSERT_OK(ctx, check(&d, ctx, &m, &o));
         assert_int_equal(d.used_vertex_count, ref->vertex_count);
         assert_int_equal(d.open_edges, 0);
-        PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+        PM_ASSERT_OK(ctx, compute(&p, ctx, &m, &o));
         /* The integrals use the noisy positions: 1e-9 of the size off. */
         PM_ASSERT_PROPERTIES(names[n], &exact, &p, 1e-7);
         pm_mesh_free(&m);
@@ -103,7 +126,8 @@ static void test_noisy_soup_closes(void** state) {
  * soup of 13,824 welds each corner to the first corner at its position. */
 static void test_exact_weld_of_many_positions(void** state) {
     static const double centre[3] = {1e6, 0, -1e6};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     uint32_t *of_vertex, *first_of;
     uint64_t distinct = 0;
     polymass_mesh_desc d;
@@ -129,9 +153,9 @@ static void test_exact_weld_of_many_positions(void** state) {
         memcpy(was, m.indices, m.index_count * sizeof *was);
         pm_mesh_to_soup(&m);
         assert_int_equal(m.vertex_count, m.index_count);
-        set_weld(ctx, 0.0);
+        o = weld(0.0);
         d = pm_mesh_desc(&m);
-        PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+        PM_ASSERT_OK(ctx, weld_positions(of_vertex, &distinct, ctx, &d, o.weld_tolerance));
         assert_int_equal(distinct, vertices);
         for (k = 0; k < m.vertex_count; ++k) assert_int_equal(of_vertex[k], first_of[was[k]]);
         free(was);
@@ -147,7 +171,8 @@ static void test_exact_weld_of_many_positions(void** state) {
 static void test_tolerance_is_a_distance(void** state) {
     static const double lo_a[3] = {0, 0, 0}, hi_a[3] = {1, 1, 1};
     static const double lo_b[3] = {1 + 2e-6, 0, 0}, hi_b[3] = {2 + 2e-6, 1, 1};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     polymass_mass_properties p;
     polymass_diagnostics d;
     pm_mesh m;
@@ -156,16 +181,16 @@ static void test_tolerance_is_a_distance(void** state) {
     pm_mesh_add_box(&m, lo_b, hi_b, 1);
     pm_mesh_to_soup(&m);
 
-    set_weld(ctx, 1e-9);
-    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &m, NULL));
+    o = weld(1e-9);
+    PM_ASSERT_OK(ctx, compute(&p, ctx, &m, &o));
     PM_ASSERT_REL("volume", 2.0, p.volume, PM_TOL);
-    PM_ASSERT_OK(ctx, pm_check(&d, ctx, &m));
+    PM_ASSERT_OK(ctx, check(&d, ctx, &m, &o));
     assert_int_equal(d.used_vertex_count, 16);
 
-    set_weld(ctx, 1e-5);
-    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_MANIFOLD, pm_compute(&p, ctx, &m, NULL));
+    o = weld(1e-5);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_MANIFOLD, compute(&p, ctx, &m, &o));
     assert_non_null(strstr(polymass_context_message(ctx), "edge ("));
-    pm_check(&d, ctx, &m);
+    check(&d, ctx, &m, &o);
     assert_int_equal(d.status, POLYMASS_ERROR_NON_MANIFOLD);
     assert_int_equal(d.used_vertex_count, 12);
     assert_true(d.non_manifold_edges >= 4); /* the four of the facing square */
@@ -178,7 +203,8 @@ static void test_tolerance_is_a_distance(void** state) {
 static void test_many_copies_of_one_vertex(void** state) {
     enum { SEGMENTS = 20000 };
     const double pi = 3.14159265358979323846;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     polymass_diagnostics d;
     polymass_mass_properties p;
     pm_mesh cone;
@@ -200,39 +226,61 @@ static void test_many_copies_of_one_vertex(void** state) {
     /* The welding is under test: the intersection check, whose every
        triangle here meets the 20,000 others at the apex, is skipped (issue
        27 makes it linear on such fans). */
-    set_weld_flags(ctx, 1e-12, POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
-    PM_ASSERT_OK(ctx, pm_check(&d, ctx, &cone));
+    o = weld_flags(1e-12, POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
+    PM_ASSERT_OK(ctx, check(&d, ctx, &cone, &o));
     assert_int_equal(d.used_vertex_count, SEGMENTS + 2);
-    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &cone, NULL));
+    PM_ASSERT_OK(ctx, compute(&p, ctx, &cone, &o));
     pm_mesh_free(&cone);
     polymass_context_destroy(ctx);
 }
 
 static void test_invalid_tolerances(void** state) {
     const double bad[] = {-1e-12, 2 * POLYMASS_MAX_WELD_TOLERANCE, INFINITY, NAN};
-    polymass_context* ctx = pm_context_new(0);
-    polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0), out;
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(POLYMASS_OPTION_WELD_VERTICES, 0.0);
+    polymass_mass_properties p;
+    uint32_t of_vertex[8];
+    uint64_t distinct = 0;
+    pm_mesh m;
+    polymass_mesh_desc d;
     size_t i;
     (void)state;
+    pm_mesh_unit_cube(&m, 1);
+    d = pm_mesh_desc(&m);
     for (i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
         o.weld_tolerance = bad[i];
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT, compute(&p, ctx, &m, &o));
+        assert_non_null(strstr(polymass_context_message(ctx), "weld_tolerance"));
         PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                         polymass_context_set_options(ctx, &o));
+                         weld_positions(of_vertex, &distinct, ctx, &d, bad[i]));
         assert_non_null(strstr(polymass_context_message(ctx), "weld_tolerance"));
     }
     o.weld_tolerance = POLYMASS_MAX_WELD_TOLERANCE;
-    PM_ASSERT_OK(ctx, polymass_context_set_options(ctx, &o));
-    out = pm_options(0, 0.0);
-    PM_ASSERT_OK(ctx, polymass_context_get_options(&out, ctx));
-    assert_true(out.weld_tolerance == POLYMASS_MAX_WELD_TOLERANCE);
+    PM_ASSERT_OK(ctx, compute(&p, ctx, &m, &o));
+    PM_ASSERT_OK(ctx, weld_positions(of_vertex, &distinct, ctx, &d, POLYMASS_MAX_WELD_TOLERANCE));
+    assert_int_equal(distinct, 8);
+    pm_mesh_free(&m);
     polymass_context_destroy(ctx);
 }
 
-static uint64_t shells_of(polymass_context* ctx, const pm_mesh* m, uint32_t* of_face) {
-    const polymass_mesh_desc d = pm_mesh_desc(m);
+/* The shell of each face and the count of shells of the mesh of `d`. */
+static uint64_t shells_of_desc(polymass_context* ctx, const polymass_mesh_desc* d,
+                               const polymass_options* o, uint32_t* of_face) {
+    polymass_mesh* mesh = NULL;
     uint64_t count = 0;
-    PM_ASSERT_OK(ctx, polymass_mesh_shells(of_face, &count, ctx, &d));
+    (void)polymass_mesh_create(&mesh, ctx, d, o);
+    assert_non_null(mesh);
+    PM_ASSERT_OK(ctx, polymass_mesh_shells(NULL, 0, &count, ctx, mesh));
+    PM_ASSERT_OK(ctx, polymass_mesh_shell_of_face(
+                          of_face, d->face_count ? d->face_count : d->index_count / 3, ctx, mesh));
+    polymass_mesh_destroy(mesh);
     return count;
+}
+
+static uint64_t shells_of(polymass_context* ctx, const pm_mesh* m, const polymass_options* o,
+                          uint32_t* of_face) {
+    const polymass_mesh_desc d = pm_mesh_desc(m);
+    return shells_of_desc(ctx, &d, o, of_face);
 }
 
 /* Two boxes apart and a cube around a cavity: two shells each, numbered in
@@ -242,31 +290,32 @@ static void test_shells(void** state) {
     static const double lo_a[3] = {0, 0, 0}, hi_a[3] = {1, 1, 1};
     static const double lo_b[3] = {3, 0, 0}, hi_b[3] = {4, 2, 1};
     uint32_t of_face[64];
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     pm_mesh m;
     size_t f;
     (void)state;
     pm_mesh_box(&m, lo_b, hi_b, 0);
     pm_mesh_add_box(&m, lo_a, hi_a, 0);
-    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 2);
     for (f = 0; f < 12; ++f) {
         assert_int_equal(of_face[f], f < 6 ? 0 : 1);
     }
     pm_mesh_free(&m);
 
     pm_mesh_from_reference(&m, reference("cube_cavity"));
-    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 2);
     pm_mesh_free(&m);
 
     pm_mesh_box(&m, lo_a, hi_a, 1);
     pm_mesh_to_soup(&m);
-    assert_int_equal(shells_of(ctx, &m, of_face), 12);
-    set_weld(ctx, 0.0);
-    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 12);
+    o = weld(0.0);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 1);
     add_noise(&m, 1e-13, 5);
-    assert_int_equal(shells_of(ctx, &m, of_face), 12);
-    set_weld(ctx, 1e-9);
-    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 12);
+    o = weld(1e-9);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 1);
     for (f = 0; f < 12; ++f) {
         assert_int_equal(of_face[f], 0);
     }
@@ -282,7 +331,8 @@ static void test_shells_of_used_vertices(void** state) {
     static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     uint32_t of_face[16];
     uint16_t narrow[36];
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     polymass_mesh_desc d;
     uint64_t count = 0;
     uint32_t lone;
@@ -294,10 +344,10 @@ static void test_shells_of_used_vertices(void** state) {
     pm_mesh_add_vertex(&m, 5, 5, 5);
     pm_mesh_add_box(&m, lo, hi, 1);
     pm_mesh_add_vertex(&m, 6, 6, 6);
-    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 1);
     for (f = 0; f < 12; ++f) assert_int_equal(of_face[f], 0);
-    set_weld(ctx, 0.0);
-    assert_int_equal(shells_of(ctx, &m, of_face), 1);
+    o = weld(0.0);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 1);
     for (f = 0; f < 12; ++f) assert_int_equal(of_face[f], 0);
 
     /* The lone vertex's face first: shell 0, the box shell 1. */
@@ -305,12 +355,12 @@ static void test_shells_of_used_vertices(void** state) {
     pm_mesh_add_tri(&m, lone, lone, lone);
     memmove(m.indices + 3, m.indices, 36 * sizeof *m.indices);
     m.indices[0] = m.indices[1] = m.indices[2] = lone;
-    pm_context_set_flags(ctx, 0);
-    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    o = pm_options(0, 0.0);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 2);
     assert_int_equal(of_face[0], 0);
     for (f = 1; f < 13; ++f) assert_int_equal(of_face[f], 1);
-    set_weld(ctx, 0.0);
-    assert_int_equal(shells_of(ctx, &m, of_face), 2);
+    o = weld(0.0);
+    assert_int_equal(shells_of(ctx, &m, &o, of_face), 2);
     assert_int_equal(of_face[0], 0);
     for (f = 1; f < 13; ++f) assert_int_equal(of_face[f], 1);
     pm_mesh_free(&m);
@@ -326,8 +376,8 @@ static void test_shells_of_used_vertices(void** state) {
     d.vertex_count = 70000;
     d.indices = narrow;
     d.index_type = POLYMASS_INDEX_UINT16;
-    pm_context_set_flags(ctx, 0);
-    PM_ASSERT_OK(ctx, polymass_mesh_shells(of_face, &count, ctx, &d));
+    o = pm_options(0, 0.0);
+    count = shells_of_desc(ctx, &d, &o, of_face);
     assert_int_equal(count, 1);
     for (f = 0; f < 12; ++f) assert_int_equal(of_face[f], 0);
     free(far);
@@ -335,45 +385,64 @@ static void test_shells_of_used_vertices(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* The shells of a mesh whose faces cannot be read: none; its shell of each
+   face is its status. Bad arguments are refused. */
 static void test_shells_errors(void** state) {
     static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     uint32_t of_face[12];
     uint64_t count = 0;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_mesh* mesh = NULL;
     polymass_mesh_desc d;
     pm_mesh m;
     (void)state;
     pm_mesh_box(&m, lo, hi, 1);
     d = pm_mesh_desc(&m);
+    PM_ASSERT_OK(ctx, polymass_mesh_create(&mesh, ctx, &d, NULL));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_shells(NULL, &count, ctx, &d));
+                     polymass_mesh_shells(NULL, 1, &count, ctx, mesh));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_shells(of_face, NULL, ctx, &d));
+                     polymass_mesh_shells(NULL, 0, NULL, ctx, mesh));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_shells(of_face, &count, ctx, NULL));
+                     polymass_mesh_shells(NULL, 0, &count, ctx, NULL));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shell_of_face(NULL, 12, ctx, mesh));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_mesh_shell_of_face(of_face, 12, ctx, NULL));
+    PM_ASSERT_OK(ctx, polymass_mesh_shell_of_face(NULL, 0, ctx, mesh));
+    polymass_mesh_destroy(mesh);
     m.indices[7] = 99;
     d = pm_mesh_desc(&m);
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-                     polymass_mesh_shells(of_face, &count, ctx, &d));
+                     polymass_mesh_create(&mesh, ctx, &d, NULL));
+    PM_ASSERT_OK(ctx, polymass_mesh_shells(NULL, 0, &count, ctx, mesh));
+    assert_int_equal(count, 0);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                     polymass_mesh_shell_of_face(of_face, 12, ctx, mesh));
     PM_ASSERT_MENTIONS(ctx, "face", 2);
+    polymass_mesh_destroy(mesh);
     m.indices[7] = 1;
     m.positions[4] = NAN;
     d = pm_mesh_desc(&m);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, polymass_mesh_create(&mesh, ctx, &d, NULL));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE,
-                     polymass_mesh_shells(of_face, &count, ctx, &d));
+                     polymass_mesh_shell_of_face(of_face, 12, ctx, mesh));
+    polymass_mesh_destroy(mesh);
     pm_mesh_free(&m);
-    assert_int_equal(polymass_mesh_shells(of_face, &count, NULL, NULL),
+    assert_int_equal(polymass_mesh_shell_of_face(of_face, 12, NULL, NULL),
                      POLYMASS_ERROR_INVALID_ARGUMENT);
     polymass_context_destroy(ctx);
 }
 
-/* polymass_mesh_weld: a soup of a box (each face its own corners) gives
+/* polymass_weld_positions: a soup of a box (each face its own corners) gives
  * every corner the first corner at its position, exactly (+0 and -0 one,
- * copies of a NaN one); a tolerance welds near copies; an unused vertex maps
- * to itself; bad arguments are refused. */
+ * copies of a NaN one); a tolerance welds near copies; a position no face
+ * uses is welded as any other (there are no faces); bad arguments are
+ * refused. */
 static void test_weld_on_its_own(void** state) {
     static const double lo[3] = {-0.0, 0, 0}, hi[3] = {1, 1, 1};
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     uint32_t of_vertex[40];
     uint64_t distinct = 0;
     polymass_mesh_desc d;
@@ -384,10 +453,10 @@ static void test_weld_on_its_own(void** state) {
     pm_mesh_to_soup(&m);
     assert_int_equal(m.vertex_count, 36);
     m.positions[0] = 0.0;            /* the first corner at +0, the others at -0 */
-    pm_mesh_add_vertex(&m, 5, 5, 5); /* vertex 36: used by no face */
+    pm_mesh_add_vertex(&m, 5, 5, 5); /* vertex 36: used by no face, a position of its own */
     d = pm_mesh_desc(&m);
-    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
-    assert_int_equal(distinct, 8);
+    PM_ASSERT_OK(ctx, weld_positions(of_vertex, &distinct, ctx, &d, o.weld_tolerance));
+    assert_int_equal(distinct, 9);
     for (v = 0; v < 36; ++v) {
         for (w = 0; w < v; ++w) {
             if (m.positions[3 * w] == m.positions[3 * v] &&
@@ -406,11 +475,11 @@ static void test_weld_on_its_own(void** state) {
     m.positions[3 * 9 + 1] = NAN;
     memcpy(&m.positions[3 * 9], &m.positions[3 * 5], 3 * sizeof(double));
     d = pm_mesh_desc(&m);
-    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    PM_ASSERT_OK(ctx, weld_positions(of_vertex, &distinct, ctx, &d, o.weld_tolerance));
     assert_int_equal(of_vertex[9], 5);
-    set_weld(ctx, 1e-6);
+    o = weld(1e-6);
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE,
-                     polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+                     weld_positions(of_vertex, &distinct, ctx, &d, o.weld_tolerance));
     pm_mesh_free(&m);
 
     /* Within a tolerance: noise below it welds the soup to the box's 8. */
@@ -418,37 +487,44 @@ static void test_weld_on_its_own(void** state) {
     pm_mesh_to_soup(&m);
     add_noise(&m, 1e-9, 7);
     d = pm_mesh_desc(&m);
-    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    PM_ASSERT_OK(ctx, weld_positions(of_vertex, &distinct, ctx, &d, o.weld_tolerance));
     assert_int_equal(distinct, 8);
-    set_weld(ctx, 0.0);
-    PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+    o = weld(0.0);
+    PM_ASSERT_OK(ctx, weld_positions(of_vertex, &distinct, ctx, &d, o.weld_tolerance));
     assert_int_equal(distinct, 36);
 
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_weld(NULL, &distinct, ctx, &d));
+                     weld_positions(NULL, &distinct, ctx, &d, o.weld_tolerance));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_weld(of_vertex, NULL, ctx, &d));
+                     weld_positions(of_vertex, NULL, ctx, &d, o.weld_tolerance));
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
-                     polymass_mesh_weld(of_vertex, &distinct, ctx, NULL));
-    m.indices[7] = 99;
-    d = pm_mesh_desc(&m);
-    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-                     polymass_mesh_weld(of_vertex, &distinct, ctx, &d));
+                     polymass_weld_positions(of_vertex, &distinct, ctx, NULL,
+                                             POLYMASS_POSITION_FLOAT64, 36, 0, 0.0));
+    PM_ASSERT_STATUS(
+        ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+        polymass_weld_positions(of_vertex, &distinct, ctx, m.positions, 7, 36, 0, 0.0));
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
+                     polymass_weld_positions(of_vertex, &distinct, ctx, m.positions,
+                                             POLYMASS_POSITION_FLOAT64, 36, 16, 0.0));
+    /* No positions: nothing to weld. */
+    PM_ASSERT_OK(ctx, polymass_weld_positions(NULL, &distinct, ctx, NULL, POLYMASS_POSITION_FLOAT64,
+                                              0, 0, 0.0));
+    assert_int_equal(distinct, 0);
     pm_mesh_free(&m);
-    assert_int_equal(polymass_mesh_weld(of_vertex, &distinct, NULL, NULL),
+    assert_int_equal(weld_positions(of_vertex, &distinct, NULL, &d, 0.0),
                      POLYMASS_ERROR_INVALID_ARGUMENT);
     polymass_context_destroy(ctx);
 }
 
-/* 16-bit indices reach the first 65,536 vertices only: the ones past them,
- * which no face can use, map to themselves (the core's map stops at the
- * index type's reach, the C API fills in the rest), with and without a
- * tolerance. */
-static void test_weld_past_sixteen_bit_reach(void** state) {
+/* Positions alone, past what 16-bit indices reach: every one is welded (no
+ * face says which are used): the 65,600 copies of one point past the box's
+ * corners are one vertex, with and without a tolerance. */
+static void test_weld_of_positions_past_sixteen_bit_reach(void** state) {
     static const double lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
     static const pm_layout sixteen_bit = {POLYMASS_POSITION_FLOAT64, 0, 0, POLYMASS_INDEX_UINT16};
     const size_t vertex_count = 65536 + 100;
-    polymass_context* ctx = pm_context_new(0);
+    polymass_context* ctx = pm_context_new();
+    polymass_options o = pm_options(0, 0.0);
     uint32_t* of_vertex = malloc(vertex_count * sizeof *of_vertex);
     uint64_t distinct = 0;
     pm_laid_out_mesh laid_out;
@@ -459,15 +535,16 @@ static void test_weld_past_sixteen_bit_reach(void** state) {
     assert_non_null(of_vertex);
     pm_mesh_box(&m, lo, hi, 1);
     pm_mesh_to_soup(&m);
-    while (m.vertex_count < vertex_count) /* unused, all at one point: none welded */
+    while (m.vertex_count < vertex_count) /* all at one point: one vertex */
         pm_mesh_add_vertex(&m, 5, 5, 5);
     pm_lay_out(&laid_out, &m, &sixteen_bit);
     for (pass = 0; pass < 2; ++pass) {
-        set_weld(ctx, pass == 0 ? 0.0 : 1e-6);
+        o = weld(pass == 0 ? 0.0 : 1e-6);
         memset(of_vertex, 0xFF, vertex_count * sizeof *of_vertex);
-        PM_ASSERT_OK(ctx, polymass_mesh_weld(of_vertex, &distinct, ctx, &laid_out.desc));
-        assert_int_equal(distinct, 8);
-        for (v = 36; v < vertex_count; ++v) assert_int_equal(of_vertex[v], v);
+        PM_ASSERT_OK(ctx,
+                     weld_positions(of_vertex, &distinct, ctx, &laid_out.desc, o.weld_tolerance));
+        assert_int_equal(distinct, 9);
+        for (v = 36; v < vertex_count; ++v) assert_int_equal(of_vertex[v], 36);
     }
     pm_laid_out_free(&laid_out);
     pm_mesh_free(&m);
@@ -485,7 +562,7 @@ int main(void) {
         cmocka_unit_test(test_shells_of_used_vertices),
         cmocka_unit_test(test_shells_errors),
         cmocka_unit_test(test_weld_on_its_own),
-        cmocka_unit_test(test_weld_past_sixteen_bit_reach),
+        cmocka_unit_test(test_weld_of_positions_past_sixteen_bit_reach),
         cmocka_unit_test(test_exact_weld_of_many_positions),
     };
     return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
