@@ -126,28 +126,40 @@ polymass_moments mujoco_ellipsoid_surface(const Eigen::Vector3d& radii) {
     return centred_moments(area, second);
 }
 
-// A mesh as the library's chain of modes answers it, first answer first
-// (docs/repair.md), in one analysis, at unit density (a sheet: unit area
-// density). When the body is not the exact solid, the message says what was
-// done and how far off it can be; when no mode answers, why each did not.
-// diagnostics: the surface's own verdict as a solid.
-Measured measured_by_modes(const Library& library, polymass_options options, const Model& model,
-                           const std::vector<uint32_t>& modes, polymass_diagnostics& diagnostics) {
+// The chain of modes that answers for a body: the hull, the surface as a
+// sheet, or the solid - else the surface repaired, else its hull.
+std::vector<uint32_t> modes_for(MeshBody body) {
+    switch (body) {
+        case MeshBody::kHull:
+            return {POLYMASS_MODE_HULL};
+        case MeshBody::kSurface:
+            return {POLYMASS_MODE_SHELL};
+        case MeshBody::kSolid:
+            break;
+    }
+    return {POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL};
+}
+
+// A mesh analysed once, answered by the chain of modes, first answer first
+// (docs/repair.md); a sheet (SHELL) of unit thickness.
+SurfaceAnalysis analysed_by_modes(const Library& library, polymass_options options,
+                                  const Model& model, const std::vector<uint32_t>& modes) {
     std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
     std::copy(modes.begin(), modes.end(), std::begin(options.modes));
     options.shell_thickness = 1.0;
-    const SurfaceAnalysis analysis(library, model, combined_part(model), options);
-    diagnostics = analysis.diagnostics();
+    return SurfaceAnalysis(library, model, combined_part(model), options);
+}
+
+// The body that answered, at unit density (a sheet: unit area density);
+// not ok when none did. When it is not the exact solid, the message says
+// what was done and how far off it can be.
+Measured measured_answer(const Library& library, const SurfaceAnalysis& analysis) {
     Measured measured;
-    if (!analysis.valid()) {
-        measured.message = "not measured: " + analysis.failure().message;
-        return measured;
-    }
     polymass_mass_desc unit{};
     polymass_mass_desc_init(&unit, sizeof unit);
     const SolidResult answer = analysis.properties(library, unit);
     if (answer.status != POLYMASS_OK) {
-        measured.message = "not measured: " + answer.message;
+        measured.message = answer.message;
         return measured;
     }
     measured.ok = true;
@@ -189,25 +201,23 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
             model.positions[v] *= scale[static_cast<int>(v % 3)];
         }
     }
-    Measured measured;
-    polymass_diagnostics diagnostics{};
+    const SurfaceAnalysis analysis = analysed_by_modes(library, options, model, modes_for(body));
+    Measured measured = measured_answer(library, analysis);
     if (body != MeshBody::kSolid) {
-        measured = measured_by_modes(library, options, model,
-                                     {body == MeshBody::kHull ? uint32_t(POLYMASS_MODE_HULL)
-                                                              : uint32_t(POLYMASS_MODE_SHELL)},
-                                     diagnostics);
-        if (!measured.ok) return failure("bad_geometry", path + ": " + measured.message);
+        if (!measured.ok)
+            return failure("bad_geometry", path + ": not measured: " + measured.message);
         measured.message.clear();  // the body asked for, exact: nothing to report
     } else {
-        // The solid, else the surface repaired, else its hull.
-        measured = measured_by_modes(
-            library, options, model,
-            {POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL}, diagnostics);
-        const std::string not_a_solid = path + ": " + category_of(diagnostics.status);
-        if (!measured.ok) return failure("not_a_solid", not_a_solid + "; " + measured.message);
+        // The surface's defect; when no mode answered, each later mode's
+        // reason follows it.
+        const std::string not_a_solid =
+            path + ": " + category_of(analysis.diagnostics().status) + ": ";
+        if (!measured.ok)
+            return failure("not_a_solid", not_a_solid + "not measured: solid: " + measured.message);
         if (!measured.message.empty()) {
             measured.kind = "approximated_geometry";
-            measured.message = not_a_solid + "; measured as " + measured.message;
+            measured.message =
+                not_a_solid + analysis.failure().message + "; measured as " + measured.message;
         }
     }
     measured.ok = true;
