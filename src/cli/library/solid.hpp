@@ -69,7 +69,9 @@ SolidResult compute_solid(const Library& library, const Model& model, const Part
 // For a surface the library's chain refused with status: which option of
 // the tool would answer it (--repair, then --hull, then --shell T for a flat
 // surface, among the modes the chain lacks), in result.answering_option and
-// answering_provenance, and said at the end of result.message.
+// answering_provenance, and said at the end of result.message. A status that
+// rules every mode out (indices out of range, coordinates not finite) says
+// it alone; otherwise the surface is analysed once more, with those modes.
 void suggest_option(const Library& library, const polymass_mesh_desc& desc, int32_t status,
                     SolidResult& result);
 
