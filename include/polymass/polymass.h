@@ -602,6 +602,65 @@ typedef struct polymass_batch_item {
     char message[POLYMASS_BATCH_MESSAGE_SIZE];
 } polymass_batch_item;
 
+/* polymass_packed_meshes.index_base */
+/* Mesh i's indices count from its first vertex, vertex_offsets[i]. */
+#define POLYMASS_INDICES_LOCAL 0
+/* Mesh i's indices count from the first vertex of the packed array, as in
+   PyTorch3D's packed form (faces_packed); they must still fall in mesh i's
+   own range of vertices. */
+#define POLYMASS_INDICES_GLOBAL 1
+
+/* Many triangle meshes packed into shared arrays, as datasets keep them:
+   mesh i is vertices [vertex_offsets[i], vertex_offsets[i + 1]) of
+   `positions` and indices [index_offsets[i], index_offsets[i + 1]) of
+   `indices`, three per triangle. Nothing is copied. Since 2.0. */
+typedef struct polymass_packed_meshes {
+    uint32_t struct_size;   /* sizeof(polymass_packed_meshes) */
+    uint32_t position_type; /* POLYMASS_POSITION_* */
+    const void* positions;  /* as in polymass_mesh_desc */
+    uint64_t position_stride;
+    uint32_t index_type; /* POLYMASS_INDEX_* */
+    uint32_t index_base; /* POLYMASS_INDICES_* */
+    const void* indices;
+    uint64_t mesh_count;
+    /* mesh_count + 1 ascending offsets each, from 0: the last is the number
+       of vertices, and of indices (a multiple of 3 between each pair). */
+    const uint64_t* vertex_offsets;
+    const uint64_t* index_offsets;
+    /* Per mesh, mesh_count values: the density (POLYMASS_MASS_FROM_DENSITY)
+       or the mass (POLYMASS_MASS_FROM_TOTAL) of mesh i; NULL: unit density
+       for every mesh. */
+    uint32_t mass_mode; /* POLYMASS_MASS_FROM_* */
+    uint32_t reserved;  /* must be 0 */
+    const double* mass_values;
+} polymass_packed_meshes;
+
+/* Where polymass_packed_compute writes the results of mesh i: each array has
+   room for mesh_count rows (status: mesh_count values; center_of_mass:
+   3 * mesh_count, row i at 3 * i; inertia and principal_axes: 9 *
+   mesh_count, row-major 3x3 at 9 * i; ...). Any array may be NULL: not
+   wanted. A failed mesh's row holds its status and NaN numbers (warnings 0).
+   Since 2.0. */
+typedef struct polymass_packed_results {
+    uint32_t struct_size; /* sizeof(polymass_packed_results) */
+    uint32_t reserved;    /* must be 0 */
+    int32_t* status;      /* POLYMASS_OK or the mesh's status */
+    uint32_t* warnings;   /* POLYMASS_WARNING_* bits */
+    double* volume;
+    double* mass;
+    double* surface_area;
+    double* center_of_mass;    /* 3 per mesh */
+    double* inertia;           /* 9 per mesh: about the centre of mass */
+    double* principal_moments; /* 3 per mesh */
+    double* principal_axes;    /* 9 per mesh */
+    double* error_bound_volume;
+    double* error_bound_center_of_mass;
+    double* error_bound_inertia;
+    /* mesh_count * POLYMASS_BATCH_MESSAGE_SIZE bytes: mesh i's message ("" on
+       success), NUL-terminated, at i * POLYMASS_BATCH_MESSAGE_SIZE. */
+    char* messages;
+} polymass_packed_results;
+
 /* ========================================================================== */
 /* Struct sizes and initialisers                                              */
 /* ========================================================================== */
@@ -619,6 +678,8 @@ POLYMASS_API uint32_t polymass_sizeof_provenance(void);
 POLYMASS_API uint32_t polymass_sizeof_moments(void);
 POLYMASS_API uint32_t polymass_sizeof_polygon_properties(void);
 POLYMASS_API uint32_t polymass_sizeof_batch_item(void);
+POLYMASS_API uint32_t polymass_sizeof_packed_meshes(void);
+POLYMASS_API uint32_t polymass_sizeof_packed_results(void);
 
 /* Initialisers. Each writes a struct's defaults, struct_size included, up to
    the struct_size given, which must be the size of a version of the struct
@@ -646,6 +707,10 @@ POLYMASS_API int32_t polymass_moments_init(polymass_moments* moments, uint32_t s
 POLYMASS_API int32_t polymass_polygon_properties_init(polymass_polygon_properties* properties,
                                                       uint32_t struct_size);
 POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_t struct_size);
+POLYMASS_API int32_t polymass_packed_meshes_init(polymass_packed_meshes* meshes,
+                                                 uint32_t struct_size);
+POLYMASS_API int32_t polymass_packed_results_init(polymass_packed_results* results,
+                                                  uint32_t struct_size);
 
 /* The same defaults as static initialisers, for C (designated initialisers
    are C99; C++ before C++20 has none: call the functions above there). The
@@ -679,6 +744,10 @@ POLYMASS_API int32_t polymass_batch_item_init(polymass_batch_item* item, uint32_
     { .struct_size = sizeof(polymass_polygon_properties) }
 #define POLYMASS_BATCH_ITEM_INIT \
     { .struct_size = sizeof(polymass_batch_item) }
+#define POLYMASS_PACKED_MESHES_INIT \
+    { .struct_size = sizeof(polymass_packed_meshes) }
+#define POLYMASS_PACKED_RESULTS_INIT \
+    { .struct_size = sizeof(polymass_packed_results) }
 #endif
 
 /* ========================================================================== */
@@ -874,6 +943,23 @@ POLYMASS_API int32_t polymass_inertia_about(double out_inertia[9],
    > 0, an unknown struct_size), with the context's message. */
 POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t item_count,
                                             uint64_t* out_failed, polymass_context* context);
+
+/* The mass properties of every mesh of a packed set, with the same options
+   for all (NULL: the defaults), written in columns: mesh i's numbers are bit
+   for bit those polymass_mass_properties_compute gives for it alone, with its
+   density or mass; a mesh's failure does not stop the others. *out_failed
+   (may be NULL) counts the meshes that failed. Meshes are spread over the
+   context's threads (each mesh on one thread) without changing any result.
+   For a dataset's many small meshes, with no per-mesh struct or pointer to
+   prepare. Context: one thread at a time. Since 2.0.
+   Returns POLYMASS_OK once every mesh has its status, or what kept the set
+   from running (POLYMASS_ERROR_INVALID_ARGUMENT: offsets that do not ascend
+   from 0, a count of indices not a multiple of 3, an index_base unknown),
+   with the context's message. */
+POLYMASS_API int32_t polymass_packed_compute(const polymass_packed_results* results,
+                                             uint64_t* out_failed, polymass_context* context,
+                                             const polymass_packed_meshes* meshes,
+                                             const polymass_options* options);
 
 /* ========================================================================== */
 /* Moments: mass integrals that compose                                       */
