@@ -98,7 +98,7 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
 }  // namespace
 
 int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
-                        const Body& answered, const polymass_mass_desc* mass) {
+                        const core::Body& answered, const polymass_mass_desc* mass) {
     polymass_mass_desc body_desc;
     if (const int32_t status = read_mass_desc(context, mass, body_desc)) return status;
     const double density = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL

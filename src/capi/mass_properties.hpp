@@ -11,8 +11,8 @@ namespace polymass::capi {
 
 // Checks `mass` (NULL: unit density) and writes the body's properties to
 // *out, or returns the status with the message in the context.
-int32_t mass_properties(polymass_mass_properties* out, polymass_context* context, const Body& body,
-                        const polymass_mass_desc* mass);
+int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
+                        const core::Body& body, const polymass_mass_desc* mass);
 
 // The moments with the density or mass of `mass` (NULL: as they are): the
 // whole mass distribution rescaled to that mean density or total mass.

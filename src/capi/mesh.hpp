@@ -11,26 +11,13 @@
 #include <vector>
 
 #include "context.hpp"
-#include "core/approximation_bound.hpp"
-#include "core/volume_integrals.hpp"
+#include "core/surface_answer.hpp"
 
 namespace polymass::capi {
 
-// The body a mode of the chain gave: its integrals and what is known of them.
-struct Body {
-    core::VolumeIntegrals integrals;  // about `reference`, outward-oriented
-    core::IntegralBounds bounds;      // on their rounding errors
-    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-    double surface_area = 0.0;
-    uint32_t warnings = 0;
-    // How far the body can be from the caller's solid when a mode other than
-    // SOLID answered (zero otherwise), at unit density.
-    core::ApproximationBound approximation;
-};
-
-// What the chain of modes answered: the body and which mode gave it, how.
+// What the chain of modes answered: the body, and which mode gave it, how.
 struct Answer {
-    Body body;
+    core::Body body;
     polymass_provenance provenance{};
 };
 
@@ -55,15 +42,14 @@ namespace polymass::capi {
 struct MeshInput;
 
 // The one analysis of a surface read into `input`, shared by
-// polymass_mesh_create and polymass_mass_properties_compute: the surface
-// judged as a solid, then the options' chain of modes (docs/repair.md).
-// With `findings` (a mesh being made), every check runs to its end and the
-// diagnostics and shells are written to it; without, the analysis stops at
-// the first problem and judges only what the chain needs. Returns the status
-// with the message in the context (when no mode answers: each mode's reason)
-// and, on success, the answer.
-int32_t answer_surface(polymass_context* context, const MeshInput& input,
-                       const polymass_options& options, Answer& answer, polymass_mesh* findings);
+// polymass_mesh_create and polymass_mass_properties_compute
+// (core::answer_surface). With `findings` (a mesh being made), every check
+// runs to its end and the diagnostics and shells are written to it; without,
+// the analysis stops at the first problem. Returns the status with the
+// message in the context (when no mode answers: each mode's reason) and, on
+// success, the answer.
+int32_t analyse_surface(polymass_context* context, const MeshInput& input,
+                        const polymass_options& options, Answer& answer, polymass_mesh* findings);
 
 // POLYMASS_OK when a mode answered, else the mesh's status with its message
 // in the context: what the getters of the answer return.
@@ -71,10 +57,5 @@ inline int32_t unanswered(polymass_context* context, const polymass_mesh& mesh) 
     if (mesh.status == POLYMASS_OK) return POLYMASS_OK;
     return context->fail(mesh.status, "%s", mesh.message);
 }
-
-// The SOLID mode on a surface of its own (a repaired one, a hull): judged,
-// stopping at the first problem, and integrated into `body`.
-int32_t build_solid(polymass_context* context, const MeshInput& input,
-                    const polymass_options& options, Body& body);
 
 }  // namespace polymass::capi

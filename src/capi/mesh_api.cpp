@@ -1,15 +1,16 @@
 // polymass_mesh_* and polymass_mass_properties_compute: one analysis of the
-// caller's surface (mode_chain.cpp), kept in a mesh or answered at once.
+// caller's surface (core::answer_surface), kept in a mesh or answered at once.
 #include <polymass/polymass.h>
 
 #include <algorithm>
 #include <cstring>
 #include <memory>
 
+#include "answer_report.hpp"
 #include "api_guard.hpp"
-#include "core/moments.hpp"
 #include "mass_properties.hpp"
 #include "mesh.hpp"
+#include "mesh_findings.hpp"
 #include "mesh_input.hpp"
 #include "struct_io.hpp"
 
@@ -30,6 +31,24 @@ int32_t read_call(polymass_context* context, const polymass_mesh_desc* desc,
 }
 
 }  // namespace
+
+int32_t analyse_surface(polymass_context* context, const MeshInput& input,
+                        const polymass_options& options, Answer& answer, polymass_mesh* findings) {
+    const core::AnswerSettings settings = answer_settings(context, options, findings != nullptr);
+    const core::SurfaceAnswer result = visit_mesh(input, [&](const auto& view) {
+        return core::answer_surface(view, settings, &context->memory);
+    });
+    if (findings) {
+        fill_report(findings->diagnostics, input, result.surface);
+        findings->diagnostics.status = status_of(result.surface.verdict.defect);
+        list_shells(result.surface, findings->shells, findings->shell_of_face);
+    }
+    if (const int32_t status = report_answer(context, input, options, result)) return status;
+    answer.body = result.body;
+    answer.provenance = provenance_of(result, options);
+    return POLYMASS_OK;
+}
+
 }  // namespace polymass::capi
 
 using namespace polymass;
@@ -53,7 +72,7 @@ POLYMASS_API int32_t polymass_mass_properties_compute(polymass_mass_properties* 
         MeshInput input;
         if (const int32_t status = read_call(context, desc, options, call, input)) return status;
         Answer answer;
-        if (const int32_t status = answer_surface(context, input, call, answer, nullptr))
+        if (const int32_t status = analyse_surface(context, input, call, answer, nullptr))
             return status;
         if (const int32_t status = mass_properties(out_properties, context, answer.body, mass))
             return status;
@@ -80,7 +99,7 @@ POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_con
         if (!mesh)
             return context->fail(POLYMASS_ERROR_OUT_OF_MEMORY,
                                  "out of memory: the allocator could not provide the mesh");
-        mesh->status = answer_surface(context, input, call, mesh->answer, mesh.get());
+        mesh->status = analyse_surface(context, input, call, mesh->answer, mesh.get());
         std::memcpy(mesh->message, context->message, sizeof mesh->message);
         *out_mesh = mesh.release();
         return (*out_mesh)->status;

@@ -38,45 +38,57 @@ int32_t fail_on_shell(polymass_context* context, int32_t status, const core::She
 
 }  // namespace
 
-core::MeshAnalysis analyse(polymass_context* context, const MeshInput& input,
-                           const polymass_options& options, bool full_report) {
-    core::AnalysisSettings settings;
-    settings.check_topology = !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
-    // On unless skipped by name; the trusted path (no topology checks) has
-    // no shells to nest, and skips it too.
-    settings.check_intersections =
-        settings.check_topology && !(options.flags & POLYMASS_OPTION_SKIP_INTERSECTION_CHECK);
-    settings.weld = options.flags & POLYMASS_OPTION_WELD_VERTICES;
-    settings.weld_tolerance = options.weld_tolerance;
-    settings.stop_at_first_problem = !full_report;
-    settings.list_shells = full_report;
-    settings.planarity_tolerance = options.planarity_tolerance;
-    settings.policy.accept_inverted = options.flags & POLYMASS_OPTION_ACCEPT_INVERTED;
-    settings.policy.accept_balanced_non_manifold =
-        options.flags & POLYMASS_OPTION_ACCEPT_NON_MANIFOLD;
-    settings.tasks = &context->tasks();
-    return visit_mesh(input, [&](const auto& view) {
-        return core::analyse_mesh(view, settings, &context->memory);
-    });
-}
-
-int32_t report_small_faces(polymass_context* context, const MeshInput& input) {
-    if (input.small_faces.count == 0) return POLYMASS_OK;
-    const std::size_t face = input.small_faces.first();
-    return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
-                         "face %llu has %u vertices; a face needs at least 3 (%llu such faces)",
-                         u64(face), input.face_sizes[face], u64(input.small_faces.count));
+int32_t status_of(core::Defect defect) {
+    using core::Defect;
+    switch (defect) {
+        case Defect::none:
+            return POLYMASS_OK;
+        case Defect::face_too_small:
+            return POLYMASS_ERROR_FACE_TOO_SMALL;
+        case Defect::index_out_of_range:
+            return POLYMASS_ERROR_INDEX_OUT_OF_RANGE;
+        case Defect::non_finite:
+            return POLYMASS_ERROR_NON_FINITE;
+        case Defect::open:
+            return POLYMASS_ERROR_OPEN;
+        case Defect::non_manifold:
+            return POLYMASS_ERROR_NON_MANIFOLD;
+        case Defect::misoriented:
+            return POLYMASS_ERROR_INCONSISTENT_ORIENTATION;
+        case Defect::non_planar:
+            return POLYMASS_ERROR_NON_PLANAR_FACE;
+        case Defect::zero_volume:
+            return POLYMASS_ERROR_ZERO_VOLUME;
+        case Defect::inverted:
+        case Defect::inverted_shell:
+            return POLYMASS_ERROR_INVERTED;
+        case Defect::crossing:
+        case Defect::overlapping_shells:
+            return POLYMASS_ERROR_INTERSECTING;
+        case Defect::extent_overflow:
+        case Defect::integrals_overflow:
+        case Defect::volume_underflow:
+            return POLYMASS_ERROR_OVERFLOW;
+    }
+    return POLYMASS_ERROR_INTERNAL;
 }
 
 int32_t report_verdict(polymass_context* context, const MeshInput& input,
                        const polymass_options& options, const core::MeshAnalysis& analysis,
-                       uint32_t& warnings) {
+                       core::Defect defect) {
     using core::Defect;
     const core::MeshScan& scan = analysis.scan;
-    warnings = analysis.verdict.warnings;
-    switch (analysis.verdict.defect) {
+    switch (defect) {
         case Defect::none:
             return POLYMASS_OK;
+        case Defect::face_too_small: {
+            const std::size_t face = analysis.small_faces.first();
+            return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
+                                 "face %llu has %u vertices; a face needs at least 3 (%llu such "
+                                 "faces)",
+                                 u64(face), input.face_sizes[face],
+                                 u64(analysis.small_faces.count));
+        }
         case Defect::index_out_of_range:
             return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
                                  "face %llu refers to vertex %u, but there are only %llu vertices "
@@ -175,11 +187,13 @@ int32_t report_verdict(polymass_context* context, const MeshInput& input,
                                  "side, or passes through its surface: its region would be "
                                  "counted twice");
     }
-    return context->fail(POLYMASS_ERROR_INTERNAL, "unknown verdict");
+    return context->fail(POLYMASS_ERROR_INTERNAL, "unknown defect");
 }
 
 static_assert(core::kKeptLocations == POLYMASS_DIAGNOSTIC_LOCATIONS,
               "the core keeps as many locations as the report lists");
+static_assert(core::kMostCountedPairs == POLYMASS_MAX_COUNTED_FACE_PAIRS,
+              "the core counts as many face pairs as the header says");
 
 void copy_locations(const core::Finding& found, uint64_t (&first)[POLYMASS_DIAGNOSTIC_LOCATIONS]) {
     for (std::size_t i = 0; i < found.kept(); ++i) first[i] = found.lowest[i];
@@ -192,24 +206,22 @@ void copy_finding(const core::Finding& found, uint64_t& count,
 }
 
 void fill_report(polymass_diagnostics& report, const MeshInput& input,
-                 const core::MeshAnalysis* analysis) {
+                 const core::MeshAnalysis& analysis) {
     // Every location POLYMASS_NONE until a finding fills it.
     report = StructVersions<polymass_diagnostics>::defaults();
     report.face_count = input.face_count;
     report.signed_volume = std::numeric_limits<double>::quiet_NaN();
-    copy_finding(input.small_faces, report.small_faces, report.first_small_faces);
-    if (!analysis) return;
-
-    const core::MeshScan& scan = analysis->scan;
-    report.used_vertex_count = analysis->used_vertex_count;
+    const core::MeshScan& scan = analysis.scan;
+    copy_finding(analysis.small_faces, report.small_faces, report.first_small_faces);
+    report.used_vertex_count = analysis.used_vertex_count;
     copy_finding(scan.non_finite, report.non_finite_vertices, report.first_non_finite_vertices);
     // Counted per index, located per face.
     report.out_of_range_indices = scan.out_of_range_indices;
     copy_locations(scan.out_of_range_faces, report.first_out_of_range_faces);
-    if (analysis->topology && analysis->integration) report.checks |= POLYMASS_CHECKED_TOPOLOGY;
-    if (analysis->shells) report.checks |= POLYMASS_CHECKED_SHELLS;
-    if (analysis->overlaps) report.checks |= POLYMASS_CHECKED_INTERSECTIONS;
-    if (const auto& topology = analysis->topology) {
+    if (analysis.topology && analysis.integration) report.checks |= POLYMASS_CHECKED_TOPOLOGY;
+    if (analysis.shells) report.checks |= POLYMASS_CHECKED_SHELLS;
+    if (analysis.overlaps) report.checks |= POLYMASS_CHECKED_INTERSECTIONS;
+    if (const auto& topology = analysis.topology) {
         report.edge_count = topology->edge_count;
         copy_finding(topology->open, report.open_edges, report.first_open_edges);
         copy_finding(topology->non_manifold, report.non_manifold_edges,
@@ -217,7 +229,7 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
         copy_finding(topology->misoriented, report.misoriented_edges,
                      report.first_misoriented_edges);
     }
-    if (const auto& integration = analysis->integration) {
+    if (const auto& integration = analysis.integration) {
         copy_finding(integration->degenerate_faces, report.degenerate_faces,
                      report.first_degenerate_faces);
         copy_finding(integration->non_planar_faces, report.non_planar_faces,
@@ -225,17 +237,15 @@ void fill_report(polymass_diagnostics& report, const MeshInput& input,
         report.max_non_planarity = integration->max_non_planarity;
         report.signed_volume = integration->integrals.volume;
     }
-    if (const auto& shells = analysis->shells) {
+    if (const auto& shells = analysis.shells) {
         report.shell_count = shells->shells.count;
-    } else if (analysis->unjudged_shells) {
-        report.shell_count = analysis->unjudged_shells->count;
-    }
-    if (const auto& shells = analysis->shells) {
         copy_finding(shells->inverted, report.inverted_shells, report.first_inverted_shells);
         copy_finding(shells->overlapping, report.overlapping_shells,
                      report.first_overlapping_shells);
+    } else if (analysis.unjudged_shells) {
+        report.shell_count = analysis.unjudged_shells->count;
     }
-    if (const auto& overlaps = analysis->overlaps) {
+    if (const auto& overlaps = analysis.overlaps) {
         copy_finding(overlaps->crossing, report.intersecting_face_pairs,
                      report.first_intersecting_face_pairs);
         copy_finding(overlaps->touching, report.touching_face_pairs,

@@ -44,7 +44,6 @@ int32_t read_face_sizes(polymass_context* context, const polymass_mesh_desc& des
     uint64_t total = 0;
     for (uint64_t face = 0; face < desc.face_count; ++face) {
         const uint32_t size = desc.face_sizes[face];
-        if (size < 3) input.small_faces.record(std::size_t(face));
         // Saturating: an absurd total must still compare unequal to index_count.
         total = size > std::numeric_limits<uint64_t>::max() - total
                     ? std::numeric_limits<uint64_t>::max()
@@ -106,8 +105,8 @@ int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* call
                              unsigned(desc.reserved));
 
     const uint64_t index_bytes = desc.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
-    // Faces listed without indices are faces too small (recorded by
-    // read_face_sizes); no faces at all is not a mesh.
+    // Faces listed without indices are faces too small (core/ says so); no
+    // faces at all is not a mesh.
     const bool faces_listed = desc.face_sizes && desc.face_count > 0;
     if (desc.index_count == 0 && !faces_listed)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,

@@ -8,7 +8,6 @@
 #include <cstdint>
 
 #include "context.hpp"
-#include "core/findings.hpp"
 #include "core/mesh_view.hpp"
 
 namespace polymass::capi {
@@ -23,13 +22,11 @@ struct MeshInput {
     std::size_t index_count = 0;
     const uint32_t* face_sizes = nullptr;
     std::size_t face_count = 0;
-    // Faces of fewer than 3 vertices (found while adding up face_sizes): not
-    // a solid's, but readable (repair drops them).
-    core::Finding small_faces;
 };
 
 // Fills `input` and returns POLYMASS_OK or POLYMASS_ERROR_INVALID_ARGUMENT,
-// with the message. Faces too small are recorded, not refused.
+// with the message. The face sizes must add up to index_count; what a face's
+// size says of the surface is core/'s to judge.
 int32_t read_mesh_desc(polymass_context* context, const polymass_mesh_desc* desc, MeshInput& input);
 
 // The positions part of read_mesh_desc: fills input's positions, or returns

@@ -8,8 +8,7 @@
 #include <iterator>
 
 #include "api_guard.hpp"
-#include "core/mesh_integration.hpp"
-#include "core/mesh_scan.hpp"
+#include "core/mesh_analysis.hpp"
 #include "core/moments.hpp"
 #include "mass_properties.hpp"
 #include "mesh.hpp"
@@ -127,23 +126,6 @@ int32_t combine(polymass_moments* out, polymass_context* context, const polymass
     return write_moments(context, out, result);
 }
 
-// The range's integration settings: about the caller's point, in a unit set
-// by how far the faces reach from it.
-core::IntegrationSettings range_settings(const core::MeshScan& scan,
-                                         const Eigen::Vector3d& reference,
-                                         const polymass_options& options) {
-    core::IntegrationSettings settings;
-    settings.reference = reference;
-    // Twice the largest distance from the reference to a corner of the box.
-    const Eigen::Vector3d farthest = (scan.bounds.min() - reference)
-                                         .cwiseAbs()
-                                         .cwiseMax((scan.bounds.max() - reference).cwiseAbs());
-    settings.size = 2.0 * farthest.stableNorm();
-    settings.check_planarity = !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
-    settings.planarity_tolerance = options.planarity_tolerance;
-    return settings;
-}
-
 int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* desc,
                            uint64_t first_face, uint64_t face_count, const double* reference,
                            const polymass_options& options, MomentsValue& out) {
@@ -155,18 +137,16 @@ int32_t face_range_moments(polymass_context* context, const polymass_mesh_desc* 
                              point.z());
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, desc, input)) return status;
-    if (const int32_t status = report_small_faces(context, input)) return status;
     if (const int32_t status = select_faces(context, input, first_face, face_count)) return status;
+    core::AnalysisSettings settings;
+    settings.check_topology = !(options.flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS);
+    settings.planarity_tolerance = options.planarity_tolerance;
+    settings.tasks = &context->tasks();
     return visit_mesh(input, [&](const auto& view) {
-        core::MeshAnalysis piece(core::scan_mesh(view, &context->memory, context->tasks()));
-        uint32_t warnings = 0;
-        piece.verdict = core::judge_piece(piece);
-        if (const int32_t status = report_verdict(context, input, options, piece, warnings))
-            return status;
-        piece.integration = core::integrate_mesh(view, range_settings(piece.scan, point, options),
-                                                 context->tasks());
-        piece.verdict = core::judge_piece(piece);
-        if (const int32_t status = report_verdict(context, input, options, piece, warnings))
+        const core::MeshAnalysis piece =
+            core::analyse_piece(view, point, settings, &context->memory);
+        if (const int32_t status =
+                report_verdict(context, input, options, piece, piece.verdict.defect))
             return status;
         const core::IntegrationResult& integration = *piece.integration;
         out.moments = core::Moments::of_solid(integration.integrals, integration.bounds, point);
@@ -225,7 +205,7 @@ POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polyma
         if (const int32_t status = check_struct(context, out_moments, "out_moments")) return status;
         if (!mesh) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "mesh is NULL");
         if (const int32_t status = unanswered(context, *mesh)) return status;
-        const Body& body = mesh->answer.body;
+        const core::Body& body = mesh->answer.body;
         MomentsValue value;
         value.moments = core::Moments::of_solid(body.integrals, body.bounds, body.reference);
         return write_moments(context, out_moments, value);

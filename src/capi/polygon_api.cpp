@@ -17,6 +17,7 @@ namespace {
 using u64 = unsigned long long;  // for printf
 
 bool span_fits(const double* points, uint64_t count, uint64_t stride) {
+    if (count == 0) return true;
     // The last point starts at (count - 1) * stride and is 16 bytes long.
     uint64_t last = 0;
     if (__builtin_mul_overflow(count - 1, stride, &last)) return false;
@@ -42,11 +43,9 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
     return guarded(context, [&] {
         if (const int32_t status = check_struct(context, out_properties, "out_properties"))
             return status;
-        if (point_count < 3)
-            return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
-                                 "the polygon has %llu points; a polygon needs at least 3",
-                                 u64(point_count));
-        if (!points) return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT, "points is NULL");
+        if (!points && point_count > 0)
+            return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
+                                 "points is NULL but point_count is %llu", u64(point_count));
         const uint64_t step = stride ? stride : 2 * sizeof(double);
         if (step < 2 * sizeof(double))
             return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
@@ -62,10 +61,19 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
             std::memcpy(xy, bytes + i * step, sizeof xy);
             return Eigen::Vector2d(xy[0], xy[1]);
         };
-        for (std::size_t i = 0; i < point_count; ++i)
-            if (!point_at(i).allFinite())
+        const core::PolygonCheck check = core::check_polygon(std::size_t(point_count), point_at);
+        switch (check.defect) {
+            case core::PolygonDefect::too_few_points:
+                return context->fail(POLYMASS_ERROR_FACE_TOO_SMALL,
+                                     "the polygon has %llu points; a polygon needs at least 3",
+                                     u64(point_count));
+            case core::PolygonDefect::non_finite:
                 return context->fail(POLYMASS_ERROR_NON_FINITE,
-                                     "point %llu has a NaN or infinite coordinate", u64(i));
+                                     "point %llu has a NaN or infinite coordinate",
+                                     u64(check.point));
+            case core::PolygonDefect::none:
+                break;
+        }
 
         const core::PlanarPolygon polygon =
             core::planar_polygon(std::size_t(point_count), point_at);

@@ -14,6 +14,10 @@ namespace polymass::core {
 // hole's rim, a row of flipped faces), few enough to keep a finding small.
 inline constexpr std::size_t kKeptLocations = 8;
 
+// How many face pairs of a kind (crossing, touching) are counted: past that
+// the count is a lower bound (surface_contacts.cpp says why).
+inline constexpr std::size_t kMostCountedPairs = 2048;
+
 struct Finding {
     std::size_t count = 0;
     std::array<std::size_t, kKeptLocations> lowest{};  // ascending; the first kept() are set

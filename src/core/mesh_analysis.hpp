@@ -22,7 +22,7 @@ namespace polymass::core {
 
 struct AnalysisSettings {
     bool check_topology = true;        // closed, manifold, oriented, planar, shells
-    bool check_intersections = false;  // crossing faces, shells nested twice
+    bool check_intersections = false;  // crossing faces, shells nested twice (with the topology)
     bool weld = false;                 // identify coincident vertices first
     double weld_tolerance = 0;         // relative to the mesh's extent; 0: exact
     bool stop_at_first_problem = true;
@@ -37,6 +37,7 @@ struct AnalysisSettings {
 };
 
 struct MeshAnalysis {
+    Finding small_faces;  // faces of fewer than 3 vertices: not a solid's, unreadable
     MeshScan scan;
     std::size_t used_vertex_count = 0;             // after welding
     std::optional<TopologyReport> topology;        // when checked
@@ -49,8 +50,24 @@ struct MeshAnalysis {
     explicit MeshAnalysis(MeshScan scanned) : scan(std::move(scanned)) {}
 };
 
+// The first look at a surface: the faces' sizes and the scan, judged. What
+// every later step (the checks, the modes, a piece's moments) starts from.
+template <class Scalar, class Index>
+MeshAnalysis scan_surface(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
+                          TaskRunner& tasks);
+
+// The whole analysis, from scan_surface on, as far as the settings ask.
 template <class Scalar, class Index>
 MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSettings& settings,
                           std::pmr::memory_resource* memory);
+
+// A range of a surface's faces (a piece, integrated on its own about the
+// caller's `reference`: polymass_moments_compute_faces) judged on what a
+// piece can be judged on (judge_piece), with its integrals when its faces
+// can be read. settings: check_topology (planarity with it), the tolerance,
+// the tasks.
+template <class Scalar, class Index>
+MeshAnalysis analyse_piece(const MeshView<Scalar, Index>& mesh, const Eigen::Vector3d& reference,
+                           const AnalysisSettings& settings, std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

@@ -21,6 +21,24 @@ struct PlanarPolygon {
     bool zero_area = false;        // area at rounding level: nothing else is meaningful
 };
 
+// What keeps points from being a polygon (docs/validity.md): fewer than 3 of
+// them, or a coordinate that is not finite (point: the first such).
+enum class PolygonDefect { none, too_few_points, non_finite };
+
+struct PolygonCheck {
+    PolygonDefect defect = PolygonDefect::none;
+    std::size_t point = 0;
+};
+
+// point_at(i) returns point i as a 2-vector.
+template <class PointAt>
+PolygonCheck check_polygon(std::size_t count, PointAt&& point_at) {
+    if (count < 3) return {PolygonDefect::too_few_points, 0};
+    for (std::size_t i = 0; i < count; ++i)
+        if (!point_at(i).allFinite()) return {PolygonDefect::non_finite, i};
+    return {};
+}
+
 // From the region integrals of the polygon about `reference` in units of
 // `unit_length` (as the caller ordered its points); `extent_squared` is, in the
 // same unit, the square of the polygon's size times its point count: the
@@ -29,7 +47,7 @@ PlanarPolygon planar_polygon_from(const ProjectionIntegrals& in_units,
                                   const Eigen::Vector2d& reference, double unit_length,
                                   double extent_squared);
 
-// point_at(i) returns point i as a 2-vector; count >= 3, all finite.
+// point_at(i) returns point i as a 2-vector; the points pass check_polygon.
 template <class PointAt>
 PlanarPolygon planar_polygon(std::size_t count, PointAt&& point_at) {
     Eigen::AlignedBox2d bounds;

@@ -30,15 +30,20 @@ void record_kinds(ShellSurvey& survey) {
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                           const std::uint32_t* vertex_ids, const Eigen::Vector3d& reference,
-                          int outward, double whole_volume, TaskRunner& tasks,
-                          std::pmr::memory_resource* memory) {
+                          int outward, double whole_volume, bool whole_encloses_no_volume,
+                          TaskRunner& tasks, std::pmr::memory_resource* memory) {
     ShellSurvey survey(find_shells(mesh, scan, vertex_ids, tasks, memory), memory);
     survey.summary.resize(survey.shells.count);
-    // One shell is the whole surface, whose volume the caller knows positive
-    // (outward): nothing to compare it with.
+    // One shell is the whole surface, whose volume the caller has judged:
+    // nothing to compare it with.
     if (survey.shells.count == 1) {
-        survey.summary[0].face_count = mesh.face_count;
-        survey.summary[0].signed_volume = outward * whole_volume;
+        ShellSummary& whole = survey.summary[0];
+        whole.face_count = mesh.face_count;
+        whole.signed_volume = outward * whole_volume;
+        whole.kind = whole_encloses_no_volume  ? ShellKind::no_volume
+                     : whole.signed_volume > 0 ? ShellKind::solid
+                                               : ShellKind::inverted;
+        record_kinds(survey);
         return survey;
     }
     // Each face's cone from the reference point: a fan of tetrahedra, exact
@@ -101,7 +106,7 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
     template ShellSurvey survey_shells<Scalar, Index>(                         \
         const MeshView<Scalar, Index>&, const MeshScan&, const std::uint32_t*, \
-        const Eigen::Vector3d&, int, double, TaskRunner&, std::pmr::memory_resource*);
+        const Eigen::Vector3d&, int, double, bool, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

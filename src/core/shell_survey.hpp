@@ -52,13 +52,14 @@ struct ShellSurvey {
 // Splits a closed, consistently oriented surface into shells, integrates each
 // one's volume about `reference`, and classifies them by bounding boxes.
 // outward is +1, or -1 for a surface taken inside out as a whole;
-// whole_volume is the surface's signed volume (the one shell's, when it is
-// in one piece: the common case costs no second pass over the faces).
+// whole_volume is the surface's signed volume and whole_encloses_no_volume
+// its verdict (the one shell's, when it is in one piece: the common case
+// costs no second pass over the faces).
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                           const std::uint32_t* vertex_ids, const Eigen::Vector3d& reference,
-                          int outward, double whole_volume, TaskRunner& tasks,
-                          std::pmr::memory_resource* memory);
+                          int outward, double whole_volume, bool whole_encloses_no_volume,
+                          TaskRunner& tasks, std::pmr::memory_resource* memory);
 
 // Classifies again by the winding numbers of find_overlaps (those it could
 // count; the others keep their boxes' answer).

@@ -31,8 +31,6 @@ void sort_unique(std::pmr::vector<FacePair>& pairs) {
 // they came.
 class PairCollector {
 public:
-    static constexpr std::size_t kMostCountedPairs = 2048;
-
     explicit PairCollector(std::pmr::memory_resource* memory) : pairs_(memory) {}
 
     // Whether a test of pair could change the finding.

@@ -15,19 +15,25 @@ bool integrals_finite(const IntegrationResult& integration) {
            integrals.products.allFinite();
 }
 
-// The defect of the scan, if any: the first thing every verdict judges.
-Defect scan_defect(const MeshScan& scan) {
+// The defect of the faces' sizes and the scan, if any: the first thing every
+// verdict judges.
+Defect scan_defect(const MeshAnalysis& analysis) {
+    if (analysis.small_faces.count > 0) return Defect::face_too_small;
+    return coordinates_defect(analysis.scan);
+}
+
+}  // namespace
+
+Defect coordinates_defect(const MeshScan& scan) {
     if (scan.out_of_range_indices > 0) return Defect::index_out_of_range;
     if (scan.non_finite.count > 0) return Defect::non_finite;
     if (!std::isfinite(scan.diagonal())) return Defect::extent_overflow;
     return Defect::none;
 }
 
-}  // namespace
-
 Verdict judge_piece(const MeshAnalysis& analysis) {
     Verdict verdict;
-    verdict.defect = scan_defect(analysis.scan);
+    verdict.defect = scan_defect(analysis);
     if (verdict.valid() && analysis.integration && analysis.integration->non_planar_faces.count > 0)
         verdict.defect = Defect::non_planar;
     return verdict;
@@ -39,8 +45,7 @@ Verdict judge(const MeshAnalysis& analysis, const Policy& policy) {
         verdict.defect = defect;
         return verdict;
     };
-    const MeshScan& scan = analysis.scan;
-    if (const Defect defect = scan_defect(scan); defect != Defect::none) return refuse(defect);
+    if (const Defect defect = scan_defect(analysis); defect != Defect::none) return refuse(defect);
 
     if (const auto& topology = analysis.topology) {
         if (topology->open.count > 0) return refuse(Defect::open);

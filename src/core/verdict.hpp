@@ -14,6 +14,7 @@ namespace polymass::core {
 // In the order they are judged: a defect hides the ones after it.
 enum class Defect {
     none,
+    face_too_small,      // a face has fewer than 3 vertices
     index_out_of_range,  // a face refers past the vertex array
     non_finite,          // a used coordinate is NaN or infinite
     extent_overflow,     // the bounding box's size does not fit in a double
@@ -58,15 +59,20 @@ struct Policy {
 };
 
 struct MeshAnalysis;
+struct MeshScan;
+
+// The defect that leaves a surface's coordinates unusable for any body:
+// indices out of range, coordinates not finite, an extent beyond doubles.
+Defect coordinates_defect(const MeshScan& scan);
 
 // The verdict on what the analysis found so far (checks it did not run are
 // not judged).
 Verdict judge(const MeshAnalysis& analysis, const Policy& policy);
 
 // The verdict on a piece of a surface (a range of its faces, integrated on
-// its own): only what a piece can be judged on - its indices, coordinates
-// and planar faces. Whether the whole is closed and bounds a volume is the
-// whole's question.
+// its own): only what a piece can be judged on - its face sizes, indices,
+// coordinates and planar faces. Whether the whole is closed and bounds a
+// volume is the whole's question.
 Verdict judge_piece(const MeshAnalysis& analysis);
 
 }  // namespace polymass::core

@@ -294,6 +294,45 @@ static void test_shell_list_refuses_bad_arguments(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* A surface inside out as a whole passes the checks before the shells
+   (closed, manifold, oriented, planar): its shells are judged, signed as
+   found - inside out, refused - or, accepted inside out, counted turned. */
+static void test_surface_inside_out_as_a_whole(void** state) {
+    const pm_reference_solid* tetra = &pm_reference_solids[PM_REF_TETRA_CORNER];
+    polymass_context* ctx = pm_context_new();
+    polymass_diagnostics d;
+    polymass_shell shells[2];
+    uint64_t count = 0;
+    pm_mesh m;
+    (void)state;
+    pm_mesh_from_reference(&m, tetra);
+    pm_mesh_reverse_all(&m);
+    memset(shells, 0, sizeof shells);
+    shells[0].struct_size = shells[1].struct_size = sizeof shells[0];
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_check(&d, ctx, &m));
+    assert_true(d.checks & POLYMASS_CHECKED_SHELLS);
+    assert_int_equal(d.inverted_shells, 1);
+    assert_int_equal(d.first_inverted_shells[0], 0);
+    PM_ASSERT_OK(ctx, shell_list(shells, 2, &count, ctx, &m, CHECKED));
+    assert_int_equal(count, 1);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_INVERTED);
+    PM_ASSERT_REL("signed as found", -tetra->volume, shells[0].signed_volume, PM_TOL);
+    PM_ASSERT_OK(ctx, shell_list(shells, 2, &count, ctx, &m, POLYMASS_OPTION_ACCEPT_INVERTED));
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_SOLID);
+    PM_ASSERT_REL("counted turned", tetra->volume, shells[0].signed_volume, PM_TOL);
+    /* two shells, both inside out: each judged, inside out */
+    box(&m, 5, 0, 0, 6, 1, 1, 1, 1);
+    PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVERTED, pm_check(&d, ctx, &m));
+    assert_int_equal(d.inverted_shells, 2);
+    PM_ASSERT_OK(ctx, shell_list(shells, 2, &count, ctx, &m, CHECKED));
+    assert_int_equal(count, 2);
+    assert_int_equal(shells[0].kind, POLYMASS_SHELL_INVERTED);
+    assert_int_equal(shells[1].kind, POLYMASS_SHELL_INVERTED);
+    PM_ASSERT_REL("the box, signed as found", -1.0, shells[1].signed_volume, PM_TOL);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_shells_touching_along_a_face),
@@ -303,6 +342,7 @@ int main(void) {
         cmocka_unit_test(test_shell_passing_through_a_face_along_its_edges),
         cmocka_unit_test(test_flush_faces_around_a_window),
         cmocka_unit_test(test_shell_list_refuses_bad_arguments),
+        cmocka_unit_test(test_surface_inside_out_as_a_whole),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -661,6 +661,16 @@ static void test_repair_gives_up(void** state) {
     pm_mesh_add_tri(&sheet, 0, 3, 2);
     assert_int_equal(compute_with(&got, &provenance, ctx, &sheet, &repair), POLYMASS_ERROR_OPEN);
     message_says(ctx, "no volume");
+    /* A chain of repairs only: the solid's reason once, then each repair's. */
+    {
+        polymass_options repairs =
+            chain(0, POLYMASS_MODE_REPAIR, POLYMASS_MODE_REPAIR, POLYMASS_MODE_REPAIR);
+        repairs.modes[3] = POLYMASS_MODE_REPAIR;
+        assert_int_equal(compute_with(&got, &provenance, ctx, &sheet, &repairs),
+                         POLYMASS_ERROR_OPEN);
+        message_says(ctx, "solid: ");
+        message_says(ctx, "; repair: ");
+    }
     pm_mesh_free(&sheet);
     polymass_context_destroy(ctx);
 }
