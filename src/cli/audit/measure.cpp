@@ -208,16 +208,15 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
             return failure("bad_geometry", path + ": not measured: " + measured.message);
         measured.message.clear();  // the body asked for, exact: nothing to report
     } else {
-        // The surface's defect; when no mode answered, each later mode's
-        // reason follows it.
-        const std::string not_a_solid =
-            path + ": " + category_of(analysis.diagnostics().status) + ": ";
-        if (!measured.ok)
-            return failure("not_a_solid", not_a_solid + "not measured: solid: " + measured.message);
+        // The surface's defect in words; when no mode answered, each later
+        // mode's reason follows it.
+        const std::string defect = path + ": " + category_of(analysis.diagnostics().status);
+        const std::string why = analysis.failure().message;
+        if (!measured.ok) return failure("not_a_solid", defect + ": not measured: solid: " + why);
         if (!measured.message.empty()) {
             measured.kind = "approximated_geometry";
             measured.message =
-                not_a_solid + analysis.failure().message + "; measured as " + measured.message;
+                defect + (why.empty() ? "" : ": " + why) + "; measured as " + measured.message;
         }
     }
     measured.ok = true;
