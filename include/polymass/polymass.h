@@ -1073,10 +1073,10 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
    *out_distinct_count how many vertices are their own lowest. weld_tolerance
    is polymass_options.weld_tolerance's, relative to the largest extent of
    the positions' bounding box: 0 welds exactly equal positions in one
-   hashing pass (coordinates compared by their bits once -0 is +0 and a NaN
-   is quiet: NaNs of one payload are one position); above 0 chains of near
-   positions are one, and then non-finite coordinates are an error. At most
-   UINT32_MAX vertices. Context: one thread at a time. Since 2.0.
+   hashing pass (+0 and -0 being one; otherwise coordinates are compared bit
+   for bit, so a NaN is one position only with its exact copies); above 0
+   chains of near positions are one, and then non-finite coordinates are an
+   error. At most UINT32_MAX vertices. Context: one thread at a time. Since 2.0.
    Returns POLYMASS_OK or POLYMASS_ERROR_NON_FINITE. */
 POLYMASS_API int32_t polymass_weld_positions(uint32_t* out_vertex_of, uint64_t* out_distinct_count,
                                              polymass_context* context, const void* positions,
