@@ -35,17 +35,22 @@ const char* mode_name(core::Mode mode) {
     }
 }
 
-// Why each mode tried gave no answer, for the message when none does.
+// A message of parts ("...; repair: ...; hull: ..."), truncated to fit.
 class Reasons {
 public:
-    void add(core::Mode mode, const char* message) {
-        const int written = std::snprintf(text_ + length_, sizeof text_ - length_, "%s%s: %s",
-                                          length_ ? "; " : "", mode_name(mode), message);
-        length_ = std::min(sizeof text_ - 1, length_ + std::size_t(std::max(written, 0)));
-    }
+    // The surface's own reason, unnamed.
+    void add(const char* message) { append("", message); }
+    // Why a mode gave no answer.
+    void add(core::Mode mode, const char* message) { append(mode_name(mode), message); }
     const char* text() const { return text_; }
 
 private:
+    void append(const char* name, const char* message) {
+        const int written = std::snprintf(text_ + length_, sizeof text_ - length_, "%s%s%s%s",
+                                          length_ ? "; " : "", name, *name ? ": " : "", message);
+        length_ = std::min(sizeof text_ - 1, length_ + std::size_t(std::max(written, 0)));
+    }
+
     char text_[sizeof(polymass_context::message)] = "";
     std::size_t length_ = 0;
 };
@@ -166,6 +171,23 @@ int32_t report_answer(polymass_context* context, const MeshInput& input,
         if (first_status == POLYMASS_OK) first_status = status;
     }
     return context->fail(first_status, "%s", reasons.text());
+}
+
+void mesh_message(polymass_context* context, const MeshInput& input,
+                  const polymass_options& options, const core::SurfaceAnswer& answer,
+                  char (&out)[sizeof(polymass_context::message)]) {
+    Reasons reasons;
+    if (const core::Defect defect = answer.surface.verdict.defect; defect != core::Defect::none) {
+        report_verdict(context, input, options, answer.surface, defect);
+        reasons.add(context->message);
+    }
+    for (std::size_t i = 0; !answer.answered && i < answer.failure_count; ++i) {
+        const core::ModeFailure& failure = answer.failures[i];
+        if (failure.mode == core::Mode::solid) continue;  // the surface's own, above
+        report_failure(context, input, options, answer, failure);
+        reasons.add(failure.mode, context->message);
+    }
+    std::snprintf(out, sizeof out, "%s", reasons.text());
 }
 
 polymass_provenance provenance_of(const core::SurfaceAnswer& answer,

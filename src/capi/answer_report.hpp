@@ -22,6 +22,14 @@ core::AnswerSettings answer_settings(polymass_context* context, const polymass_o
 int32_t report_answer(polymass_context* context, const MeshInput& input,
                       const polymass_options& options, const core::SurfaceAnswer& answer);
 
+// The message of a mesh (polymass_mesh_message) to `out`: what is wrong with
+// the surface as given (its verdict's message, "" for a valid solid), then,
+// when no mode answered, each other mode's reason ("...; hull: ..."). Uses
+// the context's message as scratch.
+void mesh_message(polymass_context* context, const MeshInput& input,
+                  const polymass_options& options, const core::SurfaceAnswer& answer,
+                  char (&out)[sizeof(polymass_context::message)]);
+
 // Which mode answered and what it did (the answer must have one).
 polymass_provenance provenance_of(const core::SurfaceAnswer& answer,
                                   const polymass_options& options);

@@ -30,7 +30,8 @@ struct polymass_mesh {
     polymass_allocator allocator;               // to free it with; the context may be gone by then
     polymass::capi::HookMemoryResource memory;  // the mesh's own arrays below
     int32_t status = POLYMASS_OK;               // POLYMASS_OK when a mode answered
-    char message[sizeof(polymass_context::message)] = "";  // why none did
+    // What is wrong with the surface (polymass_mesh_message).
+    char message[sizeof(polymass_context::message)] = "";
     polymass_diagnostics diagnostics{};
     std::pmr::vector<polymass_shell> shells;
     std::pmr::vector<uint32_t> shell_of_face;  // empty when the faces are unreadable

@@ -3,7 +3,6 @@
 #include <polymass/polymass.h>
 
 #include <algorithm>
-#include <cstring>
 #include <memory>
 
 #include "answer_report.hpp"
@@ -42,8 +41,14 @@ int32_t analyse_surface(polymass_context* context, const MeshInput& input,
         fill_report(findings->diagnostics, input, result.surface);
         findings->diagnostics.status = status_of(result.surface.verdict.defect);
         list_shells(result.surface, findings->shells, findings->shell_of_face);
+        mesh_message(context, input, options, result, findings->message);
     }
-    if (const int32_t status = report_answer(context, input, options, result)) return status;
+    if (const int32_t status = report_answer(context, input, options, result)) {
+        // A mesh's failure says what its message says.
+        if (findings) context->fail(status, "%s", findings->message);
+        return status;
+    }
+    context->clear_message();
     answer.body = result.body;
     answer.provenance = provenance_of(result, options);
     return POLYMASS_OK;
@@ -100,7 +105,6 @@ POLYMASS_API int32_t polymass_mesh_create(polymass_mesh** out_mesh, polymass_con
             return context->fail(POLYMASS_ERROR_OUT_OF_MEMORY,
                                  "out of memory: the allocator could not provide the mesh");
         mesh->status = analyse_surface(context, input, call, mesh->answer, mesh.get());
-        std::memcpy(mesh->message, context->message, sizeof mesh->message);
         *out_mesh = mesh.release();
         return (*out_mesh)->status;
     });

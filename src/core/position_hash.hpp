@@ -9,13 +9,12 @@
 
 namespace polymass::core {
 
-// The bits of a coordinate, +0 for -0. No arithmetic touches the value: it
-// would quieten a signalling NaN, which then counted as its quiet twin.
+// The bits of a coordinate, +0 for -0.
 inline std::uint64_t position_bits(double value) {
-    constexpr std::uint64_t negative_zero = std::uint64_t{1} << 63;
+    value += 0.0;
     std::uint64_t bits = 0;
     std::memcpy(&bits, &value, sizeof bits);
-    return bits == negative_zero ? 0 : bits;
+    return bits;
 }
 
 // A 64-bit mix of a position's three bit patterns (splitmix64's finaliser).

@@ -506,17 +506,19 @@ static void test_weld_on_its_own(void** state) {
     PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INVALID_ARGUMENT,
                      polymass_weld_positions(of_vertex, &distinct, ctx, m.positions,
                                              POLYMASS_POSITION_FLOAT64, 36, 16, 0.0));
-    /* Bit for bit: a signalling NaN is not its quiet twin. */
+    /* A NaN counts quiet: a signalling NaN is its quiet twin (the same
+       payload), another payload another position. */
     {
-        static const uint64_t signalling = 0x7FF4000000000000u, quiet = 0x7FFC000000000000u;
-        double nans[2][3] = {{0, 0, 0}, {0, 0, 0}};
-        uint32_t of_nan[2];
-        memcpy(&nans[0][0], &signalling, sizeof signalling);
-        memcpy(&nans[1][0], &quiet, sizeof quiet);
+        static const uint64_t nan_bits[3] = {0x7FF4000000000001u, 0x7FFC000000000001u,
+                                             0x7FFC000000000002u};
+        double nans[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        uint32_t of_nan[3];
+        for (v = 0; v < 3; ++v) memcpy(&nans[v][0], &nan_bits[v], sizeof nan_bits[v]);
         PM_ASSERT_OK(ctx, polymass_weld_positions(of_nan, &distinct, ctx, nans,
-                                                  POLYMASS_POSITION_FLOAT64, 2, 0, 0.0));
+                                                  POLYMASS_POSITION_FLOAT64, 3, 0, 0.0));
         assert_int_equal(distinct, 2);
-        assert_int_equal(of_nan[1], 1);
+        assert_int_equal(of_nan[1], 0);
+        assert_int_equal(of_nan[2], 2);
     }
     /* No positions: nothing to weld. */
     PM_ASSERT_OK(ctx, polymass_weld_positions(NULL, &distinct, ctx, NULL, POLYMASS_POSITION_FLOAT64,
