@@ -1437,6 +1437,13 @@ class Modes(Case):
             json.loads(run("check", "--json", self.valid).stdout)["answer"], {"mode": "solid"}
         )
         self.assertIn("--repair would give an answer", run("check", self.open).stdout)
+        # Answered by --repair, the one analysis still says what is wrong with the surface.
+        result = run("check", "--json", "--repair", self.open)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH)
+        report = json.loads(result.stdout)
+        self.assertEqual(report["answer"], {"mode": "repaired"})
+        self.assertEqual(report["category"], "open")
+        self.assertIn("used by one face only", report["message"])
 
     def test_mode_usage_errors(self):
         for args in (
