@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
         std::cerr << "polymass: " << error.what() << '\n';
         return kExitUsage;
     } catch (const std::invalid_argument& error) {
-        // Options the library refused (polymass_context_set_options).
+        // A setting the library refused (polymass_context_set_threads).
         std::cerr << "polymass: invalid option: " << error.what() << '\n';
         return kExitUsage;
     } catch (const std::bad_alloc&) {

@@ -805,6 +805,11 @@ class BadInput(Case):
         result, out = run_json("--no-check", WORK / "bracket.obj")
         self.assertEqual(result.returncode, EXIT_OK)
         self.assertIn("unchecked", out["warnings"])
+        # The intersection check goes with the topology checks, and says so.
+        self.assertIn("intersections_unchecked", out["warnings"])
+        result, out = run_json("--no-intersection-check", WORK / "bracket.obj")
+        self.assertEqual(result.returncode, EXIT_OK)
+        self.assertEqual(out["warnings"], ["intersections_unchecked"])
 
     def test_usage_errors(self):
         for args in (
@@ -1033,6 +1038,11 @@ class Check(Case):
         self.assertEqual(out["center_of_mass"], [0.5, 0.5, 1.0])
         self.assertEqual(out["warnings"], ["touching_faces"])
         self.assertEqual([p["volume"] for p in out["parts"]], [1.0, 1.0])
+        # Exact solids, each part and their sum: no approximation to bound.
+        self.assertEqual(out["provenance"], {"mode": "solid"})
+        self.assertEqual([p["provenance"] for p in out["parts"]], [{"mode": "solid"}] * 2)
+        # Checked against each other, the parts carry no "unchecked" warning.
+        self.assertEqual([p["warnings"] for p in out["parts"]], [[], []])
         # A cube resting half on the other, and three stacked: the same.
         path = self.objects("half_on.obj", ((0, 0, 0), (1, 1, 1)), ((0.5, 0, 1), (1.5, 1, 2)))
         result, out = run_json(path)
@@ -1053,10 +1063,14 @@ class Check(Case):
             self.assertEqual(result.returncode, EXIT_INVALID_MESH, name)
             self.assertEqual(out["error"]["category"], "intersecting", name)
             self.assertEqual([p["volume"] for p in out["parts"]], [1.0, volume])
-            # Skipped by name, each part is still answered and the whole is their sum.
+            # Skipped by name, each part is still answered and the whole is their sum,
+            # each saying the check did not run.
             result, out = run_json("--no-intersection-check", path)
             self.assertEqual(result.returncode, EXIT_OK, result.stderr)
             self.assertEqual(out["volume"], 1.0 + volume)
+            self.assertEqual(out["warnings"], ["intersections_unchecked"])
+            for part in out["parts"]:
+                self.assertEqual(part["warnings"], ["intersections_unchecked"])
         # A fallback answers the crossing whole by its chain, and says so.
         path = WORK / "crossing_parts.obj"
         result, out = run_json("--fallback", "repair,hull", path)
@@ -1423,6 +1437,13 @@ class Modes(Case):
             json.loads(run("check", "--json", self.valid).stdout)["answer"], {"mode": "solid"}
         )
         self.assertIn("--repair would give an answer", run("check", self.open).stdout)
+        # Answered by --repair, the one analysis still says what is wrong with the surface.
+        result = run("check", "--json", "--repair", self.open)
+        self.assertEqual(result.returncode, EXIT_INVALID_MESH)
+        report = json.loads(result.stdout)
+        self.assertEqual(report["answer"], {"mode": "repaired"})
+        self.assertEqual(report["category"], "open")
+        self.assertIn("used by one face only", report["message"])
 
     def test_mode_usage_errors(self):
         for args in (

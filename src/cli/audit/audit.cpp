@@ -43,7 +43,7 @@ Computed computed_from(const polymass_mass_properties& p,
     computed.density = p.density;
     computed.center_of_mass = Eigen::Vector3d(p.center_of_mass);
     computed.inertia = RowMajor(p.inertia);
-    computed.inertia_origin = RowMajor(p.inertia_point);
+    computed.inertia_origin = RowMajor(p.inertia_origin);
     computed.principal_moments = Eigen::Vector3d(p.principal_moments);
     computed.principal_axes = RowMajor(p.principal_axes);
     computed.box_min = computed.box_max = points.front();
@@ -68,13 +68,13 @@ MomentsResult at_mass(const Library& library, const polymass_moments& moments, d
     return weighted(library, moments, desc);
 }
 
-// The mass properties of weighted moments (inertia_point about the link
+// The mass properties of weighted moments (inertia_origin about the link
 // origin), the bounding box of points; or the finding why not.
 std::optional<Computed> computed_of(const Library& library, const MomentsResult& total,
                                     const std::vector<Eigen::Vector3d>& points, LinkAudit& audit) {
     SolidResult result;
     if (total.status == POLYMASS_OK) {
-        result = properties_of(library, total.moments, {0, 0, 0}, NAN, 0);
+        result = properties_of(library, total.moments, NAN, 0);
     } else {
         result.status = total.status;
         result.message = total.message;

@@ -8,6 +8,7 @@
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
 #include "library/solid_moments.hpp"
+#include "library/surface_analysis.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/provenance.hpp"
 
@@ -125,45 +126,47 @@ polymass_moments mujoco_ellipsoid_surface(const Eigen::Vector3d& radii) {
     return centred_moments(area, second);
 }
 
-// A mesh as the library's modes answer it, first answer first (docs/repair.md),
-// at unit density (a sheet: unit area density). Its moments are written
-// about its centre of mass from the mass properties: there the first
-// moments vanish and the second ones are S = tr(I)/2 * 1 - I, since
-// I = tr(S) * 1 - S. The message says what was done and how far off it can
-// be (or, when no mode answers, why).
-Measured measured_by_modes(const Library& library, polymass_options options, const Model& model,
-                           const std::vector<uint32_t>& modes) {
+// The chain of modes that answers for a body: the hull, the surface as a
+// sheet, or the solid - else the surface repaired, else its hull.
+std::vector<uint32_t> modes_for(MeshBody body) {
+    switch (body) {
+        case MeshBody::kHull:
+            return {POLYMASS_MODE_HULL};
+        case MeshBody::kSurface:
+            return {POLYMASS_MODE_SHELL};
+        case MeshBody::kSolid:
+            break;
+    }
+    return {POLYMASS_MODE_SOLID, POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL};
+}
+
+// A mesh analysed once, answered by the chain of modes, first answer first
+// (docs/repair.md); a sheet (SHELL) of unit thickness.
+SurfaceAnalysis analysed_by_modes(const Library& library, polymass_options options,
+                                  const Model& model, const std::vector<uint32_t>& modes) {
     std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
     std::copy(modes.begin(), modes.end(), std::begin(options.modes));
     options.shell_thickness = 1.0;
-    const Part whole = combined_part(model);  // describe() points into it
-    const polymass_mesh_desc desc = describe(model, whole);
-    polymass_mass_properties p{};
-    polymass_mass_properties_init(&p, sizeof p);
-    polymass_provenance provenance{};
-    polymass_provenance_init(&provenance, sizeof provenance);
+    return SurfaceAnalysis(library, model, combined_part(model), options);
+}
+
+// The body that answered, at unit density (a sheet: unit area density);
+// not ok when none did. When it is not the exact solid, the message says
+// what was done and how far off it can be.
+Measured measured_answer(const Library& library, const SurfaceAnalysis& analysis) {
     Measured measured;
-    const int32_t status = polymass_mass_properties_with_provenance(
-        &p, &provenance, library.context(), &desc, nullptr, &options);
-    if (status != POLYMASS_OK) {
-        measured.message = "not measured: " + library.message();
+    polymass_mass_desc unit{};
+    polymass_mass_desc_init(&unit, sizeof unit);
+    const SolidResult answer = analysis.properties(library, unit);
+    if (answer.status != POLYMASS_OK) {
+        measured.message = answer.message;
         return measured;
     }
     measured.ok = true;
-    polymass_moments_init(&measured.moments, sizeof measured.moments);
-    measured.moments.volume = p.volume;
-    measured.moments.mass = p.mass;
-    const double half_trace = (p.inertia[0] + p.inertia[4] + p.inertia[8]) / 2;
-    const double second[6] = {half_trace - p.inertia[0],
-                              half_trace - p.inertia[4],
-                              half_trace - p.inertia[8],
-                              -p.inertia[1],
-                              -p.inertia[5],
-                              -p.inertia[2]};
-    for (int k = 0; k < 3; ++k) measured.moments.reference[k] = p.center_of_mass[k];
-    for (int k = 0; k < 6; ++k) measured.moments.second[k] = second[k];
-    measured.message =
-        provenance_text(provenance) + " (off by at most " + error_bound_text(p) + ")";
+    measured.moments = analysis.moments(library);
+    if (answer.provenance.mode != POLYMASS_MODE_SOLID)
+        measured.message = provenance_text(answer.provenance) + " (off by at most " +
+                           error_bound_text(answer.properties) + ")";
     return measured;
 }
 
@@ -198,26 +201,23 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
             model.positions[v] *= scale[static_cast<int>(v % 3)];
         }
     }
-    Measured measured;
+    const SurfaceAnalysis analysis = analysed_by_modes(library, options, model, modes_for(body));
+    Measured measured = measured_answer(library, analysis);
     if (body != MeshBody::kSolid) {
-        measured = measured_by_modes(library, options, model,
-                                     {body == MeshBody::kHull ? uint32_t(POLYMASS_MODE_HULL)
-                                                              : uint32_t(POLYMASS_MODE_SHELL)});
-        if (!measured.ok) return failure("bad_geometry", path + ": " + measured.message);
+        if (!measured.ok)
+            return failure("bad_geometry", path + ": not measured: " + measured.message);
         measured.message.clear();  // the body asked for, exact: nothing to report
-    } else if (const IntegratedSolid solid(library, model, combined_part(model), options);
-               solid.valid()) {
-        measured.moments = solid.moments(library);
     } else {
-        const SolidResult why = solid.failure();
-        const std::string not_a_solid = path + ": " + category_of(why.status) + ": " + why.message;
-        measured =
-            measured_by_modes(library, options, model, {POLYMASS_MODE_REPAIR, POLYMASS_MODE_HULL});
-        if (!measured.ok) {
-            return failure("not_a_solid", not_a_solid + "; " + measured.message);
+        // The surface's defect in words; when no mode answered, each later
+        // mode's reason follows it.
+        const std::string defect = path + ": " + category_of(analysis.diagnostics().status);
+        const std::string why = analysis.failure().message;
+        if (!measured.ok) return failure("not_a_solid", defect + ": not measured: solid: " + why);
+        if (!measured.message.empty()) {
+            measured.kind = "approximated_geometry";
+            measured.message =
+                defect + (why.empty() ? "" : ": " + why) + "; measured as " + measured.message;
         }
-        measured.kind = "approximated_geometry";
-        measured.message = not_a_solid + "; measured as " + measured.message;
     }
     measured.ok = true;
     for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {

@@ -1,6 +1,6 @@
-// polymass assembly FILE: each part's mesh read, validated and integrated
-// once, its moments converted to metres, weighted with its density or mass
-// and moved into the assembly's frame (polymass_moments_scale, _weight,
+// polymass assembly FILE: each part's mesh read and analysed once, its
+// moments converted to metres, weighted with its density or mass and moved
+// into the assembly's frame (polymass_moments_scale, _weight,
 // _transform), reported from those moments; the whole is their exact sum.
 // The parts are not checked against each other: parts that overlap count
 // twice (the report's notes say so).
@@ -12,6 +12,7 @@
 #include "commands/commands.hpp"
 #include "commands/part_materials.hpp"
 #include "library/solid_moments.hpp"
+#include "library/surface_analysis.hpp"
 #include "readers/mesh_reader.hpp"
 
 namespace polymass_cli {
@@ -36,7 +37,7 @@ SolidResult failure(int32_t status, std::string message) {
 // The part's moments through each step, stopping at the first refusal;
 // factor is the metres per unit of the model's lengths.
 PlacedPart place_part(const Library& library, const Model& model, const AssemblyPart& part,
-                      double factor, const Arguments& arguments) {
+                      double factor) {
     PlacedPart placed;
     const Part whole = combined_part(model);
     placed.report.name = part.name;
@@ -44,7 +45,7 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
     placed.report.faces = whole.face_sizes.size();
     placed.report.computed = true;
     placed.report.material = part.material;
-    const IntegratedSolid solid(library, model, whole, options_for(arguments));
+    const SurfaceAnalysis solid(library, model, whole, library.options());
     if (!solid.valid()) {
         placed.report.result = solid.failure();
         return placed;
@@ -70,8 +71,8 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
     }
     placed.moments = step.moments;
     placed.report.result =
-        properties_of(library, step.moments, arguments.point,
-                      own.properties.surface_area * factor * factor, own.properties.warnings);
+        properties_of(library, step.moments, own.properties.surface_area * factor * factor,
+                      own.properties.warnings);
     return placed;
 }
 
@@ -108,7 +109,7 @@ FileReport assembly_report(const Library& library, const std::string& path,
         (model.declared_unit.empty() ? declares_none : declares) = &part;
         for (const std::string& note : model.notes)
             report.notes.push_back(part.where + ": " + note);
-        PlacedPart placed = place_part(library, model, part, factor, arguments);
+        PlacedPart placed = place_part(library, model, part, factor);
         const SolidResult& result = placed.report.result;
         if (result.status == POLYMASS_OK) {
             bodies.push_back(placed.moments);
@@ -144,10 +145,9 @@ FileReport assembly_report(const Library& library, const std::string& path,
         return report;
     }
     const MomentsResult total = sum(library, bodies);
-    report.solid.result =
-        total.status == POLYMASS_OK
-            ? properties_of(library, total.moments, arguments.point, surface_area, warnings)
-            : failure(total.status, total.message);
+    report.solid.result = total.status == POLYMASS_OK
+                              ? properties_of(library, total.moments, surface_area, warnings)
+                              : failure(total.status, total.message);
     // One part is the whole: listing it again says nothing.
     if (report.parts.size() == 1) report.parts.clear();
     return report;
@@ -156,7 +156,7 @@ FileReport assembly_report(const Library& library, const std::string& path,
 }  // namespace
 
 ExitCode run_assembly(const Arguments& arguments) {
-    const Library library(options_for(arguments));
+    const Library library = library_for(arguments);
     const std::string& path = arguments.files.front();
     FileReport report;
     try {

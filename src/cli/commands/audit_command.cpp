@@ -13,9 +13,9 @@ namespace polymass_cli {
 
 ExitCode run_audit(const Arguments& arguments) {
     using namespace audit;
+    const Library library = library_for(arguments);
     AuditSettings settings;
-    settings.options = options_for(arguments);
-    const Library library(settings.options);
+    settings.options = library.options();
     settings.from =
         arguments.audit.from_visual ? GeometrySource::kVisual : GeometrySource::kCollision;
     settings.density = arguments.density.value_or(settings.density);

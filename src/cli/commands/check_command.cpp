@@ -1,9 +1,12 @@
-// polymass check: every finding of polymass_mesh_check with its count and
-// first few locations (vertex numbers are 0-based positions in the file's
-// vertex list, shown with their coordinates; face pairs with the shells the
-// faces are in), and the shells as the library judges them: a solid, a
-// cavity, inside out, overlapping another, or without volume. A file of
-// several parts is judged part by part, as polymass FILE judges it.
+// polymass check: every finding of the library's analysis of a file
+// (polymass_mesh_diagnostics) with its count and first few locations
+// (vertex numbers are 0-based positions in the file's vertex list, shown
+// with their coordinates; face pairs with the shells the faces are in), and
+// the shells as the library judges them: a solid, a cavity, inside out,
+// overlapping another, or without volume. A file of several parts is judged
+// part by part, as polymass FILE judges it. Each file (each part, and the
+// parts together, for a file of several) is analysed once: the findings,
+// the shells and which mode answers are read from that one analysis.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -16,8 +19,8 @@
 #include "commands/commands.hpp"
 #include "commands/parts_report.hpp"
 #include "library/categories.hpp"
-#include "library/parts_apart.hpp"
 #include "library/solid.hpp"
+#include "library/surface_analysis.hpp"
 #include "readers/mesh_reader.hpp"
 #include "reports/html_mesh.hpp"
 #include "reports/html_page.hpp"
@@ -141,13 +144,15 @@ std::string shells_summary(const polymass_diagnostics& d, const ShellView& shell
 }
 
 void write_text(std::ostream& out, const std::string& path, const Model& model,
-                const CheckResult& check, const ShellView& shells) {
-    const polymass_diagnostics& d = check.diagnostics;
+                const SurfaceAnalysis& check, const ShellView& shells) {
+    const polymass_diagnostics& d = check.diagnostics();
     out << path << " (" << model.format << "): ";
     if (d.status == POLYMASS_OK) {
         out << "a valid closed solid\n";
     } else {
-        out << "NOT A VALID SOLID: " << category_of(d.status) << ": " << check.message << '\n';
+        const std::string message = check.failure().message;
+        out << "NOT A VALID SOLID: " << category_of(d.status)
+            << (message.empty() ? "" : ": " + message) << '\n';
     }
     out << "  faces " << d.face_count << ", vertices used " << d.used_vertex_count << ", edges "
         << d.edge_count << ", shells " << shells_summary(d, shells) << '\n';
@@ -177,15 +182,15 @@ void write_text(std::ostream& out, const std::string& path, const Model& model,
         << (d.signed_volume < 0 ? "  (inverted: the faces are inside out)" : "") << '\n';
 }
 
-Json json_report(const std::string& path, const Model& model, const CheckResult& check,
+Json json_report(const std::string& path, const Model& model, const SurfaceAnalysis& check,
                  const ShellView& shells) {
-    const polymass_diagnostics& d = check.diagnostics;
+    const polymass_diagnostics& d = check.diagnostics();
     Json report = Json::object();
     report["file"] = path;
     report["format"] = model.format;
     report["valid"] = d.status == POLYMASS_OK;
     report["category"] = category_of(d.status);
-    report["message"] = check.message;
+    report["message"] = check.failure().message;
     report["faces"] = d.face_count;
     report["used_vertices"] = d.used_vertex_count;
     report["edges"] = d.edge_count;
@@ -230,25 +235,51 @@ Json json_report(const std::string& path, const Model& model, const CheckResult&
     return report;
 }
 
+// The surface check reports on, analysed once: a file of one part as it is,
+// with the options; a file of several as judge_parts judged it: its parts
+// apart against each other when every part is a solid by itself (analysed
+// here when the options skip that check, which judge_parts then leaves
+// out), else the file as one welded surface. own holds an analysis made here.
+const SurfaceAnalysis& checked_surface(const Library& library, const Model& model, const Part& all,
+                                       const std::optional<JudgedParts>& parts,
+                                       std::optional<SurfaceAnalysis>& own) {
+    if (parts && parts->apart) {
+        if (parts->between) return *parts->between;
+        return own.emplace(analyse_between(library, *parts->apart));
+    }
+    if (parts) return *parts->whole;
+    return own.emplace(library, model, all, library.options());
+}
+
+// The shells of the checked surface, listed when the library judged them
+// (when the surface fails a check that comes before the shells, only their
+// count is told).
+ShellView shell_view(const Library& library, const SurfaceAnalysis& check) {
+    ShellView shells{check.shell_of_each_face(library), check.shells(library)};
+    if (std::any_of(shells.list.begin(), shells.list.end(), [](const polymass_shell& shell) {
+            return shell.kind == POLYMASS_SHELL_UNJUDGED;
+        }))
+        shells.list.clear();
+    return shells;
+}
+
 // Which mode answers the file, as polymass FILE answers it (a file of
 // several parts part by part): the options' chain (the solid alone by
-// default), or else the option that would.
+// default), or else the option that would. A file of one part is answered
+// by the analysis check reports on.
 SolidResult answer_of(const Library& library, const std::string& path, const Model& model,
-                      const Arguments& arguments, const std::optional<JudgedParts>& parts) {
+                      const Part& all, const Arguments& arguments,
+                      const std::optional<JudgedParts>& parts, const SurfaceAnalysis& check) {
     polymass_mass_desc unit{};
-    unit.struct_size = sizeof unit;
-    unit.mass_mode = POLYMASS_MASS_FROM_DENSITY;
-    unit.density = 1.0;
-    if (!parts) return compute_solid(library, model, model.parts.front(), unit);
+    polymass_mass_desc_init(&unit, sizeof unit);
+    if (!parts) return answer_of(library, check, model, all, unit);
     FileReport report;
     report_parts(library, path, model, arguments, unit, *parts, report);
     SolidResult answer = report.solid.result;
-    if (answer.status == POLYMASS_OK) return answer;
+    if (answer.status == POLYMASS_OK || answer.options_tried) return answer;
     // Refused: a chain of modes would answer the whole as one surface
     // (parts_report), so that surface says which option would answer.
-    const SolidResult whole = compute_solid(library, model, combined_part(model), unit);
-    answer.answering_option = whole.answering_option;
-    answer.answering_provenance = whole.answering_provenance;
+    suggest_option(library, describe(model, all), answer.status, answer);
     return answer;
 }
 
@@ -291,7 +322,7 @@ Located located_by(const polymass_diagnostics& d) {
 }  // namespace
 
 ExitCode run_check(const Arguments& arguments) {
-    const Library library(options_for(arguments));
+    const Library library = library_for(arguments);
     const bool as_json = arguments.output == OutputFormat::kJson;
     // --html: the page draws each file's mesh beside what --json reports.
     const bool html = !arguments.html.empty();
@@ -329,23 +360,13 @@ ExitCode run_check(const Arguments& arguments) {
         // only (crossing, touching, nested), never an edge or a vertex, whose
         // numbers the copies do not keep.
         std::optional<JudgedParts> parts;
-        if (model.parts.size() > 1) parts = judge_parts(library, model, arguments);
-        const PartsApart* apart = parts && parts->apart ? &*parts->apart : nullptr;
-        const Library unwelded(unwelded_options(library));
-        const Library& judge = apart ? unwelded : library;
-        const Model& surface = apart ? apart->model : model;
-        const Part& judged = apart ? apart->model.parts.front() : all;
-        const CheckResult check =
-            parts && parts->between ? *parts->between : check_solid(judge, surface, judged);
-        std::vector<uint32_t> shell_of_face = shell_of_each_face(judge, surface, judged);
-        const uint64_t shell_count =
-            shell_of_face.empty()
-                ? 0
-                : uint64_t(*std::max_element(shell_of_face.begin(), shell_of_face.end())) + 1;
-        const ShellView shells{std::move(shell_of_face),
-                               shell_list(judge, surface, judged, shell_count)};
-        const SolidResult answer = answer_of(library, path, model, arguments, parts);
-        worst = std::max(worst, exit_code_of(check.diagnostics.status));
+        if (model.parts.size() > 1) parts.emplace(judge_parts(library, model));
+        std::optional<SurfaceAnalysis> own;
+        const SurfaceAnalysis& check = checked_surface(library, model, all, parts, own);
+        const ShellView shells = shell_view(library, check);
+        const uint64_t shell_count = check.diagnostics().shell_count;
+        const SolidResult answer = answer_of(library, path, model, all, arguments, parts, check);
+        worst = std::max(worst, exit_code_of(check.diagnostics().status));
         if (as_json || html) {
             reports.push_back(json_report(path, model, check, shells));
             reports.back()["answer"] = answer_json(answer);
@@ -354,7 +375,7 @@ ExitCode run_check(const Arguments& arguments) {
             // Each face's shell only when there are several to tell apart.
             meshes.push_back(mesh_view(page, model, all,
                                        shell_count > 1 ? shells.of_face : std::vector<uint32_t>(),
-                                       located_by(check.diagnostics)));
+                                       located_by(check.diagnostics())));
         }
         if (!as_json) {
             write_text(body, path, model, check, shells);

@@ -5,6 +5,7 @@
 
 #include "arguments.hpp"
 #include "exit_codes.hpp"
+#include "library/solid.hpp"
 #include "model/model.hpp"
 #include "reports/report.hpp"
 
@@ -38,6 +39,10 @@ ExitCode run_audit(const Arguments& arguments);
 
 // The library options the command line asks for.
 polymass_options options_for(const Arguments& arguments);
+
+// The library as the command line asks for it: its options, the threads it
+// may use (--threads; every core by default) and the --about point.
+Library library_for(const Arguments& arguments);
 
 // What the command line asks done to a model once read: --units (unless the
 // file declares its unit: a note says so) and --scale, --triangulate.

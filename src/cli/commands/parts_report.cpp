@@ -43,18 +43,32 @@ polymass_mass_desc with_density(polymass_mass_desc mass, double density) {
     return mass;
 }
 
+// The parts are analysed without the intersection check (each by itself);
+// the check that covers them (the parts apart against each other, or the
+// whole) says whether it ran: a part's answer keeps the library's
+// POLYMASS_WARNING_INTERSECTIONS_UNCHECKED only when it did not.
+SolidResult part_properties(const Library& library, const JudgedParts& judged, size_t k,
+                            const polymass_mass_desc& mass) {
+    SolidResult result = judged.solids[k].properties(library, mass);
+    const std::optional<SurfaceAnalysis>& cover = judged.apart ? judged.between : judged.whole;
+    if (cover && (cover->diagnostics().checks & POLYMASS_CHECKED_INTERSECTIONS))
+        result.properties.warnings &= ~uint32_t(POLYMASS_WARNING_INTERSECTIONS_UNCHECKED);
+    return result;
+}
+
 // A part is not a solid by itself (a closed surface split into parts by
 // material, say), or only once turned (a cavity exported as a part): the
 // whole is computed as one surface, and the parts that are solids get its
 // density, so that their masses add up to it. Parts of their own materials
 // cannot be told apart from such a whole: refused.
 void report_as_one(const Library& library, const Model& model, const Part& whole_part,
-                   const Arguments& arguments, const std::vector<IntegratedSolid>& solids,
+                   const Arguments& arguments, const JudgedParts& judged,
                    const std::vector<polymass_mass_desc>& masses,
                    const polymass_mass_desc& file_mass, FileReport& report) {
+    const std::vector<SurfaceAnalysis>& solids = judged.solids;
     const size_t broken =
         std::find_if(solids.begin(), solids.end(),
-                     [](const IntegratedSolid& s) { return !s.valid_as_given(); }) -
+                     [](const SurfaceAnalysis& s) { return !s.valid_as_given(); }) -
         solids.begin();
     const bool own_materials = !arguments.part_materials.empty();
     if (own_materials) {
@@ -67,7 +81,7 @@ void report_as_one(const Library& library, const Model& model, const Part& whole
                                            "' is not a solid by itself (" + why.message +
                                            "), so it cannot have a density or mass of its own"));
     } else {
-        set_result(report.solid, compute_solid(library, model, whole_part, file_mass));
+        set_result(report.solid, answer_of(library, *judged.whole, model, whole_part, file_mass));
     }
     const SolidResult& whole = report.solid.result;
     const bool density_known = whole.status == POLYMASS_OK || !arguments.mass;
@@ -76,12 +90,12 @@ void report_as_one(const Library& library, const Model& model, const Part& whole
         if (!solids[k].valid()) {
             set_result(part, solids[k].failure());
         } else if (own_materials) {
-            set_result(part, solids[k].properties(library, masses[k]));
+            set_result(part, part_properties(library, judged, k, masses[k]));
         } else if (density_known) {
             const polymass_mass_desc mass = whole.status == POLYMASS_OK
                                                 ? with_density(file_mass, whole.properties.density)
                                                 : file_mass;
-            set_result(part, solids[k].properties(library, mass));
+            set_result(part, part_properties(library, judged, k, mass));
         }
         report.parts.push_back(std::move(part));
     }
@@ -89,7 +103,7 @@ void report_as_one(const Library& library, const Model& model, const Part& whole
 
 // Every part weighted with its material (or, for the whole's --mass, at unit
 // density) and added in the file's order; then the whole's --mass applied.
-MomentsResult whole_moments(const Library& library, const std::vector<IntegratedSolid>& solids,
+MomentsResult whole_moments(const Library& library, const std::vector<SurfaceAnalysis>& solids,
                             const std::vector<polymass_mass_desc>& masses,
                             const polymass_mass_desc& file_mass) {
     const bool whole_mass = file_mass.mass_mode == POLYMASS_MASS_FROM_TOTAL;
@@ -110,12 +124,15 @@ MomentsResult whole_moments(const Library& library, const std::vector<Integrated
 // and a part that is no exact solid, or parts crossing each other: each part
 // and the whole are answered by the chain, each with its own provenance (a
 // whole the solid mode refuses may still have an approximate answer). Each
-// face is then integrated twice.
+// face is then integrated twice: each part's own check is the chain's, which
+// judges it with the intersection check the parts' exact analyses skip.
 void report_by_chain(const Library& library, const Model& model, const Part& whole_part,
-                     const std::vector<polymass_mass_desc>& masses,
+                     const JudgedParts& judged, const std::vector<polymass_mass_desc>& masses,
                      const polymass_mass_desc& file_mass, FileReport& report) {
     report.solid = counted(model, whole_part);
-    set_result(report.solid, compute_solid(library, model, whole_part, file_mass));
+    set_result(report.solid, judged.whole
+                                 ? answer_of(library, *judged.whole, model, whole_part, file_mass)
+                                 : compute_solid(library, model, whole_part, file_mass));
     const SolidResult& whole = report.solid.result;
     const bool whole_mass = file_mass.mass_mode == POLYMASS_MASS_FROM_TOTAL;
     for (size_t k = 0; k < model.parts.size(); ++k) {
@@ -131,12 +148,12 @@ void report_by_chain(const Library& library, const Model& model, const Part& who
 
 }  // namespace
 
-JudgedParts judge_parts(const Library& library, const Model& model, const Arguments& arguments) {
+JudgedParts judge_parts(const Library& library, const Model& model) {
     // Each part judged alone as an exact solid, whatever the chain, so that
     // a whole of exact parts gets the same bits with --fallback as without.
     // The check between the parts sees every part's faces: each part is
     // judged without it.
-    polymass_options part_options = options_for(arguments);
+    polymass_options part_options = library.options();
     part_options.flags |= POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     std::fill(std::begin(part_options.modes), std::end(part_options.modes),
               uint32_t(POLYMASS_MODE_NONE));
@@ -146,20 +163,26 @@ JudgedParts judge_parts(const Library& library, const Model& model, const Argume
     for (const Part& part : model.parts)
         judged.solids.emplace_back(library, model, part, part_options);
     if (!std::all_of(judged.solids.begin(), judged.solids.end(),
-                     [](const IntegratedSolid& s) { return s.valid_as_given(); }))
+                     [](const SurfaceAnalysis& s) { return s.valid_as_given(); })) {
+        judged.whole.emplace(library, model, combined_part(model), library.options());
         return judged;
+    }
     judged.apart = parts_apart(library, model);
     // Every part is a valid solid by now: in range, finite, weldable.
     if (!judged.apart) throw std::logic_error("a valid part could not be welded");
     // Parts crossing each other, or one inside another, would count twice.
     const uint32_t skips =
         POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
-    if (!(options_for(arguments).flags & skips)) {
-        const Library unwelded(unwelded_options(library));
-        judged.between =
-            check_solid(unwelded, judged.apart->model, judged.apart->model.parts.front());
-    }
+    if (!(library.options().flags & skips))
+        judged.between.emplace(analyse_between(library, *judged.apart));
     return judged;
+}
+
+SurfaceAnalysis analyse_between(const Library& library, const PartsApart& apart) {
+    polymass_options options = unwelded_options(library.options());
+    std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
+    options.modes[0] = POLYMASS_MODE_SOLID;
+    return SurfaceAnalysis(library, apart.model, apart.model.parts.front(), options);
 }
 
 void report_parts(const Library& library, const std::string& path, const Model& model,
@@ -168,14 +191,14 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     const std::vector<polymass_mass_desc> masses = part_masses(arguments, path, model, file_mass);
     const Part whole = combined_part(model);  // every part's indices, copied once
     const bool by_chain = arguments.modes != std::vector<uint32_t>{POLYMASS_MODE_SOLID};
-    const std::vector<IntegratedSolid>& solids = judged.solids;
+    const std::vector<SurfaceAnalysis>& solids = judged.solids;
 
     report.solid = counted(model, whole);
     if (!judged.apart) {
         if (by_chain) {
-            report_by_chain(library, model, whole, masses, file_mass, report);
+            report_by_chain(library, model, whole, judged, masses, file_mass, report);
         } else {
-            report_as_one(library, model, whole, arguments, solids, masses, file_mass, report);
+            report_as_one(library, model, whole, arguments, judged, masses, file_mass, report);
         }
         return;
     }
@@ -184,12 +207,12 @@ void report_parts(const Library& library, const std::string& path, const Model& 
     SolidResult verdict = failure(total.status, total.message);
     uint32_t warnings = 0;
     if (verdict.status == POLYMASS_OK && judged.between) {
-        verdict = failure(judged.between->diagnostics.status, judged.between->message);
-        if (judged.between->diagnostics.touching_face_pairs > 0)
+        verdict = judged.between->failure();
+        if (judged.between->diagnostics().touching_face_pairs > 0)
             warnings |= POLYMASS_WARNING_TOUCHING_FACES;
     }
     if (verdict.status != POLYMASS_OK && by_chain) {
-        report_by_chain(library, model, whole, masses, file_mass, report);
+        report_by_chain(library, model, whole, judged, masses, file_mass, report);
         return;
     }
 
@@ -202,7 +225,7 @@ void report_parts(const Library& library, const std::string& path, const Model& 
             const polymass_mass_desc mass =
                 whole_mass ? with_density(file_mass, total.moments.mass / total.moments.volume)
                            : masses[k];
-            set_result(part, solids[k].properties(library, mass));
+            set_result(part, part_properties(library, judged, k, mass));
             const SolidResult& result = part.result;
             surface_area += result.status == POLYMASS_OK ? result.properties.surface_area
                                                          : std::numeric_limits<double>::quiet_NaN();
@@ -210,11 +233,9 @@ void report_parts(const Library& library, const std::string& path, const Model& 
         }
         report.parts.push_back(std::move(part));
     }
-    const std::array<double, 3> point{file_mass.point[0], file_mass.point[1], file_mass.point[2]};
-    set_result(report.solid,
-               verdict.status == POLYMASS_OK
-                   ? properties_of(library, total.moments, point, surface_area, warnings)
-                   : verdict);
+    set_result(report.solid, verdict.status == POLYMASS_OK
+                                 ? properties_of(library, total.moments, surface_area, warnings)
+                                 : verdict);
 }
 
 }  // namespace polymass_cli

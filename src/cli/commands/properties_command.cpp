@@ -54,8 +54,7 @@ FileReport process_file(const Library& library, const std::string& path, const A
 
     const auto compute_start = std::chrono::steady_clock::now();
     if (model.parts.size() > 1) {
-        report_parts(library, path, model, arguments, mass, judge_parts(library, model, arguments),
-                     report);
+        report_parts(library, path, model, arguments, mass, judge_parts(library, model), report);
         for (PartReport& part : report.parts) part.material = material_of(arguments, part.name);
         report.solid.material = common_material(report.parts);
     } else {
@@ -93,7 +92,7 @@ void prepare_model(Model& model, const Arguments& arguments) {
 
 polymass_options options_for(const Arguments& arguments) {
     polymass_options options{};
-    options.struct_size = sizeof options;
+    polymass_options_init(&options, sizeof options);
     // Files are welded: STL stores each triangle's corners, and OBJ/PLY
     // exporters often repeat positions per face or per material.
     options.flags = POLYMASS_OPTION_WELD_VERTICES;
@@ -104,22 +103,23 @@ polymass_options options_for(const Arguments& arguments) {
     options.planarity_tolerance = arguments.planarity_tolerance;
     std::copy(arguments.modes.begin(), arguments.modes.end(), options.modes);
     options.shell_thickness = arguments.shell_thickness;
-    const uint32_t cores = std::max(1u, std::thread::hardware_concurrency());
-    options.threads =
-        arguments.threads ? arguments.threads : std::min<uint32_t>(cores, POLYMASS_MAX_THREADS);
     return options;
 }
 
+Library library_for(const Arguments& arguments) {
+    const uint32_t cores = std::max(1u, std::thread::hardware_concurrency());
+    const uint32_t threads =
+        arguments.threads ? arguments.threads : std::min<uint32_t>(cores, POLYMASS_MAX_THREADS);
+    return Library(options_for(arguments), threads, arguments.point);
+}
+
 ExitCode run_properties(const Arguments& arguments) {
-    const Library library(options_for(arguments));
+    const Library library = library_for(arguments);
     polymass_mass_desc mass{};
-    mass.struct_size = sizeof mass;
+    polymass_mass_desc_init(&mass, sizeof mass);
     mass.mass_mode = arguments.mass ? POLYMASS_MASS_FROM_TOTAL : POLYMASS_MASS_FROM_DENSITY;
     mass.density = arguments.density.value_or(1.0);
     mass.mass = arguments.mass.value_or(1.0);
-    if (arguments.about == About::kPoint) {
-        std::copy(arguments.point.begin(), arguments.point.end(), mass.point);
-    }
 
     std::vector<FileReport> files;
     // --html: the page draws each mesh with what --json reports of it.

@@ -2,9 +2,7 @@
 
 #include <polymass/polymass.h>
 
-#include <algorithm>
 #include <new>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -12,20 +10,19 @@
 namespace polymass_cli {
 namespace {
 
-// A context with the default options (an exact weld, whatever the tool's
-// --weld-tolerance: that one is applied when the library computes).
-class DefaultContext {
+// A context for the weld, freed on destruction.
+class WeldContext {
 public:
-    DefaultContext() {
+    WeldContext() {
         const int32_t created = polymass_context_create(&context_, nullptr);
         if (created == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
         if (created != POLYMASS_OK)
             throw std::runtime_error(std::string("polymass_context_create: ") +
                                      polymass_status_string(created));
     }
-    ~DefaultContext() { polymass_context_destroy(context_); }
-    DefaultContext(const DefaultContext&) = delete;
-    DefaultContext& operator=(const DefaultContext&) = delete;
+    ~WeldContext() { polymass_context_destroy(context_); }
+    WeldContext(const WeldContext&) = delete;
+    WeldContext& operator=(const WeldContext&) = delete;
     polymass_context* get() const { return context_; }
 
 private:
@@ -33,33 +30,21 @@ private:
 };
 
 // For each corner, the first corner at its position; how many positions there
-// are in distinct.
+// are in distinct. An exact weld (tolerance 0), whatever the tool's
+// --weld-tolerance: that one is applied when the library computes.
 template <class Scalar>
 std::vector<uint32_t> first_corner_at_each_position(const std::vector<Scalar>& corners,
                                                     uint64_t corner_count, uint64_t& distinct) {
-    // The corners as one polygon face that uses each of them (a soup of 1 or
-    // 2 corners repeats the last, since a face has at least 3).
-    std::vector<uint32_t> face(std::max<uint64_t>(corner_count, 3));
-    std::iota(face.begin(), face.begin() + corner_count, 0u);
-    std::fill(face.begin() + corner_count, face.end(), uint32_t(corner_count - 1));
-    const uint32_t face_size = uint32_t(face.size());
-    polymass_mesh_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.position_type =
+    const uint32_t position_type =
         std::is_same_v<Scalar, float> ? POLYMASS_POSITION_FLOAT32 : POLYMASS_POSITION_FLOAT64;
-    desc.positions = corners.data();
-    desc.vertex_count = corner_count;
-    desc.index_type = POLYMASS_INDEX_UINT32;
-    desc.indices = face.data();
-    desc.index_count = face.size();
-    desc.face_sizes = &face_size;
-    desc.face_count = 1;
-    const DefaultContext context;
+    const WeldContext context;
     std::vector<uint32_t> first(corner_count);
-    const int32_t status = polymass_mesh_weld(first.data(), &distinct, context.get(), &desc);
+    const int32_t status =
+        polymass_weld_positions(first.data(), &distinct, context.get(), corners.data(),
+                                position_type, corner_count, 0, 0.0);
     if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (status != POLYMASS_OK)
-        throw std::runtime_error(std::string("polymass_mesh_weld: ") +
+        throw std::runtime_error(std::string("polymass_weld_positions: ") +
                                  polymass_context_message(context.get()));
     return first;
 }

@@ -1,9 +1,9 @@
 // A triangle soup's corners (STL repeats a vertex once per triangle) given
-// one index per position through the library's exact welding
-// (polymass_mesh_weld): only bit-identical coordinates are one vertex (-0 and
-// +0 being the same), so the solid is unchanged; near-coincident vertices are
-// the library's business when it computes (POLYMASS_OPTION_WELD_VERTICES with
-// weld_tolerance).
+// one index per position through the library's exact welding of positions
+// (polymass_weld_positions): only bit-identical coordinates are one vertex
+// (-0 and +0 being the same), so the solid is unchanged; near-coincident
+// vertices are the library's business when it computes
+// (POLYMASS_OPTION_WELD_VERTICES with weld_tolerance).
 #pragma once
 
 #include <cstdint>

@@ -13,9 +13,10 @@ constexpr uint32_t kUnset = std::numeric_limits<uint32_t>::max();
 
 // Each corner of part given its welded vertex, numbered as the file does:
 // the part's used vertices are copied out (so that the library's weld, which
-// writes one entry per vertex, costs the part's size and not the file's),
-// welded, and mapped back. local_of is kUnset for every vertex on entry and
-// on return. False when the library cannot weld the part.
+// writes one entry per position, costs the part's size and not the file's),
+// welded at the library's tolerance, and mapped back. local_of is kUnset for
+// every vertex on entry and on return. False when the library cannot weld
+// the part.
 bool welded_corners(const Library& library, const Model& model, const Part& part,
                     std::vector<uint32_t>& local_of, std::vector<uint32_t>& corners) {
     std::vector<uint32_t> file_of;  // the file's number of each local vertex
@@ -39,19 +40,11 @@ bool welded_corners(const Library& library, const Model& model, const Part& part
     for (const uint32_t index : file_of) local_of[index] = kUnset;
     if (!in_range) return false;
 
-    polymass_mesh_desc desc{};
-    desc.struct_size = sizeof desc;
-    desc.position_type = POLYMASS_POSITION_FLOAT64;
-    desc.positions = positions.data();
-    desc.vertex_count = file_of.size();
-    desc.index_type = POLYMASS_INDEX_UINT32;
-    desc.indices = local_indices.data();
-    desc.index_count = local_indices.size();
-    desc.face_sizes = part.face_sizes.data();
-    desc.face_count = part.face_sizes.size();
     std::vector<uint32_t> welded(file_of.size());
     uint64_t distinct = 0;
-    const int32_t status = polymass_mesh_weld(welded.data(), &distinct, library.context(), &desc);
+    const int32_t status = polymass_weld_positions(
+        welded.data(), &distinct, library.context(), positions.data(), POLYMASS_POSITION_FLOAT64,
+        file_of.size(), 0, library.options().weld_tolerance);
     if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (status != POLYMASS_OK) return false;
     corners.clear();
@@ -101,12 +94,10 @@ std::optional<PartsApart> parts_apart(const Library& library, const Model& model
     return apart;
 }
 
-polymass_options unwelded_options(const Library& library) {
-    polymass_options options{};
-    options.struct_size = sizeof options;
-    polymass_context_get_options(&options, library.context());
-    options.flags &= ~uint32_t(POLYMASS_OPTION_WELD_VERTICES);
-    return options;
+polymass_options unwelded_options(const polymass_options& options) {
+    polymass_options unwelded = options;
+    unwelded.flags &= ~uint32_t(POLYMASS_OPTION_WELD_VERTICES);
+    return unwelded;
 }
 
 }  // namespace polymass_cli

@@ -3,7 +3,7 @@
 // other (plates stacked, a bolt in its hole) would share their touching
 // edges, each then used by four faces, and the whole would be refused as
 // non-manifold. Here each part is welded by itself, with the library's
-// welding (polymass_mesh_weld) at the options' tolerance, and no vertex is
+// welding (polymass_weld_positions) at the options' tolerance, and no vertex is
 // shared by two parts: the library, told not to weld, sees each part's own
 // shells, and judges parts that touch as touching (a warning) and parts that
 // cross or nest as intersecting.
@@ -28,8 +28,8 @@ struct PartsApart {
 // judges that part. library gives the weld tolerance.
 std::optional<PartsApart> parts_apart(const Library& library, const Model& model);
 
-// The options of library without POLYMASS_OPTION_WELD_VERTICES: for a
-// surface already welded (PartsApart).
-polymass_options unwelded_options(const Library& library);
+// The options without POLYMASS_OPTION_WELD_VERTICES: for a surface already
+// welded (PartsApart).
+polymass_options unwelded_options(const polymass_options& options);
 
 }  // namespace polymass_cli

@@ -10,7 +10,7 @@ namespace polymass_cli {
 
 polymass_mesh_desc describe(const Model& model, const Part& part) {
     polymass_mesh_desc desc{};
-    desc.struct_size = sizeof desc;
+    polymass_mesh_desc_init(&desc, sizeof desc);
     desc.position_type = POLYMASS_POSITION_FLOAT64;
     desc.positions = model.positions.data();
     desc.vertex_count = model.vertex_count();
@@ -24,115 +24,106 @@ polymass_mesh_desc describe(const Model& model, const Part& part) {
 
 namespace {
 
-// Which option of the tool would answer a part its options' chain refused:
-// --repair, then --hull, then (for a flat surface, which neither answers)
-// --shell T, among the modes the chain lacks. Writes
-// result.answering_option (empty when none would) and what the mode did.
-void probe_modes(const Library& library, const polymass_mesh_desc& desc, SolidResult& result) {
-    polymass_options options{};
-    options.struct_size = sizeof options;
-    polymass_context_get_options(&options, library.context());
-    const uint32_t* chain = options.modes;
-    const uint32_t* chain_end = chain + POLYMASS_MAX_MODES;
-    for (const auto& [mode, option] : {std::pair{uint32_t(POLYMASS_MODE_REPAIR), "--repair"},
-                                       std::pair{uint32_t(POLYMASS_MODE_HULL), "--hull"},
-                                       std::pair{uint32_t(POLYMASS_MODE_SHELL), "--shell T"}}) {
-        if (std::find(chain, chain_end, mode) != chain_end) continue;
-        polymass_options single = options;
-        std::fill(std::begin(single.modes), std::end(single.modes), uint32_t(POLYMASS_MODE_NONE));
-        single.modes[0] = mode;
-        single.shell_thickness = 1.0;  // any: whether the surface has an area to make a wall of
-        polymass_mass_properties properties{};
-        properties.struct_size = sizeof properties;
-        polymass_provenance& provenance = result.answering_provenance;
-        provenance = polymass_provenance{};
-        provenance.struct_size = sizeof provenance;
-        const int32_t status = polymass_mass_properties_with_provenance(
-            &properties, &provenance, library.context(), &desc, nullptr, &single);
-        // Out of memory says nothing of whether the mode would answer.
-        if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
-        if (status == POLYMASS_OK) {
-            result.answering_option = option;
-            return;
-        }
-    }
+// The tool's options that ask for each mode, in the order they are
+// suggested: the closest answer first; a thin wall last, for a flat surface
+// that neither a repair nor a hull answers.
+constexpr std::pair<uint32_t, const char*> kSuggested[] = {
+    {POLYMASS_MODE_REPAIR, "--repair"},
+    {POLYMASS_MODE_HULL, "--hull"},
+    {POLYMASS_MODE_SHELL, "--shell T"},
+};
+
+// Whether some mode may answer a surface refused with status: none reads
+// faces that use a vertex past the end or a coordinate that is not finite.
+bool some_mode_may_answer(int32_t status) {
+    return status != POLYMASS_ERROR_INDEX_OUT_OF_RANGE && status != POLYMASS_ERROR_NON_FINITE;
 }
 
 }  // namespace
 
-Library::Library(const polymass_options& options) {
+Library::Library(const polymass_options& options, uint32_t threads,
+                 const std::array<double, 3>& point)
+    : options_(options), point_(point) {
     const int32_t created = polymass_context_create(&context_, nullptr);
     if (created == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (created != POLYMASS_OK) {
         throw std::runtime_error(std::string("polymass_context_create: ") +
                                  polymass_status_string(created));
     }
-    const int32_t set = polymass_context_set_options(context_, &options);
+    const int32_t set = polymass_context_set_threads(context_, threads);
     if (set != POLYMASS_OK) {
         const std::string message = polymass_context_message(context_);
         polymass_context_destroy(context_);
+        if (set == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
         throw std::invalid_argument(message);
     }
 }
 
 Library::~Library() { polymass_context_destroy(context_); }
 
+void add_inertia_point(const Library& library, SolidResult& result) {
+    if (result.status != POLYMASS_OK) return;
+    result.status = polymass_inertia_about(result.inertia_point.data(), &result.properties,
+                                           library.point().data());
+    // The point is finite (the command line checks it): only a moment
+    // beyond a double is refused.
+    if (result.status != POLYMASS_OK)
+        result.message = "the inertia about the point " +
+                         std::string(polymass_status_string(result.status)) +
+                         ": a moment does not fit in a double";
+}
+
 SolidResult compute_solid(const Library& library, const Model& model, const Part& part,
                           const polymass_mass_desc& mass) {
     const polymass_mesh_desc desc = describe(model, part);
     SolidResult result;
-    result.properties.struct_size = sizeof result.properties;
-    result.provenance.struct_size = sizeof result.provenance;
-    result.status = polymass_mass_properties_with_provenance(
-        &result.properties, &result.provenance, library.context(), &desc, &mass, nullptr);
-    if (result.status == POLYMASS_OK) return result;
+    polymass_mass_properties_init(&result.properties, sizeof result.properties);
+    polymass_provenance_init(&result.provenance, sizeof result.provenance);
+    result.status =
+        polymass_mass_properties_compute(&result.properties, &result.provenance, library.context(),
+                                         &desc, &library.options(), &mass);
+    if (result.status == POLYMASS_OK) {
+        add_inertia_point(library, result);
+        return result;
+    }
     if (result.status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     result.message = library.message();
-    probe_modes(library, desc, result);
-    if (!result.answering_option.empty())
+    suggest_option(library, desc, result.status, result);
+    return result;
+}
+
+void suggest_option(const Library& library, const polymass_mesh_desc& desc, int32_t status,
+                    SolidResult& result) {
+    result.options_tried = true;
+    if (!some_mode_may_answer(status)) return;
+    // Whether a mode answers a surface the status does not rule out is
+    // known only by trying it: a second analysis, of a refused surface only,
+    // whose chain is the modes the options lack, in the order suggested (the
+    // first that answers is the one suggested).
+    const polymass_options& options = library.options();
+    polymass_options trial = options;
+    std::fill(std::begin(trial.modes), std::end(trial.modes), uint32_t(POLYMASS_MODE_NONE));
+    const uint32_t* chain_end = std::end(options.modes);
+    uint32_t* next = trial.modes;
+    for (const auto& [mode, option] : kSuggested)
+        if (std::find(std::begin(options.modes), chain_end, mode) == chain_end) *next++ = mode;
+    if (next == trial.modes) return;
+    trial.shell_thickness = 1.0;  // any: whether the surface has an area to make a wall of
+    polymass_mass_properties properties{};
+    polymass_mass_properties_init(&properties, sizeof properties);
+    polymass_provenance provenance{};
+    polymass_provenance_init(&provenance, sizeof provenance);
+    const int32_t answered = polymass_mass_properties_compute(
+        &properties, &provenance, library.context(), &desc, &trial, nullptr);
+    // Out of memory says nothing of whether a mode would answer.
+    if (answered == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
+    if (answered != POLYMASS_OK) return;
+    for (const auto& [mode, option] : kSuggested) {
+        if (uint32_t(provenance.mode) != mode) continue;
+        result.answering_option = option;
+        result.answering_provenance = provenance;
         result.message += " (" + result.answering_option + " would give an answer)";
-    return result;
-}
-
-CheckResult check_solid(const Library& library, const Model& model, const Part& part) {
-    const polymass_mesh_desc desc = describe(model, part);
-    CheckResult result;
-    result.diagnostics.struct_size = sizeof result.diagnostics;
-    const int32_t status = polymass_mesh_check(&result.diagnostics, library.context(), &desc);
-    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
-    if (status != POLYMASS_OK) result.message = library.message();
-    return result;
-}
-
-std::vector<uint32_t> shell_of_each_face(const Library& library, const Model& model,
-                                         const Part& part) {
-    const polymass_mesh_desc desc = describe(model, part);
-    std::vector<uint32_t> shells(part.face_sizes.size());
-    uint64_t count = 0;
-    const int32_t status = polymass_mesh_shells(shells.data(), &count, library.context(), &desc);
-    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
-    if (status != POLYMASS_OK) shells.clear();
-    return shells;
-}
-
-std::vector<polymass_shell> shell_list(const Library& library, const Model& model, const Part& part,
-                                       uint64_t expected_count) {
-    const polymass_mesh_desc desc = describe(model, part);
-    polymass_shell blank{};
-    blank.struct_size = sizeof blank;
-    std::vector<polymass_shell> shells(expected_count, blank);
-    uint64_t count = 0;
-    int32_t status =
-        polymass_mesh_shell_list(shells.data(), shells.size(), &count, library.context(), &desc);
-    if (status == POLYMASS_OK && count > shells.size()) {
-        shells.assign(count, blank);
-        status = polymass_mesh_shell_list(shells.data(), shells.size(), &count, library.context(),
-                                          &desc);
     }
-    if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
-    if (status != POLYMASS_OK) return {};
-    shells.resize(count);
-    return shells;
 }
 
 const char* shell_kind_name(int32_t kind) {
@@ -145,8 +136,10 @@ const char* shell_kind_name(int32_t kind) {
             return "inverted";
         case POLYMASS_SHELL_OVERLAPPING:
             return "overlapping";
-        default:
+        case POLYMASS_SHELL_NO_VOLUME:
             return "no volume";
+        default:
+            return "unjudged";
     }
 }
 

@@ -48,7 +48,9 @@ const struct {
      "faces touch without crossing (parts resting on each other)"},
     {POLYMASS_WARNING_REPAIRED, "repaired", "not a valid solid: the surface was repaired"},
     {POLYMASS_WARNING_SHELL, "shell", "computed as a thin wall, not a solid"},
-    {POLYMASS_WARNING_HULL, "hull", "the convex hull, not the solid: an upper bound"}};
+    {POLYMASS_WARNING_HULL, "hull", "the convex hull, not the solid: an upper bound"},
+    {POLYMASS_WARNING_INTERSECTIONS_UNCHECKED, "intersections_unchecked",
+     "the intersection check was skipped: overlapping parts would count twice"}};
 
 }  // namespace
 

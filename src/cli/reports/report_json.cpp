@@ -65,7 +65,7 @@ void add_solid_members(Json& solid, const PartReport& part, const OutputSettings
     solid["inertia_origin"] = json_tensor(p.inertia_origin);
     if (settings.about == About::kPoint) {
         solid["about_point"] = json_numbers(settings.point.data(), 3);
-        solid["inertia_point"] = json_tensor(p.inertia_point);
+        solid["inertia_point"] = json_tensor(part.result.inertia_point.data());
     }
     solid["principal_moments"] = json_numbers(p.principal_moments, 3);
     // Axis i (the columns of the library's rotation) goes with moment i.

@@ -70,7 +70,7 @@ void write_solid(std::ostream& out, const PartReport& part, const OutputSettings
     if (settings.about == About::kOrigin) {
         write_matrix(out, "inertia about origin", p.inertia_origin, units.inertia);
     } else if (settings.about == About::kPoint) {
-        write_matrix(out, "inertia about point", p.inertia_point, units.inertia);
+        write_matrix(out, "inertia about point", part.result.inertia_point.data(), units.inertia);
         write_row(out, "  (the point)", vector_text(settings.point.data()), units.length);
     }
     write_row(out, "principal moments", vector_text(p.principal_moments), units.inertia);
