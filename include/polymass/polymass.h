@@ -203,8 +203,8 @@ POLYMASS_API const char* polymass_status_string(int32_t status);
    the lowest vertex pairs. */
 #define POLYMASS_DIAGNOSTIC_LOCATIONS 8
 /* How many face pairs of a kind (crossing, touching) the intersection check
-   counts: past that the count is a lower bound (the message says "at least")
-   and the search stops; the pairs listed are still the lowest. */
+   counts: past that the count is a lower bound (the message says "at
+   least"); the pairs listed are still the lowest. */
 #define POLYMASS_MAX_COUNTED_FACE_PAIRS 2048
 /* No location: the value of the "first_*" entries past the count beside them
    (all of them when it is 0). */
@@ -469,7 +469,9 @@ typedef struct polymass_shell {
     uint64_t face_count;
     uint64_t first_face;
     /* Signed so that the whole surface's volume is positive (a surface
-       accepted inside out as a whole counts turned); NaN when unjudged. */
+       accepted inside out as a whole counts turned); NaN when unjudged, or when
+       the volume is beyond a double's range (a shell of no volume made of
+       coordinates near overflow). */
     double signed_volume;
 } polymass_shell;
 
@@ -613,7 +615,9 @@ typedef struct polymass_batch_item {
 /* Many triangle meshes packed into shared arrays, as datasets keep them:
    mesh i is vertices [vertex_offsets[i], vertex_offsets[i + 1]) of
    `positions` and indices [index_offsets[i], index_offsets[i + 1]) of
-   `indices`, three per triangle. Nothing is copied. Since 2.0. */
+   `indices`, three per triangle. The arrays are read in place (global
+   indices are rebased one mesh at a time, in the context's scratch memory).
+   Since 2.0. */
 typedef struct polymass_packed_meshes {
     uint32_t struct_size;   /* sizeof(polymass_packed_meshes) */
     uint32_t position_type; /* POLYMASS_POSITION_* */
@@ -954,8 +958,10 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
    prepare. Context: one thread at a time. Since 2.0.
    Returns POLYMASS_OK once every mesh has its status, or what kept the set
    from running (POLYMASS_ERROR_INVALID_ARGUMENT: offsets that do not ascend
-   from 0, a count of indices not a multiple of 3, an index_base unknown),
-   with the context's message. */
+   from 0, a count of indices not a multiple of 3, an unknown type, index
+   base or mass mode, a stride or NULL array the set cannot have, a reserved
+   field not 0, more than 2^32 vertices with global indices), with the
+   context's message. */
 POLYMASS_API int32_t polymass_packed_compute(const polymass_packed_results* results,
                                              uint64_t* out_failed, polymass_context* context,
                                              const polymass_packed_meshes* meshes,
