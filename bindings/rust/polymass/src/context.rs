@@ -429,9 +429,9 @@ impl Context {
     /// once per face): see [`Weld`]. `tolerance` is
     /// [`Options::with_weld_tolerance`]'s, relative to the largest extent of
     /// the positions' bounding box: 0 welds exactly equal positions (+0 and
-    /// -0 being one, and copies of the same NaN), above 0 chains of near
-    /// positions are one and non-finite coordinates are an error. At most
-    /// `u32::MAX` vertices.
+    /// -0 being one, and NaNs of one payload, compared quiet), above 0
+    /// chains of near positions are one and non-finite coordinates are an
+    /// error. At most `u32::MAX` vertices.
     ///
     /// ```
     /// use polymass::{Context, Positions};

@@ -98,7 +98,9 @@ pub struct Shell {
     pub first_face: u64,
     /// Enclosed volume, signed so that the whole surface's volume is positive
     /// (a surface accepted inside out as a whole counts turned): a cavity's
-    /// is negative; NaN when [unjudged](ShellKind::Unjudged).
+    /// is negative; NaN when [unjudged](ShellKind::Unjudged), or when the
+    /// volume is beyond a double's range (a shell of no volume made of
+    /// coordinates near overflow).
     pub signed_volume: f64,
 }
 
