@@ -17,19 +17,22 @@ std::uint32_t spread_bits(std::uint32_t v) {
 
 }  // namespace
 
-bool FloatBox::may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                double pad) const {
+SegmentSlabs::SegmentSlabs(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double pad)
+    : from_(a), step_(b - a), reciprocal_(step_.cwiseInverse()), pad_(pad) {}
+
+bool SegmentSlabs::may_meet(const FloatBox& box) const {
     // An empty box meets nothing; its infinite bounds would pass every slab.
-    if (!(lo[0] <= hi[0])) return false;
+    if (!(box.lo[0] <= box.hi[0])) return false;
     double enter = 0.0, leave = 1.0;
     for (int k = 0; k < 3; ++k) {
-        const double low = double(lo[k]) - pad, high = double(hi[k]) + pad;
-        const double from = a[k], step = b[k] - a[k];
-        if (step == 0) {
-            if (from < low || from > high) return false;
+        const double low = double(box.lo[k]) - pad_, high = double(box.hi[k]) + pad_;
+        if (step_[k] == 0) {
+            if (from_[k] < low || from_[k] > high) return false;
             continue;
         }
-        double t0 = (low - from) / step, t1 = (high - from) / step;
+        // Times a rounded reciprocal rather than divided: two roundings, a
+        // few ulps of the segment's length, far below the pad.
+        double t0 = (low - from_[k]) * reciprocal_[k], t1 = (high - from_[k]) * reciprocal_[k];
         if (t0 > t1) std::swap(t0, t1);
         enter = std::max(enter, t0);
         leave = std::min(leave, t1);

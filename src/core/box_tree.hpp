@@ -44,9 +44,6 @@ struct FloatBox {
         return lo[0] <= other.hi[0] && other.lo[0] <= hi[0] && lo[1] <= other.hi[1] &&
                other.lo[1] <= hi[1] && lo[2] <= other.hi[2] && other.lo[2] <= hi[2];
     }
-    // Whether the segment from a to b (about the reference point) may meet the
-    // box, by the slab method, the box grown by `pad` against rounding.
-    bool may_meet_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double pad) const;
 
 private:
     // x rounded down (up) to a float. Rounding to nearest is off by at most
@@ -60,6 +57,20 @@ private:
         const float f = float(x);
         return double(f) < x ? f + std::max(std::abs(f) * 0x1p-23f, 0x1p-149f) : f;
     }
+};
+
+// A segment from a to b (about the tree's reference point), tested against
+// many boxes by the slab method, each box grown by `pad` against rounding:
+// the reciprocals of its steps are taken once, not divided by at every box.
+class SegmentSlabs {
+public:
+    SegmentSlabs(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double pad);
+    // Whether the segment may meet the box.
+    bool may_meet(const FloatBox& box) const;
+
+private:
+    Eigen::Vector3d from_, step_, reciprocal_;
+    double pad_;
 };
 
 class BoxTree {
@@ -190,17 +201,19 @@ template <class Visit>
 void BoxTree::for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                          Visit&& visit) const {
     if (order_.empty()) return;
-    std::pmr::vector<Node> nodes(memory_);
-    nodes.push_back(root());
-    while (!nodes.empty()) {
-        const Node node = nodes.back();
-        nodes.pop_back();
-        if (!box(node).may_meet_segment(a, b, pad_)) continue;
+    const SegmentSlabs segment(a, b, pad_);
+    // Depth first: one node pending per level at most, besides the one opened.
+    std::array<Node, 2 * 64> nodes;
+    std::size_t pending = 0;
+    nodes[pending++] = root();
+    while (pending > 0) {
+        const Node node = nodes[--pending];
+        if (!segment.may_meet(box(node))) continue;
         if (node.level == 0) {
             for (std::size_t i = leaf_first(node); i < leaf_last(node); ++i)
-                if (boxes_[i].may_meet_segment(a, b, pad_) && !visit(order_[i])) return;
+                if (segment.may_meet(boxes_[i]) && !visit(order_[i])) return;
         } else {
-            for (std::size_t i = 0; i < child_count(node); ++i) nodes.push_back(child(node, i));
+            for (std::size_t i = 0; i < child_count(node); ++i) nodes[pending++] = child(node, i);
         }
     }
 }

@@ -48,6 +48,28 @@ inline bool filter_decides(double det, double relative, double scale) {
     return std::fabs(det) > relative + underflow_cover * scale;
 }
 
+// Whether x y - z w is zero by its factors alone: each product has a factor
+// that is exactly zero. The factors are rounded differences, and a
+// difference of finite doubles rounds to zero only when it is zero (the
+// operands are equal), so this is exact, and as cheap as the filter. Points
+// on a common axis-aligned plane (or, in a plane, line) make a determinant
+// zero this way: faces of parts resting on each other in CAD and voxel
+// assemblies, where the filter always declines (docs/exact-predicates.md).
+inline bool zero_by_factors(double x, double y, double z, double w) {
+    return (x == 0.0 || y == 0.0) && (z == 0.0 || w == 0.0);
+}
+
+// Whether det[u, v, w] = sum over k of (u x v)_k w_k is zero by its factors:
+// each w_k is zero, or the component (u x v)_k is by its factors.
+inline bool determinant_zero_by_factors(const Eigen::Vector3d& u, const Eigen::Vector3d& v,
+                                        const Eigen::Vector3d& w) {
+    for (int k = 0; k < 3; ++k) {
+        const int i = (k + 1) % 3, j = (k + 2) % 3;
+        if (!(w[k] == 0.0 || zero_by_factors(u[i], v[j], u[j], v[i]))) return false;
+    }
+    return true;
+}
+
 // A value held exactly as hi + lo with |lo| <= ulp(hi) / 2.
 struct TwoTerm {
     double hi;
@@ -330,6 +352,7 @@ int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
     // NaN or infinity anywhere (overflow) makes the comparison false.
     if (filter_decides(det, orient3d_relative_bound * permanent, aux + auy + auz + 1.0))
         return det > 0.0 ? 1 : -1;
+    if (determinant_zero_by_factors({ux, uy, uz}, {vx, vy, vz}, {wx, wy, wz})) return 0;
     return orient3d_exact(a, b, c, d);
 }
 
@@ -354,15 +377,19 @@ int PlaneSide::of(const Eigen::Vector3d& d) const {
     // NaN or infinity anywhere (overflow) makes the comparison false.
     if (filter_decides(det, orient3d_relative_bound * permanent, awx + awy + awz + 1.0))
         return det > 0.0 ? 1 : -1;
+    // The normal's factors found again rather than kept for every plane:
+    // most planes never get here.
+    if (determinant_zero_by_factors(b_ - a_, c_ - a_, {wx, wy, wz})) return 0;
     return orient3d_exact(a_, b_, c_, d);
 }
 
 int orient2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-    const double ux_vy = (b[0] - a[0]) * (c[1] - a[1]);
-    const double uy_vx = (b[1] - a[1]) * (c[0] - a[0]);
+    const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    const double ux_vy = ux * vy, uy_vx = uy * vx;
     const double det = ux_vy - uy_vx;
     if (filter_decides(det, orient2d_relative_bound * (std::fabs(ux_vy) + std::fabs(uy_vx)), 1.0))
         return det > 0.0 ? 1 : -1;
+    if (zero_by_factors(ux, vy, uy, vx)) return 0;
     return orient2d_exact(a, b, c);
 }
 

@@ -50,13 +50,24 @@ const Eigen::Vector3d kProbeDirections[] = {
     {0.4353, 0.5209, 0.7342}, {-0.6016, 0.3187, 0.7326}, {0.2679, -0.8535, 0.4472}};
 // Vertices of a shell tried as probes before its nesting is left unknown.
 constexpr std::size_t kProbeVertices = 4;
+// Shells, and triangles, probed by one task.
+constexpr std::size_t kShellsPerTask = 64;
+constexpr std::size_t kTrianglesPerTask = 256;
+
+// Joins the windings of two probes of one shell: an unknown one says
+// nothing, two that differ are mixed. In any order, the same join.
+int join_windings(int first, int second) {
+    if (first == kUnknownWinding) return second;
+    if (second == kUnknownWinding) return first;
+    return first == second ? first : kMixedWinding;
+}
 
 }  // namespace
 
 template <class Scalar, class Index>
 std::pmr::vector<int> count_windings(
     const IndexedSurface<Scalar, Index>& surface, const Shells& shells,
-    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell,
+    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell, TaskRunner& tasks,
     std::pmr::memory_resource* memory) {
     const auto shell_of = [&](std::size_t t) { return shells.of_face[surface.face(t)]; };
     // The probes' far ends lie outside every box.
@@ -150,13 +161,17 @@ std::pmr::vector<int> count_windings(
         }
         return winding;
     };
-    for (std::uint32_t shell = 0; shell < shells.count; ++shell) {
-        int& winding = winding_of_shell[shell];
-        for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
-            const Eigen::Vector3d p = surface.triangle(probes[shell][k])[0];
-            winding = probe({p, p, p, false}, shell);
+    // Each task probes its own shells, and below its own triangles.
+    tasks.run((shells.count + kShellsPerTask - 1) / kShellsPerTask, [&](std::size_t task) {
+        const std::size_t end = std::min<std::size_t>(shells.count, (task + 1) * kShellsPerTask);
+        for (std::uint32_t shell = std::uint32_t(task * kShellsPerTask); shell < end; ++shell) {
+            int& winding = winding_of_shell[shell];
+            for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
+                const Eigen::Vector3d p = surface.triangle(probes[shell][k])[0];
+                winding = probe({p, p, p, false}, shell);
+            }
         }
-    }
+    });
     // Where a shell touches another, the rest of the surface may wind around
     // its pieces differently: a surface passing through another's face
     // exactly along its own edges crosses no face, yet lies partly inside
@@ -167,25 +182,33 @@ std::pmr::vector<int> count_windings(
     // leaves the winding alike on both sides; a face lying flush on part of
     // it cuts its inside into pieces, which these probes reach unless flush
     // faces cover every corner); a shell whose probes disagree bounds some
-    // region twice (or less than once), whatever its sense.
-    for (std::uint32_t t = 0; t < surface.size(); ++t) {
-        if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
-        const std::uint32_t shell = shell_of(t);
-        int& winding = winding_of_shell[shell];
-        for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
-            const Triangle corners = surface.triangle(t, k);
-            const int here = probe({corners[0], corners[1], corners[2], true}, shell);
-            if (here != kUnknownWinding)
-                winding = winding == kUnknownWinding || winding == here ? here : kMixedWinding;
+    // region twice (or less than once), whatever its sense. Each triangle's
+    // probes are joined apart, then into its shell's, in triangle order.
+    std::pmr::vector<int> winding_inside(surface.size(), kUnknownWinding, memory);
+    tasks.run((surface.size() + kTrianglesPerTask - 1) / kTrianglesPerTask, [&](std::size_t task) {
+        const std::size_t end = std::min(surface.size(), (task + 1) * kTrianglesPerTask);
+        for (std::uint32_t t = std::uint32_t(task * kTrianglesPerTask); t < end; ++t) {
+            if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
+            int& winding = winding_inside[t];
+            for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
+                const Triangle corners = surface.triangle(t, k);
+                winding = join_windings(
+                    winding, probe({corners[0], corners[1], corners[2], true}, shell_of(t)));
+            }
         }
+    });
+    for (std::uint32_t t = 0; t < surface.size(); ++t) {
+        int& winding = winding_of_shell[shell_of(t)];
+        winding = join_windings(winding, winding_inside[t]);
     }
     return winding_of_shell;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                       \
-    template std::pmr::vector<int> count_windings<Scalar, Index>( \
-        const IndexedSurface<Scalar, Index>&, const Shells&,      \
-        const std::pmr::vector<std::atomic<std::uint8_t>>&, std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                              \
+    template std::pmr::vector<int> count_windings<Scalar, Index>(        \
+        const IndexedSurface<Scalar, Index>&, const Shells&,             \
+        const std::pmr::vector<std::atomic<std::uint8_t>>&, TaskRunner&, \
+        std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

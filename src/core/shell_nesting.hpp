@@ -21,6 +21,7 @@
 
 #include "indexed_surface.hpp"
 #include "shells.hpp"
+#include "task_runner.hpp"
 
 namespace polymass::core {
 
@@ -35,11 +36,12 @@ inline constexpr int kMixedWinding = INT_MAX;
 // (kUnknownWinding where it could not be counted, kMixedWinding where it
 // differs between points). The surface must have at least two shells, none
 // crossing another; touches_other_shell is per shape (its lowest copy), as
-// find_contacts marks it (surface_contacts.hpp).
+// find_contacts marks it (surface_contacts.hpp). The probes run as tasks of
+// `tasks`; the result is the same for every runner.
 template <class Scalar, class Index>
 std::pmr::vector<int> count_windings(
     const IndexedSurface<Scalar, Index>& surface, const Shells& shells,
-    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell,
+    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell, TaskRunner& tasks,
     std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

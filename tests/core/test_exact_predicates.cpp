@@ -394,6 +394,30 @@ void coarse_grids(std::mt19937_64& random) {
     report("orient3d and orient2d on coarse grids, 2^-300 to 2^250", counts);
 }
 
+// Points sharing coordinates, as the corners of parts resting on each other
+// in a CAD or voxel assembly do (a far offset, the steps not on a coarse
+// grid): determinants zero because factors are, and near them, one
+// coordinate moved by an ulp, determinants that are not.
+void shared_coordinates(std::mt19937_64& random) {
+    std::uniform_int_distribution<int> pick(0, 2), ulps(-1, 1);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Counts counts;
+    for (const double offset : {0.0, 1e6, 1e15}) {
+        // Three values per axis, one of them irrational-looking.
+        std::array<std::array<double, 3>, 3> values;
+        for (auto& axis : values) axis = {offset, offset + 1.0, offset + 0.3 + 0.1 * unit(random)};
+        for (int n = 0; n < 400; ++n) {
+            std::array<Vector3d, 4> p;
+            for (Vector3d& x : p)
+                for (int i = 0; i < 3; ++i) x[i] = values[i][pick(random)];
+            if (n % 2) p[3] = nudge(p[3], pick(random), ulps(random));
+            check_orient3d(p[0], p[1], p[2], p[3], counts);
+            check_orient2d(p[0].head<2>(), p[1].head<2>(), p[3].head<2>(), counts);
+        }
+    }
+    report("orient3d and orient2d on shared coordinates, offsets to 1e15", counts);
+}
+
 }  // namespace
 
 int main() {
@@ -406,5 +430,6 @@ int main() {
     orient2d_cases(random);
     random_small_integers(random);
     coarse_grids(random);
+    shared_coordinates(random);
     return polymass_test::finish("test_exact_predicates");
 }

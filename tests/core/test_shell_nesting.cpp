@@ -3,7 +3,8 @@
 // parts apart or resting on each other, one around a cavity or a solid
 // inside a solid, the sum of the enclosing shells' around a part in a
 // hollow, and mixed for a shell that passes through another's face along its
-// own edges (half inside, half out). Each case also far from the origin.
+// own edges (half inside, half out). Each case also far from the origin, and
+// with the probes' tasks run in reverse order.
 #include "core/shell_nesting.hpp"
 
 #include "check.hpp"
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "core/surface_contacts.hpp"
+#include "reversed_task_runner.hpp"
 
 namespace {
 
@@ -68,8 +70,12 @@ std::vector<int> windings_of(TestMesh mesh, const Eigen::Vector3d& offset) {
     const polymass::core::SurfaceContacts contacts =
         polymass::core::find_contacts(surface, &shells, serial, memory);
     CHECK(contacts.crossing.count == 0);
-    const std::pmr::vector<int> windings =
-        polymass::core::count_windings(surface, shells, contacts.touches_other_shell, memory);
+    const std::pmr::vector<int> windings = polymass::core::count_windings(
+        surface, shells, contacts.touches_other_shell, serial, memory);
+    // Tasks finishing in any order give the same windings.
+    polymass_test::ReversedTaskRunner reversed;
+    CHECK(polymass::core::count_windings(surface, shells, contacts.touches_other_shell, reversed,
+                                         memory) == windings);
     return std::vector<int>(windings.begin(), windings.end());
 }
 
@@ -121,5 +127,21 @@ int main() {
     add_box(through, {0, 0, 0}, {1, 1, 1}, false);
     add_double_pyramid(through);
     expect("a double pyramid through a cube's face along its edges", through, {0, kMixedWinding});
+
+    // Enough shells and triangles for the probes to run as several tasks,
+    // the mixed shell in the last: a layer of cubes resting side by side.
+    TestMesh layer;
+    const int rows = 8, columns = 9;
+    for (int k = 0; k < rows * columns; ++k) {
+        const Eigen::Vector3d corner(k % columns, k / columns, 0);
+        add_box(layer, corner, corner + Eigen::Vector3d(1, 1, 1), false);
+    }
+    add_box(layer, {-2, 0, 0}, {-1, 1, 1}, false);
+    add_double_pyramid(layer);  // through the last cube's top face (moved below)
+    for (std::size_t v = layer.vertex_count() - 6; v < layer.vertex_count(); ++v)
+        layer.coordinates[3 * v] -= 2;
+    std::vector<int> windings(rows * columns + 1, 0);
+    windings.push_back(kMixedWinding);
+    expect("a layer of cubes, and a double pyramid through a cube beside it", layer, windings);
     return polymass_test::finish("test_shell_nesting");
 }
