@@ -1144,7 +1144,7 @@ static const char* const mutation_names[] = {"intact", "vertex split", "some fac
                                              "all faces flipped", "some faces removed"};
 
 /* Edge counts of a surface, computed here by brute force, as
-   polymass_mesh_check defines them (welded: vertices at equal positions are
+   polymass_diagnostics defines them (welded: vertices at equal positions are
    one). */
 typedef struct topology_counts {
     uint64_t used_vertices, edges, open, non_manifold, misoriented;
@@ -1212,8 +1212,9 @@ static topology_counts count_topology(const pm_mesh* m, int weld) {
 
 /* The expected status of polymass_mesh_create (and compute) with the flags,
    or -1 where the contract leaves it open (a hole or a flipped face with the
-   topology checks skipped: the integrals of a non-closed surface), and of
-   polymass_mesh_check (topology always checked). */
+   topology checks skipped: the integrals of a non-closed surface).
+   expected_check_status is the diagnostics' status of a mesh made with the
+   topology checked. */
 static int32_t expected_create_status(mutation mu, uint32_t flags) {
     const int skip = (flags & POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS) != 0;
     switch (mu) {
@@ -1342,7 +1343,7 @@ static void expect_count_at(const char* file, int line, const char* field, uint6
         char what[200];
         snprintf(what, sizeof what, "%s is %llu, expected %llu", field, (unsigned long long)got,
                  (unsigned long long)expected);
-        fail_trial_at(file, line, "polymass_mesh_check", what);
+        fail_trial_at(file, line, "polymass_mesh_diagnostics", what);
     }
 }
 #define EXPECT_COUNT(field, expected, got) \

@@ -615,7 +615,9 @@ typedef struct polymass_batch_item {
 /* Many triangle meshes packed into shared arrays, as datasets keep them:
    mesh i is vertices [vertex_offsets[i], vertex_offsets[i + 1]) of
    `positions` and indices [index_offsets[i], index_offsets[i + 1]) of
-   `indices`, three per triangle. Nothing is copied. Since 2.0. */
+   `indices`, three per triangle. The arrays are read in place (global
+   indices are rebased one mesh at a time, in the context's scratch memory).
+   Since 2.0. */
 typedef struct polymass_packed_meshes {
     uint32_t struct_size;   /* sizeof(polymass_packed_meshes) */
     uint32_t position_type; /* POLYMASS_POSITION_* */
@@ -904,8 +906,8 @@ POLYMASS_API int32_t polymass_mesh_provenance(polymass_provenance* out_provenanc
 
 /* The moments (unit density) of the body that answered. Cheap: no pass over
    the faces. Since 2.0.
-   Returns POLYMASS_OK, or the mesh's status (with its message) when no mode
-   answered. */
+   Returns POLYMASS_OK, POLYMASS_ERROR_OVERFLOW (a moment beyond a double),
+   or the mesh's status (with its message) when no mode answered. */
 POLYMASS_API int32_t polymass_mesh_moments(polymass_moments* out_moments, polymass_context* context,
                                            const polymass_mesh* mesh);
 
@@ -956,8 +958,10 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
    prepare. Context: one thread at a time. Since 2.0.
    Returns POLYMASS_OK once every mesh has its status, or what kept the set
    from running (POLYMASS_ERROR_INVALID_ARGUMENT: offsets that do not ascend
-   from 0, a count of indices not a multiple of 3, an index_base unknown),
-   with the context's message. */
+   from 0, a count of indices not a multiple of 3, an unknown type, index
+   base or mass mode, a stride or NULL array the set cannot have, a reserved
+   field not 0, more than 2^32 vertices with global indices), with the
+   context's message. */
 POLYMASS_API int32_t polymass_packed_compute(const polymass_packed_results* results,
                                              uint64_t* out_failed, polymass_context* context,
                                              const polymass_packed_meshes* meshes,
