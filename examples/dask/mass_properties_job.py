@@ -2,31 +2,40 @@
 
     python examples/dask/mass_properties_job.py ROOT OUT [--scheduler ADDRESS | --workers N]
                                                  [--density D] [--batch-files K] [--serial]
+                                                 [--skip-intersection-check]
 
 Finds the binary/ASCII STL and OBJ files under ROOT, leaves out those OUT already has
 a row for (so a run that was stopped, or a new day's files, only computes what is
 missing), cuts the rest into batches of files, and computes each batch on a worker
-with the polymass Python binding. Every file gives one row - path, status ("ok" or
-"failed"), category, message, and for a valid solid its volume, mass, centre of mass,
-inertia and surface area - written as one Parquet file per batch under OUT. A file
-that cannot be read or is not a valid solid is a row with its category (the tool's:
-"unreadable", "open", "non_manifold", "index_out_of_range", "non_finite", ...), never
-an exception that stops the job.
+with the polymass Python binding: the batch's triangle meshes (every STL, an OBJ
+of triangles) in one packed call, ``polymass.packed_mass_properties``, the others
+(an OBJ with polygon faces) one at a time by ``polymass.mass_properties``. Every
+file gives one row - path, status ("ok" or "failed"), category, message, and for a
+valid solid its volume, mass, centre of mass, inertia and surface area - written as
+one Parquet file per batch under OUT; a mesh's row is the same bits by either call.
+A file that cannot be read or is not a valid solid is a row with its category (the
+tool's: "unreadable", "open", "non_manifold", "index_out_of_range", "non_finite",
+...), never an exception that stops the job.
 
 The meshes are read here with numpy alone: a binary STL is one ``np.frombuffer`` with
 a structured dtype, ASCII STL and OBJ are a few lines of text parsing. A dataset job
 keeps its workers' dependencies to what it uses (numpy and polymass), and reading in
 the worker's own process costs nothing beyond the bytes, where starting the
 ``polymass`` tool per file would cost a process each. Lengths are the files' own;
-give --density in matching units.
+give --density in matching units. Every check is on unless
+--skip-intersection-check, for files known not to hold overlapping parts, skips the
+one that refuses them (most of the time of a small mesh; its rows then carry the
+warning "intersections_unchecked").
 
 Without --scheduler, a distributed.LocalCluster of --workers processes runs the job;
---serial runs it in this process (for comparison, or for debugging).
+--serial runs it in this process (for comparison, or for debugging). Its speed:
+bench_mass_properties_job.py beside it.
 """
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import os
 import re
 import sys
@@ -58,7 +67,9 @@ SCHEMA = pa.schema(
         ("inertia", pa.list_(pa.float64(), 9)),  # about the centre of mass, row-major
         ("surface_area", pa.float64()),
         ("warnings", pa.list_(pa.string())),
-        ("seconds", pa.float64()),  # reading and computing this file
+        # Reading this file and computing it: the single call's time, or the file's share
+        # (by triangles) of its batch's packed call.
+        ("seconds", pa.float64()),
     ]
 )
 
@@ -135,46 +146,136 @@ def read_mesh(path: Path) -> tuple[np.ndarray, list | np.ndarray]:
     return (read_stl if path.suffix.lower() == ".stl" else read_obj)(data)
 
 
-def failure(path: str, category: str, message: str, seconds: float) -> dict:
+# STL is a triangle soup and OBJ exporters repeat positions: exactly equal positions
+# are welded into one vertex. Every check is on.
+OPTIONS = polymass.Options(weld=True)
+
+# The packed call reads indices as uint32: a negative index, or one past that, in any
+# mesh would refuse the whole call (naming the face by its place in the batch).
+LARGEST_PACKED_INDEX = np.iinfo(np.uint32).max
+
+
+def failed_row(path: str, error: Exception, seconds: float) -> dict:
+    """A file's failure as its row: the category and the message."""
+    if isinstance(error, (UnreadableError, OSError)):
+        category, message = "unreadable", str(error)
+    elif isinstance(error, polymass.Error):
+        category, message = CATEGORIES.get(type(error), "internal"), error.message
+    else:  # a bug here or below: a row, not a lost batch
+        category, message = "internal", repr(error)
     return {"path": path, "status": "failed", "category": category, "message": message,
             "seconds": seconds}  # fmt: skip
 
 
-def file_row(root: str, relative: str, density: float) -> dict:
-    """One file's row; every failure becomes a row with its category."""
-    start = time.perf_counter()
-    try:
-        vertices, faces = read_mesh(Path(root) / relative)
-        # STL is a triangle soup and OBJ exporters repeat positions: weld exactly equal ones.
-        p = polymass.mass_properties(vertices, faces, density=density, weld=True)
-    except UnreadableError as error:
-        return failure(relative, "unreadable", str(error), time.perf_counter() - start)
-    except OSError as error:
-        return failure(relative, "unreadable", str(error), time.perf_counter() - start)
-    except polymass.Error as error:
-        category = CATEGORIES.get(type(error), "internal")
-        return failure(relative, category, error.message, time.perf_counter() - start)
-    except Exception as error:  # a bug here or below: a row, not a lost batch
-        return failure(relative, "internal", repr(error), time.perf_counter() - start)
+def solid_row(path: str, faces: int, numbers: dict, warnings: int, seconds: float) -> dict:
+    """A valid solid's row: numbers holds volume, mass, center_of_mass, inertia (3x3)
+    and surface_area, from the single call or from a row of the packed one."""
     return {
-        "path": relative,
+        "path": path,
         "status": "ok",
         "category": "ok",
         "message": "",
-        "faces": len(faces),
-        "volume": p.volume,
-        "mass": p.mass,
-        "center_of_mass": [float(c) for c in p.center_of_mass],
-        "inertia": [float(x) for x in np.asarray(p.inertia).ravel()],
-        "surface_area": p.surface_area,
-        "warnings": [w.name.lower() for w in polymass.Warnings if w in p.warnings and w.name],
-        "seconds": time.perf_counter() - start,
+        "faces": faces,
+        "volume": float(numbers["volume"]),
+        "mass": float(numbers["mass"]),
+        "center_of_mass": [float(c) for c in numbers["center_of_mass"]],
+        "inertia": [float(x) for x in np.asarray(numbers["inertia"]).ravel()],
+        "surface_area": float(numbers["surface_area"]),
+        "warnings": [w.name.lower() for w in polymass.Warnings if w & warnings and w.name],
+        "seconds": seconds,
     }
 
 
-def process_batch(root: str, batch: list[str], density: float) -> pa.Table:
-    """The rows of a batch of files (what a worker runs)."""
-    return pa.Table.from_pylist([file_row(root, path, density) for path in batch], SCHEMA)
+QUANTITIES = ("volume", "mass", "center_of_mass", "inertia", "surface_area")
+
+
+def single_row(path: str, vertices, faces, density: float, options, start: float) -> dict:
+    """A mesh's row by the single call, polygon faces taken whole (start: when its
+    reading began)."""
+    try:
+        p = polymass.mass_properties(vertices, faces, density=density, options=options)
+    except Exception as error:
+        return failed_row(path, error, time.perf_counter() - start)
+    numbers = {name: getattr(p, name) for name in QUANTITIES}
+    return solid_row(path, len(faces), numbers, p.warnings, time.perf_counter() - start)
+
+
+def packable(faces: list | np.ndarray) -> np.ndarray | None:
+    """The faces as an (f, 3) index array when the packed call takes them, else None.
+
+    It takes triangles only. A polygon face goes to the single call, which takes it
+    whole: a fan of triangles over a non-convex face could overlap itself (its area
+    counted twice, its triangles touching or crossing, which the intersection check
+    flags or refuses). An index the packed call cannot read (see LARGEST_PACKED_INDEX)
+    goes there too, so that its error is this file's alone."""
+    if not isinstance(faces, np.ndarray) and any(len(face) != 3 for face in faces):
+        return None
+    try:
+        triangles = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    except OverflowError:  # an index past 64 bits
+        return None
+    if triangles.size and not 0 <= triangles.min() <= triangles.max() <= LARGEST_PACKED_INDEX:
+        return None
+    return triangles
+
+
+def packed_rows(meshes: list, density: float, options) -> list[dict]:
+    """The rows of (path, vertices, triangles, seconds reading) meshes, by one packed
+    call; each file's seconds are its reading and its share, by triangles, of the
+    call."""
+    vertex_counts = [len(vertices) for _, vertices, _, _ in meshes]
+    face_counts = [len(triangles) for _, _, triangles, _ in meshes]
+    start = time.perf_counter()
+    try:
+        result = polymass.packed_mass_properties(
+            np.concatenate([vertices for _, vertices, _, _ in meshes]),
+            np.concatenate([triangles for _, _, triangles, _ in meshes]),
+            np.cumsum([0, *vertex_counts]),
+            np.cumsum([0, *face_counts]),
+            density=density,
+            options=options,
+        )
+    except Exception as error:  # the call as a whole refused: every file of it says why
+        seconds = time.perf_counter() - start
+        return [
+            failed_row(path, error, read + seconds / len(meshes)) for path, _, _, read in meshes
+        ]
+    seconds_per_face = (time.perf_counter() - start) / max(sum(face_counts), 1)
+    rows = []
+    for i, (path, _, triangles, read) in enumerate(meshes):
+        seconds = read + seconds_per_face * len(triangles)
+        error = result.error(i)
+        if error is not None:
+            rows.append(failed_row(path, error, seconds))
+            continue
+        numbers = {name: getattr(result, name)[i] for name in QUANTITIES}
+        rows.append(solid_row(path, len(triangles), numbers, int(result.warnings[i]), seconds))
+    return rows
+
+
+def process_batch(
+    root: str, batch: list[str], density: float, options=OPTIONS, packed: bool = True
+) -> pa.Table:
+    """The rows of a batch of files (what a worker runs), in the batch's order: the
+    triangle meshes by one packed call, the others one at a time (every file one at
+    a time when not packed: the path before the packed call, for comparison)."""
+    rows: dict[str, dict] = {}
+    meshes = []  # (path, vertices, triangles, seconds reading) for the packed call
+    for path in batch:
+        start = time.perf_counter()
+        try:
+            vertices, faces = read_mesh(Path(root) / path)
+        except Exception as error:
+            rows[path] = failed_row(path, error, time.perf_counter() - start)
+            continue
+        triangles = packable(faces) if packed else None
+        if triangles is None:
+            rows[path] = single_row(path, vertices, faces, density, options, start)
+        else:
+            meshes.append((path, vertices, triangles, time.perf_counter() - start))
+    if meshes:
+        rows.update((row["path"], row) for row in packed_rows(meshes, density, options))
+    return pa.Table.from_pylist([rows[path] for path in batch], SCHEMA)
 
 
 def discover(root: Path) -> Iterator[str]:
@@ -222,6 +323,7 @@ def run(
     density: float = 1.0,
     batch_files: int = 64,
     batch_bytes: int = 64 << 20,
+    options: polymass.Options = OPTIONS,
 ) -> dict:
     """Computes what OUT lacks; returns counts: files found, skipped, computed, batches."""
     out.mkdir(parents=True, exist_ok=True)
@@ -231,11 +333,13 @@ def run(
     work = batches(todo, root, batch_files, batch_bytes)
     if client is None:
         for batch in work:
-            write_part(out, process_batch(str(root), batch, density))
+            write_part(out, process_batch(str(root), batch, density, options))
     else:
         from distributed import as_completed
 
-        futures = client.map(process_batch, [str(root)] * len(work), work, [density] * len(work))
+        futures = client.map(
+            process_batch, [str(root)] * len(work), work, density=density, options=options
+        )
         for future in as_completed(futures):
             write_part(out, future.result())
             future.release()
@@ -252,11 +356,29 @@ def main() -> int:
     parser.add_argument("--serial", action="store_true", help="no Dask: this process only")
     parser.add_argument("--density", type=float, default=1.0, help="in the files' units")
     parser.add_argument("--batch-files", type=int, default=64, help="files per task at most")
+    parser.add_argument(
+        "--skip-intersection-check",
+        action="store_true",
+        help="for files known to hold no overlapping parts: their rows warn it was skipped",
+    )
     arguments = parser.parse_args()
+    options = dataclasses.replace(
+        OPTIONS, skip_intersection_check=arguments.skip_intersection_check
+    )
+
+    def run_with(client) -> dict:
+        return run(
+            arguments.root,
+            arguments.out,
+            client,
+            arguments.density,
+            arguments.batch_files,
+            options=options,
+        )
 
     start = time.perf_counter()
     if arguments.serial:
-        counts = run(arguments.root, arguments.out, None, arguments.density, arguments.batch_files)
+        counts = run_with(None)
     else:
         from distributed import Client, LocalCluster
 
@@ -266,9 +388,7 @@ def main() -> int:
             cluster = LocalCluster(n_workers=arguments.workers, threads_per_worker=1)
             client = Client(cluster)
         with client:
-            counts = run(
-                arguments.root, arguments.out, client, arguments.density, arguments.batch_files
-            )
+            counts = run_with(client)
     seconds = time.perf_counter() - start
     rate = counts["computed"] / seconds if seconds > 0 else 0.0
     print(

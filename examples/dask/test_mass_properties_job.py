@@ -1,6 +1,6 @@
 """The Dask job on a distributed.LocalCluster over a generated corpus: a row per file,
-the right category for each broken one, exact volumes for the good ones, and a second
-run that computes only what is new.
+the right category for each broken one, exact volumes for the good ones, a second
+run that computes only what is new, and the packed call's rows the single calls'.
 
     pytest examples/dask   (with dask[distributed], pyarrow and polymass installed)
 """
@@ -171,3 +171,50 @@ def test_serial_run_gives_the_same_rows(tmp_path, client):
         return sorted(rows, key=lambda row: row["path"])
 
     assert table(tmp_path / "dask") == table(tmp_path / "serial")
+
+
+# An L-shaped prism, volume 3 and area 14, whose two caps are single non-convex
+# hexagons: a fan of triangles from the first corner of each would leave the L and
+# overlap itself (area 16, and faces that touch).
+L_PRISM = obj(
+    [(x, y, z) for z in (0, 1) for x, y in [(2, 1), (1, 1), (1, 2), (0, 2), (0, 0), (2, 0)]],
+    [[5, 4, 3, 2, 1, 0], [6, 7, 8, 9, 10, 11]]
+    + [[k, (k + 1) % 6, (k + 1) % 6 + 6, k + 6] for k in range(6)],
+)
+
+
+def test_packed_rows_are_the_single_calls(tmp_path):
+    root = tmp_path / "corpus"
+    expected = make_corpus(root, 40)  # every STL packed, the OBJs' quads one at a time
+    tetrahedron = [(0, 0, 0), (6, 0, 0), (0, 6, 0), (0, 0, 1)]
+    triangles = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+    negative = obj(tetrahedron, triangles).replace(b"f 2 3 4", b"f 2 3 -9")
+    assert negative != obj(tetrahedron, triangles)
+    files = {
+        "triangles.obj": (obj(tetrahedron, triangles), "ok"),  # packed
+        # Past its own vertices: the packed call's error for this mesh alone.
+        "past.obj": (obj(tetrahedron, triangles[:3] + [[1, 2, 4]]), "index_out_of_range"),
+        # Negative: one at a time (the packed call would refuse the whole batch).
+        "negative.obj": (negative, "index_out_of_range"),
+        "l_prism.obj": (L_PRISM, "ok"),  # polygons: one at a time, not triangulated
+    }
+    for name, (data, category) in files.items():
+        (root / name).write_bytes(data)
+        expected[name] = (category, None)
+    paths = list(job.discover(root))
+
+    def rows(packed):
+        table = job.process_batch(str(root), paths, 2.0, packed=packed)
+        return table.drop_columns(["seconds"]).to_pylist()
+
+    packed, single = rows(True), rows(False)
+    assert packed == single
+    assert [row["path"] for row in packed] == paths
+    assert {row["path"]: row["category"] for row in packed} == {
+        path: category for path, (category, _) in expected.items()
+    }
+    by_path = {row["path"]: row for row in packed}
+    l_prism = by_path["l_prism.obj"]
+    assert (l_prism["faces"], l_prism["volume"], l_prism["mass"]) == (8, 3.0, 6.0)
+    assert (l_prism["surface_area"], l_prism["warnings"]) == (14.0, [])
+    assert by_path["triangles.obj"]["mass"] == 12.0
