@@ -167,6 +167,11 @@ def failed_row(path: str, error: Exception, seconds: float) -> dict:
             "seconds": seconds}  # fmt: skip
 
 
+def warning_names(bits: int) -> list[str]:
+    """The names of the warnings' bits (most rows have none: then no walk of the enum)."""
+    return [w.name.lower() for w in polymass.Warnings if w & bits and w.name] if bits else []
+
+
 def solid_row(path: str, faces: int, numbers: dict, warnings: int, seconds: float) -> dict:
     """A valid solid's row: numbers holds volume, mass, center_of_mass, inertia (3x3)
     and surface_area, from the single call or from a row of the packed one."""
@@ -178,10 +183,10 @@ def solid_row(path: str, faces: int, numbers: dict, warnings: int, seconds: floa
         "faces": faces,
         "volume": float(numbers["volume"]),
         "mass": float(numbers["mass"]),
-        "center_of_mass": [float(c) for c in numbers["center_of_mass"]],
-        "inertia": [float(x) for x in np.asarray(numbers["inertia"]).ravel()],
+        "center_of_mass": np.asarray(numbers["center_of_mass"], dtype=float).tolist(),
+        "inertia": np.asarray(numbers["inertia"], dtype=float).ravel().tolist(),
         "surface_area": float(numbers["surface_area"]),
-        "warnings": [w.name.lower() for w in polymass.Warnings if w & warnings and w.name],
+        "warnings": warning_names(warnings),
         "seconds": seconds,
     }
 
