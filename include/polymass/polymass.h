@@ -316,6 +316,12 @@ typedef struct polymass_options {
 /* polymass_mesh_desc.index_type */
 #define POLYMASS_INDEX_UINT32 0
 #define POLYMASS_INDEX_UINT16 1
+/* polymass_packed_meshes only (a dataset's 64-bit indices, PyTorch's int64
+   read as unsigned): each mesh's indices are narrowed to 32 bits in the
+   context's scratch memory, one mesh at a time; an index that does not fit
+   (a negative int64 included) is that mesh's POLYMASS_ERROR_INDEX_OUT_OF_RANGE.
+   A single mesh's description takes 16 and 32 bits. */
+#define POLYMASS_INDEX_UINT64 2
 
 /* A surface as the caller's own arrays; nothing is copied, and nothing is
    kept once a call returns. */
@@ -615,8 +621,9 @@ typedef struct polymass_batch_item {
 /* Many triangle meshes packed into shared arrays, as datasets keep them:
    mesh i is vertices [vertex_offsets[i], vertex_offsets[i + 1]) of
    `positions` and indices [index_offsets[i], index_offsets[i + 1]) of
-   `indices`, three per triangle. The arrays are read in place (global
-   indices are rebased one mesh at a time, in the context's scratch memory).
+   `indices`, three per triangle. The arrays are read in place (global and
+   64-bit indices are rebased one mesh at a time, in the context's scratch
+   memory).
    Since 2.0. */
 typedef struct polymass_packed_meshes {
     uint32_t struct_size;   /* sizeof(polymass_packed_meshes) */
@@ -960,7 +967,7 @@ POLYMASS_API int32_t polymass_batch_compute(polymass_batch_item* items, uint64_t
    from running (POLYMASS_ERROR_INVALID_ARGUMENT: offsets that do not ascend
    from 0, a count of indices not a multiple of 3, an unknown type, index
    base or mass mode, a stride or NULL array the set cannot have, a reserved
-   field not 0, more than 2^32 vertices with global indices), with the
+   field not 0, more than 2^32 vertices with global or 64-bit indices), with the
    context's message. */
 POLYMASS_API int32_t polymass_packed_compute(const polymass_packed_results* results,
                                              uint64_t* out_failed, polymass_context* context,

@@ -79,10 +79,11 @@ int32_t read_set(polymass_context* context, const polymass_packed_results* resul
                              "meshes->mass_mode %u is not POLYMASS_MASS_FROM_DENSITY (0) or "
                              "POLYMASS_MASS_FROM_TOTAL (1)",
                              unsigned(m.mass_mode));
-    if (m.index_type != POLYMASS_INDEX_UINT32 && m.index_type != POLYMASS_INDEX_UINT16)
+    if (m.index_type != POLYMASS_INDEX_UINT32 && m.index_type != POLYMASS_INDEX_UINT16 &&
+        m.index_type != POLYMASS_INDEX_UINT64)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "meshes->index_type %u is not POLYMASS_INDEX_UINT32 (0) or "
-                             "POLYMASS_INDEX_UINT16 (1)",
+                             "meshes->index_type %u is not POLYMASS_INDEX_UINT32 (0), "
+                             "POLYMASS_INDEX_UINT16 (1) or POLYMASS_INDEX_UINT64 (2)",
                              unsigned(m.index_type));
     if (const int32_t status = read_options(context, options, set.options)) return status;
     // The arrays of offsets (mesh_count + 1 each) must be addressable.
@@ -104,7 +105,9 @@ int32_t read_set(polymass_context* context, const polymass_packed_results* resul
                                               m.position_stride, whole))
         return status;
     set.position_stride = whole.position_stride;
-    set.index_bytes = m.index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    set.index_bytes = m.index_type == POLYMASS_INDEX_UINT16   ? 2
+                      : m.index_type == POLYMASS_INDEX_UINT64 ? 8
+                                                              : 4;
     if (index_count > 0 && !m.indices)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "indices is NULL but index_offsets[%llu] is %llu", u64(m.mesh_count),
@@ -113,11 +116,14 @@ int32_t read_set(polymass_context* context, const polymass_packed_results* resul
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "index_offsets[%llu] %llu is larger than any array can be",
                              u64(m.mesh_count), u64(index_count));
-    // A mesh's first vertex is subtracted from its global indices in 32 bits.
-    if (m.index_base == POLYMASS_INDICES_GLOBAL && vertex_count > (uint64_t{1} << 32))
+    // A mesh's first vertex is subtracted from its global indices, and 64-bit
+    // indices are narrowed, into 32 bits.
+    if ((m.index_base == POLYMASS_INDICES_GLOBAL || m.index_type == POLYMASS_INDEX_UINT64) &&
+        vertex_count > (uint64_t{1} << 32))
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
-                             "POLYMASS_INDICES_GLOBAL over %llu vertices: 32-bit indices name "
-                             "at most 2^32",
+                             "%s over %llu vertices: 32-bit indices name at most 2^32",
+                             m.index_base == POLYMASS_INDICES_GLOBAL ? "POLYMASS_INDICES_GLOBAL"
+                                                                     : "POLYMASS_INDEX_UINT64",
                              u64(vertex_count));
     return POLYMASS_OK;
 }
@@ -149,6 +155,28 @@ void rebase(MeshInput& input, uint32_t first, std::pmr::vector<uint32_t>& local)
     input.index_base = first;
 }
 
+// A mesh's 64-bit indices, less `base`, narrowed into `local` as rebase()
+// does. An index that does not fall in the 32 bits past `base` (one below it,
+// a negative int64 read as unsigned, one of 2^32 or more) lies outside the
+// mesh whatever its vertex count (read_set bounds it by 2^32): the mesh's
+// INDEX_OUT_OF_RANGE, named as written. Smaller indices past the mesh's
+// vertices are left to the analysis, which names the lowest face.
+int32_t narrow(polymass_context* context, const unsigned char* indices, std::size_t count,
+               uint64_t base, uint64_t vertex_count, std::pmr::vector<uint32_t>& local) {
+    local.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        uint64_t index;
+        std::memcpy(&index, indices + i * sizeof index, sizeof index);
+        if (index - base > UINT32_MAX)
+            return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                                 "face %llu refers to vertex %llu, beyond the mesh's %llu "
+                                 "vertices, which start at %llu",
+                                 u64(i / 3), u64(index), u64(vertex_count), u64(base));
+        local[i] = uint32_t(index - base);
+    }
+    return POLYMASS_OK;
+}
+
 // Mesh i of the set, answered as polymass_mass_properties_compute answers a
 // mesh given alone (its surface read from a polymass_mesh_desc of its part of
 // the arrays); the status, with the message in the context.
@@ -169,10 +197,21 @@ int32_t compute_mesh(const PackedSet& set, uint64_t i, polymass_context* context
     desc.index_type = m.index_type;
     desc.indices = part(m.indices, first_index, set.index_bytes);
     desc.index_count = m.index_offsets[i + 1] - first_index;
+    std::pmr::vector<uint32_t> rebased(&context->memory);
+    const uint64_t base = m.index_base == POLYMASS_INDICES_GLOBAL ? first_vertex : 0;
+    if (m.index_type == POLYMASS_INDEX_UINT64) {  // read as the 32-bit indices it narrows to
+        if (const int32_t status = narrow(context, static_cast<const unsigned char*>(desc.indices),
+                                          desc.index_count, base, desc.vertex_count, rebased))
+            return status;
+        desc.index_type = POLYMASS_INDEX_UINT32;
+        desc.indices = rebased.data();
+    }
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, &desc, input)) return status;
-    std::pmr::vector<uint32_t> rebased(&context->memory);
-    if (m.index_base == POLYMASS_INDICES_GLOBAL) rebase(input, uint32_t(first_vertex), rebased);
+    if (m.index_type == POLYMASS_INDEX_UINT64)
+        input.index_base = uint32_t(base);  // messages name the indices as written
+    else if (m.index_base == POLYMASS_INDICES_GLOBAL)
+        rebase(input, uint32_t(first_vertex), rebased);
     Answer answer;
     if (const int32_t status = analyse_surface(context, input, set.options, answer, nullptr))
         return status;

@@ -79,7 +79,14 @@ typedef struct packed_set {
 static void pack(packed_set* set, const pm_mesh meshes[MESHES], uint32_t position_type,
                  uint32_t index_type, uint32_t index_base) {
     const size_t coordinate = position_type == POLYMASS_POSITION_FLOAT32 ? 4 : 8;
-    const size_t index_bytes = index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    const size_t index_bytes = index_type == POLYMASS_INDEX_UINT16   ? 2
+                               : index_type == POLYMASS_INDEX_UINT64 ? 8
+                                                                     : 4;
+    /* A single mesh's description takes 16 or 32 bits: 64-bit sets are
+       compared with 32-bit single calls. */
+    const uint32_t single_type =
+        index_type == POLYMASS_INDEX_UINT64 ? POLYMASS_INDEX_UINT32 : index_type;
+    const size_t single_bytes = single_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
     size_t vertices = 0, indices = 0, v, k;
     int i;
     for (i = 0; i < MESHES; ++i) {
@@ -89,7 +96,7 @@ static void pack(packed_set* set, const pm_mesh meshes[MESHES], uint32_t positio
     set->vertex_offsets[MESHES] = vertices, set->index_offsets[MESHES] = indices;
     set->positions = malloc(3 * coordinate * vertices);
     set->indices = malloc(index_bytes * indices);
-    set->local_indices = malloc(index_bytes * indices);
+    set->local_indices = malloc(single_bytes * indices);
     assert_non_null(set->positions);
     assert_non_null(set->indices);
     assert_non_null(set->local_indices);
@@ -110,6 +117,9 @@ static void pack(packed_set* set, const pm_mesh meshes[MESHES], uint32_t positio
             if (index_type == POLYMASS_INDEX_UINT16) {
                 ((uint16_t*)set->indices)[first_index + k] = (uint16_t)(base + local);
                 ((uint16_t*)set->local_indices)[first_index + k] = (uint16_t)local;
+            } else if (index_type == POLYMASS_INDEX_UINT64) {
+                ((uint64_t*)set->indices)[first_index + k] = (uint64_t)(base + local);
+                ((uint32_t*)set->local_indices)[first_index + k] = local;
             } else {
                 ((uint32_t*)set->indices)[first_index + k] = (uint32_t)(base + local);
                 ((uint32_t*)set->local_indices)[first_index + k] = local;
@@ -119,8 +129,8 @@ static void pack(packed_set* set, const pm_mesh meshes[MESHES], uint32_t positio
         set->descs[i].position_type = position_type;
         set->descs[i].positions = (unsigned char*)set->positions + 3 * coordinate * first_vertex;
         set->descs[i].vertex_count = meshes[i].vertex_count;
-        set->descs[i].index_type = index_type;
-        set->descs[i].indices = (unsigned char*)set->local_indices + index_bytes * first_index;
+        set->descs[i].index_type = single_type;
+        set->descs[i].indices = (unsigned char*)set->local_indices + single_bytes * first_index;
         set->descs[i].index_count = meshes[i].index_count;
     }
     assert_int_equal(polymass_packed_meshes_init(&set->meshes, sizeof set->meshes), POLYMASS_OK);
@@ -191,7 +201,8 @@ static void assert_row_is_single_call(const packed_rows* rows, int i, polymass_c
 
 static void test_packed_matches_single_calls(void** state) {
     static const uint32_t position_types[] = {POLYMASS_POSITION_FLOAT64, POLYMASS_POSITION_FLOAT32};
-    static const uint32_t index_types[] = {POLYMASS_INDEX_UINT32, POLYMASS_INDEX_UINT16};
+    static const uint32_t index_types[] = {POLYMASS_INDEX_UINT32, POLYMASS_INDEX_UINT16,
+                                           POLYMASS_INDEX_UINT64};
     static const uint32_t index_bases[] = {POLYMASS_INDICES_LOCAL, POLYMASS_INDICES_GLOBAL};
     static const uint32_t thread_counts[] = {1, 3};
     polymass_context* packed = pm_context_new();
@@ -203,7 +214,7 @@ static void test_packed_matches_single_calls(void** state) {
     make_meshes(meshes);
     for (i = 0; i < MESHES; ++i) densities[i] = 0.5 + 0.375 * i;
     for (p = 0; p < 2; ++p)
-        for (x = 0; x < 2; ++x)
+        for (x = 0; x < 3; ++x)
             for (b = 0; b < 2; ++b) {
                 packed_set set;
                 pack(&set, meshes, position_types[p], index_types[x], index_bases[b]);
@@ -319,6 +330,49 @@ static void test_packed_failures_are_the_meshes_own(void** state) {
         polymass_mass_desc mass = pm_mass_density(densities[i]);
         if (i == 2 || i == 3 || i == 5 || i == 6) continue; /* nothing single to compare */
         assert_row_is_single_call(&rows, i, ctx, &set.descs[i], NULL, &mass);
+    }
+    pack_free(&set);
+    for (i = 0; i < MESHES; ++i) pm_mesh_free(&meshes[i]);
+    polymass_context_destroy(ctx);
+}
+
+/* 64-bit indices that do not fit 32 bits past the mesh's first vertex (a
+   negative int64, one below the first vertex, one of 2^32) fail their own
+   mesh, named as written; the other meshes are answered as single calls. */
+static void test_packed_64_bit_indices_out_of_range(void** state) {
+    polymass_context* ctx = pm_context_new();
+    pm_mesh meshes[MESHES];
+    packed_set set;
+    packed_rows rows;
+    uint64_t failed = 0;
+    uint64_t* global;
+    int i;
+    (void)state;
+    make_meshes(meshes);
+    pack(&set, meshes, POLYMASS_POSITION_FLOAT64, POLYMASS_INDEX_UINT64, POLYMASS_INDICES_GLOBAL);
+    global = set.indices;
+    global[set.index_offsets[1] + 5] = (uint64_t)-1;                         /* int64 -1 */
+    global[set.index_offsets[2] + 4] = set.vertex_offsets[2] - 1;            /* below its first */
+    global[set.index_offsets[3] + 7] = set.vertex_offsets[3] + (1ull << 32); /* 2^32 past it */
+    rows_init(&rows);
+    PM_ASSERT_OK(ctx, polymass_packed_compute(&rows.results, &failed, ctx, &set.meshes, NULL));
+    for (i = 1; i <= 3; ++i) assert_int_equal(rows.status[i], POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+    assert_int_equal(failed, 4); /* and the open mesh */
+    {
+        char expected[POLYMASS_BATCH_MESSAGE_SIZE];
+        snprintf(expected, sizeof expected, "face 1 refers to vertex %llu, beyond the mesh's",
+                 (unsigned long long)UINT64_MAX);
+        assert_non_null(strstr(rows.messages + 1 * POLYMASS_BATCH_MESSAGE_SIZE, expected));
+        snprintf(expected, sizeof expected, "face 1 refers to vertex %llu",
+                 (unsigned long long)set.vertex_offsets[2] - 1);
+        assert_non_null(strstr(rows.messages + 2 * POLYMASS_BATCH_MESSAGE_SIZE, expected));
+        snprintf(expected, sizeof expected, "face 2 refers to vertex %llu",
+                 (unsigned long long)(set.vertex_offsets[3] + (1ull << 32)));
+        assert_non_null(strstr(rows.messages + 3 * POLYMASS_BATCH_MESSAGE_SIZE, expected));
+    }
+    for (i = 0; i < MESHES; ++i) {
+        if (i >= 1 && i <= 3) continue;
+        assert_row_is_single_call(&rows, i, ctx, &set.descs[i], NULL, NULL);
     }
     pack_free(&set);
     for (i = 0; i < MESHES; ++i) pm_mesh_free(&meshes[i]);
@@ -482,6 +536,7 @@ int main(void) {
         cmocka_unit_test(test_packed_matches_single_calls),
         cmocka_unit_test(test_packed_options_apply_to_every_mesh),
         cmocka_unit_test(test_packed_failures_are_the_meshes_own),
+        cmocka_unit_test(test_packed_64_bit_indices_out_of_range),
         cmocka_unit_test(test_packed_columns_may_be_null),
         cmocka_unit_test(test_packed_refuses_bad_sets),
         cmocka_unit_test(test_packed_struct_sizes_and_defaults),

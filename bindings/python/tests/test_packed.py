@@ -189,9 +189,28 @@ def test_arguments_that_describe_no_packed_set():
     descending[2] = descending[3] + 1
     with pytest.raises(polymass.InvalidArgumentError, match="ascend"):
         call(vertices, faces, descending, face_offsets)
-    with pytest.raises(polymass.IndexOutOfRangeError, match="face 0"):
-        call(vertices, -faces, vertex_offsets, face_offsets)
-    too_large = faces.copy()
-    too_large[7, 2] = 2**32
-    with pytest.raises(polymass.IndexOutOfRangeError, match="face 7"):
-        call(vertices, too_large, vertex_offsets, face_offsets)
+
+
+def test_64_bit_indices_that_do_not_fit_fail_their_own_mesh():
+    # int64 indices are read in place and narrowed by the library mesh by
+    # mesh: a negative one, or one past 2**32 - 1, is its mesh's error only.
+    vertices, faces, vertex_offsets, face_offsets = _pack(_meshes())
+    assert faces.dtype == np.int64
+    call = polymass.packed_mass_properties
+    whole = call(vertices, faces, vertex_offsets, face_offsets)
+    bad = faces.copy()
+    bad[7, 2] = 2**32
+    last = len(face_offsets) - 2
+    bad[face_offsets[last], 1] = -1
+    rows = call(vertices, bad, vertex_offsets, face_offsets)
+    mesh = int(np.searchsorted(face_offsets, 7, side="right")) - 1
+    assert mesh != last
+    for i in range(len(rows)):
+        if i in (mesh, last):
+            assert isinstance(rows.error(i), polymass.IndexOutOfRangeError)
+            assert np.isnan(rows.volume[i])
+        else:
+            assert rows.status[i] == whole.status[i]
+            assert rows.volume[i] == whole.volume[i] or np.isnan(whole.volume[i])
+    assert f"face {7 - face_offsets[mesh]} refers to vertex {2**32}" in rows.message(mesh)
+    assert f"face 0 refers to vertex {2**64 - 1}" in rows.message(last)

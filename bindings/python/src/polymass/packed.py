@@ -137,28 +137,15 @@ class PackedMassProperties:
         return {int(i): self.error(int(i)) for i in np.flatnonzero(~self.ok)}  # type: ignore[misc]
 
 
-# Converted a chunk at a time, so that the check and the conversion read it
-# from the cache.
-_CHUNK = 1 << 18
-
-
 def _triangle_indices(table: np.ndarray) -> np.ndarray:
     """The (f, 3) triangles as the flat indices the library reads in place:
-    64-bit integers (PyTorch's int64) converted to uint32 in one pass, read as
-    unsigned so that one maximum finds negative indices and indices past
-    2**32 - 1 at once; anything else, or any such index (for its message), as
-    `mass_properties` converts indices."""
+    64-bit integers (PyTorch's int64) as unsigned 64-bit, which the library
+    narrows mesh by mesh (a negative index, or one past 2**32 - 1, is then
+    its own mesh's out-of-range index); anything else as `mass_properties`
+    converts indices."""
     flat = table.reshape(-1)
     if flat.dtype.kind in "iu" and flat.dtype.itemsize == 8 and flat.dtype.isnative:
-        wide = np.ascontiguousarray(flat).view(np.uint64)
-        converted = np.empty(wide.size, dtype=np.uint32)
-        for start in range(0, wide.size, _CHUNK):
-            chunk = wide[start : start + _CHUNK]
-            if int(chunk.max()) > np.iinfo(np.uint32).max:
-                break
-            converted[start : start + _CHUNK] = chunk
-        else:
-            return converted
+        return np.ascontiguousarray(flat).view(np.uint64)
     return _as_indices(flat, lambda position: position // 3)
 
 
@@ -219,9 +206,10 @@ def packed_mass_properties(
         after another. Read in place as `mass_properties` reads it (any row
         stride; other layouts are copied).
     faces: (f, 3) integer array: every mesh's triangles, counter-clockwise seen
-        from outside. uint32, uint16 and int32 (checked non-negative) are read
-        in place; other integer types (PyTorch's int64) are checked and
-        converted to uint32 (a copy, made in one pass for 64-bit integers).
+        from outside. uint32, uint16, int32 (checked non-negative) and 64-bit
+        integers (PyTorch's int64: the library narrows them mesh by mesh, and
+        a negative or too large index fails its own mesh) are read in place;
+        other integer types are checked and converted to uint32.
     vertex_offsets, face_offsets: the mesh count + 1 offsets each, ascending
         from 0 to len(vertices) and len(faces): mesh i is
         ``vertices[vertex_offsets[i]:vertex_offsets[i + 1]]`` and
@@ -273,11 +261,10 @@ def packed_mass_properties(
     meshes.position_type = position_type(positions)
     meshes.positions = buffers[0]
     meshes.position_stride = row_stride(positions)
-    meshes.index_type = (
-        _header.POLYMASS_INDEX_UINT16
-        if indices.dtype == np.uint16
-        else _header.POLYMASS_INDEX_UINT32
-    )
+    meshes.index_type = {
+        np.dtype(np.uint16): _header.POLYMASS_INDEX_UINT16,
+        np.dtype(np.uint64): _header.POLYMASS_INDEX_UINT64,
+    }.get(indices.dtype, _header.POLYMASS_INDEX_UINT32)
     meshes.index_base = (
         _header.POLYMASS_INDICES_GLOBAL if global_indices else _header.POLYMASS_INDICES_LOCAL
     )
