@@ -128,53 +128,48 @@ int32_t read_set(polymass_context* context, const polymass_packed_results* resul
     return POLYMASS_OK;
 }
 
+// A mesh's indices counted from `base` (its first vertex for global indices,
+// 0 for local ones) as 32-bit indices, in `local`, which `desc` then reads:
+// the mesh is read as a mesh of its own (nothing of the packed array outside
+// its part), at the cost of one pass over its indices. 16- and 32-bit indices
+// are rebased modulo 2^32: one below `base` wraps past every vertex of the
+// mesh (read_set made base + vertex count at most 2^32), so the analysis
+// finds it out of range, naming the lowest face. A 64-bit index that does
+// not fall in the 32 bits past `base` (one below it, a negative int64 read as
+// unsigned, one of 2^32 or more) cannot be kept: it fails the mesh here,
+// named as written.
 template <class Index>
-void rebase_as(const unsigned char* indices, std::size_t count, uint32_t first, uint32_t* out) {
-    for (std::size_t i = 0; i < count; ++i) {
+int32_t rebase_as(polymass_context* context, polymass_mesh_desc& desc, uint64_t base,
+                  std::pmr::vector<uint32_t>& local) {
+    const auto* indices = static_cast<const unsigned char*>(desc.indices);
+    local.resize(desc.index_count);
+    for (std::size_t i = 0; i < desc.index_count; ++i) {
         Index index;
         std::memcpy(&index, indices + i * sizeof index, sizeof index);
-        out[i] = uint32_t(index) - first;
+        const uint64_t offset = uint64_t(index) - base;
+        if constexpr (sizeof(Index) == sizeof(uint64_t))
+            if (offset > UINT32_MAX)
+                return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                                     "face %llu refers to vertex %llu, beyond the mesh's %llu "
+                                     "vertices, which start at %llu",
+                                     u64(i / 3), u64(index), u64(desc.vertex_count), u64(base));
+        local[i] = uint32_t(offset);
     }
-}
-
-// A mesh's global indices counted from its own first vertex instead, in
-// `local`, which the input then reads: the mesh is then read as a mesh of
-// its own (nothing of the packed array outside its part), at the cost of one
-// pass over its indices. In 32 bits, modulo 2^32: an index below `first`
-// wraps past every vertex of the mesh (read_set made first + vertex count at
-// most 2^32), so it is out of range as it should be; messages add `first`
-// back.
-void rebase(MeshInput& input, uint32_t first, std::pmr::vector<uint32_t>& local) {
-    local.resize(input.index_count);
-    if (input.index_type == POLYMASS_INDEX_UINT16)
-        rebase_as<uint16_t>(input.indices, input.index_count, first, local.data());
-    else
-        rebase_as<uint32_t>(input.indices, input.index_count, first, local.data());
-    input.index_type = POLYMASS_INDEX_UINT32;
-    input.indices = reinterpret_cast<const unsigned char*>(local.data());
-    input.index_base = first;
-}
-
-// A mesh's 64-bit indices, less `base`, narrowed into `local` as rebase()
-// does. An index that does not fall in the 32 bits past `base` (one below it,
-// a negative int64 read as unsigned, one of 2^32 or more) lies outside the
-// mesh whatever its vertex count (read_set bounds it by 2^32): the mesh's
-// INDEX_OUT_OF_RANGE, named as written. Smaller indices past the mesh's
-// vertices are left to the analysis, which names the lowest face.
-int32_t narrow(polymass_context* context, const unsigned char* indices, std::size_t count,
-               uint64_t base, uint64_t vertex_count, std::pmr::vector<uint32_t>& local) {
-    local.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        uint64_t index;
-        std::memcpy(&index, indices + i * sizeof index, sizeof index);
-        if (index - base > UINT32_MAX)
-            return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-                                 "face %llu refers to vertex %llu, beyond the mesh's %llu "
-                                 "vertices, which start at %llu",
-                                 u64(i / 3), u64(index), u64(vertex_count), u64(base));
-        local[i] = uint32_t(index - base);
-    }
+    desc.index_type = POLYMASS_INDEX_UINT32;
+    desc.indices = local.data();
     return POLYMASS_OK;
+}
+
+int32_t rebase(polymass_context* context, polymass_mesh_desc& desc, uint64_t base,
+               std::pmr::vector<uint32_t>& local) {
+    switch (desc.index_type) {
+        case POLYMASS_INDEX_UINT16:
+            return rebase_as<uint16_t>(context, desc, base, local);
+        case POLYMASS_INDEX_UINT64:
+            return rebase_as<uint64_t>(context, desc, base, local);
+        default:
+            return rebase_as<uint32_t>(context, desc, base, local);
+    }
 }
 
 // Mesh i of the set, answered as polymass_mass_properties_compute answers a
@@ -197,21 +192,15 @@ int32_t compute_mesh(const PackedSet& set, uint64_t i, polymass_context* context
     desc.index_type = m.index_type;
     desc.indices = part(m.indices, first_index, set.index_bytes);
     desc.index_count = m.index_offsets[i + 1] - first_index;
+    // Global and 64-bit indices are read as 32-bit ones from the mesh's own
+    // first vertex; the messages add `base` back to name them as written.
     std::pmr::vector<uint32_t> rebased(&context->memory);
     const uint64_t base = m.index_base == POLYMASS_INDICES_GLOBAL ? first_vertex : 0;
-    if (m.index_type == POLYMASS_INDEX_UINT64) {  // read as the 32-bit indices it narrows to
-        if (const int32_t status = narrow(context, static_cast<const unsigned char*>(desc.indices),
-                                          desc.index_count, base, desc.vertex_count, rebased))
-            return status;
-        desc.index_type = POLYMASS_INDEX_UINT32;
-        desc.indices = rebased.data();
-    }
+    if (m.index_base == POLYMASS_INDICES_GLOBAL || m.index_type == POLYMASS_INDEX_UINT64)
+        if (const int32_t status = rebase(context, desc, base, rebased)) return status;
     MeshInput input;
     if (const int32_t status = read_mesh_desc(context, &desc, input)) return status;
-    if (m.index_type == POLYMASS_INDEX_UINT64)
-        input.index_base = uint32_t(base);  // messages name the indices as written
-    else if (m.index_base == POLYMASS_INDICES_GLOBAL)
-        rebase(input, uint32_t(first_vertex), rebased);
+    input.index_base = uint32_t(base);
     Answer answer;
     if (const int32_t status = analyse_surface(context, input, set.options, answer, nullptr))
         return status;
