@@ -336,9 +336,10 @@ static void test_packed_failures_are_the_meshes_own(void** state) {
     polymass_context_destroy(ctx);
 }
 
-/* 64-bit indices that do not fit 32 bits past the mesh's first vertex (a
-   negative int64, one below the first vertex, one of 2^32) fail their own
-   mesh, named as written; the other meshes are answered as single calls. */
+/* 64-bit indices outside the mesh's vertices (a negative int64, one below
+   the first vertex, one 2^32 past it, one past 2^32 but within 32 bits of
+   the first vertex) fail their own mesh, named as written; the other meshes are answered as single
+   calls. */
 static void test_packed_64_bit_indices_out_of_range(void** state) {
     polymass_context* ctx = pm_context_new();
     pm_mesh meshes[MESHES];
@@ -354,10 +355,12 @@ static void test_packed_64_bit_indices_out_of_range(void** state) {
     global[set.index_offsets[1] + 5] = (uint64_t)-1;                         /* int64 -1 */
     global[set.index_offsets[2] + 4] = set.vertex_offsets[2] - 1;            /* below its first */
     global[set.index_offsets[3] + 7] = set.vertex_offsets[3] + (1ull << 32); /* 2^32 past it */
+    global[set.index_offsets[5] + 3] = (1ull << 32) + 5; /* past 2^32, 32 bits from its first */
     rows_init(&rows);
     PM_ASSERT_OK(ctx, polymass_packed_compute(&rows.results, &failed, ctx, &set.meshes, NULL));
-    for (i = 1; i <= 3; ++i) assert_int_equal(rows.status[i], POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
-    assert_int_equal(failed, 4); /* and the open mesh */
+    for (i = 1; i <= 5; ++i)
+        if (i != OPEN_MESH) assert_int_equal(rows.status[i], POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+    assert_int_equal(failed, 5); /* and the open mesh */
     {
         char expected[POLYMASS_BATCH_MESSAGE_SIZE];
         snprintf(expected, sizeof expected, "face 1 refers to vertex %llu, beyond the mesh's",
@@ -369,9 +372,12 @@ static void test_packed_64_bit_indices_out_of_range(void** state) {
         snprintf(expected, sizeof expected, "face 2 refers to vertex %llu",
                  (unsigned long long)(set.vertex_offsets[3] + (1ull << 32)));
         assert_non_null(strstr(rows.messages + 3 * POLYMASS_BATCH_MESSAGE_SIZE, expected));
+        snprintf(expected, sizeof expected, "face 1 refers to vertex %llu",
+                 (unsigned long long)((1ull << 32) + 5));
+        assert_non_null(strstr(rows.messages + 5 * POLYMASS_BATCH_MESSAGE_SIZE, expected));
     }
     for (i = 0; i < MESHES; ++i) {
-        if (i >= 1 && i <= 3) continue;
+        if (i >= 1 && i <= 5) continue;
         assert_row_is_single_call(&rows, i, ctx, &set.descs[i], NULL, NULL);
     }
     pack_free(&set);

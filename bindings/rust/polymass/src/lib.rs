@@ -104,7 +104,7 @@ pub use polygon::{Orientation, PolygonProperties, SecondMoments};
 pub use properties::{ErrorBound, MassProperties, Warnings};
 pub use provenance::Provenance;
 pub use shell::{Shell, ShellKind};
-pub use surface::{Coordinate, Index, Positions, Surface, Vertex};
+pub use surface::{Coordinate, Index, PackedIndex, Positions, Surface, Vertex};
 pub use weld::Weld;
 
 /// How many locations [`Occurrences::first`] lists at most: the C library's

@@ -12,7 +12,7 @@ use crate::context::Context;
 use crate::error::{Error, Result};
 use crate::options::Options;
 use crate::properties::Warnings;
-use crate::surface::{struct_size, Index, Positions, Surface};
+use crate::surface::{struct_size, PackedIndex, Positions, Surface};
 
 /// Many triangle meshes in shared slices, borrowed in place: mesh `i` is the
 /// vertices `vertex_offsets[i]..vertex_offsets[i + 1]` of `positions` and
@@ -59,7 +59,7 @@ impl<'a> PackedMeshes<'a> {
     /// An error of kind `InvalidArgument` when the offsets are not as many
     /// or do not end at the slices' ends (the library checks that they
     /// ascend from 0).
-    pub fn new<I: Index>(
+    pub fn new<I: PackedIndex>(
         positions: impl Into<Positions<'a>>,
         triangles: &'a [[I; 3]],
         vertex_offsets: &'a [u64],
@@ -86,7 +86,7 @@ impl<'a> PackedMeshes<'a> {
             }
         }
         Ok(PackedMeshes {
-            all: Surface::triangles(positions, triangles),
+            all: Surface::packed_triangles(positions, triangles),
             vertex_offsets,
             // Saturating: an offset past the slice is refused by the library.
             index_offsets: triangle_offsets

@@ -20,6 +20,7 @@ mod sealed {
     impl Sealed for [f32; 3] {}
     impl Sealed for u32 {}
     impl Sealed for u16 {}
+    impl Sealed for u64 {}
 }
 
 /// A coordinate type the library reads in place: `f64` or `f32`. Sealed.
@@ -98,6 +99,29 @@ impl Index for u32 {
 
 impl Index for u16 {
     const INDEX_TYPE: u32 = sys::POLYMASS_INDEX_UINT16;
+}
+
+/// An index type the packed call ([`PackedMeshes`](crate::PackedMeshes))
+/// reads in place: `u16`, `u32`, or `u64` for packed sets only, as PyTorch3D
+/// keeps `faces_packed` (int64, its values never negative). Each mesh's
+/// 64-bit indices are narrowed to 32 bits inside the library; one that does
+/// not fit fails its own mesh. Sealed.
+pub trait PackedIndex: sealed::Sealed {
+    /// The `POLYMASS_INDEX_*` code of this type.
+    #[doc(hidden)]
+    const PACKED_INDEX_TYPE: u32;
+}
+
+impl PackedIndex for u64 {
+    const PACKED_INDEX_TYPE: u32 = sys::POLYMASS_INDEX_UINT64;
+}
+
+impl PackedIndex for u32 {
+    const PACKED_INDEX_TYPE: u32 = sys::POLYMASS_INDEX_UINT32;
+}
+
+impl PackedIndex for u16 {
+    const PACKED_INDEX_TYPE: u32 = sys::POLYMASS_INDEX_UINT16;
 }
 
 /// The memory of plain numbers, as bytes, for as long as the numbers are
@@ -371,7 +395,25 @@ impl<'a> Surface<'a> {
         positions: impl Into<Positions<'a>>,
         triangles: &'a [[I; 3]],
     ) -> Self {
-        Surface::new(positions.into(), triangles.as_flattened(), None)
+        Surface::new(
+            positions.into(),
+            I::INDEX_TYPE,
+            triangles.as_flattened(),
+            None,
+        )
+    }
+
+    /// The triangles of a packed set, whose indices may be 64-bit.
+    pub(crate) fn packed_triangles<I: PackedIndex>(
+        positions: Positions<'a>,
+        triangles: &'a [[I; 3]],
+    ) -> Self {
+        Surface::new(
+            positions,
+            I::PACKED_INDEX_TYPE,
+            triangles.as_flattened(),
+            None,
+        )
     }
 
     /// A surface of planar polygon faces (triangles, quads, any simple
@@ -400,17 +442,18 @@ impl<'a> Surface<'a> {
         indices: &'a [I],
         face_sizes: &'a [u32],
     ) -> Self {
-        Surface::new(positions.into(), indices, Some(face_sizes))
+        Surface::new(positions.into(), I::INDEX_TYPE, indices, Some(face_sizes))
     }
 
-    fn new<I: Index>(
+    fn new<I: sealed::Sealed>(
         positions: Positions<'a>,
+        index_type: u32,
         indices: &'a [I],
         face_sizes: Option<&'a [u32]>,
     ) -> Self {
         Surface {
             positions,
-            index_type: I::INDEX_TYPE,
+            index_type,
             indices: bytes_of(indices),
             index_count: indices.len(),
             face_sizes,

@@ -6,8 +6,8 @@ mod common;
 
 use common::torus::torus;
 use polymass::{
-    Body, Context, ErrorKind, Index, MassProperties, Options, PackedMassProperties, PackedMeshes,
-    Surface, Vertex,
+    Body, Context, ErrorKind, MassProperties, Options, PackedIndex, PackedMassProperties,
+    PackedMeshes, Surface, Vertex,
 };
 
 /// Positions, triangles with local indices, vertex and triangle offsets.
@@ -63,8 +63,9 @@ fn assert_row_is(rows: &PackedMassProperties, i: usize, single: &MassProperties)
 }
 
 /// Packs the tori with positions of type V and indices of type I, local or
-/// global, and compares every row with the single call on 1 and 3 threads.
-fn check_types<V: Vertex + Copy, I: Index + Copy>(
+/// global, and compares every row with the single call (u32 indices: an
+/// index's type changes no digit) on 1 and 3 threads.
+fn check_types<V: Vertex + Copy, I: PackedIndex + Copy>(
     vertex: impl Fn([f64; 3]) -> V,
     index: impl Fn(u32) -> I,
 ) {
@@ -105,8 +106,7 @@ fn check_types<V: Vertex + Copy, I: Index + Copy>(
             for mesh in 0..5 {
                 let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
                 let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-                let local: Vec<[I; 3]> = triangles[faces].iter().map(|t| t.map(&index)).collect();
-                let surface = Surface::triangles(&positions[vertices], &local);
+                let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
                 let single = polymass::mass_properties(
                     &surface,
                     &Options::new(),
@@ -125,6 +125,50 @@ fn rows_are_single_calls_bit_for_bit() {
     check_types(|p| p.map(|c| c as f32), |i| i);
     check_types(|p| p, |i| u16::try_from(i).unwrap());
     check_types(|p| p.map(|c| c as f32), |i| u16::try_from(i).unwrap());
+    check_types(|p| p, u64::from);
+    check_types(|p| p.map(|c| c as f32), u64::from);
+}
+
+/// 64-bit indices are narrowed per mesh: one past 32 bits fails its own mesh,
+/// named as written, locally and globally.
+#[test]
+fn a_64_bit_index_past_32_bits_fails_its_mesh_alone() {
+    let (positions, triangles, vertex_offsets, triangle_offsets) = packed_tori();
+    for global in [false, true] {
+        let mut wide: Vec<[u64; 3]> = Vec::new();
+        for mesh in 0..5 {
+            let base = if global { vertex_offsets[mesh] } else { 0 };
+            let range = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
+            wide.extend(
+                triangles[range]
+                    .iter()
+                    .map(|t| t.map(|v| u64::from(v) + base)),
+            );
+        }
+        let too_large = (1u64 << 32) + 7;
+        wide[triangle_offsets[2] as usize + 1][2] = too_large;
+        let mut meshes =
+            PackedMeshes::new(&positions, &wide, &vertex_offsets, &triangle_offsets).unwrap();
+        if global {
+            meshes = meshes.global_indices();
+        }
+        let rows = polymass::packed_mass_properties(&meshes, &Options::new()).unwrap();
+        assert_eq!(rows.failed(), 1);
+        let error = rows.errors[2].as_ref().unwrap();
+        assert_eq!(error.kind(), ErrorKind::IndexOutOfRange);
+        assert!(
+            error.message().contains(&too_large.to_string()),
+            "{}",
+            error.message()
+        );
+        for mesh in [0, 1, 3, 4] {
+            let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
+            let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
+            let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
+            let single = polymass::mass_properties(&surface, &Options::new(), &Body::default());
+            assert_row_is(&rows, mesh, &single.unwrap());
+        }
+    }
 }
 
 #[test]
