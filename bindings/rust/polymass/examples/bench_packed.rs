@@ -13,8 +13,8 @@
 //! 5), on one thread and on two: `polymass_packed_compute` itself through
 //! polymass-sys on the arrays described once (what a C caller pays, the
 //! bound of this run), `Context::packed_mass_properties` on the same slices
-//! (u32 indices local to each mesh, and global ones as PyTorch3D packs
-//! them; `polymass::packed_mass_properties` is this on a context of one
+//! (u32 indices local to each mesh, and global ones in u32 and in u64 as
+//! PyTorch3D packs them; `polymass::packed_mass_properties` is this on a context of one
 //! thread made for the call), and `Context::batch` on a surface per mesh
 //! (the per-item batch).
 //! Prints meshes/s and the ratios; asserts nothing about speed (every path's
@@ -191,6 +191,11 @@ fn main() {
     let global_meshes = PackedMeshes::new(&positions, &global, &vertex_offsets, &triangle_offsets)
         .expect("packed meshes")
         .global_indices();
+    // PyTorch3D's faces_packed: int64, counted from the first vertex of all.
+    let wide: Vec<[u64; 3]> = global.iter().map(|t| t.map(u64::from)).collect();
+    let wide_meshes = PackedMeshes::new(&positions, &wide, &vertex_offsets, &triangle_offsets)
+        .expect("packed meshes")
+        .global_indices();
     let items: Vec<(Surface, Options, Body)> = vertex_offsets
         .windows(2)
         .zip(triangle_offsets.windows(2))
@@ -229,6 +234,7 @@ fn main() {
             0 => raw[t].volumes(),
             1 => packed(&mut contexts[t], &local_meshes),
             2 => packed(&mut contexts[t], &global_meshes),
+            3 => packed(&mut contexts[t], &wide_meshes),
             _ => contexts[t]
                 .batch(&items)
                 .expect("batch")
@@ -287,9 +293,10 @@ fn main() {
 const THREADS: [u32; 2] = [1, 2];
 
 /// The paths timed, in `main`'s order: the first is the bound.
-const PATHS: [&str; 4] = [
+const PATHS: [&str; 5] = [
     "C polymass_packed_compute (sys)",
     "packed_mass_properties, u32 local",
     "packed_mass_properties, u32 global",
+    "packed_mass_properties, u64 global",
     "Context::batch (an item a mesh)",
 ];
