@@ -21,10 +21,11 @@
 namespace polymass::core {
 
 struct AnalysisSettings {
-    bool check_topology = true;        // closed, manifold, oriented, planar, shells
-    bool check_intersections = false;  // crossing faces, shells nested twice (with the topology)
-    bool weld = false;                 // identify coincident vertices first
-    double weld_tolerance = 0;         // relative to the mesh's extent; 0: exact
+    // Every check by default, as the C API's defaults: skipping one is asked for by name.
+    bool check_topology = true;       // closed, manifold, oriented, planar, shells
+    bool check_intersections = true;  // crossing faces, shells nested twice (with the topology)
+    bool weld = false;                // identify coincident vertices first
+    double weld_tolerance = 0;        // relative to the mesh's extent; 0: exact
     bool stop_at_first_problem = true;
     // Lists the shells (welded as the topology is) even when they are not
     // judged: a surface that fails a check before them, or whose topology

@@ -202,7 +202,6 @@ private:
         if (hull.status != HullStatus::ok)
             return ModeFailure{Mode::hull, hull_refusal(hull.status)};
         AnalysisSettings judged;  // every check
-        judged.check_intersections = true;
         judged.planarity_tolerance = settings_.analysis.planarity_tolerance;
         judged.tasks = settings_.analysis.tasks;
         MeshAnalysis analysis = judge_own_surface(hull.view(), judged, memory_);

@@ -67,6 +67,17 @@ inline TestMesh box_mesh(const Eigen::Vector3d& corner, const Eigen::Vector3d& a
     return mesh;
 }
 
+// Appends `part`'s vertices and faces to `mesh` (a part of its own: no
+// vertex shared).
+inline void append(TestMesh& mesh, const TestMesh& part) {
+    const std::uint32_t base = std::uint32_t(mesh.vertex_count());
+    mesh.coordinates.insert(mesh.coordinates.end(), part.coordinates.begin(),
+                            part.coordinates.end());
+    for (const std::uint32_t index : part.indices) mesh.indices.push_back(base + index);
+    mesh.face_sizes.insert(mesh.face_sizes.end(), part.face_sizes.begin(), part.face_sizes.end());
+    mesh.polygons = mesh.polygons || part.polygons;
+}
+
 // The shells of a surface: faces joined through shared vertices.
 inline polymass::core::Shells shells_of(const TestMesh& mesh) {
     std::vector<std::uint32_t> parent(mesh.vertex_count());
