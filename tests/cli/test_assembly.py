@@ -262,6 +262,39 @@ class Assembly(Case):
         self.assertEqual(out["parts"][0]["volume"], 1.0)
         self.assertIn("edge", out["parts"][1]["error"]["message"])
 
+    def test_a_mesh_of_parts_resting_on_each_other(self):
+        # The box as two OBJ objects, [0, 1] x [0, 2] x [0, 1] under
+        # [0, 1] x [0, 2] x [1, 3], resting on each other: judged as
+        # `polymass FILE` judges them (never welded together, whose shared
+        # edges would be used by four faces), the part is the whole box,
+        # exactly, turned and moved like any.
+        lines = []
+        for k, (z0, z1) in enumerate(((0, 1), (1, 3))):
+            lines.append(f"o half{k}")
+            lines += [f"v {x} {2 * y} {z1 if z else z0}" for x, y, z in fixtures.cube()[0]]
+            base = 1 + 8 * k
+            lines += ["f " + " ".join(str(base + i) for i in f) for f in fixtures.cube()[1]]
+        (ASSEMBLIES / "meshes" / "halves.obj").write_text("\n".join(lines) + "\n")
+        document = {
+            "parts": [
+                {
+                    "name": "halves",
+                    "mesh": "meshes/halves.obj",
+                    "mass": 5,
+                    "translation": [1, -2, 0.5],
+                    "rotation": {"quaternion_wxyz": [0.5, 0.5, 0.5, 0.5]},
+                }
+            ]
+        }
+        result, out = test_cli.run_json("assembly", write_assembly("halves.json", document))
+        self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+        # One part: the assembly is that part.
+        self.assert_body(out, box_body(Fraction(5), CYCLE, [1, -2, Fraction(1, 2)]), "halves")
+        self.assertEqual(out["volume"], 6.0)
+        # The halves' 10 + 16, as `polymass FILE` adds its parts' areas.
+        self.assertEqual(out["surface_area"], 26.0)
+        self.assertIn("touching_faces", out["warnings"])
+
 
 # (case, the assembly file, what its message says)
 BAD_FIELDS = [

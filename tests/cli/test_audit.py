@@ -351,6 +351,30 @@ class Geometry(AuditCase):
         self.assertEqual(run("audit", path, "--fail-on", "fatal").returncode, 2)
         self.assertEqual(run("audit", path, "--density", "steel=7850").returncode, 2)
 
+    def test_a_mesh_of_parts_resting_on_each_other_is_measured_exactly(self):
+        # The box as two OBJ objects, its lower and upper halves, resting on
+        # each other: measured as `polymass FILE` answers it, the exact sum of
+        # the halves (welded together, their shared edges would be used by
+        # four faces, and the mesh only approximated by a repair or a hull).
+        directory = fresh("halves")
+        size, low = fx.SIZE, fx.LOW
+        half = (size[0], size[1], size[2] / 2)
+        lines = []
+        for k in range(2):
+            lines.append(f"o half{k}")
+            corners = fx.box_corners(half, (low[0], low[1], low[2] + k * half[2]))
+            lines += [f"v {x!r} {y!r} {z!r}" for x, y, z in corners]
+            lines += ["f " + " ".join(str(1 + 8 * k + i) for i in f) for f in fx.QUADS]
+        (directory / "halves.obj").write_text("\n".join(lines) + "\n")
+        path = directory / "robot.urdf"
+        geometry = '<geometry><mesh filename="halves.obj"/></geometry>'
+        path.write_text(fx.urdf([("base", self.correct_inertial(), geometry)]))
+        result, out = audit(path)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        base = link(out, "base")
+        self.assertEqual(kinds(base), [])
+        self.assert_computed(base["computed"], fx.MASS, fx.centre(), fx.box_inertia(fx.MASS))
+
 
 class Sdf(AuditCase):
     def test_model_uri_and_a_centre_of_mass_off(self):

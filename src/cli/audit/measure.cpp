@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 
 #include "audit/mujoco_legacy.hpp"
 #include "audit/resolve.hpp"
 #include "library/categories.hpp"
+#include "library/judged_parts.hpp"
 #include "library/solid_moments.hpp"
 #include "library/surface_analysis.hpp"
 #include "readers/mesh_reader.hpp"
@@ -170,6 +172,32 @@ Measured measured_answer(const Library& library, const SurfaceAnalysis& analysis
     return measured;
 }
 
+// The mesh as the body asked for, answered by its chain of modes; not ok
+// (a finding) when none answered. A solid answered otherwise than as the
+// exact solid says so, with the surface's defect and the bound.
+Measured measured_by_modes(const Library& library, const polymass_options& options,
+                           const Model& model, MeshBody body, const std::string& path) {
+    const SurfaceAnalysis analysis = analysed_by_modes(library, options, model, modes_for(body));
+    Measured measured = measured_answer(library, analysis);
+    if (body != MeshBody::kSolid) {
+        if (!measured.ok)
+            return failure("bad_geometry", path + ": not measured: " + measured.message);
+        measured.message.clear();  // the body asked for, exact: nothing to report
+        return measured;
+    }
+    // The surface's defect in words; when no mode answered, each later
+    // mode's reason follows it.
+    const std::string defect = path + ": " + category_of(analysis.diagnostics().status);
+    const std::string why = analysis.failure().message;
+    if (!measured.ok) return failure("not_a_solid", defect + ": not measured: solid: " + why);
+    if (!measured.message.empty()) {
+        measured.kind = "approximated_geometry";
+        measured.message =
+            defect + (why.empty() ? "" : ": " + why) + "; measured as " + measured.message;
+    }
+    return measured;
+}
+
 }  // namespace
 
 MeshBody mesh_body(const Weighing& weighing) {
@@ -201,25 +229,19 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
             model.positions[v] *= scale[static_cast<int>(v % 3)];
         }
     }
-    const SurfaceAnalysis analysis = analysed_by_modes(library, options, model, modes_for(body));
-    Measured measured = measured_answer(library, analysis);
-    if (body != MeshBody::kSolid) {
-        if (!measured.ok)
-            return failure("bad_geometry", path + ": not measured: " + measured.message);
-        measured.message.clear();  // the body asked for, exact: nothing to report
+    Measured measured;
+    // A solid of several parts (a link exported as objects resting on each
+    // other) is their exact sum, as `polymass FILE` answers it (with the
+    // library's options, which are the audit's).
+    const std::optional<SolidParts> parts =
+        body == MeshBody::kSolid ? solid_parts(library, model) : std::nullopt;
+    if (parts) {
+        measured.ok = true;
+        measured.moments = parts->moments;
     } else {
-        // The surface's defect in words; when no mode answered, each later
-        // mode's reason follows it.
-        const std::string defect = path + ": " + category_of(analysis.diagnostics().status);
-        const std::string why = analysis.failure().message;
-        if (!measured.ok) return failure("not_a_solid", defect + ": not measured: solid: " + why);
-        if (!measured.message.empty()) {
-            measured.kind = "approximated_geometry";
-            measured.message =
-                defect + (why.empty() ? "" : ": " + why) + "; measured as " + measured.message;
-        }
+        measured = measured_by_modes(library, options, model, body, path);
+        if (!measured.ok) return measured;
     }
-    measured.ok = true;
     for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
         measured.points.emplace_back(model.positions[v], model.positions[v + 1],
                                      model.positions[v + 2]);

@@ -1,4 +1,5 @@
-// polymass assembly FILE: each part's mesh read and analysed once, its
+// polymass assembly FILE: each part's mesh read and analysed once (a mesh of
+// several objects judged as `polymass FILE` judges it), its
 // moments converted to metres, weighted with its density or mass and moved
 // into the assembly's frame (polymass_moments_scale, _weight,
 // _transform), reported from those moments; the whole is their exact sum.
@@ -6,11 +7,13 @@
 // twice (the report's notes say so).
 #include <algorithm>
 #include <iostream>
+#include <optional>
 #include <utility>
 
 #include "assembly/assembly_file.hpp"
 #include "commands/commands.hpp"
 #include "commands/part_materials.hpp"
+#include "library/judged_parts.hpp"
 #include "library/solid_moments.hpp"
 #include "library/surface_analysis.hpp"
 #include "readers/mesh_reader.hpp"
@@ -34,6 +37,36 @@ SolidResult failure(int32_t status, std::string message) {
     return result;
 }
 
+// A part's mesh as one solid at unit density: the exact sum of its parts
+// when the file's parts are a whole apart (library/judged_parts.hpp: objects
+// resting on each other, never welded together), else its whole surface
+// analysed once. The properties (surface area and warnings, or the refusal)
+// and the moments.
+struct UnitSolid {
+    SolidResult properties;
+    polymass_moments moments{};
+};
+
+UnitSolid unit_solid(const Library& library, const Model& model, const Part& whole) {
+    UnitSolid solid;
+    if (const std::optional<SolidParts> parts = solid_parts(library, model)) {
+        solid.properties =
+            properties_of(library, parts->moments, parts->surface_area, parts->warnings);
+        solid.moments = parts->moments;
+        return solid;
+    }
+    const SurfaceAnalysis analysis(library, model, whole, library.options());
+    if (!analysis.valid()) {
+        solid.properties = analysis.failure();
+        return solid;
+    }
+    polymass_mass_desc unit{};
+    polymass_mass_desc_init(&unit, sizeof unit);
+    solid.properties = analysis.properties(library, unit);
+    solid.moments = analysis.moments(library);
+    return solid;
+}
+
 // The part's moments through each step, stopping at the first refusal;
 // factor is the metres per unit of the model's lengths.
 PlacedPart place_part(const Library& library, const Model& model, const AssemblyPart& part,
@@ -45,19 +78,15 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
     placed.report.faces = whole.face_sizes.size();
     placed.report.computed = true;
     placed.report.material = part.material;
-    const SurfaceAnalysis solid(library, model, whole, library.options());
-    if (!solid.valid()) {
-        placed.report.result = solid.failure();
-        return placed;
-    }
-    polymass_mass_desc unit{};
-    polymass_mass_desc_init(&unit, sizeof unit);
-    const SolidResult own = solid.properties(library, unit);  // its surface area and warnings
+    const UnitSolid solid = unit_solid(library, model, whole);
+    const SolidResult& own = solid.properties;  // its surface area and warnings
     if (own.status != POLYMASS_OK) {
         placed.report.result = own;
         return placed;
     }
-    MomentsResult step{POLYMASS_OK, {}, solid.moments(library)};
+    polymass_mass_desc unit{};
+    polymass_mass_desc_init(&unit, sizeof unit);
+    MomentsResult step{POLYMASS_OK, {}, solid.moments};
     if (factor != 1.0) step = scaled(library, step.moments, {factor, factor, factor});
     polymass_mass_desc material = unit;
     material.mass_mode = part.by_mass ? POLYMASS_MASS_FROM_TOTAL : POLYMASS_MASS_FROM_DENSITY;

@@ -2,16 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <optional>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "commands/commands.hpp"
 #include "commands/part_materials.hpp"
-#include "library/parts_apart.hpp"
 #include "library/solid_moments.hpp"
 
 namespace polymass_cli {
@@ -41,19 +38,6 @@ polymass_mass_desc with_density(polymass_mass_desc mass, double density) {
     mass.mass_mode = POLYMASS_MASS_FROM_DENSITY;
     mass.density = density;
     return mass;
-}
-
-// The parts are analysed without the intersection check (each by itself);
-// the check that covers them (the parts apart against each other, or the
-// whole) says whether it ran: a part's answer keeps the library's
-// POLYMASS_WARNING_INTERSECTIONS_UNCHECKED only when it did not.
-SolidResult part_properties(const Library& library, const JudgedParts& judged, size_t k,
-                            const polymass_mass_desc& mass) {
-    SolidResult result = judged.solids[k].properties(library, mass);
-    const std::optional<SurfaceAnalysis>& cover = judged.apart ? judged.between : judged.whole;
-    if (cover && (cover->diagnostics().checks & POLYMASS_CHECKED_INTERSECTIONS))
-        result.properties.warnings &= ~uint32_t(POLYMASS_WARNING_INTERSECTIONS_UNCHECKED);
-    return result;
 }
 
 // A part is not a solid by itself (a closed surface split into parts by
@@ -147,43 +131,6 @@ void report_by_chain(const Library& library, const Model& model, const Part& who
 }
 
 }  // namespace
-
-JudgedParts judge_parts(const Library& library, const Model& model) {
-    // Each part judged alone as an exact solid, whatever the chain, so that
-    // a whole of exact parts gets the same bits with --fallback as without.
-    // The check between the parts sees every part's faces: each part is
-    // judged without it.
-    polymass_options part_options = library.options();
-    part_options.flags |= POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
-    std::fill(std::begin(part_options.modes), std::end(part_options.modes),
-              uint32_t(POLYMASS_MODE_NONE));
-    part_options.modes[0] = POLYMASS_MODE_SOLID;
-    JudgedParts judged;
-    judged.solids.reserve(model.parts.size());
-    for (const Part& part : model.parts)
-        judged.solids.emplace_back(library, model, part, part_options);
-    if (!std::all_of(judged.solids.begin(), judged.solids.end(),
-                     [](const SurfaceAnalysis& s) { return s.valid_as_given(); })) {
-        judged.whole.emplace(library, model, combined_part(model), library.options());
-        return judged;
-    }
-    judged.apart = parts_apart(library, model);
-    // Every part is a valid solid by now: in range, finite, weldable.
-    if (!judged.apart) throw std::logic_error("a valid part could not be welded");
-    // Parts crossing each other, or one inside another, would count twice.
-    const uint32_t skips =
-        POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
-    if (!(library.options().flags & skips))
-        judged.between.emplace(analyse_between(library, *judged.apart));
-    return judged;
-}
-
-SurfaceAnalysis analyse_between(const Library& library, const PartsApart& apart) {
-    polymass_options options = unwelded_options(library.options());
-    std::fill(std::begin(options.modes), std::end(options.modes), uint32_t(POLYMASS_MODE_NONE));
-    options.modes[0] = POLYMASS_MODE_SOLID;
-    return SurfaceAnalysis(library, apart.model, apart.model.parts.front(), options);
-}
 
 void report_parts(const Library& library, const std::string& path, const Model& model,
                   const Arguments& arguments, const polymass_mass_desc& file_mass,

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "arguments.hpp"
-#include "library/parts_apart.hpp"
+#include "library/judged_parts.hpp"
 #include "library/solid.hpp"
 #include "library/solid_moments.hpp"
 #include "library/surface_analysis.hpp"
@@ -22,28 +22,6 @@
 #include "reports/report.hpp"
 
 namespace polymass_cli {
-
-// A file of several parts judged once, for its report and for polymass
-// check: each part analysed by itself, as an exact solid and without the
-// intersection check; then, when every part is a valid solid by itself as
-// given (not inside out), the parts apart (library/parts_apart, each welded
-// by itself) checked against each other for crossing and nesting, unless the
-// options skip that check. Otherwise the file is one welded surface (a
-// closed surface split into parts by material, a cavity exported as a
-// part), analysed once with the options' chain, and apart and between are
-// empty.
-struct JudgedParts {
-    std::vector<SurfaceAnalysis> solids;
-    std::optional<PartsApart> apart;
-    std::optional<SurfaceAnalysis> between;  // the parts apart (analyse_between)
-    std::optional<SurfaceAnalysis> whole;    // the file as one welded surface
-};
-
-JudgedParts judge_parts(const Library& library, const Model& model);
-
-// The parts apart against each other, as exact solids: each already welded
-// by itself (the options' weld off), the options' checks, the solid alone.
-SurfaceAnalysis analyse_between(const Library& library, const PartsApart& apart);
 
 // Fills report.solid (the whole) and report.parts from the parts as judged.
 // file_mass is the command line's density or total mass. Throws UsageError
