@@ -225,15 +225,20 @@ WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size
     scan.used.assign((count + 63) / 64, ~std::uint64_t{0});
     scan.used_vertex_count = count;
     WeldedPositions result(memory);
-    for (std::size_t vertex = 0; vertex < count; ++vertex) {
-        const Eigen::Vector3d p = positions[vertex];
-        if (p.allFinite())
-            scan.bounds.extend(p);
-        else
-            result.non_finite.record(vertex);
+    // The extent and the non-finite positions matter to a weld within a
+    // tolerance only: an exact weld compares bits, and skips this pass (an
+    // eighth of a triangle soup's weld).
+    if (tolerance > 0.0) {
+        for (std::size_t vertex = 0; vertex < count; ++vertex) {
+            const Eigen::Vector3d p = positions[vertex];
+            if (p.allFinite())
+                scan.bounds.extend(p);
+            else
+                result.non_finite.record(vertex);
+        }
+        scan.non_finite = result.non_finite;
+        if (result.non_finite.count > 0) return result;
     }
-    scan.non_finite = result.non_finite;
-    if (tolerance > 0.0 && result.non_finite.count > 0) return result;
     const MeshView<Scalar, std::uint32_t> mesh{positions, count, {}, 0, nullptr, 0};
     result.vertex_of = weld_vertices(mesh, scan, tolerance, memory);
     for (std::size_t vertex = 0; vertex < count; ++vertex)

@@ -50,6 +50,11 @@ Library::Library(const polymass_options& options, uint32_t threads,
         throw std::runtime_error(std::string("polymass_context_create: ") +
                                  polymass_status_string(created));
     }
+    // The tool analyses each surface once: scratch blocks kept for a next
+    // call would only add to the peak memory of the one call that counts
+    // (blocks the topology checks free, kept beside the larger ones the
+    // intersection check asks for: 10 MB of a million-triangle STL's peak).
+    polymass_context_set_scratch_limit(context_, 0);
     const int32_t set = polymass_context_set_threads(context_, threads);
     if (set != POLYMASS_OK) {
         const std::string message = polymass_context_message(context_);
