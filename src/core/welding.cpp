@@ -227,7 +227,7 @@ WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size
     WeldedPositions result(memory);
     // The extent and the non-finite positions matter to a weld within a
     // tolerance only: an exact weld compares bits, and skips this pass (an
-    // eighth of a triangle soup's weld).
+    // eighth of a triangle soup's weld), leaving result.non_finite empty.
     if (tolerance > 0.0) {
         for (std::size_t vertex = 0; vertex < count; ++vertex) {
             const Eigen::Vector3d p = positions[vertex];

@@ -39,7 +39,6 @@ struct WeldedPositions {
     std::size_t distinct = 0;  // positions that are their own lowest
     // Positions with a NaN or infinite coordinate: a weld within a tolerance
     // measures distances, which they have none of, so it does not run.
-    // Looked for only then (an exact weld leaves it empty).
     Finding non_finite;
 
     explicit WeldedPositions(std::pmr::memory_resource* memory) : vertex_of(memory) {}
