@@ -2,19 +2,20 @@
 STL: a measurement, never a test (it needs trimesh from PyPI).
 
     python -m venv /tmp/v && /tmp/v/bin/pip install trimesh numpy
-    /tmp/v/bin/python tests/benchmark/tool_vs_trimesh.py build/release/src/cli/polymass \
-        [triangles, default 1e6] [rounds, default 3]
+    /tmp/v/bin/python tests/benchmark/tool_vs_trimesh.py [--triangles 1e6] [--rounds 3] \
+        build/release/src/cli/polymass [another polymass, e.g. a build of main ...]
 
-Each round runs, one after the other, `polymass FILE --json` (default
-options: every check, every core) and a fresh python that loads the file
-with trimesh and asks for its mass_properties; each process's wall time and
-peak resident memory are its own (wait4). Prints the medians over the rounds,
-trimesh's time over polymass's (issue 27 asks for at least 10) and polymass's
-peak memory over the file's size (at most 2), and checks that both give the
-same volume. The machine's load is printed with them: on a shared machine
+Each round runs, one after the other, `POLYMASS FILE --json` for each tool
+given (default options: every check, every core) and a fresh python that
+loads the file with trimesh and asks for its mass_properties; each process's
+wall time and peak resident memory are its own (wait4). Prints the medians
+over the rounds, trimesh's time over each tool's (issue 27 asks for at least
+10) and each tool's peak memory over the file's size (at most 2), and checks
+that all give the same volume. The machine's load is printed with them: on a shared machine
 only the ratios of one run compare.
 """
 
+import argparse
 import json
 import os
 import statistics
@@ -82,44 +83,50 @@ def measure(command):
 
 
 def main():
-    if len(sys.argv) < 2:
-        sys.exit(__doc__)
-    polymass = sys.argv[1]
-    triangles = int(float(sys.argv[2])) if len(sys.argv) > 2 else 1_000_000
-    rounds = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("polymass", nargs="+", help="the tools to measure")
+    parser.add_argument("--triangles", type=float, default=1e6)
+    parser.add_argument("--rounds", type=int, default=3)
+    arguments = parser.parse_args()
+    tools = {f"polymass {i + 1}": tool for i, tool in enumerate(arguments.polymass)}
+    runs = {name: [] for name in [*tools, "trimesh"]}
+    volumes = {}
     with tempfile.TemporaryDirectory() as directory:
         path = os.path.join(directory, "sphere.stl")
-        count = write_sphere(path, triangles)
+        count = write_sphere(path, int(arguments.triangles))
         file_mib = os.path.getsize(path) / 2**20
-        runs = {"polymass": [], "trimesh": []}
-        volumes = {}
-        for _ in range(rounds):
-            seconds, mib, output = measure([polymass, path, "--json"])
-            runs["polymass"].append((seconds, mib))
-            volumes["polymass"] = json.loads(output)["volume"]
+        for _ in range(arguments.rounds):
+            for name, tool in tools.items():
+                seconds, mib, output = measure([tool, path, "--json"])
+                runs[name].append((seconds, mib))
+                volumes[name] = json.loads(output)["volume"]
             seconds, mib, output = measure([sys.executable, "-c", TRIMESH, path])
             runs["trimesh"].append((seconds, mib))
             volumes["trimesh"] = float(output)
     load = os.getloadavg()
     print(
-        f"closed sphere, {count} triangles, binary STL of {file_mib:.1f} MiB; "
-        f"median of {rounds} interleaved rounds; load {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}"
+        f"closed sphere, {count} triangles, binary STL of {file_mib:.1f} MiB; median of "
+        f"{arguments.rounds} interleaved rounds; load {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}"
     )
+    for name, tool in tools.items():
+        print(f"  {name}: {tool}")
     medians = {}
     for name, figures in runs.items():
         seconds = statistics.median(s for s, _ in figures)
         mib = statistics.median(m for _, m in figures)
         medians[name] = seconds, mib
         every = ", ".join(f"{s:.2f}" for s, _ in figures)
-        print(f"  {name:9} {seconds:6.3f} s ({every})  peak {mib:6.1f} MiB")
-    ratio = medians["trimesh"][0] / medians["polymass"][0]
-    memory = medians["polymass"][1] / file_mib
-    print(f"  trimesh / polymass time  {ratio:5.2f}x  (goal: at least 10)")
-    print(f"  polymass peak / file     {memory:5.2f}x  (goal: at most 2)")
-    difference = abs(volumes["polymass"] - volumes["trimesh"]) / abs(volumes["trimesh"])
-    both = f"{volumes['polymass']:.15g} and {volumes['trimesh']:.15g}"
-    print(f"  volumes {both}: {difference:.1e} apart")
-    if difference > 1e-9:
+        print(f"  {name:10} {seconds:6.3f} s ({every})  peak {mib:6.1f} MiB")
+    for name in tools:
+        ratio = medians["trimesh"][0] / medians[name][0]
+        memory = medians[name][1] / file_mib
+        print(
+            f"  {name}: trimesh's time {ratio:5.2f}x its own (goal: at least 10); "
+            f"its peak {memory:4.2f}x the file (goal: at most 2)"
+        )
+    print("  volumes: " + ", ".join(f"{name} {volume:.15g}" for name, volume in volumes.items()))
+    reference = volumes["trimesh"]
+    if any(abs(volume - reference) > 1e-9 * abs(reference) for volume in volumes.values()):
         sys.exit("the volumes differ")
 
 
