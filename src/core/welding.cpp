@@ -42,7 +42,10 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
 // the vertex with the high half of its hash, so that a probe reads another
 // vertex's coordinates only when the halves agree (almost only for a copy),
 // and the slot of a vertex a few ahead is prefetched: the table outgrows the
-// caches, and waiting on it was the pass's cost. Comparing bits rather than
+// caches, and waiting on it was the pass's cost. A vertex's first slot is
+// taken from that high half too, so that the table grows by moving its slots
+// alone: rehashing read every held vertex's coordinates in random order, a
+// third of the weld of a million-triangle STL. Comparing bits rather than
 // values is exact welding for finite coordinates and still defined for NaN
 // (copies of one NaN are one vertex), which sorting is not.
 template <class Scalar, class Index>
@@ -59,10 +62,14 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
         return (hash & 0xFFFFFFFF00000000ull) | (std::uint64_t(vertex) + 1);
     };
     std::pmr::vector<std::uint64_t> slots(std::size_t(1) << 12, 0, memory);
+    // The first slot to probe for a hash, or for a slot holding it.
+    const auto home = [&](std::uint64_t hash_or_slot) {
+        return std::size_t(hash_or_slot >> 32) & (slots.size() - 1);
+    };
     std::size_t distinct = 0;
-    const auto place = [&](std::uint64_t entry, std::uint64_t hash) {
+    const auto place = [&](std::uint64_t entry) {
         const std::size_t mask = slots.size() - 1;
-        std::size_t slot = hash & mask;
+        std::size_t slot = home(entry);
         while (slots[slot] != 0) slot = (slot + 1) & mask;
         slots[slot] = entry;
     };
@@ -75,7 +82,7 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
         if (vertex >= count || !scan.is_used(vertex)) return;
         const std::uint64_t hash = position_hash(bits_of(std::uint32_t(vertex)));
         ahead[vertex % kAhead] = hash;
-        __builtin_prefetch(&slots[hash & (slots.size() - 1)]);
+        __builtin_prefetch(&slots[home(hash)]);
     };
     for (std::size_t vertex = 0; vertex < kAhead; ++vertex) hash_ahead(vertex);
     for (std::size_t index = 0; index < count; ++index) {
@@ -86,7 +93,7 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
         const Bits bits = bits_of(vertex);
         const std::uint64_t tag = hash & 0xFFFFFFFF00000000ull;
         const std::size_t mask = slots.size() - 1;
-        std::size_t slot = hash & mask;
+        std::size_t slot = home(hash);
         for (; slots[slot] != 0; slot = (slot + 1) & mask) {
             const std::uint64_t entry = slots[slot];
             if ((entry & 0xFFFFFFFF00000000ull) != tag) continue;
@@ -102,7 +109,7 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
             std::pmr::vector<std::uint64_t> held(std::move(slots));
             slots = std::pmr::vector<std::uint64_t>(2 * held.size(), 0, memory);
             for (const std::uint64_t entry : held)
-                if (entry != 0) place(entry, position_hash(bits_of(std::uint32_t(entry) - 1)));
+                if (entry != 0) place(entry);
         }
     }
 }
@@ -225,15 +232,20 @@ WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size
     scan.used.assign((count + 63) / 64, ~std::uint64_t{0});
     scan.used_vertex_count = count;
     WeldedPositions result(memory);
-    for (std::size_t vertex = 0; vertex < count; ++vertex) {
-        const Eigen::Vector3d p = positions[vertex];
-        if (p.allFinite())
-            scan.bounds.extend(p);
-        else
-            result.non_finite.record(vertex);
+    // The extent and the non-finite positions matter to a weld within a
+    // tolerance only: an exact weld compares bits, and skips this pass (an
+    // eighth of a triangle soup's weld), leaving result.non_finite empty.
+    if (tolerance > 0.0) {
+        for (std::size_t vertex = 0; vertex < count; ++vertex) {
+            const Eigen::Vector3d p = positions[vertex];
+            if (p.allFinite())
+                scan.bounds.extend(p);
+            else
+                result.non_finite.record(vertex);
+        }
+        scan.non_finite = result.non_finite;
+        if (result.non_finite.count > 0) return result;
     }
-    scan.non_finite = result.non_finite;
-    if (tolerance > 0.0 && result.non_finite.count > 0) return result;
     const MeshView<Scalar, std::uint32_t> mesh{positions, count, {}, 0, nullptr, 0};
     result.vertex_of = weld_vertices(mesh, scan, tolerance, memory);
     for (std::size_t vertex = 0; vertex < count; ++vertex)

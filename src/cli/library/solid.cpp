@@ -17,8 +17,13 @@ polymass_mesh_desc describe(const Model& model, const Part& part) {
     desc.index_type = POLYMASS_INDEX_UINT32;
     desc.indices = part.indices.data();
     desc.index_count = part.indices.size();
-    desc.face_sizes = part.face_sizes.data();
-    desc.face_count = part.face_sizes.size();
+    // Triangles only (an STL, most meshes): no face sizes, so that the
+    // library takes its triangle paths (the integrals eight triangles at a
+    // time) and reads no array of threes.
+    const bool triangles = std::all_of(part.face_sizes.begin(), part.face_sizes.end(),
+                                       [](uint32_t size) { return size == 3; });
+    desc.face_sizes = triangles ? nullptr : part.face_sizes.data();
+    desc.face_count = triangles ? 0 : part.face_sizes.size();
     return desc;
 }
 
@@ -50,6 +55,11 @@ Library::Library(const polymass_options& options, uint32_t threads,
         throw std::runtime_error(std::string("polymass_context_create: ") +
                                  polymass_status_string(created));
     }
+    // The tool analyses each surface once: scratch blocks kept for a next
+    // call would only add to the peak memory of the one call that counts
+    // (blocks the topology checks free, kept beside the larger ones the
+    // intersection check asks for: 10 MB of a million-triangle STL's peak).
+    polymass_context_set_scratch_limit(context_, 0);
     const int32_t set = polymass_context_set_threads(context_, threads);
     if (set != POLYMASS_OK) {
         const std::string message = polymass_context_message(context_);

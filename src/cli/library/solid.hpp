@@ -15,9 +15,9 @@
 
 namespace polymass_cli {
 
-// A polymass_context with the given threads (1: no worker), freed on
-// destruction; the options of the command line; and the point it reports
-// inertia about (--about X,Y,Z; the origin otherwise).
+// A polymass_context with the given threads (1: no worker) that keeps no
+// scratch memory between calls, freed on destruction; the options of the command line; and the
+// point it reports inertia about (--about X,Y,Z; the origin otherwise).
 class Library {
 public:
     explicit Library(const polymass_options& options, uint32_t threads = 1,
