@@ -7,12 +7,16 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace polymass::core {
 namespace {
 
 using Signs = std::array<int, 3>;
+
+// A set of a triangle's corners: bit i for corner i.
+constexpr unsigned all_corners = 7;
 
 // Sides of the corners of t relative to the plane of `plane` (orient3d signs).
 Signs sides(const Triangle& plane, const Triangle& t) {
@@ -65,13 +69,23 @@ int plane_projection(const Triangle& t, Projection& projection) {
     return 0;
 }
 
-// A triangle in a coordinate plane, counter-clockwise.
-struct Triangle2d {
+// A piece of a triangle in a coordinate plane: one corner, an edge or the
+// whole triangle, projected; a triangle counter-clockwise.
+struct FlatPiece {
     std::array<Eigen::Vector2d, 3> corner;
+    int count;
 
-    Triangle2d(const Triangle& t, const Projection& project, int orientation)
-        : corner{project(t[0]), project(t[1]), project(t[2])} {
+    // The triangle t, whose projection turns as `orientation` says.
+    FlatPiece(const Triangle& t, const Projection& project, int orientation)
+        : corner{project(t[0]), project(t[1]), project(t[2])}, count(3) {
         if (orientation < 0) std::swap(corner[1], corner[2]);
+    }
+
+    // The corners of t in `corners` (bit i: corner i), one or two: a point
+    // or a segment.
+    FlatPiece(const Triangle& t, unsigned corners, const Projection& project) : corner{}, count(0) {
+        for (int i = 0; i < 3; ++i)
+            if (corners >> i & 1) corner[count++] = project(t[i]);
     }
 
     // True when x lies strictly outside the edge from corner i to corner i+1.
@@ -80,38 +94,42 @@ struct Triangle2d {
     }
 };
 
-bool contains(const Triangle2d& t, const Eigen::Vector2d& x) {
-    return !t.outside_edge(0, x) && !t.outside_edge(1, x) && !t.outside_edge(2, x);
+// Whether a line through an edge of s has every corner of t strictly on its
+// outer side (a segment's line: strictly on either side). A point has no edge.
+bool separates(const FlatPiece& s, const FlatPiece& t) {
+    if (s.count == 2) {
+        bool left = true, right = true;
+        for (int k = 0; k < t.count; ++k) {
+            const int side = orient2d(s.corner[0], s.corner[1], t.corner[k]);
+            left = left && side > 0;
+            right = right && side < 0;
+        }
+        return left || right;
+    }
+    if (s.count == 3) {
+        for (int i = 0; i < 3; ++i) {
+            bool outside = true;
+            for (int k = 0; k < t.count && outside; ++k) outside = s.outside_edge(i, t.corner[k]);
+            if (outside) return true;
+        }
+    }
+    return false;
 }
 
-// Closed segment ab against a closed triangle: disjoint iff a line through an
-// edge of either separates them (separating-axis theorem in the plane).
-bool meets(const Triangle2d& t, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    for (int i = 0; i < 3; ++i) {
-        if (t.outside_edge(i, a) && t.outside_edge(i, b)) return false;
-    }
-    const Signs side = {orient2d(a, b, t.corner[0]), orient2d(a, b, t.corner[1]),
-                        orient2d(a, b, t.corner[2])};
-    return !all_strictly_one_side(side);
-}
-
-bool meets(const Triangle2d& p, const Triangle2d& q) {
-    for (int i = 0; i < 3; ++i) {
-        if (p.outside_edge(i, q.corner[0]) && p.outside_edge(i, q.corner[1]) &&
-            p.outside_edge(i, q.corner[2]))
-            return false;
-        if (q.outside_edge(i, p.corner[0]) && q.outside_edge(i, p.corner[1]) &&
-            q.outside_edge(i, p.corner[2]))
-            return false;
-    }
-    return true;
-}
+// Whether the closed pieces meet: two disjoint closed convex figures of the
+// plane are strictly separated by a line through an edge of one of them
+// (separating-axis theorem), but for a point or segment against a collinear
+// segment, whose separating line may be perpendicular to them. So one piece
+// must be a triangle, or their coordinate extents must overlap on both axes
+// with neither axis fixed in both (then collinear pieces meet): see
+// docs/exact-predicates.md.
+bool meets(const FlatPiece& s, const FlatPiece& t) { return !separates(s, t) && !separates(t, s); }
 
 // Whether the open triangles overlap: no line through an edge of either
 // leaves the other on its outer side or on it (in the plane, convex figures
 // whose interiors are disjoint are separated by the line of an edge of one).
-bool interiors_overlap(const Triangle2d& p, const Triangle2d& q) {
-    auto beyond_edge = [](const Triangle2d& t, int i, const Triangle2d& other) {
+bool interiors_overlap(const FlatPiece& p, const FlatPiece& q) {
+    auto beyond_edge = [](const FlatPiece& t, int i, const FlatPiece& other) {
         for (const Eigen::Vector2d& x : other.corner)
             if (orient2d(t.corner[i], t.corner[(i + 1) % 3], x) > 0) return false;
         return true;
@@ -121,16 +139,23 @@ bool interiors_overlap(const Triangle2d& p, const Triangle2d& q) {
     return true;
 }
 
-// Coplanar triangles: coinciding when they overlap over an area and face the
-// same way, touching when they face opposite ways (two parts resting on each
-// other) or meet along their boundaries only.
+// Coplanar triangles, in a projection that keeps q (whose projection turns
+// as q_turn says) and so their common plane one-to-one: coinciding when
+// they overlap over an area and face the same way, touching when they face
+// opposite ways (two parts resting on each other) or meet along their
+// boundaries only.
+Contact coplanar_contact(const Triangle& p, const Triangle& q, const Projection& projection,
+                         int q_turn) {
+    const int p_turn = projected_orientation(p, projection);
+    const FlatPiece p_flat(p, projection, p_turn), q_flat(q, projection, q_turn);
+    if (p_turn == q_turn && interiors_overlap(p_flat, q_flat)) return Contact::coinciding;
+    return meets(p_flat, q_flat) ? Contact::touching : Contact::none;
+}
+
 Contact coplanar_contact(const Triangle& p, const Triangle& q) {
     Projection projection{};
     const int q_turn = plane_projection(q, projection);
-    const int p_turn = projected_orientation(p, projection);
-    const Triangle2d p_flat(p, projection, p_turn), q_flat(q, projection, q_turn);
-    if (p_turn == q_turn && interiors_overlap(p_flat, q_flat)) return Contact::coinciding;
-    return meets(p_flat, q_flat) ? Contact::touching : Contact::none;
+    return coplanar_contact(p, q, projection, q_turn);
 }
 
 // t lies on one side of the plane of `other` with one corner or one edge on
@@ -138,18 +163,111 @@ Contact coplanar_contact(const Triangle& p, const Triangle& q) {
 bool touches_on_plane(const Triangle& t, const Signs& t_sides, const Triangle& other) {
     Projection projection{};
     const int orientation = plane_projection(other, projection);
-    const Triangle2d face(other, projection, orientation);
-    int on_plane[3];
-    int count = 0;
-    for (int i = 0; i < 3; ++i) {
-        if (t_sides[i] == 0) on_plane[count++] = i;
-    }
+    unsigned on_plane = 0;
+    for (int i = 0; i < 3; ++i) on_plane |= unsigned(t_sides[i] == 0) << i;
     // One corner or one edge on the plane, as the caller found. (Outside
     // the predicates' exact range - coordinates 2^640 apart in one call -
-    // signs can disagree; no index may then run past the corners.)
-    if (count == 1) return contains(face, projection(t[on_plane[0]]));
-    if (count == 2) return meets(face, projection(t[on_plane[0]]), projection(t[on_plane[1]]));
-    return count == 3 && coplanar_contact(t, other) != Contact::none;
+    // signs can disagree.)
+    if (on_plane == all_corners)
+        return coplanar_contact(t, other, projection, orientation) != Contact::none;
+    return on_plane != 0 &&
+           meets(FlatPiece(t, on_plane, projection), FlatPiece(other, projection, orientation));
+}
+
+// The exact coordinate extent of some corners of a triangle on an axis.
+struct Extent {
+    double low, high;
+};
+
+// The extent of the corners of t in `corners` (at least one) on axis.
+Extent extent(const Triangle& t, unsigned corners, int axis) {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    std::array<double, 3> low, high;
+    for (int i = 0; i < 3; ++i) {
+        const bool in = corners >> i & 1;
+        low[i] = in ? t[i][axis] : infinity;
+        high[i] = in ? t[i][axis] : -infinity;
+    }
+    return {std::min({low[0], low[1], low[2]}), std::max({high[0], high[1], high[2]})};
+}
+
+bool disjoint(const Extent& a, const Extent& b) { return a.high < b.low || b.high < a.low; }
+
+// The value where a and b meet, if in one value only.
+bool meet_once(const Extent& a, const Extent& b, double& value) {
+    if (a.high != b.low && b.high != a.low) return false;
+    value = a.high == b.low ? a.high : a.low;
+    return true;
+}
+
+// The corners of t in `corners` whose coordinate on axis is `value`.
+unsigned corners_at(const Triangle& t, unsigned corners, int axis, double value) {
+    const unsigned at_value = unsigned(t[0][axis] == value) | unsigned(t[1][axis] == value) << 1 |
+                              unsigned(t[2][axis] == value) << 2;
+    return corners & at_value;
+}
+
+// Triangles p and q on either side of the plane x = value of plane_axis
+// (one at x <= value, the other at x >= value): they do not cross, and
+// their common points are those of the pieces their corners in that plane
+// span (a corner, an edge, or the whole triangle). In the plane, the same
+// holds on the two other axes, down to a line.
+Contact contact_in_plane(const Triangle& p, const Triangle& q, int plane_axis, double value) {
+    unsigned s = corners_at(p, all_corners, plane_axis, value);
+    unsigned t = corners_at(q, all_corners, plane_axis, value);
+    const int first = (plane_axis + 1) % 3, second = (plane_axis + 2) % 3;
+    const Extent s_first = extent(p, s, first), t_first = extent(q, t, first);
+    const Extent s_second = extent(p, s, second), t_second = extent(q, t, second);
+    if (disjoint(s_first, t_first) || disjoint(s_second, t_second)) return Contact::none;
+    double line_value = 0.0;
+    const int line_axis = meet_once(s_first, t_first, line_value)     ? first
+                          : meet_once(s_second, t_second, line_value) ? second
+                                                                      : -1;
+    if (line_axis >= 0) {
+        // On the line where both coordinates are fixed: the pieces are
+        // points or segments along it, which meet if their extents do.
+        s = corners_at(p, s, line_axis, line_value);
+        t = corners_at(q, t, line_axis, line_value);
+        const int along = 3 - plane_axis - line_axis;
+        return disjoint(extent(p, s, along), extent(q, t, along)) ? Contact::none
+                                                                  : Contact::touching;
+    }
+    const Projection projection = dropping_axis[plane_axis];
+    if (s == all_corners && t == all_corners)
+        return coplanar_contact(p, q, projection, projected_orientation(q, projection));
+    const auto flat = [&](const Triangle& triangle, unsigned corners) {
+        if (corners != all_corners) return FlatPiece(triangle, corners, projection);
+        return FlatPiece(triangle, projection, projected_orientation(triangle, projection));
+    };
+    return meets(flat(p, s), flat(q, t)) ? Contact::touching : Contact::none;
+}
+
+// Decides the triangles from their exact coordinate extents when these are
+// disjoint on an axis (none), or meet there in one value c only (one lies
+// at x <= c, the other at x >= c): then the triangles cannot cross, they
+// coincide only if both lie in the plane x = c, and all they have in common
+// lies in that plane (docs/exact-predicates.md). Faces of parts resting on
+// each other in CAD and voxel assemblies are decided so, most without a
+// predicate. Returns false, deciding nothing, when no axis does either.
+bool decided_by_extents(const Triangle& p, const Triangle& q, bool shared_corner,
+                        Contact& contact) {
+    const Eigen::Array3d p_low = p[0].array().min(p[1].array()).min(p[2].array());
+    const Eigen::Array3d p_high = p[0].array().max(p[1].array()).max(p[2].array());
+    const Eigen::Array3d q_low = q[0].array().min(q[1].array()).min(q[2].array());
+    const Eigen::Array3d q_high = q[0].array().max(q[1].array()).max(q[2].array());
+    if (((p_high < q_low) || (q_high < p_low)).any()) {
+        contact = Contact::none;
+        return true;
+    }
+    int axis = 0;
+    while (axis < 3 && p_high[axis] != q_low[axis] && q_high[axis] != p_low[axis]) ++axis;
+    if (axis == 3) return false;
+    // Triangles meeting at a shared vertex are reported only if they cross.
+    contact = shared_corner
+                  ? Contact::none
+                  : contact_in_plane(p, q, axis,
+                                     p_high[axis] == q_low[axis] ? p_high[axis] : p_low[axis]);
+    return true;
 }
 
 // Rotates t (keeping its orientation) so that t[0] is the corner alone on its
@@ -196,6 +314,7 @@ Contact shared_corner_contact(const Triangle& p, const Triangle& q) {
 }  // namespace
 
 Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corner) {
+    if (Contact contact{}; decided_by_extents(p, q, shared_corner, contact)) return contact;
     if (shared_corner) return shared_corner_contact(p, q);
     const Signs p_sides = sides(q, p);
     if (all_strictly_one_side(p_sides)) return Contact::none;

@@ -11,8 +11,11 @@
 // Everything else where the closed triangles still meet is touching: a
 // corner or an edge lying on the other triangle, two edges meeting in a
 // point, coplanar triangles facing opposite ways (two parts resting on each
-// other) or meeting along their boundaries only. Decided with exact
-// predicates (exact_predicates.hpp); the reasoning is in docs/validity.md.
+// other) or meeting along their boundaries only. Decided exactly: from the
+// triangles' coordinate extents where these meet in one value on an axis
+// (faces of parts resting on each other), otherwise with orientation
+// predicates (exact_predicates.hpp); the reasoning is in
+// docs/exact-predicates.md.
 #pragma once
 
 #include <Eigen/Core>
