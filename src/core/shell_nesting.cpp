@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "box_tree.hpp"
 #include "exact_predicates.hpp"
 
 namespace polymass::core {
@@ -44,12 +45,43 @@ bool lies_on(const Triangle& t, const ProbeStart& start) {
     return true;
 }
 
+// A shell's box, exact: the least and greatest coordinates of its corners.
+struct ShellBox {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+
+    void extend(const Eigen::Vector3d& p) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    void extend(const ShellBox& box) {
+        lo = lo.cwiseMin(box.lo);
+        hi = hi.cwiseMax(box.hi);
+    }
+    // Whether the start lies in the closed box: compared coordinate by
+    // coordinate, exactly, the start inside a triangle as its limit.
+    bool holds(const ProbeStart& start) const {
+        for (int k = 0; k < 3; ++k) {
+            const auto above_lo = [&](const Eigen::Vector3d& x) {
+                return (x[k] > lo[k]) - (x[k] < lo[k]);
+            };
+            const auto below_hi = [&](const Eigen::Vector3d& x) {
+                return (x[k] < hi[k]) - (x[k] > hi[k]);
+            };
+            if (sign_at(start, above_lo) < 0 || sign_at(start, below_hi) < 0) return false;
+        }
+        return true;
+    }
+};
+
 // Directions of the probing segments: far from every coordinate plane and
 // from each other, so that the next one avoids what grazed the last.
 const Eigen::Vector3d kProbeDirections[] = {
     {0.4353, 0.5209, 0.7342}, {-0.6016, 0.3187, 0.7326}, {0.2679, -0.8535, 0.4472}};
 // Vertices of a shell tried as probes before its nesting is left unknown.
 constexpr std::size_t kProbeVertices = 4;
+// Other shells whose boxes may hold a start before its probes stop looking
+// for more and walk their whole segments (a start deep in many boxes).
+constexpr std::size_t kNearShells = 32;
 // Shells, and triangles, probed by one task.
 constexpr std::size_t kShellsPerTask = 64;
 constexpr std::size_t kTrianglesPerTask = 256;
@@ -75,35 +107,94 @@ std::pmr::vector<int> count_windings(
     std::pmr::vector<int> winding_of_shell(shells.count, kUnknownWinding, memory);
     if (!(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
 
+    // A few triangles of each shell, in order, whose first corners are the
+    // probes; and each shell's box, with a tree over them.
+    std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
+    std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
+    std::pmr::vector<ShellBox> shell_boxes(shells.count, memory);
+    for (std::size_t t = 0; t < surface.size(); ++t) {
+        const std::uint32_t shell = shell_of(t);
+        for (const Eigen::Vector3d& corner : surface.triangle(t)) shell_boxes[shell].extend(corner);
+        if (!surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
+            probes[shell][probe_count[shell]++] = std::uint32_t(t);
+    }
+    std::pmr::vector<FloatBox> rounded_boxes(shells.count, memory);
+    for (std::size_t shell = 0; shell < shells.count; ++shell) {
+        // in_units keeps the order of coordinates: the corners' boxes lie in this one.
+        rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].lo));
+        rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].hi));
+    }
+    const BoxTree shell_tree(rounded_boxes, memory);
+
+    // Where the other shells can wind around a start: the box around those
+    // whose boxes hold it (each winds 0 around points outside its box), and
+    // how many they are, counted up to kNearShells + 1 (then the box is
+    // everything's).
+    struct Near {
+        std::size_t count = 0;
+        ShellBox box;
+    };
+    auto shells_near = [&](const ProbeStart& start, std::uint32_t shell) {
+        Near near;
+        const Eigen::Vector3d p = surface.in_units(start.p);
+        shell_tree.for_each_item_near_segment(p, p, [&](std::uint32_t other) {
+            if (other == shell || !shell_boxes[other].holds(start)) return true;
+            near.box.extend(shell_boxes[other]);
+            return ++near.count <= kNearShells;
+        });
+        return near;
+    };
+
     // The winding number of every shell but `shell` at a start that lies on
     // no other shell, or kUnknownWinding when the segment from it to
-    // p + 4 span direction grazes an edge, a vertex or a plane.
+    // q = p + 4 span direction grazes an edge, a vertex or a plane of a
+    // shell whose box holds the start. Only those shells wind around the
+    // start, and q lies outside their boxes, so their faces' signed
+    // crossings count it; the walk along the segment ends where it leaves
+    // `near.box` (docs/validity.md).
     auto winding_at = [&](const ProbeStart& start, const Eigen::Vector3d& direction,
-                          std::uint32_t shell) {
+                          std::uint32_t shell, const Near& near) {
         const Eigen::Vector3d& p = start.p;
         const Eigen::Vector3d q = p + 4 * span * direction.normalized();
+        // The part of the segment in near.box: it leaves the box at the
+        // first of its slabs it leaves (p lies in the closed box), found
+        // with rounding far below the margin of 1 % and the tree's pad.
+        double leave = 1;
+        if (near.count <= kNearShells) {
+            for (int k = 0; k < 3; ++k) {
+                const double step = q[k] - p[k];
+                const double bound = step > 0 ? near.box.hi[k] : near.box.lo[k];
+                if (step != 0) leave = std::min(leave, std::max(0.0, (bound - p[k]) / step));
+            }
+            leave = std::min(1.0, 1.01 * leave);
+        }
+        const Eigen::Vector3d end = leave < 1 ? Eigen::Vector3d(p + leave * (q - p)) : q;
         int winding = 0;
         bool counted = true;
         surface.tree().for_each_item_near_segment(
-            surface.in_units(p), surface.in_units(q), [&](std::uint32_t t) {
-                // t and its copies, of the other shells. The first graze ends
-                // the walk: a pile of k shells at one place then costs each
-                // probe a triangle, not k.
+            surface.in_units(p), surface.in_units(end), [&](std::uint32_t t) {
+                // t and its copies, of the other shells whose boxes hold the
+                // start. The first graze ends the walk: a pile of k shells at
+                // one place then costs each probe a triangle, not k.
                 int others = 0;
-                for (std::uint32_t copy = t; copy != kNoCopy; copy = surface.next_copy(copy))
-                    others += shell_of(copy) != shell;
+                for (std::uint32_t copy = t; copy != kNoCopy; copy = surface.next_copy(copy)) {
+                    const std::uint32_t other = shell_of(copy);
+                    others += other != shell && shell_boxes[other].holds(start);
+                }
                 if (others == 0) return true;
                 const Triangle c = surface.triangle(t);
                 const int to = orient3d(c[0], c[1], c[2], q);
                 const int from = sign_at(
                     start, [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); });
                 // A start on c was turned away before (on_another_shell): from
-                // = 0 is a start in c's plane beside it.
-                if (to == 0) {
+                // = 0 is a start in c's plane beside it. q lies outside the
+                // box of c's shell, so off c: a segment meeting c's plane at
+                // q alone passes beside c, one lying in it grazes.
+                if (from == 0 && to == 0) {
                     counted = false;
                     return false;
                 }
-                if (from == 0 || from == to) return true;
+                if (from == 0 || to == 0 || from == to) return true;
                 auto edge_sign = [&](int k) {
                     return sign_at(start, [&](const Eigen::Vector3d& x) {
                         return orient3d(x, q, c[k], c[(k + 1) % 3]);
@@ -123,14 +214,6 @@ std::pmr::vector<int> count_windings(
         return counted ? winding : kUnknownWinding;
     };
 
-    // A few triangles of each shell, in order, whose first corners are the probes.
-    std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
-    std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
-    for (std::size_t t = 0; t < surface.size(); ++t) {
-        const std::uint32_t shell = shell_of(t);
-        if (!surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
-            probes[shell][probe_count[shell]++] = std::uint32_t(t);
-    }
     // Whether the start lies on another shell's triangle: a look at the few
     // triangles whose boxes hold it, before long probes that would only graze
     // there. The vertices of parts resting on each other often do, and the
@@ -141,7 +224,13 @@ std::pmr::vector<int> count_windings(
             surface.in_units(start.p), surface.in_units(start.p), [&](std::uint32_t t) {
                 if (shell_of(t) == shell) return true;
                 const Triangle c = surface.triangle(t);
-                on = sign_at(start,
+                // A start off the triangle's box is off the triangle: of the
+                // many triangles around a corner where parts rest on each
+                // other, this leaves those in the start's plane, on its side.
+                ShellBox box;
+                for (const Eigen::Vector3d& corner : c) box.extend(corner);
+                on = box.holds(start) &&
+                     sign_at(start,
                              [&](const Eigen::Vector3d& x) {
                                  return orient3d(c[0], c[1], c[2], x);
                              }) == 0 &&
@@ -150,13 +239,18 @@ std::pmr::vector<int> count_windings(
             });
         return on;
     };
-    // The winding at the start, or kUnknownWinding when it lies on another
-    // shell or every direction grazes.
+    // The winding at the start: kUnknownWinding when it lies on another
+    // shell (asked first: the starts where parts rest flush on each other,
+    // most of a touching assembly's, then need no look at the shells'
+    // boxes) or every direction grazes, 0 when no other shell's box holds it
+    // (no segment needed).
     auto probe = [&](const ProbeStart& start, std::uint32_t shell) {
         int winding = kUnknownWinding;
         if (on_another_shell(start, shell)) return winding;
+        const Near near = shells_near(start, shell);
+        if (near.count == 0) return 0;
         for (const Eigen::Vector3d& direction : kProbeDirections) {
-            winding = winding_at(start, direction, shell);
+            winding = winding_at(start, direction, shell, near);
             if (winding != kUnknownWinding) break;
         }
         return winding;

@@ -5,8 +5,10 @@
 // rest of the surface at a vertex of a shell says how many (counted with
 // their orientation): it is counted exactly, as the signed crossings of a
 // segment from that vertex to a point outside everything, with exact
-// predicates; a segment that grazes an edge or a vertex, or starts on
-// another shell, is replaced by another. Where shells touch, a shell may pass
+// predicates, of the faces of the shells whose boxes hold the vertex (no
+// other shell winds around it; none, and no segment is needed); a segment
+// that grazes an edge or a vertex of those, or starts on another shell, is
+// replaced by another. Where shells touch, a shell may pass
 // through another along its own edges, so each triangle touching another
 // shell is also probed from a point inside it (symbolically perturbed), and
 // a shell whose probes disagree is marked mixed. docs/validity.md has the

@@ -56,6 +56,27 @@ void add_double_pyramid(TestMesh& mesh) {
     }
 }
 
+// An L-shaped prism, [0, 3] x [0, 1] and [0, 1] x [0, 3] across, z in [0,
+// 1]: its box holds the notch [1, 3]^2 x [0, 1], which lies outside it.
+void add_l_prism(TestMesh& mesh) {
+    const double outline[6][2] = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+    std::uint32_t bottom[6], top[6];
+    for (int k = 0; k < 6; ++k) {
+        bottom[k] = mesh.add_vertex({outline[k][0], outline[k][1], 0});
+        top[k] = mesh.add_vertex({outline[k][0], outline[k][1], 1});
+    }
+    // The outline cut into triangles about its corner (0, 0), which sees all of it.
+    for (int k = 1; k < 5; ++k) {
+        mesh.add_face({top[0], top[k], top[k + 1]});
+        mesh.add_face({bottom[0], bottom[k + 1], bottom[k]});
+    }
+    for (int k = 0; k < 6; ++k) {
+        const int next = (k + 1) % 6;
+        mesh.add_face({bottom[k], bottom[next], top[next]});
+        mesh.add_face({bottom[k], top[next], top[k]});
+    }
+}
+
 // The windings of the mesh's shells moved by `offset`.
 std::vector<int> windings_of(TestMesh mesh, const Eigen::Vector3d& offset) {
     for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) mesh.coordinates[i] += offset[i % 3];
@@ -122,6 +143,48 @@ int main() {
     add_box(hollow, {1, 1, 1}, {5, 5, 5}, true);
     add_box(hollow, {2, 2, 2}, {4, 4, 4}, false);
     expect("a part inside a hollow part", hollow, {0, 1, 0});
+
+    TestMesh touching_inside;
+    add_box(touching_inside, {0, 0, 0}, {6, 6, 6}, false);
+    add_box(touching_inside, {1, 1, 1}, {5, 5, 5}, true);
+    add_box(touching_inside, {1, 1, 1}, {2, 2, 2}, false);  // in the cavity's corner
+    add_box(touching_inside, {2, 2, 1}, {3, 3, 2}, false);  // on its floor, by an edge
+    expect("parts resting in a cavity, on its floor and walls", touching_inside, {0, 1, 0, 0});
+
+    // The shells' boxes overlap or hold one another, the shells do not nest.
+    TestMesh notch;
+    add_l_prism(notch);
+    add_box(notch, {1, 1, 0}, {2, 2, 1}, false);                    // against the inner walls
+    add_box(notch, {2.25, 2.25, 0.25}, {2.75, 2.75, 0.75}, true);   // inside out
+    add_box(notch, {0.25, 0.25, 0.25}, {0.75, 0.75, 0.75}, false);  // in the L
+    add_box(notch, {2.5, 0.5, 1}, {3.5, 1.5, 2}, false);            // on the L's end, overhanging
+    expect("parts in the notch of an L, in it and on it", notch, {0, 0, 0, 1, 0});
+
+    // A start whose segment leaves the box of the only shell around it (a
+    // tall L) inside a part it does not count (whose box does not hold it).
+    TestMesh tall_notch;
+    add_l_prism(tall_notch);
+    for (std::size_t v = 0; v < tall_notch.vertex_count(); ++v)
+        tall_notch.coordinates[3 * v + 2] *= 3;
+    add_box(tall_notch, {1.1, 1.1, 0.1}, {1.3, 1.3, 0.3}, false);
+    add_box(tall_notch, {1.5, 1.5, 0.5}, {4, 4, 4}, false);
+    expect("a part in a tall L's notch, beside one reaching out of it", tall_notch, {0, 0, 0});
+
+    // More shells around the innermost starts than a probe lists
+    // (kNearShells): hollows within hollows, each a solid around a cavity,
+    // and solids within solids, each wound around by all outside it.
+    TestMesh hollows, solids;
+    std::vector<int> alternating, depth;
+    for (int k = 0; k < 41; ++k) {
+        const Eigen::Vector3d lo = Eigen::Vector3d::Constant(k),
+                              hi = Eigen::Vector3d::Constant(100 - k);
+        add_box(hollows, lo, hi, k % 2 != 0);
+        alternating.push_back(k % 2);
+        add_box(solids, lo, hi, false);
+        depth.push_back(k);
+    }
+    expect("41 nested shells, solids and cavities in turn", hollows, alternating);
+    expect("41 nested solids", solids, depth);
 
     TestMesh through;
     add_box(through, {0, 0, 0}, {1, 1, 1}, false);
