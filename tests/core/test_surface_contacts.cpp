@@ -131,15 +131,16 @@ void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Sh
     }
 }
 
-// Pairs of crossing triangles, each pair alone in a cell of a grid, the
-// first triangles of the pairs first: more than the count keeps, over more
-// triangles than one piece of the search holds (4096), so that the pieces'
-// findings are merged. The count stops at 2048 and the lowest pairs are
+// Pairs of crossing triangles, each pair in a cell of a grid with a third
+// triangle apart, the first triangles of the pairs first: more pairs than
+// the count keeps, over more triangles than one piece of the search holds
+// (4096), none of which holds 2048 pairs, so that only the pieces' findings
+// merged reach the stop. The count stops at 2048 and the lowest pairs are
 // those of the first cells, whatever the runner.
 void check_many_pieces() {
-    constexpr std::uint32_t cells = 4200, row = 70;
+    constexpr std::uint32_t cells = 3000, row = 60;
     TestMesh mesh;
-    std::vector<std::array<std::uint32_t, 3>> flat, upright;
+    std::vector<std::array<std::uint32_t, 3>> flat, upright, apart;
     for (std::uint32_t k = 0; k < cells; ++k) {
         const Eigen::Vector3d at(3.0 * (k % row), 3.0 * (k / row), 0.0);
         auto add = [&](double x, double y, double z) {
@@ -148,16 +149,19 @@ void check_many_pieces() {
         // Upright across the flat one's inside, along y = 0.25.
         flat.push_back({add(0, 0, 0), add(1, 0, 0), add(0, 1, 0)});
         upright.push_back({add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)});
+        // Boxes centred at z = 0, as the others: the curve then orders the
+        // cells by x and y alone, and a piece holds whole cells.
+        apart.push_back({add(1.8, 1.8, 0), add(2.3, 1.8, 0), add(1.8, 2.3, 0)});
     }
-    for (const auto& t : flat) mesh.add_face({t[0], t[1], t[2]});
-    for (const auto& t : upright) mesh.add_face({t[0], t[1], t[2]});
+    for (const auto& triangles : {flat, upright, apart})
+        for (const auto& t : triangles) mesh.add_face({t[0], t[1], t[2]});
     const auto view = mesh.view();
     polymass::core::SerialTaskRunner serial;
     polymass_test::ReversedTaskRunner reversed;
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(105, 90, 0),
+        const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(90, 75, 0),
                                                      300.0, *runner,
                                                      std::pmr::get_default_resource());
         const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
