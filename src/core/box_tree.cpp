@@ -42,7 +42,7 @@ bool SegmentSlabs::may_meet(const FloatBox& box) const {
 }
 
 BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory)
-    : order_(memory), boxes_(memory), nodes_(memory), level_begin_(memory), memory_(memory) {
+    : order_(memory), leaf_boxes_(memory), nodes_(memory), level_begin_(memory), memory_(memory) {
     FloatBox all;
     for (const FloatBox& box : boxes) all.extend(box);
     // Morton codes of the centres on a 1024^3 grid over all boxes, each with
@@ -74,18 +74,23 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
     order_.reserve(keys.size());
     for (const std::uint64_t key : keys) order_.push_back(std::uint32_t(key));
     keys = {};
-    boxes_.reserve(order_.size());
-    for (const std::uint32_t item : order_) boxes_.push_back(boxes[item]);
 
     // Leaves, then each level from the one below, up to a single root.
     std::size_t count = (order_.size() + kLeafSize - 1) / kLeafSize;
+    leaf_boxes_.resize(count);
     nodes_.reserve(2 * count + 1);
     level_begin_.push_back(0);
     for (std::size_t leaf = 0; leaf < count; ++leaf) {
         FloatBox box;
-        for (std::size_t i = kLeafSize * leaf; i < std::min(order_.size(), kLeafSize * (leaf + 1));
-             ++i)
-            box.extend(boxes_[i]);
+        for (std::size_t lane = 0; lane < kLeafSize; ++lane) {
+            const std::size_t at = kLeafSize * leaf + lane;
+            const FloatBox item = at < order_.size() ? boxes[order_[at]] : FloatBox();
+            for (int k = 0; k < 3; ++k) {
+                leaf_boxes_[leaf].lo[k][lane] = item.lo[k];
+                leaf_boxes_[leaf].hi[k][lane] = item.hi[k];
+            }
+            box.extend(item);
+        }
         nodes_.push_back(box);
     }
     level_begin_.push_back(nodes_.size());

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory_resource>
 #include <vector>
 
@@ -76,9 +77,10 @@ private:
 class BoxTree {
 public:
     // The items are the boxes' indices. The tree keeps its own copy of the
-    // boxes, in its order along the curve: the search reads a leaf's boxes
-    // one after another, where reading them through their indices missed
-    // the cache about once a box on a large surface.
+    // boxes, in its order along the curve and side by side by leaf
+    // (LeafBoxes): the search reads a leaf's boxes one after another, where
+    // reading them through their indices missed the cache about once a box
+    // on a large surface.
     BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory);
 
     // The box of every item (empty when there are none).
@@ -117,12 +119,25 @@ private:
     // threads; the pieces of a small surface are one.
     static constexpr std::uint32_t kPieceLevel = 10;
 
+    // The boxes of a leaf, one lane each, so that one box is tested against
+    // the four at once (overlap_mask): tested one pair at a time, the leaf
+    // tests' branches, taken at random, were a third of a clean surface's
+    // search. Lanes past the last item hold empty boxes, which meet nothing.
+    struct LeafBoxes {
+        alignas(sizeof(float) * kLeafSize) float lo[3][kLeafSize];
+        alignas(sizeof(float) * kLeafSize) float hi[3][kLeafSize];
+    };
+    // Bit k set when `box` overlaps lane k of `leaf` (the test of FloatBox::overlaps).
+    static unsigned overlap_mask(const FloatBox& box, const LeafBoxes& leaf);
+    // The box of the item at `at` along the curve.
+    FloatBox item_box(std::size_t at) const;
+
     static bool same(const PairTask& task) {
         return task.first.level == task.second.level && task.first.index == task.second.index;
     }
     // Calls push(t) for the tasks that together do `task`, which must not be
     // two leaves: the children of a node with themselves and with each
-    // other, or the children of the higher node with the other node, where
+    // other, or each child of one node with each of the other's, where
     // their boxes overlap. Inlined: called once per task of the search, as a
     // call it added 2 % to the instructions of a sphere's intersection check.
     template <class Push>
@@ -146,7 +161,7 @@ private:
     Node root() const { return {std::uint32_t(level_begin_.size() - 2), 0}; }
 
     std::pmr::vector<std::uint32_t> order_;      // items along the curve
-    std::pmr::vector<FloatBox> boxes_;           // their boxes, in that order
+    std::pmr::vector<LeafBoxes> leaf_boxes_;     // their boxes, in that order
     std::pmr::vector<FloatBox> nodes_;           // every level, leaves first
     std::pmr::vector<std::size_t> level_begin_;  // level k is nodes_[begin[k], begin[k + 1])
     double pad_ = 0;                             // slack of segment tests
@@ -165,19 +180,49 @@ void BoxTree::split(const PairTask& task, Push&& push) const {
         }
         return;
     }
-    // Open the higher node (the larger box, most often).
-    const bool open_a = a.level >= b.level;
-    const Node open = open_a ? a : b, other = open_a ? b : a;
-    for (std::size_t i = 0; i < child_count(open); ++i)
-        if (box(child(open, i)).overlaps(box(other))) push(PairTask{child(open, i), other});
+    // Two nodes of one level (all leaves are at level 0, so a task's nodes
+    // always are): each child of one with each of the other, one task a
+    // level rather than two (the children of one with the other node, then
+    // of that node), which cut the search's tasks by half.
+    for (std::size_t i = 0; i < child_count(a); ++i) {
+        const FloatBox& child_of_a = box(child(a, i));
+        for (std::size_t j = 0; j < child_count(b); ++j)
+            if (child_of_a.overlaps(box(child(b, j)))) push(PairTask{child(a, i), child(b, j)});
+    }
+}
+
+inline unsigned BoxTree::overlap_mask(const FloatBox& box, const LeafBoxes& leaf) {
+    using Lanes = float __attribute__((vector_size(sizeof(float) * kLeafSize)));
+    using Mask = std::int32_t __attribute__((vector_size(sizeof(float) * kLeafSize)));
+    Mask overlapping = Mask{} - 1;
+    for (int k = 0; k < 3; ++k) {
+        Lanes lo, hi;
+        std::memcpy(&lo, leaf.lo[k], sizeof lo);
+        std::memcpy(&hi, leaf.hi[k], sizeof hi);
+        const Lanes box_lo = Lanes{} + box.lo[k], box_hi = Lanes{} + box.hi[k];
+        overlapping &= (lo <= box_hi) & (box_lo <= hi);
+    }
+    unsigned bits = 0;
+    for (std::size_t lane = 0; lane < kLeafSize; ++lane)
+        bits |= unsigned(overlapping[lane]) & (1u << lane);
+    return bits;
+}
+
+inline FloatBox BoxTree::item_box(std::size_t at) const {
+    const LeafBoxes& leaf = leaf_boxes_[at / kLeafSize];
+    FloatBox box;
+    for (int k = 0; k < 3; ++k) {
+        box.lo[k] = leaf.lo[k][at % kLeafSize];
+        box.hi[k] = leaf.hi[k][at % kLeafSize];
+    }
+    return box;
 }
 
 template <class Visit>
 void BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
-    // Depth first: a task adds at most three, each one level lower in one of
-    // its nodes, so the stack holds fewer than three per level of the two
-    // nodes together.
-    constexpr std::size_t kMaxTasks = 3 * 2 * 64;
+    // Depth first: a task adds at most four, each one level lower, so the
+    // stack holds fewer than four per level.
+    constexpr std::size_t kMaxTasks = 4 * 64;
     std::array<PairTask, kMaxTasks> tasks;
     std::size_t pending = 0;
     tasks[pending++] = task;
@@ -189,10 +234,13 @@ void BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
             continue;
         }
         const bool inside = same(next);
+        const std::size_t first_of_b = leaf_first(b);
         for (std::size_t i = leaf_first(a); i < leaf_last(a); ++i) {
-            const FloatBox& first = boxes_[i];
-            for (std::size_t j = inside ? i + 1 : leaf_first(b); j < leaf_last(b); ++j)
-                if (first.overlaps(boxes_[j])) visit(order_[i], order_[j]);
+            unsigned overlapping = overlap_mask(item_box(i), leaf_boxes_[b.index]);
+            // Inside one leaf, each pair once: the lanes after i.
+            if (inside) overlapping &= ~0u << (i - first_of_b + 1);
+            for (; overlapping != 0; overlapping &= overlapping - 1)
+                visit(order_[i], order_[first_of_b + unsigned(__builtin_ctz(overlapping))]);
         }
     }
 }
@@ -211,7 +259,7 @@ void BoxTree::for_each_item_near_segment(const Eigen::Vector3d& a, const Eigen::
         if (!segment.may_meet(box(node))) continue;
         if (node.level == 0) {
             for (std::size_t i = leaf_first(node); i < leaf_last(node); ++i)
-                if (segment.may_meet(boxes_[i]) && !visit(order_[i])) return;
+                if (segment.may_meet(item_box(i)) && !visit(order_[i])) return;
         } else {
             for (std::size_t i = 0; i < child_count(node); ++i) nodes[pending++] = child(node, i);
         }

@@ -45,19 +45,22 @@ public:
         if (pairs_.size() >= next_tidy_) tidy();
     }
 
-    // Takes in what another piece of the search collected.
+    // Takes in what another piece of the search collected. Tidied when
+    // add() would be, not at each piece: a sort of all the pairs so far at
+    // each of a crossing surface's hundreds of pieces was an eighth of its
+    // check.
     void merge(const PairCollector& piece) {
         for (std::size_t i = 0; i < piece.kept_; ++i) keep_if_lowest(piece.lowest_[i]);
         if (stopped_) return;
         pairs_.insert(pairs_.end(), piece.pairs_.begin(), piece.pairs_.end());
         stopped_ = piece.stopped_;
-        tidy();
+        if (pairs_.size() >= next_tidy_) tidy();
     }
 
     // The pairs counted, without those `except` holds. Past the stop the
     // count is a lower bound (complete false).
     PairFinding finding(const PairCollector* except = nullptr) {
-        sort_unique(pairs_);
+        tidy();
         auto excepted = [&](const FacePair& pair) { return except && except->holds(pair); };
         pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(), excepted), pairs_.end());
         PairFinding found = PairFinding::of(pairs_);

@@ -6,11 +6,10 @@
 // at one place, unwelded, sharing some corners with the first copy (in every
 // corner position), or all of them, with turned cubes crossing the pile at
 // a shared corner; past the count's stop (2048 pairs) and below it; with the
-// search's pieces in order and in reverse; without shells and with them
-// (coinciding copies on two shells cross, on one they touch, and copies on
-// the same vertices in the same turn cross wherever they are). The reference
-// tests all pairs with the same exact predicate (test_triangle_contact
-// checks that one).
+// search's pieces in order and in reverse, and a surface of many pieces; without shells and with
+// them (coinciding copies on two shells cross, on one they touch, and copies on the same vertices
+// in the same turn cross wherever they are). The reference tests all pairs with the same exact
+// predicate (test_triangle_contact checks that one).
 #include "core/surface_contacts.hpp"
 
 #include "check.hpp"
@@ -132,9 +131,53 @@ void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Sh
     }
 }
 
+// Pairs of crossing triangles, each pair in a cell of a grid with a third
+// triangle apart, the first triangles of the pairs first: more pairs than
+// the count keeps, over more triangles than one piece of the search holds
+// (4096), none of which holds 2048 pairs, so that only the pieces' findings
+// merged reach the stop. The count stops at 2048 and the lowest pairs are
+// those of the first cells, whatever the runner.
+void check_many_pieces() {
+    constexpr std::uint32_t cells = 3000, row = 60;
+    TestMesh mesh;
+    std::vector<std::array<std::uint32_t, 3>> flat, upright, apart;
+    for (std::uint32_t k = 0; k < cells; ++k) {
+        const Eigen::Vector3d at(3.0 * (k % row), 3.0 * (k / row), 0.0);
+        auto add = [&](double x, double y, double z) {
+            return mesh.add_vertex(at + Eigen::Vector3d(x, y, z));
+        };
+        // Upright across the flat one's inside, along y = 0.25.
+        flat.push_back({add(0, 0, 0), add(1, 0, 0), add(0, 1, 0)});
+        upright.push_back({add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)});
+        // Boxes centred at z = 0, as the others: the curve then orders the
+        // cells by x and y alone, and a piece holds whole cells.
+        apart.push_back({add(1.8, 1.8, 0), add(2.3, 1.8, 0), add(1.8, 2.3, 0)});
+    }
+    for (const auto& triangles : {flat, upright, apart})
+        for (const auto& t : triangles) mesh.add_face({t[0], t[1], t[2]});
+    const auto view = mesh.view();
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    for (polymass::core::TaskRunner* runner :
+         {static_cast<polymass::core::TaskRunner*>(&serial),
+          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
+        const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(90, 75, 0),
+                                                     300.0, *runner,
+                                                     std::pmr::get_default_resource());
+        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
+            surface, nullptr, *runner, std::pmr::get_default_resource());
+        CHECK(found.crossing.count == kMostCountedPairs);
+        CHECK(!found.crossing.complete);
+        for (std::uint64_t k = 0; k < found.crossing.kept(); ++k)
+            CHECK((found.crossing.lowest[k] == std::array<std::uint64_t, 2>{k, cells + k}));
+        CHECK(found.touching.count == 0 && found.touching.complete);
+    }
+}
+
 }  // namespace
 
 int main() {
+    check_many_pieces();
     const Eigen::Matrix3d none = Eigen::Matrix3d::Identity();
     const Eigen::Matrix3d turned =
         Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
