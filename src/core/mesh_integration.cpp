@@ -214,6 +214,7 @@ public:
     // Faces [begin, end) of an all-triangle mesh: whole batches now, the rest
     // at finish().
     void add_triangles(std::size_t begin, std::size_t end) {
+        batch_.last_face = end;
         for (batch_.first_face = begin; end - batch_.first_face >= batch_capacity;
              batch_.first_face += batch_capacity) {
             batch_.count = batch_capacity;

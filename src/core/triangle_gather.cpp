@@ -59,6 +59,13 @@ __attribute__((always_inline)) inline void transpose_rows(const Lanes (&rows)[la
     axes[2] = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
 }
 
+// How many triangles ahead of the ones it gathers a gatherer asks for the
+// vertices of a block's triangles (when they are not listed): the vertices of a
+// large mesh come from beyond the L2 cache, and the index array alone does
+// not tell the processor's prefetcher where they are. At 1e6 and 1e7
+// triangles the whole trusted path took 0.8 of the time it took without.
+constexpr std::size_t fetch_ahead = 32;
+
 // Where the corners of a batch's triangles are, in locals: the stores into
 // GatheredTriangles could alias the batch's fields for all the compiler knows,
 // and it would read them again after each.
@@ -69,13 +76,18 @@ struct CornerSource {
     IndexArray<Index> indices;
     std::size_t first_corner;    // when not listed
     const std::size_t* corners;  // when listed
+    // The slots from which on triangles fetch_ahead further are not to be fetched.
+    std::size_t fetched_ahead_until;
 
     __attribute__((always_inline)) explicit CornerSource(const TriangleBatch<Scalar, Index>& batch)
         : base(batch.positions.base),
           stride(batch.positions.stride),
           indices(batch.indices),
           first_corner(3 * batch.first_face),
-          corners(batch.corners) {}
+          corners(batch.corners),
+          fetched_ahead_until(batch.last_face >= batch.first_face + fetch_ahead + lane_count
+                                  ? batch.last_face - batch.first_face - fetch_ahead - lane_count + 1
+                                  : 0) {}
 
     // The first coordinate of corner `corner` of the batch's triangle `slot`.
     __attribute__((always_inline)) const unsigned char* vertex(std::size_t slot, int corner) const {
@@ -126,13 +138,18 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
                               GatheredTriangles& gathered) {                                     \
         const CornerSource<listed, Scalar, Index> source(batch);                                 \
         std::size_t slot = 0;                                                                    \
-        for (; slot + lane_count <= batch.count; slot += lane_count)                             \
+        for (; slot + lane_count <= batch.count; slot += lane_count) {                           \
+            if (!listed && slot < source.fetched_ahead_until)                                    \
+                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)            \
+                    _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner)           \
+                        __builtin_prefetch(source.vertex(slot + fetch_ahead + lane, corner));    \
             _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {                 \
                 Lanes rows[lane_count];                                                          \
                 _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)            \
                     vertex_row_##name(source.vertex(slot + lane, corner), Scalar{}, rows[lane]); \
                 store_transposed(rows, gathered, corner, slot);                                  \
             }                                                                                    \
+        }                                                                                        \
         gather_one_by_one<listed>(batch, slot, gathered);                                        \
     }                                                                                            \
     template <class Scalar, class Index>                                                         \
