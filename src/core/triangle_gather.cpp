@@ -79,8 +79,7 @@ struct CornerSource {
     IndexArray<Index> indices;
     std::size_t first_corner;    // when not listed
     const std::size_t* corners;  // when listed
-    // The slots from which on triangles fetch_ahead further are not to be fetched.
-    std::size_t fetched_ahead_until;
+    std::size_t faces_left;      // from the batch's first to its block's last, when not listed
 
     __attribute__((always_inline)) explicit CornerSource(const TriangleBatch<Scalar, Index>& batch)
         : base(batch.positions.base),
@@ -88,9 +87,9 @@ struct CornerSource {
           indices(batch.indices),
           first_corner(3 * batch.first_face),
           corners(batch.corners),
-          fetched_ahead_until(batch.last_face >= batch.first_face + fetch_ahead + lane_count
-                                  ? batch.last_face - batch.first_face - fetch_ahead - lane_count + 1
-                                  : 0) {}
+          faces_left(listed || batch.last_face < batch.first_face
+                         ? 0
+                         : batch.last_face - batch.first_face) {}
 
     // The first coordinate of corner `corner` of the batch's triangle `slot`.
     __attribute__((always_inline)) const unsigned char* vertex(std::size_t slot, int corner) const {
@@ -142,7 +141,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
         const CornerSource<listed, Scalar, Index> source(batch);                                 \
         std::size_t slot = 0;                                                                    \
         for (; slot + lane_count <= batch.count; slot += lane_count) {                           \
-            if (!listed && slot < source.fetched_ahead_until)                                    \
+            if (!listed && slot + fetch_ahead + lane_count <= source.faces_left)                 \
                 _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)            \
                     __builtin_prefetch(source.vertex(slot + fetch_ahead + lane, 2));             \
             _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {                 \
