@@ -343,7 +343,8 @@ private:
 // before they are integrated, a few dozen kilobytes of indices, read again
 // from the L1 or L2 cache. Whole batches but the last.
 constexpr std::size_t kMarkedTogether = 2048;
-static_assert(kMarkedTogether % batch_capacity == 0, "whole batches");
+static_assert(kMarkedTogether % batch_capacity == 0 && kFacesPerBlock % kMarkedTogether == 0,
+              "whole batches");
 
 // Blocks are run this many at a time, their sums kept on the stack until
 // they join the total in order.
@@ -380,14 +381,11 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
             const std::size_t end = std::min(begin + kFacesPerBlock, mesh.face_count);
             BlockIntegrator<Scalar, Index> integrator(mesh, settings, unit);
             if (mesh.all_triangles()) {
-                if (!settings.used_marks) {
-                    integrator.add_triangles(begin, end);
-                    sums[block] = integrator.finish();
-                    return;
-                }
-                for (std::size_t first = begin; first < end; first += kMarkedTogether) {
-                    const std::size_t last = std::min(first + kMarkedTogether, end);
-                    if (!mark_used_vertices(mesh, 3 * first, 3 * last, settings.used_marks,
+                const std::size_t piece = settings.used_marks ? kMarkedTogether : kFacesPerBlock;
+                for (std::size_t first = begin; first < end; first += piece) {
+                    const std::size_t last = std::min(first + piece, end);
+                    if (settings.used_marks &&
+                        !mark_used_vertices(mesh, 3 * first, 3 * last, settings.used_marks,
                                             settings.instruction_set)) {
                         sums[block].indices_in_range = false;
                         return;
