@@ -135,11 +135,10 @@ int32_t read_set(polymass_context* context, const polymass_packed_results* resul
 // are rebased modulo 2^32: one below `base` wraps past every vertex of the
 // mesh (read_set made base + vertex count at most 2^32), so the analysis
 // finds it out of range, naming the lowest face, and adds `base` back
-// modulo 2^32 as it was written. A 64-bit index that does not fall in the
-// 32 bits past `base` (below it, a negative int64 read as unsigned), or is
-// 2^32 or more (which the analysis's 32-bit arithmetic would name wrongly),
-// fails the mesh here, named as written; any other is the analysis's to
-// judge, with the single call's message.
+// modulo 2^32 as it was written. A 64-bit index below `base`, or of 2^32 or
+// more (a negative int64 read as unsigned is), fails the mesh here, named as
+// written, which the analysis's 32-bit arithmetic could not do; any other is
+// the analysis's to judge, with the single call's message.
 template <class Index>
 int32_t rebase_as(polymass_context* context, polymass_mesh_desc& desc, uint64_t base,
                   std::pmr::vector<uint32_t>& local) {
@@ -150,7 +149,7 @@ int32_t rebase_as(polymass_context* context, polymass_mesh_desc& desc, uint64_t 
         std::memcpy(&index, indices + i * sizeof index, sizeof index);
         const uint64_t offset = uint64_t(index) - base;
         if constexpr (sizeof(Index) == sizeof(uint64_t))
-            if (offset > UINT32_MAX || uint64_t(index) > UINT32_MAX)
+            if (uint64_t(index) < base || uint64_t(index) > UINT32_MAX)
                 return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
                                      "face %llu refers to vertex %llu, beyond the mesh's %llu "
                                      "vertices, which start at %llu",

@@ -7,8 +7,12 @@
 #include "library/solid_moments.hpp"
 
 namespace polymass_cli {
+namespace {
 
-JudgedParts judge_parts(const Library& library, const Model& model) {
+// Each part judged alone and, when every one is a solid as given, the parts
+// apart and the check between them; the whole surface is left to
+// judge_parts, which needs it when they are not (solid_parts does not).
+JudgedParts judge_apart(const Library& library, const Model& model) {
     // Each part judged alone as an exact solid, whatever the chain, so that
     // a whole of exact parts gets the same bits with --fallback as without.
     // The check between the parts sees every part's faces: each part is
@@ -23,10 +27,8 @@ JudgedParts judge_parts(const Library& library, const Model& model) {
     for (const Part& part : model.parts)
         judged.solids.emplace_back(library, model, part, part_options);
     if (!std::all_of(judged.solids.begin(), judged.solids.end(),
-                     [](const SurfaceAnalysis& s) { return s.valid_as_given(); })) {
-        judged.whole.emplace(library, model, combined_part(model), library.options());
+                     [](const SurfaceAnalysis& s) { return s.valid_as_given(); }))
         return judged;
-    }
     judged.apart = parts_apart(library, model);
     // Every part is a valid solid by now: in range, finite, weldable.
     if (!judged.apart) throw std::logic_error("a valid part could not be welded");
@@ -35,6 +37,15 @@ JudgedParts judge_parts(const Library& library, const Model& model) {
         POLYMASS_OPTION_SKIP_INTERSECTION_CHECK | POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
     if (!(library.options().flags & skips))
         judged.between.emplace(analyse_between(library, *judged.apart));
+    return judged;
+}
+
+}  // namespace
+
+JudgedParts judge_parts(const Library& library, const Model& model) {
+    JudgedParts judged = judge_apart(library, model);
+    if (!judged.apart)
+        judged.whole.emplace(library, model, combined_part(model), library.options());
     return judged;
 }
 
@@ -56,7 +67,7 @@ SolidResult part_properties(const Library& library, const JudgedParts& judged, s
 
 std::optional<SolidParts> solid_parts(const Library& library, const Model& model) {
     if (model.parts.size() < 2) return std::nullopt;
-    const JudgedParts judged = judge_parts(library, model);
+    const JudgedParts judged = judge_apart(library, model);
     if (!judged.apart || (judged.between && !judged.between->valid())) return std::nullopt;
     polymass_mass_desc unit{};
     polymass_mass_desc_init(&unit, sizeof unit);

@@ -62,6 +62,22 @@ fn assert_row_is(rows: &PackedMassProperties, i: usize, single: &MassProperties)
     );
 }
 
+/// Mesh `mesh` of the packed arrays computed by the single call, on u32
+/// local triangles (an index's type changes no digit).
+fn single_call<V: Vertex>(
+    positions: &[V],
+    triangles: &[[u32; 3]],
+    vertex_offsets: &[u64],
+    triangle_offsets: &[u64],
+    mesh: usize,
+    body: &Body,
+) -> MassProperties {
+    let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
+    let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
+    let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
+    polymass::mass_properties(&surface, &Options::new(), body).unwrap()
+}
+
 /// Packs the tori with positions of type V and indices of type I, local or
 /// global, and compares every row with the single call (u32 indices: an
 /// index's type changes no digit) on 1 and 3 threads.
@@ -103,16 +119,16 @@ fn check_types<V: Vertex + Copy, I: PackedIndex + Copy>(
                 .packed_mass_properties(&meshes, &Options::new())
                 .unwrap();
             assert_eq!(rows.failed(), 0);
-            for mesh in 0..5 {
-                let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
-                let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-                let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
-                let single = polymass::mass_properties(
-                    &surface,
-                    &Options::new(),
-                    &Body::density(densities[mesh]),
-                )
-                .unwrap();
+            for (mesh, &density) in densities.iter().enumerate() {
+                let body = Body::density(density);
+                let single = single_call(
+                    &positions,
+                    &triangles,
+                    &vertex_offsets,
+                    &triangle_offsets,
+                    mesh,
+                    &body,
+                );
                 assert_row_is(&rows, mesh, &single);
             }
         }
@@ -162,11 +178,15 @@ fn a_64_bit_index_past_32_bits_fails_its_mesh_alone() {
             error.message()
         );
         for mesh in [0, 1, 3, 4] {
-            let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
-            let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-            let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
-            let single = polymass::mass_properties(&surface, &Options::new(), &Body::default());
-            assert_row_is(&rows, mesh, &single.unwrap());
+            let single = single_call(
+                &positions,
+                &triangles,
+                &vertex_offsets,
+                &triangle_offsets,
+                mesh,
+                &Body::default(),
+            );
+            assert_row_is(&rows, mesh, &single);
         }
     }
 }
@@ -197,11 +217,15 @@ fn a_failed_mesh_is_its_row_alone() {
         .contains("vertex 1000000"));
     assert!(rows.volume[1].is_nan() && rows.inertia[3][2][2].is_nan());
     for mesh in [0, 2, 4] {
-        let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
-        let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-        let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
-        let single = polymass::mass_properties(&surface, &Options::new(), &Body::default());
-        assert_row_is(&rows, mesh, &single.unwrap());
+        let single = single_call(
+            &positions,
+            &triangles,
+            &vertex_offsets,
+            &triangle_offsets,
+            mesh,
+            &Body::default(),
+        );
+        assert_row_is(&rows, mesh, &single);
     }
 }
 
