@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "lanes.hpp"
+#include "mesh_scan.hpp"
 #include "polygon_integrals.hpp"
 #include "triangle_gather.hpp"
 #include "triangle_integrals.hpp"
@@ -180,6 +181,7 @@ struct BlockSums {
     Finding degenerate_faces;
     Finding non_planar_faces;
     double max_non_planarity = 0.0;
+    bool indices_in_range = true;
 
     // Block order: a block's sums join the total after those of the blocks
     // before it.
@@ -191,6 +193,7 @@ struct BlockSums {
         degenerate_faces.merge(block.degenerate_faces);
         non_planar_faces.merge(block.non_planar_faces);
         max_non_planarity = std::max(max_non_planarity, block.max_non_planarity);
+        indices_in_range = indices_in_range && block.indices_in_range;
     }
 };
 
@@ -212,8 +215,10 @@ public:
     }
 
     // Faces [begin, end) of an all-triangle mesh: whole batches now, the rest
-    // at finish().
+    // at finish(). Called again, for the faces from `end` on, only after whole
+    // batches.
     void add_triangles(std::size_t begin, std::size_t end) {
+        batch_.last_face = end;
         for (batch_.first_face = begin; end - batch_.first_face >= batch_capacity;
              batch_.first_face += batch_capacity) {
             batch_.count = batch_capacity;
@@ -306,6 +311,7 @@ public:
         result.degenerate_faces = total_.degenerate_faces;
         result.non_planar_faces = total_.non_planar_faces;
         result.max_non_planarity = total_.max_non_planarity;
+        result.indices_in_range = total_.indices_in_range;
         return result;
     }
 
@@ -332,6 +338,13 @@ private:
     BlockSums total_;
     std::size_t blocks_ = 0;
 };
+
+// With used marks: the triangles whose indices are checked and marked just
+// before they are integrated, a few dozen kilobytes of indices, read again
+// from the L1 or L2 cache. Whole batches but the last.
+constexpr std::size_t kMarkedTogether = 2048;
+static_assert(kMarkedTogether % batch_capacity == 0 && kFacesPerBlock % kMarkedTogether == 0,
+              "whole batches");
 
 // Blocks are run this many at a time, their sums kept on the stack until
 // they join the total in order.
@@ -368,7 +381,17 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
             const std::size_t end = std::min(begin + kFacesPerBlock, mesh.face_count);
             BlockIntegrator<Scalar, Index> integrator(mesh, settings, unit);
             if (mesh.all_triangles()) {
-                integrator.add_triangles(begin, end);
+                const std::size_t piece = settings.used_marks ? kMarkedTogether : kFacesPerBlock;
+                for (std::size_t first = begin; first < end; first += piece) {
+                    const std::size_t last = std::min(first + piece, end);
+                    if (settings.used_marks &&
+                        !mark_used_vertices(mesh, 3 * first, 3 * last, settings.used_marks,
+                                            settings.instruction_set)) {
+                        sums[block].indices_in_range = false;
+                        return;
+                    }
+                    integrator.add_triangles(first, last);
+                }
                 sums[block] = integrator.finish();
                 return;
             }

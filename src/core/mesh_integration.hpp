@@ -24,6 +24,12 @@ struct IntegrationSettings {
     double planarity_tolerance = 1e-6;  // off-plane distance / face diameter
     // Tests force each set the processor runs, to compare their bits.
     InstructionSet instruction_set = widest_instruction_set();
+    // When set (all-triangle meshes only): the pass marks the vertices the
+    // faces use here, as mark_used_vertices (mesh_scan.hpp) does, and checks
+    // the indices of each piece of faces before it reads their vertices - the
+    // scan's own pass over the index array, made while the indices are in the
+    // cache. addressable_vertices(mesh) bytes, zero to start with.
+    unsigned char* used_marks = nullptr;
 };
 
 struct IntegrationResult {
@@ -33,6 +39,9 @@ struct IntegrationResult {
     Finding degenerate_faces;
     Finding non_planar_faces;
     double max_non_planarity = 0.0;  // relative to the face's diameter
+    // With used_marks: false when an index is out of range, and then nothing
+    // else here is meaningful (some faces were not read).
+    bool indices_in_range = true;
     // The signed volume is at rounding level: each face's term carries an
     // error of order ε·area·size, so a surface of area A and size L (bounding
     // box diagonal) cannot tell |V| ≲ ε·A·L from zero. A slack of 1024 keeps
@@ -41,7 +50,8 @@ struct IntegrationResult {
     bool encloses_no_volume = false;
 };
 
-// Indices must be in range and used coordinates finite (checked before). The
+// Indices must be in range (checked before, or with used_marks as it goes)
+// and used coordinates finite. The
 // blocks of faces (face_blocks.hpp) run as tasks of `runner`, each summed on
 // its own, and the blocks' sums are added in block order: the bits depend on
 // the mesh alone, not on how many threads run the blocks.

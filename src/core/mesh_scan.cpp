@@ -86,7 +86,8 @@ struct PackedBounds {
 // vertex order) with that coordinate ±0, as a running minimum or maximum that
 // keeps its value on a tie does; packed blocks are taken a vector at a time,
 // which could otherwise keep the other zero. (The sign can reach the results
-// through the reference point of a surface flat along that axis.)
+// through the reference point of a surface flat along that axis.) A null
+// seen_vertex: every vertex counts.
 template <class Scalar, class Index>
 void keep_first_zero_signs(const MeshView<Scalar, Index>& mesh, const unsigned char* seen_vertex,
                            std::size_t addressable, Eigen::AlignedBox3d& bounds) {
@@ -95,7 +96,7 @@ void keep_first_zero_signs(const MeshView<Scalar, Index>& mesh, const unsigned c
         for (double* end : ends) {
             if (*end != 0.0) continue;
             for (std::size_t vertex = 0; vertex < addressable; ++vertex) {
-                if (!seen_vertex[vertex]) continue;
+                if (seen_vertex && !seen_vertex[vertex]) continue;
                 const Eigen::Vector3d p = mesh.positions[vertex];
                 if (!p.allFinite() || p[axis] != 0.0) continue;
                 *end = p[axis];
@@ -176,7 +177,8 @@ struct VertexPart {
 };
 
 // Bounds the used vertices of blocks [first_block, last_block) (64 vertices
-// each, the last one maybe fewer) and sets their bits of `used`.
+// each, the last one maybe fewer) and sets their bits of `used`. A null
+// seen_vertex: every vertex is taken as used; a null used_words: no bits kept.
 template <class Scalar, class Index>
 __attribute__((always_inline)) inline VertexPart bound_vertices_as(
     const MeshView<Scalar, Index>& mesh, const unsigned char* seen_vertex, std::size_t addressable,
@@ -193,9 +195,9 @@ __attribute__((always_inline)) inline VertexPart bound_vertices_as(
         // Usually every vertex of a block is used and finite: then no test
         // per vertex. x − x is 0 for a finite x and NaN otherwise, and a NaN
         // stays in a sum: one test for the block.
-        if (end - begin == 64 && all_set(seen_vertex + begin)) {
+        if (end - begin == 64 && (!seen_vertex || all_set(seen_vertex + begin))) {
             if (packed && packed_bounds.add_block(positions.base + begin * positions.stride)) {
-                used_words[block] = ~std::uint64_t{0};
+                if (used_words) used_words[block] = ~std::uint64_t{0};
                 used_vertex_count += 64;
                 continue;
             }
@@ -208,7 +210,7 @@ __attribute__((always_inline)) inline VertexPart bound_vertices_as(
                 block_high = block_high.cwiseMax(p);
             }
             if (finite_if_zero == 0.0) {
-                used_words[block] = ~std::uint64_t{0};
+                if (used_words) used_words[block] = ~std::uint64_t{0};
                 used_vertex_count += 64;
                 low = block_low, high = block_high;
                 continue;
@@ -216,7 +218,7 @@ __attribute__((always_inline)) inline VertexPart bound_vertices_as(
         }
         std::uint64_t used = 0;
         for (std::size_t vertex = begin; vertex < end; ++vertex) {
-            if (!seen_vertex[vertex]) continue;
+            if (seen_vertex && !seen_vertex[vertex]) continue;
             used |= std::uint64_t{1} << (vertex % 64);
             ++used_vertex_count;
             const Eigen::Vector3d p = positions[vertex];
@@ -228,7 +230,7 @@ __attribute__((always_inline)) inline VertexPart bound_vertices_as(
             low = low.cwiseMin(p);
             high = high.cwiseMax(p);
         }
-        used_words[block] = used;
+        if (used_words) used_words[block] = used;
     }
     packed_bounds.reduce(low, high);
     part.low = low, part.high = high;
@@ -279,20 +281,110 @@ ScanKernels<Scalar, Index> scan_kernels(InstructionSet set) {
     return {mark_indices_baseline<Scalar, Index>, bound_vertices_baseline<Scalar, Index>};
 }
 
+// The vertex pass over blocks [0, blocks) of 64 vertices, in fixed parts:
+// the parts' bounds, counts and findings joined in part order (seen_vertex
+// and used_words as bound_vertices_as takes them).
+template <class Scalar, class Index>
+VertexPart bound_in_parts(const MeshView<Scalar, Index>& mesh,
+                          const ScanKernels<Scalar, Index>& kernels,
+                          const unsigned char* seen_vertex, std::size_t addressable,
+                          std::uint64_t* used_words, std::pmr::memory_resource* memory,
+                          TaskRunner& tasks) {
+    const std::size_t blocks = (addressable + 63) / 64;
+    const std::size_t vertex_parts = (blocks + kBlocksPerPart - 1) / kBlocksPerPart;
+    std::pmr::vector<VertexPart> bounded(vertex_parts, memory);
+    tasks.run(vertex_parts, [&](std::size_t part) {
+        const std::size_t first = part * kBlocksPerPart;
+        bounded[part] =
+            kernels.bound_vertices(mesh, seen_vertex, addressable, first,
+                                   std::min(blocks, first + kBlocksPerPart), used_words);
+    });
+    VertexPart joined;
+    for (const VertexPart& part : bounded) {
+        joined.low = joined.low.cwiseMin(part.low);
+        joined.high = joined.high.cwiseMax(part.high);
+        joined.used_vertex_count += part.used_vertex_count;
+        joined.non_finite.merge(part.non_finite);
+    }
+    return joined;
+}
+
+// The bounds, counts and used bits of a scan from its marks.
+template <class Scalar, class Index>
+void bound_used_vertices(const MeshView<Scalar, Index>& mesh,
+                         const ScanKernels<Scalar, Index>& kernels,
+                         const std::pmr::vector<unsigned char>& seen, MeshScan& scan,
+                         std::pmr::memory_resource* memory, TaskRunner& tasks) {
+    scan.used.assign((seen.size() + 63) / 64, 0);
+    const VertexPart bounded =
+        bound_in_parts(mesh, kernels, seen.data(), seen.size(), scan.used.data(), memory, tasks);
+    scan.used_vertex_count = bounded.used_vertex_count;
+    scan.non_finite = bounded.non_finite;
+    scan.bounds = Eigen::AlignedBox3d(bounded.low, bounded.high);
+    if (mesh.positions.stride == 3 * sizeof(Scalar))
+        keep_first_zero_signs(mesh, seen.data(), seen.size(), scan.bounds);
+}
+
 }  // namespace
+
+template <class Scalar, class Index>
+std::size_t addressable_vertices(const MeshView<Scalar, Index>& mesh) {
+    return std::min<std::size_t>(mesh.vertex_count,
+                                 std::size_t(std::numeric_limits<Index>::max()) + 1);
+}
+
+template <class Scalar, class Index>
+bool mark_used_vertices(const MeshView<Scalar, Index>& mesh, std::size_t begin, std::size_t end,
+                        unsigned char* seen, InstructionSet set) {
+    return scan_kernels<Scalar, Index>(set).mark_indices(mesh, begin, end, seen).all_in_range;
+}
+
+template <class Scalar, class Index>
+std::optional<Eigen::AlignedBox3d> bound_every_vertex(const MeshView<Scalar, Index>& mesh,
+                                                      std::pmr::memory_resource* memory,
+                                                      TaskRunner& tasks, InstructionSet set) {
+    const std::size_t addressable = addressable_vertices(mesh);
+    if (addressable != mesh.vertex_count || mesh.positions.stride != 3 * sizeof(Scalar))
+        return std::nullopt;
+    const VertexPart bounded = bound_in_parts(mesh, scan_kernels<Scalar, Index>(set), nullptr,
+                                              addressable, nullptr, memory, tasks);
+    if (bounded.non_finite.count > 0) return std::nullopt;
+    Eigen::AlignedBox3d bounds(bounded.low, bounded.high);
+    keep_first_zero_signs(mesh, nullptr, addressable, bounds);
+    return bounds;
+}
+
+template <class Scalar, class Index>
+MeshScan scan_from_marks(const MeshView<Scalar, Index>& mesh,
+                         const std::pmr::vector<unsigned char>& seen,
+                         const Eigen::AlignedBox3d& every_vertex, std::pmr::memory_resource* memory,
+                         TaskRunner& tasks, InstructionSet set) {
+    MeshScan scan(memory);
+    // 64 marks at a time (every byte is 0 or 1).
+    std::size_t vertex = 0;
+    while (vertex + 64 <= seen.size() && all_set(seen.data() + vertex)) vertex += 64;
+    const bool every_vertex_used = std::all_of(seen.begin() + std::ptrdiff_t(vertex), seen.end(),
+                                               [](unsigned char mark) { return mark != 0; });
+    if (!every_vertex_used) {
+        bound_used_vertices(mesh, scan_kernels<Scalar, Index>(set), seen, scan, memory, tasks);
+        return scan;
+    }
+    scan.used.assign((seen.size() + 63) / 64, ~std::uint64_t{0});
+    if (seen.size() % 64 != 0) scan.used.back() = (std::uint64_t{1} << (seen.size() % 64)) - 1;
+    scan.used_vertex_count = seen.size();
+    scan.bounds = every_vertex;
+    return scan;
+}
 
 template <class Scalar, class Index>
 MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
                    TaskRunner& tasks, InstructionSet set) {
     const ScanKernels<Scalar, Index> kernels = scan_kernels<Scalar, Index>(set);
     MeshScan scan(memory);
-    // No index can reach past this, however long the caller says the array is.
-    const std::size_t addressable = std::min<std::size_t>(
-        mesh.vertex_count, std::size_t(std::numeric_limits<Index>::max()) + 1);
     // A byte per vertex, packed into scan.used afterwards: setting bits in
     // place would chain each face's read-modify-write of a word to the last
     // one's (neighbouring faces share vertices), a byte store waits for nothing.
-    std::pmr::vector<unsigned char> seen(addressable, 0, memory);
+    std::pmr::vector<unsigned char> seen(addressable_vertices(mesh), 0, memory);
     const std::size_t index_parts = (mesh.index_count + kIndicesPerPart - 1) / kIndicesPerPart;
     std::pmr::vector<IndexPart> marked(index_parts, memory);
     tasks.run(index_parts, [&](std::size_t part) {
@@ -316,32 +408,21 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
             if (!in_range) scan.out_of_range_faces.record(face);
         });
     }
-
-    scan.used.assign((addressable + 63) / 64, 0);
-    const std::size_t vertex_parts = (scan.used.size() + kBlocksPerPart - 1) / kBlocksPerPart;
-    std::pmr::vector<VertexPart> bounded(vertex_parts, memory);
-    tasks.run(vertex_parts, [&](std::size_t part) {
-        const std::size_t first = part * kBlocksPerPart;
-        bounded[part] = kernels.bound_vertices(mesh, seen.data(), addressable, first,
-                                               std::min(scan.used.size(), first + kBlocksPerPart),
-                                               scan.used.data());
-    });
-    Eigen::Vector3d low = scan.bounds.min(), high = scan.bounds.max();
-    for (const VertexPart& part : bounded) {
-        low = low.cwiseMin(part.low);
-        high = high.cwiseMax(part.high);
-        scan.used_vertex_count += part.used_vertex_count;
-        scan.non_finite.merge(part.non_finite);
-    }
-    scan.bounds = Eigen::AlignedBox3d(low, high);
-    if (mesh.positions.stride == 3 * sizeof(Scalar))
-        keep_first_zero_signs(mesh, seen.data(), addressable, scan.bounds);
+    bound_used_vertices(mesh, kernels, seen, scan, memory, tasks);
     return scan;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)     \
-    template MeshScan scan_mesh<Scalar, Index>( \
-        const MeshView<Scalar, Index>&, std::pmr::memory_resource*, TaskRunner&, InstructionSet);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                       \
+    template MeshScan scan_mesh<Scalar, Index>(                                                   \
+        const MeshView<Scalar, Index>&, std::pmr::memory_resource*, TaskRunner&, InstructionSet); \
+    template std::size_t addressable_vertices<Scalar, Index>(const MeshView<Scalar, Index>&);     \
+    template bool mark_used_vertices<Scalar, Index>(const MeshView<Scalar, Index>&, std::size_t,  \
+                                                    std::size_t, unsigned char*, InstructionSet); \
+    template std::optional<Eigen::AlignedBox3d> bound_every_vertex<Scalar, Index>(                \
+        const MeshView<Scalar, Index>&, std::pmr::memory_resource*, TaskRunner&, InstructionSet); \
+    template MeshScan scan_from_marks<Scalar, Index>(                                             \
+        const MeshView<Scalar, Index>&, const std::pmr::vector<unsigned char>&,                   \
+        const Eigen::AlignedBox3d&, std::pmr::memory_resource*, TaskRunner&, InstructionSet);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory_resource>
+#include <optional>
 #include <vector>
 
 #include "findings.hpp"
@@ -43,5 +44,41 @@ struct MeshScan {
 template <class Scalar, class Index>
 MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
                    TaskRunner& tasks, InstructionSet set = widest_instruction_set());
+
+// The same scan in pieces, for a pass over the faces that reads the index
+// array anyway (the integration when nothing else needs the scan first): it
+// marks the used vertices as it goes, about the bounds of every vertex, and
+// the scan is finished from its marks. When every vertex is used (most
+// meshes), the bounds of every vertex are those of the used ones, and the
+// scan's own pass over the index array is saved.
+
+// How many vertices indices can reach: the length of the marks.
+template <class Scalar, class Index>
+std::size_t addressable_vertices(const MeshView<Scalar, Index>& mesh);
+
+// Marks seen[v] for the vertices of positions [begin, end) of the index array
+// (as scan_mesh does: a relaxed byte store, safe on several threads at once);
+// false when an index there is out of range (the others are marked).
+template <class Scalar, class Index>
+bool mark_used_vertices(const MeshView<Scalar, Index>& mesh, std::size_t begin, std::size_t end,
+                        unsigned char* seen, InstructionSet set = widest_instruction_set());
+
+// The bounds of every vertex, used or not, in fixed parts on `tasks`, with
+// a zero's sign taken as scan_mesh takes it: when every index can reach every
+// vertex, the positions are packed and every coordinate is finite; nullopt
+// otherwise (scan_mesh then says what is wrong).
+template <class Scalar, class Index>
+std::optional<Eigen::AlignedBox3d> bound_every_vertex(
+    const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory, TaskRunner& tasks,
+    InstructionSet set = widest_instruction_set());
+
+// scan_mesh from the marks of the whole index array, every index in range
+// (addressable_vertices bytes), and bound_every_vertex: the same scan. With
+// every vertex used, no pass over the positions.
+template <class Scalar, class Index>
+MeshScan scan_from_marks(const MeshView<Scalar, Index>& mesh,
+                         const std::pmr::vector<unsigned char>& seen,
+                         const Eigen::AlignedBox3d& every_vertex, std::pmr::memory_resource* memory,
+                         TaskRunner& tasks, InstructionSet set = widest_instruction_set());
 
 }  // namespace polymass::core

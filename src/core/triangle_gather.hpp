@@ -30,8 +30,12 @@ template <class Scalar, class Index>
 struct TriangleBatch {
     PositionArray<Scalar> positions;
     IndexArray<Index> indices;
-    std::size_t count = 0;                 // at most batch_capacity
-    std::size_t first_face = 0;            // when not listed
+    std::size_t count = 0;       // at most batch_capacity
+    std::size_t first_face = 0;  // when not listed
+    // When not listed: the faces from first_face up to this one are all to
+    // be gathered (this batch and the next ones of its block), so their
+    // vertices may be fetched ahead.
+    std::size_t last_face = 0;
     const std::size_t* faces = nullptr;    // listed faces, or nullptr
     const std::size_t* corners = nullptr;  // their first corner's position in the index array
     double reference[3];

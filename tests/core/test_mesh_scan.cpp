@@ -6,7 +6,10 @@
 // gives), for double and float, packed and strided positions, with unused and
 // non-finite vertices among them, in one part and in several, and with the
 // kernels of every instruction set this processor runs, which also agree on
-// the used vertices, the non-finite ones and indices past the array.
+// the used vertices, the non-finite ones and indices past the array. The scan
+// in pieces (the used vertices marked a piece of the index array at a time,
+// then finished from the marks and the bounds of every vertex) is the same
+// scan, wherever the bounds of every vertex can be taken.
 #include "core/mesh_scan.hpp"
 
 #include "check.hpp"
@@ -18,6 +21,7 @@
 #include <functional>
 #include <limits>
 #include <memory_resource>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -27,6 +31,18 @@ bool same_bits(double a, double b) { return a == b && std::signbit(a) == std::si
 
 bool same_finding(const polymass::core::Finding& a, const polymass::core::Finding& b) {
     return a.count == b.count && a.lowest == b.lowest;
+}
+
+bool same_scan(const polymass::core::MeshScan& scan, const polymass::core::MeshScan& expected) {
+    bool same = scan.out_of_range_indices == expected.out_of_range_indices &&
+                same_finding(scan.out_of_range_faces, expected.out_of_range_faces) &&
+                scan.first_out_of_range_index == expected.first_out_of_range_index &&
+                same_finding(scan.non_finite, expected.non_finite) &&
+                scan.used_vertex_count == expected.used_vertex_count && scan.used == expected.used;
+    for (int axis = 0; axis < 3; ++axis)
+        same = same && same_bits(scan.bounds.min()[axis], expected.bounds.min()[axis]) &&
+               same_bits(scan.bounds.max()[axis], expected.bounds.max()[axis]);
+    return same;
 }
 
 // The scan with each instruction set's kernels is `expected`, bit for bit.
@@ -41,20 +57,41 @@ void check_every_instruction_set(const char* name,
         if (!polymass::core::runs_instruction_set(set)) continue;
         const polymass::core::MeshScan scan =
             polymass::core::scan_mesh(view, std::pmr::get_default_resource(), serial, set);
-        bool same = scan.out_of_range_indices == expected.out_of_range_indices &&
-                    same_finding(scan.out_of_range_faces, expected.out_of_range_faces) &&
-                    scan.first_out_of_range_index == expected.first_out_of_range_index &&
-                    same_finding(scan.non_finite, expected.non_finite) &&
-                    scan.used_vertex_count == expected.used_vertex_count &&
-                    scan.used == expected.used;
-        for (int axis = 0; axis < 3; ++axis)
-            same = same && same_bits(scan.bounds.min()[axis], expected.bounds.min()[axis]) &&
-                   same_bits(scan.bounds.max()[axis], expected.bounds.max()[axis]);
+        const bool same = same_scan(scan, expected);
         if (!same)
             std::fprintf(stderr, "%s (%zu vertices): instruction set %d scans otherwise\n", name,
                          std::size_t(view.vertex_count), int(set));
         CHECK(same);
     }
+}
+
+// The scan in pieces is `expected`, bit for bit, when the bounds of every
+// vertex can be taken (`boundable`: packed positions, all finite). (It
+// shares its kernels and the joins of its parts with the scan, which the
+// runner that reverses them checks.)
+template <class Scalar, class Index>
+void check_pieces(const char* name, const polymass::core::MeshView<Scalar, Index>& view,
+                  const polymass::core::MeshScan& expected, bool boundable) {
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource();
+    polymass::core::SerialTaskRunner runner;
+    const std::optional<Eigen::AlignedBox3d> every_vertex =
+        polymass::core::bound_every_vertex(view, memory, runner);
+    CHECK(every_vertex.has_value() == boundable);
+    if (!every_vertex) return;
+    std::pmr::vector<unsigned char> seen(polymass::core::addressable_vertices(view), 0, memory);
+    // In two pieces, the second one first.
+    const std::size_t half = view.index_count / 2;
+    const bool in_range =
+        polymass::core::mark_used_vertices(view, half, view.index_count, seen.data()) &&
+        polymass::core::mark_used_vertices(view, 0, half, seen.data());
+    CHECK(in_range == (expected.out_of_range_indices == 0));
+    if (!in_range) return;
+    const bool same = same_scan(
+        polymass::core::scan_from_marks(view, seen, *every_vertex, memory, runner), expected);
+    if (!same)
+        std::fprintf(stderr, "%s (%zu vertices): the scan in pieces differs\n", name,
+                     std::size_t(view.vertex_count));
+    CHECK(same);
 }
 
 // Positions (xyz per vertex, `stride` coordinates apart) and triangles over
@@ -85,6 +122,9 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
         }
     }
 
+    bool boundable = stride == 3;
+    for (const Scalar c : positions) boundable = boundable && std::isfinite(c);
+
     polymass::core::MeshView<Scalar, std::uint32_t> view;
     view.positions.base = reinterpret_cast<const unsigned char*>(positions.data());
     view.positions.stride = stride * sizeof(Scalar);
@@ -111,6 +151,7 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
         std::size_t used = 0;
         for (std::size_t v = 0; v < vertices; ++v) used += !unused[v];
         CHECK(scan.used_vertex_count == used);
+        if (runner == &serial) check_pieces(name, view, scan, boundable);
     }
 
     // 16-bit indices, and two past the vertex array in the last face.
@@ -128,6 +169,7 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
         polymass::core::scan_mesh(short_view, std::pmr::get_default_resource(), serial);
     CHECK(scan.out_of_range_indices == 2);
     check_every_instruction_set(name, short_view, scan);
+    check_pieces(name, short_view, scan, boundable);
 }
 
 template <class Scalar>

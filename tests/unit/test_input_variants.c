@@ -115,6 +115,42 @@ static void test_unused_vertices(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* The trusted path (topology unchecked) finds the used vertices as it
+   integrates, about the centre of the bounds of every vertex, and integrates
+   again when the used ones' bounds differ: with vertices unused inside the
+   solid's box, outside it, not finite, or none, its results are those of the
+   checked path, bit for bit, and the exact ones to the usual tolerance. */
+static void test_unused_vertices_trusted(void** state) {
+    const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TORUS_TRIS];
+    const pm_expected e = pm_expected_from_reference(ref);
+    polymass_context* ctx = pm_context_new();
+    const uint32_t trusted = POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    int extra;
+    (void)state;
+    for (extra = 0; extra < 4; ++extra) {
+        static const char* const labels[] = {"none unused", "unused inside the box",
+                                             "unused far outside", "unused, not finite"};
+        polymass_mass_properties checked, p;
+        pm_mesh m;
+        pm_mesh_from_reference(&m, ref);
+        if (extra == 1) pm_mesh_add_vertex(&m, m.positions[0], m.positions[1], m.positions[2]);
+        if (extra == 2) pm_mesh_add_vertex(&m, 1e4, -1e4, 1e3);
+        if (extra == 3) pm_mesh_add_vertex(&m, NAN, 0, 0);
+        pm_props_init(&checked);
+        pm_props_init(&p);
+        PM_ASSERT_OK(ctx, pm_compute_flags(&checked, ctx, &m,
+                                           POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, NULL));
+        PM_ASSERT_OK(ctx, pm_compute_flags(&p, ctx, &m, trusted, NULL));
+        /* The one difference: the trusted answer says it is unchecked. */
+        assert_int_equal(p.warnings, checked.warnings | POLYMASS_WARNING_UNCHECKED);
+        checked.warnings = p.warnings;
+        PM_ASSERT_SAME_PROPERTIES(labels[extra], &checked, &p);
+        PM_ASSERT_PROPERTIES(labels[extra], &e, &p, PM_TOL);
+        pm_mesh_free(&m);
+    }
+    polymass_context_destroy(ctx);
+}
+
 /* The mesh keeps the integrals, not the caller's arrays. */
 static void test_mesh_does_not_keep_caller_arrays(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_HOUSE];
@@ -197,6 +233,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_variants_equal_packed_double),
         cmocka_unit_test(test_unused_vertices),
+        cmocka_unit_test(test_unused_vertices_trusted),
         cmocka_unit_test(test_mesh_does_not_keep_caller_arrays),
         cmocka_unit_test(test_mesh_outlives_its_context),
         cmocka_unit_test(test_float32_rounded_values),
