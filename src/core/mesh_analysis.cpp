@@ -68,7 +68,7 @@ std::optional<MeshAnalysis> integrate_while_scanning(const MeshView<Scalar, Inde
     provisional.bounds = *every_vertex;
     IntegrationSettings integration = integration_settings(provisional, settings);
     std::pmr::vector<unsigned char> seen(addressable_vertices(mesh), 0, memory);
-    integration.used_marks = seen.data();
+    integration.used_marks = &seen;
     IntegrationResult integrated = integrate_mesh(mesh, integration, tasks);
     if (!integrated.indices_in_range) return std::nullopt;
     MeshAnalysis analysis(scan_from_marks(mesh, seen, *every_vertex, memory, tasks));

@@ -385,7 +385,7 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
                 for (std::size_t first = begin; first < end; first += piece) {
                     const std::size_t last = std::min(first + piece, end);
                     if (settings.used_marks &&
-                        !mark_used_vertices(mesh, 3 * first, 3 * last, settings.used_marks,
+                        !mark_used_vertices(mesh, 3 * first, 3 * last, settings.used_marks->data(),
                                             settings.instruction_set)) {
                         sums[block].indices_in_range = false;
                         return;

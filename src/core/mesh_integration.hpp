@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <memory_resource>
+#include <vector>
 
 #include "face_blocks.hpp"
 #include "findings.hpp"
@@ -28,8 +30,10 @@ struct IntegrationSettings {
     // faces use here, as mark_used_vertices (mesh_scan.hpp) does, and checks
     // the indices of each piece of faces before it reads their vertices - the
     // scan's own pass over the index array, made while the indices are in the
-    // cache. addressable_vertices(mesh) bytes, zero to start with.
-    unsigned char* used_marks = nullptr;
+    // cache. addressable_vertices(mesh) bytes, zero to start with. (The
+    // vector, not its data: a mesh of no vertex has no marks, and its indices
+    // must still be checked - every one is out of range.)
+    std::pmr::vector<unsigned char>* used_marks = nullptr;
 };
 
 struct IntegrationResult {

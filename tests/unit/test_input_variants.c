@@ -151,6 +151,124 @@ static void test_unused_vertices_trusted(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* A mesh's positions and indices copied into blocks of exactly their size
+   (one byte when empty), so that AddressSanitizer sees a read past either. */
+typedef struct exact_arrays {
+    void* positions;
+    void* indices;
+    polymass_mesh_desc desc;
+} exact_arrays;
+
+static void exact_arrays_make(exact_arrays* out, const pm_mesh* m, uint32_t position_type,
+                              uint32_t index_type) {
+    const size_t element = position_type == POLYMASS_POSITION_FLOAT32 ? 4 : 8;
+    const size_t index_size = index_type == POLYMASS_INDEX_UINT16 ? 2 : 4;
+    size_t i;
+    out->positions = malloc(m->vertex_count ? 3 * m->vertex_count * element : 1);
+    out->indices = malloc(m->index_count ? m->index_count * index_size : 1);
+    assert_non_null(out->positions);
+    assert_non_null(out->indices);
+    for (i = 0; i < 3 * m->vertex_count; ++i) {
+        if (element == 4)
+            ((float*)out->positions)[i] = (float)m->positions[i];
+        else
+            ((double*)out->positions)[i] = m->positions[i];
+    }
+    for (i = 0; i < m->index_count; ++i) {
+        if (index_size == 2)
+            ((uint16_t*)out->indices)[i] = (uint16_t)m->indices[i];
+        else
+            ((uint32_t*)out->indices)[i] = m->indices[i];
+    }
+    out->desc = pm_mesh_desc(m);
+    out->desc.position_type = position_type;
+    out->desc.positions = out->positions;
+    out->desc.index_type = index_type;
+    out->desc.indices = out->indices;
+}
+
+static void exact_arrays_free(exact_arrays* arrays) {
+    free(arrays->positions);
+    free(arrays->indices);
+}
+
+/* The status of the checked path for the mesh's arrays (in exact blocks:
+   exact_arrays_make) with vertex_count vertices; the trusted path (topology
+   unchecked) gives the same status and message. */
+static int32_t trusted_as_checked(polymass_context* ctx, const pm_mesh* m, uint32_t position_type,
+                                  uint32_t index_type, uint64_t vertex_count) {
+    const polymass_options trusted = pm_options(POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS, 0.0);
+    const polymass_options checked = pm_options(POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, 0.0);
+    polymass_mass_properties props;
+    exact_arrays arrays;
+    char message[512];
+    int32_t status;
+    exact_arrays_make(&arrays, m, position_type, index_type);
+    arrays.desc.vertex_count = vertex_count;
+    pm_props_init(&props);
+    status = polymass_mass_properties_compute(&props, NULL, ctx, &arrays.desc, &checked, NULL);
+    snprintf(message, sizeof message, "%s", polymass_context_message(ctx));
+    assert_int_equal(
+        polymass_mass_properties_compute(&props, NULL, ctx, &arrays.desc, &trusted, NULL), status);
+    assert_string_equal(polymass_context_message(ctx), message);
+    exact_arrays_free(&arrays);
+    return status;
+}
+
+/* The trusted path checks each index before it reads the vertex: whatever
+   the position and index types, an index one past the last vertex in the
+   first triangle, past a piece of 2048 triangles, past a block of 65,536 or
+   in the last triangle, or any index with no vertex at all (the position
+   array a single byte), is refused as the checked path refuses it, on one
+   thread and on two, and nothing past the arrays is read; an index at the
+   last vertex is read like any other. No vertex and no face: the checked
+   path's answer. */
+static void test_trusted_reads_only_in_range(void** state) {
+    static const size_t out_of_range_at[] = {0, 3 * 2048 + 1, 3 * 65536 + 2, (size_t)-1};
+    static const uint32_t position_types[] = {POLYMASS_POSITION_FLOAT64, POLYMASS_POSITION_FLOAT32};
+    static const uint32_t index_types[] = {POLYMASS_INDEX_UINT32, POLYMASS_INDEX_UINT16};
+    static const double centre[3] = {1e6, -1e6, 0.0};
+    polymass_context* ctx = pm_context_new();
+    pm_mesh torus, no_vertex, empty;
+    size_t p, i, at, threads;
+    (void)state;
+    /* 70,000 triangles over 35,000 vertices: two blocks, 16-bit indices. */
+    pm_mesh_init(&torus);
+    pm_mesh_add_torus(&torus, 175, 200, 2.0, 0.5, centre);
+    assert_true(torus.index_count > 3 * 65536 + 3 && torus.vertex_count < 65535);
+    pm_mesh_init(&no_vertex);
+    for (i = 0; i < 300; ++i) pm_mesh_add_tri(&no_vertex, 0, 0, i % 7 ? 0 : 1);
+    pm_mesh_init(&empty);
+    for (threads = 1; threads <= 2; ++threads) {
+        assert_int_equal(polymass_context_set_threads(ctx, (uint32_t)threads), POLYMASS_OK);
+        for (p = 0; p < 2; ++p)
+            for (i = 0; i < 2; ++i) {
+                assert_int_equal(
+                    trusted_as_checked(ctx, &no_vertex, position_types[p], index_types[i], 0),
+                    POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+                assert_int_not_equal(
+                    trusted_as_checked(ctx, &empty, position_types[p], index_types[i], 0),
+                    POLYMASS_OK);
+                for (at = 0; at < sizeof out_of_range_at / sizeof out_of_range_at[0]; ++at) {
+                    const size_t corner = out_of_range_at[at] == (size_t)-1 ? torus.index_count - 1
+                                                                            : out_of_range_at[at];
+                    pm_mesh broken;
+                    pm_mesh_copy(&broken, &torus);
+                    broken.indices[corner == 0 ? 1 : corner - 1] = (uint32_t)torus.vertex_count - 1;
+                    broken.indices[corner] = (uint32_t)torus.vertex_count;
+                    assert_int_equal(trusted_as_checked(ctx, &broken, position_types[p],
+                                                        index_types[i], broken.vertex_count),
+                                     POLYMASS_ERROR_INDEX_OUT_OF_RANGE);
+                    pm_mesh_free(&broken);
+                }
+            }
+    }
+    pm_mesh_free(&torus);
+    pm_mesh_free(&no_vertex);
+    pm_mesh_free(&empty);
+    polymass_context_destroy(ctx);
+}
+
 /* The mesh keeps the integrals, not the caller's arrays. */
 static void test_mesh_does_not_keep_caller_arrays(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_HOUSE];
@@ -234,6 +352,7 @@ int main(void) {
         cmocka_unit_test(test_variants_equal_packed_double),
         cmocka_unit_test(test_unused_vertices),
         cmocka_unit_test(test_unused_vertices_trusted),
+        cmocka_unit_test(test_trusted_reads_only_in_range),
         cmocka_unit_test(test_mesh_does_not_keep_caller_arrays),
         cmocka_unit_test(test_mesh_outlives_its_context),
         cmocka_unit_test(test_float32_rounded_values),
