@@ -134,12 +134,19 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
     view.face_count = indices.size() / 3;
     polymass::core::SerialTaskRunner serial;
     polymass_test::ReversedTaskRunner reversed;
+    const polymass::core::MeshScan serial_scan =
+        polymass::core::scan_mesh(view, std::pmr::get_default_resource(), serial);
+    // Every set's scan (on the serial runner) is the serial one: once, not
+    // again against the reversed runner's scan, which is the same scan.
+    check_every_instruction_set(name, view, serial_scan);
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
         const polymass::core::MeshScan scan =
-            polymass::core::scan_mesh(view, std::pmr::get_default_resource(), *runner);
-        check_every_instruction_set(name, view, scan);
+            runner == &serial
+                ? serial_scan
+                : polymass::core::scan_mesh(view, std::pmr::get_default_resource(), *runner);
+        CHECK(same_scan(scan, serial_scan));
         bool same = true;
         for (int axis = 0; axis < 3; ++axis)
             same = same && same_bits(scan.bounds.min()[axis], low[axis]) &&
