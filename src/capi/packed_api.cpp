@@ -144,18 +144,28 @@ int32_t rebase_as(polymass_context* context, polymass_mesh_desc& desc, uint64_t 
                   std::pmr::vector<uint32_t>& local) {
     const auto* indices = static_cast<const unsigned char*>(desc.indices);
     local.resize(desc.index_count);
+    // Rebased without a branch, so that the loop vectorises: a 64-bit index
+    // of 2^32 or more has high bits, and so has its offset when it lies below
+    // `base` (it wraps); only a mesh that has one is read again, for the first.
+    uint64_t high_bits = 0;
     for (std::size_t i = 0; i < desc.index_count; ++i) {
         Index index;
         std::memcpy(&index, indices + i * sizeof index, sizeof index);
         const uint64_t offset = uint64_t(index) - base;
-        if constexpr (sizeof(Index) == sizeof(uint64_t))
-            if (uint64_t(index) < base || uint64_t(index) > UINT32_MAX)
-                return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
-                                     "face %llu refers to vertex %llu, beyond the mesh's %llu "
-                                     "vertices, which start at %llu",
-                                     u64(i / 3), u64(index), u64(desc.vertex_count), u64(base));
+        high_bits |= (uint64_t(index) | offset) >> 32;
         local[i] = uint32_t(offset);
     }
+    if constexpr (sizeof(Index) == sizeof(uint64_t))
+        if (high_bits != 0)
+            for (std::size_t i = 0;; ++i) {
+                uint64_t index;
+                std::memcpy(&index, indices + i * sizeof index, sizeof index);
+                if (index < base || index > UINT32_MAX)
+                    return context->fail(POLYMASS_ERROR_INDEX_OUT_OF_RANGE,
+                                         "face %llu refers to vertex %llu, beyond the mesh's %llu "
+                                         "vertices, which start at %llu",
+                                         u64(i / 3), u64(index), u64(desc.vertex_count), u64(base));
+            }
     desc.index_type = POLYMASS_INDEX_UINT32;
     desc.indices = local.data();
     return POLYMASS_OK;

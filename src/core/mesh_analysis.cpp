@@ -113,14 +113,17 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         analysis.used_vertex_count = distinct_vertices(welded, scan);
     }
     const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
+    // The vertices joined along the edges by the topology check: the shells' sets.
+    std::pmr::vector<std::uint32_t> vertex_sets(memory);
     // The shells as connected pieces, when they were not judged.
     auto finish = [&] {
         if (settings.list_shells && !analysis.shells)
-            analysis.unjudged_shells = find_shells(mesh, scan, vertex_ids, tasks, memory);
+            analysis.unjudged_shells =
+                find_shells(mesh, scan, vertex_ids, std::move(vertex_sets), tasks, memory);
         return std::move(analysis);
     };
     if (settings.check_topology) {
-        analysis.topology = analyse_topology(mesh, vertex_ids, tasks, memory);
+        analysis.topology = analyse_topology(mesh, vertex_ids, tasks, memory, vertex_sets);
         if (stop()) return finish();
     }
 
@@ -136,8 +139,8 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         analysis.topology->closed_and_oriented(settings.policy.accept_balanced_non_manifold) &&
         (defect == Defect::none || defect == Defect::inverted || defect == Defect::zero_volume)) {
         analysis.shells =
-            survey_shells(mesh, scan, vertex_ids, integration.reference, analysis.verdict.outward,
-                          analysis.integration->integrals.volume,
+            survey_shells(mesh, scan, vertex_ids, std::move(vertex_sets), integration.reference,
+                          analysis.verdict.outward, analysis.integration->integrals.volume,
                           analysis.integration->encloses_no_volume, tasks, memory);
         if (stop()) return finish();
     }

@@ -29,10 +29,13 @@ void record_kinds(ShellSurvey& survey) {
 
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                          const std::uint32_t* vertex_ids, const Eigen::Vector3d& reference,
-                          int outward, double whole_volume, bool whole_encloses_no_volume,
-                          TaskRunner& tasks, std::pmr::memory_resource* memory) {
-    ShellSurvey survey(find_shells(mesh, scan, vertex_ids, tasks, memory), memory);
+                          const std::uint32_t* vertex_ids,
+                          std::pmr::vector<std::uint32_t> vertex_sets,
+                          const Eigen::Vector3d& reference, int outward, double whole_volume,
+                          bool whole_encloses_no_volume, TaskRunner& tasks,
+                          std::pmr::memory_resource* memory) {
+    ShellSurvey survey(find_shells(mesh, scan, vertex_ids, std::move(vertex_sets), tasks, memory),
+                       memory);
     survey.summary.resize(survey.shells.count);
     // One shell is the whole surface, whose volume the caller has judged:
     // nothing to compare it with.
@@ -103,10 +106,11 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
     record_kinds(survey);
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
-    template ShellSurvey survey_shells<Scalar, Index>(                         \
-        const MeshView<Scalar, Index>&, const MeshScan&, const std::uint32_t*, \
-        const Eigen::Vector3d&, int, double, bool, TaskRunner&, std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                      \
+    template ShellSurvey survey_shells<Scalar, Index>(                                           \
+        const MeshView<Scalar, Index>&, const MeshScan&, const std::uint32_t*,                   \
+        std::pmr::vector<std::uint32_t>, const Eigen::Vector3d&, int, double, bool, TaskRunner&, \
+        std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

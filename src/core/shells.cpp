@@ -9,52 +9,6 @@
 namespace polymass::core {
 namespace {
 
-// Union-find whose root is always the smallest index of its set (as
-// smallest_index_sets.hpp), safe for several threads joining at once: a root
-// is linked below a smaller one by compare-and-swap, and every parent is
-// smaller than its child, so paths halved by a thread reading an older parent
-// still lead to the root. The sets and their roots end the same whatever the
-// order of the joins - the shells' numbers do not depend on the threads.
-class ConcurrentSmallestIndexSets {
-public:
-    explicit ConcurrentSmallestIndexSets(std::pmr::vector<std::uint32_t>& parent)
-        : parent_(parent.data()) {}
-
-    // Two steps at a time: a root and a root's child (most of what a search
-    // meets once paths are halved) both end at the first test, a branch
-    // that rarely goes the other way.
-    std::uint32_t find(std::uint32_t index) const {
-        for (;;) {
-            const std::uint32_t parent = load(index);
-            const std::uint32_t grandparent = load(parent);
-            if (grandparent == parent) return parent;
-            __atomic_store_n(&parent_[index], grandparent, __ATOMIC_RELAXED);  // halving
-            index = grandparent;
-        }
-    }
-    // Returns the joined set's root (as it is then), which the next join of
-    // the same face starts from: one search saved per join.
-    std::uint32_t join(std::uint32_t a, std::uint32_t b) const {
-        for (;;) {
-            a = find(a);
-            b = find(b);
-            if (a == b) return a;
-            if (a > b) std::swap(a, b);
-            std::uint32_t expected = b;  // b is still a root
-            if (__atomic_compare_exchange_n(&parent_[b], &expected, a, false, __ATOMIC_RELAXED,
-                                            __ATOMIC_RELAXED))
-                return a;
-        }
-    }
-
-private:
-    std::uint32_t load(std::uint32_t index) const {
-        return __atomic_load_n(&parent_[index], __ATOMIC_RELAXED);
-    }
-
-    std::uint32_t* parent_;
-};
-
 // Joins each face's vertices (a triangle's loop unrolled: the root stays in a
 // register).
 template <class Scalar, class Index, class VertexId>
@@ -88,20 +42,24 @@ std::size_t count_roots(const std::pmr::vector<std::uint32_t>& parent, const Mes
 
 template <class Scalar, class Index>
 Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                   const std::uint32_t* vertex_ids, TaskRunner& tasks,
-                   std::pmr::memory_resource* memory) {
+                   const std::uint32_t* vertex_ids, std::pmr::vector<std::uint32_t> vertex_sets,
+                   TaskRunner& tasks, std::pmr::memory_resource* memory) {
     auto id = [&](std::size_t position) {
         const std::uint32_t vertex = mesh.indices[position];
         return vertex_ids ? vertex_ids[vertex] : vertex;
     };
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
-    std::pmr::vector<std::uint32_t> parent(mesh.vertex_count, memory);
-    std::iota(parent.begin(), parent.end(), 0u);
-    const ConcurrentSmallestIndexSets sets(parent);
+    std::pmr::vector<std::uint32_t> parent(std::move(vertex_sets), memory);
+    const bool joined = !parent.empty();
+    if (!joined) {
+        parent.resize(mesh.vertex_count);
+        std::iota(parent.begin(), parent.end(), 0u);
+    }
+    const ConcurrentSmallestIndexSets sets(parent.data());
     // Without welding, no test per index for the identities.
-    if (vertex_ids)
+    if (!joined && vertex_ids)
         join_faces(mesh, starts, id, sets, tasks);
-    else
+    else if (!joined)
         join_faces(
             mesh, starts, [&](std::size_t position) { return mesh.indices[position]; }, sets,
             tasks);
@@ -133,10 +91,10 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     return shells;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                                     \
-    template Shells find_shells<Scalar, Index>(const MeshView<Scalar, Index>&, const MeshScan&, \
-                                               const std::uint32_t*, TaskRunner&,               \
-                                               std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
+    template Shells find_shells<Scalar, Index>(                                \
+        const MeshView<Scalar, Index>&, const MeshScan&, const std::uint32_t*, \
+        std::pmr::vector<std::uint32_t>, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

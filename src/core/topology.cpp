@@ -4,11 +4,13 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
 #include "face_blocks.hpp"
 #include "scratch_buffer.hpp"
+#include "shells.hpp"
 
 namespace polymass::core {
 namespace {
@@ -138,11 +140,22 @@ void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
                            });
 }
 
+// Joins `low` with the other end of each entry's edge. Most ends hang
+// straight below low's root already (joined through a lower vertex, or by
+// the edge's other entry): one load each, and no search.
+template <class Entry>
+void join_ends(const ConcurrentSmallestIndexSets& sets, std::size_t low, const Entry* first,
+               const Entry* last) {
+    std::uint32_t root = sets.find(std::uint32_t(low));
+    for (const Entry* at = first; at != last; ++at)
+        root = sets.join_to(root, std::uint32_t(*at >> 1));
+}
+
 // Classifies the edges whose lower vertex is in [first_low, last_low), from
-// their bucket entries starting at `entries`.
+// their bucket entries starting at `entries`, and joins their ends in `sets`.
 template <class Entry>
 TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t first_low,
-                            std::size_t last_low) {
+                            std::size_t last_low, const ConcurrentSmallestIndexSets& sets) {
     TopologyReport report;
     Entry begin = first_low == 0 ? 0 : end_of[first_low - 1];
     // Reading past a bucket stays within the piece: the next piece's buckets
@@ -153,6 +166,9 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
         Entry* const last = entries + end_of[low];
         begin = end_of[low];
         const std::size_t size = std::size_t(last - first);
+        // No edge: an unused or a welded-away vertex (most of a welded soup's).
+        if (size == 0) continue;
+        join_ends(sets, low, first, last);
         if (size <= small_bucket && low >= padded_from_low &&
             std::size_t(piece_end - first) >= small_bucket &&
             small_bucket_of_common_edges(first, size)) {
@@ -188,7 +204,7 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
 
 template <class Entry, class Scalar, class Index, class VertexId>
 TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, TaskRunner& tasks,
-                           std::pmr::memory_resource* memory) {
+                           std::pmr::memory_resource* memory, std::uint32_t* vertex_sets) {
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
     // end_of[v]: first counts, then (after the prefix sum) where v's bucket
     // starts, then (after filing, each bucket filled from its start) where it ends.
@@ -233,9 +249,11 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
 
     const std::size_t pieces = (mesh.vertex_count + vertices_per_piece - 1) / vertices_per_piece;
     std::pmr::vector<TopologyReport> parts(pieces, memory);
+    const ConcurrentSmallestIndexSets sets(vertex_sets);
     tasks.run(pieces, [&](std::size_t piece) {
-        parts[piece] = walk_buckets(entries.data(), end_of.data(), piece * vertices_per_piece,
-                                    std::min(mesh.vertex_count, (piece + 1) * vertices_per_piece));
+        parts[piece] =
+            walk_buckets(entries.data(), end_of.data(), piece * vertices_per_piece,
+                         std::min(mesh.vertex_count, (piece + 1) * vertices_per_piece), sets);
     });
     TopologyReport report;
     for (const TopologyReport& part : parts) {
@@ -253,22 +271,25 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
                                 const std::uint32_t* vertex_ids, TaskRunner& tasks,
-                                std::pmr::memory_resource* memory) {
+                                std::pmr::memory_resource* memory,
+                                std::pmr::vector<std::uint32_t>& vertex_sets) {
+    vertex_sets.resize(mesh.vertex_count);
+    std::iota(vertex_sets.begin(), vertex_sets.end(), 0u);
     auto analyse = [&](auto&& id) {
         const bool narrow = mesh.vertex_count <= (std::size_t{1} << 31) &&
                             mesh.index_count <= std::numeric_limits<std::uint32_t>::max();
-        return narrow ? match_edges<std::uint32_t>(mesh, id, tasks, memory)
-                      : match_edges<std::uint64_t>(mesh, id, tasks, memory);
+        return narrow ? match_edges<std::uint32_t>(mesh, id, tasks, memory, vertex_sets.data())
+                      : match_edges<std::uint64_t>(mesh, id, tasks, memory, vertex_sets.data());
     };
     if (vertex_ids)
         return analyse([&](std::size_t position) { return vertex_ids[mesh.indices[position]]; });
     return analyse([&](std::size_t position) { return mesh.indices[position]; });
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                                    \
-    template TopologyReport analyse_topology<Scalar, Index>(const MeshView<Scalar, Index>&,    \
-                                                            const std::uint32_t*, TaskRunner&, \
-                                                            std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                \
+    template TopologyReport analyse_topology<Scalar, Index>(               \
+        const MeshView<Scalar, Index>&, const std::uint32_t*, TaskRunner&, \
+        std::pmr::memory_resource*, std::pmr::vector<std::uint32_t>&);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

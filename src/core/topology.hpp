@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory_resource>
+#include <vector>
 
 #include "findings.hpp"
 
@@ -63,11 +64,16 @@ struct TopologyReport {
 // vertex_ids maps a vertex index to its identity for the check (welding); null
 // means the index itself. Indices must be in range. Edges whose two ends are
 // the same vertex (a repeated index) are no edges.
-// The passes run in pieces on `tasks`; the report is the same for every
-// runner.
+// The walk that classifies each edge also joins its two ends: vertex_sets
+// gets one parent a vertex (ConcurrentSmallestIndexSets, shells.hpp), every
+// identity joined with those it shares an edge with - the vertex sets of the
+// shells (find_shells), with no second pass over the faces.
+// The passes run in pieces on `tasks`; the report and the sets are the same
+// for every runner.
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
                                 const std::uint32_t* vertex_ids, TaskRunner& tasks,
-                                std::pmr::memory_resource* memory);
+                                std::pmr::memory_resource* memory,
+                                std::pmr::vector<std::uint32_t>& vertex_sets);
 
 }  // namespace polymass::core
