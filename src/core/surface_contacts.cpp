@@ -218,25 +218,33 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         if (contact != Contact::none)
             (contact == Contact::crossing ? crossing : touching).add(pair);
     };
-    // Triangles sharing two corners are neighbours across an edge and meet
-    // nothing more, and so are those sharing three in opposite turns (a face
-    // beside its reverse: a sheet of no thickness, which cancels). Three in
-    // one turn are one triangle written twice, which bounds the region behind
-    // it twice (a surface welded to its copy and accepted as non-manifold):
-    // crossing, whatever the shells. Returns whether the shared corners
-    // decided the pair; the contact test decides every other.
-    auto decided_by_shared_corners = [&](std::uint32_t i, std::uint32_t j,
-                                         const SharedCorners& shared, const FacePair& pair,
-                                         PairCollector& crossing) {
-        if (shared.count < 2) return false;
-        if (shared.count == 3 && surface.corners(i)[(shared.at_first + 1) % 3] ==
-                                     surface.corners(j)[(shared.at_second + 1) % 3])
-            crossing.add(pair);
-        return true;
+    // Whether the corners triangles i and j share say that they add no pair:
+    // sharing two, they are neighbours across an edge and meet nothing more,
+    // and so are those sharing three in opposite turns (a face beside its
+    // reverse: a sheet of no thickness, which cancels); sharing one, they may
+    // lie on either side of an axis plane through it (apart_at_shared_corner).
+    // Three in one turn are one triangle written twice, which bounds the
+    // region behind it twice (a surface welded to its copy and accepted as
+    // non-manifold): crossing, whatever the shells, as decide_pair says.
+    auto add_nothing = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared) {
+        switch (shared.count) {
+            case 1:
+                return apart_at_shared_corner(extremes[i], shared.at_first, extremes[j],
+                                              shared.at_second);
+            case 2:
+                return true;
+            case 3:
+                return surface.corners(i)[(shared.at_first + 1) % 3] !=
+                       surface.corners(j)[(shared.at_second + 1) % 3];
+            default:
+                return false;
+        }
     };
-    // Triangles i and j, of different faces.
-    auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector& crossing,
-                         PairCollector& touching) {
+    // Triangles i and j that share the corners `shared`, and which
+    // add_nothing left: kept out of line, as most pairs never come here.
+    auto decide_pair = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared,
+                           PairCollector& crossing, PairCollector& touching)
+        __attribute__((noinline)) {
         const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
@@ -244,15 +252,22 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         // count of crossing ones wants it, which it does until 2048 cross:
         // every touching pair that the nesting needs is marked.
         if (!crossing.wants(pair) && !touching.wants(pair)) return;
-        const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
-        if (decided_by_shared_corners(i, j, shared, pair, crossing)) return;
-        if (shared.count == 1 &&
-            apart_at_shared_corner(extremes[i], shared.at_first, extremes[j], shared.at_second))
+        if (shared.count == 3) {
+            crossing.add(pair);  // one triangle written twice
             return;
+        }
         // The shared corner first.
         add(triangle_contact(surface.triangle(i, shared.at_first),
                              surface.triangle(j, shared.at_second), shared.count == 1),
             i, j, pair, crossing, touching);
+    };
+    // Triangles i and j, neither with copies. Inlined into the search: its
+    // pairs are mostly neighbours that add_nothing decides, for which a call
+    // (a frame for all that the rare rest needs) was half of their cost.
+    auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector & crossing,
+                         PairCollector & touching) __attribute__((always_inline)) {
+        const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
+        if (!add_nothing(i, j, shared)) decide_pair(i, j, shared, crossing, touching);
     };
     // The pairs of copies of shapes r and s (r != s), or of two distinct
     // copies of r (r == s). Which corners a pair shares decides its contact:
@@ -265,10 +280,6 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     // per pair of copies.
     auto pair_copies = [&](std::uint32_t r, std::uint32_t s, PairCollector& crossing,
                            PairCollector& touching) {
-        if (r != s && surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy) {
-            test_pair(r, s, crossing, touching);
-            return;
-        }
         // [0]: no corner shared; [1 + 3 k + l]: corner k of r's copy is corner l of s's.
         std::array<Contact, 10> contact_of;
         std::array<bool, 10> tested{};
@@ -315,7 +326,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
                     if (!(can_cross && cross_wants) && !(can_touch && touch_wants)) break;
                 }
                 const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
-                if (decided_by_shared_corners(i, j, shared, pair, crossing)) continue;
+                if (add_nothing(i, j, shared)) continue;
+                if (shared.count == 3) {
+                    crossing.add(pair);  // one triangle written twice
+                    continue;
+                }
                 add(contact(shared.at_first, shared.at_second, shared.count == 1), i, j, pair,
                     crossing, touching);
             }
@@ -334,7 +349,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     tasks.run(pieces.size(), [&](std::size_t piece) {
         surface.tree().for_each_overlapping_pair(
             pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
-                pair_copies(r, s, found[piece].crossing, found[piece].touching);
+                PieceContacts& contacts = found[piece];
+                if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
+                    test_pair(r, s, contacts.crossing, contacts.touching);
+                else
+                    pair_copies(r, s, contacts.crossing, contacts.touching);
             });
     });
     // The copies of one shape meet each other; the tree holds one of them.
