@@ -34,6 +34,8 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       reference_(reference),
       per_unit_(1.0 / unit_length_near(size)),
       degenerate_(memory),
+      with_copies_(memory),
+      copies_before_(memory),
       lowest_(memory),
       next_(memory),
       tree_(boxes_with_copies(vertex_ids, tasks, memory), memory) {}
@@ -50,6 +52,14 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     if (vertex_ids)
         for (auto& corners : triangles_.corners)
             for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
+    // Faces of one triangle each need no list of faces.
+    std::uint32_t next = 0;
+    one_face_each_ = std::all_of(triangles_.face.begin(), triangles_.face.end(),
+                                 [&](std::uint32_t face) { return face == next++; });
+    if (one_face_each_) {
+        triangles_.face.clear();
+        triangles_.face.shrink_to_fit();
+    }
     // Degenerate triangles keep an empty box.
     std::pmr::vector<FloatBox> boxes(size(), memory);
     degenerate_.resize(size());
@@ -61,9 +71,15 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     });
     find_copies(tasks, memory);
     for_each_in_blocks(size(), tasks, [&](std::size_t t) {
-        if (lowest_[t] != t) boxes[t] = FloatBox();
+        if (lowest_copy(t) != t) boxes[t] = FloatBox();
     });
     return boxes;
+}
+
+template <class Scalar, class Index>
+std::size_t IndexedSurface<Scalar, Index>::copy_rank(std::size_t t) const {
+    const std::uint64_t below = with_copies_[t / 64] & ((std::uint64_t{1} << (t % 64)) - 1);
+    return copies_before_[t / 64] + std::size_t(__builtin_popcountll(below));
 }
 
 template <class Scalar, class Index>
@@ -106,14 +122,17 @@ void IndexedSurface<Scalar, Index>::find_copies(TaskRunner& tasks,
     });
     radix_sort(keys.data(), keys.data() + keys.size(), memory);
     auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
-    lowest_.resize(count);
-    next_.assign(count, kNoCopy);
+    // Each triangle with copies, with its lowest and next copy, in the order
+    // the groups come; then marked, and filed in the order of the indices.
+    struct Copy {
+        std::uint32_t triangle, lowest, next;
+    };
+    std::pmr::vector<Copy> copies(memory);
     std::pmr::vector<std::pair<std::array<double, 9>, std::uint32_t>> group(memory);
     for (std::size_t k = 0; k < count;) {
         std::size_t end = k + 1;
         while (end < count && keys[end] >> 32 == keys[k] >> 32) ++end;
         if (end - k == 1) {
-            lowest_[triangle_of(k)] = triangle_of(k);
             k = end;
             continue;
         }
@@ -130,13 +149,28 @@ void IndexedSurface<Scalar, Index>::find_copies(TaskRunner& tasks,
         for (std::size_t first = 0; first < group.size();) {
             std::size_t last = first + 1;
             while (last < group.size() && group[last].first == group[first].first) ++last;
-            for (std::size_t m = first; m < last; ++m) {
-                lowest_[group[m].second] = group[first].second;
-                if (m + 1 < last) next_[group[m].second] = group[m + 1].second;
-            }
+            for (std::size_t m = first; last - first > 1 && m < last; ++m)
+                copies.push_back({group[m].second, group[first].second,
+                                  m + 1 < last ? group[m + 1].second : kNoCopy});
             first = last;
         }
         k = end;
+    }
+    keys = {};
+    with_copies_.assign((count + 63) / 64, 0);
+    for (const Copy& copy : copies)
+        with_copies_[copy.triangle / 64] |= std::uint64_t{1} << (copy.triangle % 64);
+    copies_before_.resize(with_copies_.size());
+    std::uint32_t before = 0;
+    for (std::size_t word = 0; word < with_copies_.size(); ++word) {
+        copies_before_[word] = before;
+        before += std::uint32_t(__builtin_popcountll(with_copies_[word]));
+    }
+    lowest_.resize(copies.size());
+    next_.resize(copies.size());
+    for (const Copy& copy : copies) {
+        lowest_[copy_rank(copy.triangle)] = copy.lowest;
+        next_[copy_rank(copy.triangle)] = copy.next;
     }
 }
 

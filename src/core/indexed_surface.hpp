@@ -40,12 +40,14 @@ public:
                    const Eigen::Vector3d& reference, double size, TaskRunner& tasks,
                    std::pmr::memory_resource* memory);
 
-    std::size_t size() const { return triangles_.size(); }
+    std::size_t size() const { return triangles_.corners.size(); }
     // Triangle t's corners as welded vertices, in the face's turn.
     const std::array<std::uint32_t, 3>& corners(std::size_t t) const {
         return triangles_.corners[t];
     }
-    std::uint32_t face(std::size_t t) const { return triangles_.face[t]; }
+    std::uint32_t face(std::size_t t) const {
+        return one_face_each_ ? std::uint32_t(t) : triangles_.face[t];
+    }
     // Triangle t with corner `first` first, keeping its turn. A welded
     // vertex sits at the position of the vertex it was welded to, so that
     // corners the surface shares are one point, not two points 1e-17 apart
@@ -58,8 +60,12 @@ public:
 
     // The lowest copy of t's shape (t itself when it is alone), and the next
     // copy above t, or kNoCopy. A shape's copies ascend.
-    std::uint32_t lowest_copy(std::size_t t) const { return lowest_[t]; }
-    std::uint32_t next_copy(std::size_t t) const { return next_[t]; }
+    __attribute__((always_inline)) std::uint32_t lowest_copy(std::size_t t) const {
+        return has_copies(t) ? lowest_[copy_rank(t)] : std::uint32_t(t);
+    }
+    __attribute__((always_inline)) std::uint32_t next_copy(std::size_t t) const {
+        return has_copies(t) ? next_[copy_rank(t)] : kNoCopy;
+    }
     // Degenerate triangles (three collinear corners) bound nothing and meet nothing.
     bool meets_nothing(std::size_t t) const { return degenerate_[t] != 0; }
 
@@ -80,11 +86,31 @@ private:
     // part stacked in place, or a surface exported twice.
     void find_copies(TaskRunner& tasks, std::pmr::memory_resource* memory);
 
+    // Inlined (the search asks for every candidate pair), but not the rank,
+    // which only triangles with copies need.
+    __attribute__((always_inline)) bool has_copies(std::size_t t) const {
+        return with_copies_[t / 64] >> (t % 64) & 1;
+    }
+    // Where t's copies are in lowest_ and next_: how many triangles below t
+    // have copies.
+    std::size_t copy_rank(std::size_t t) const;
+
     const MeshView<Scalar, Index>& mesh_;
-    SurfaceTriangles triangles_;  // corners welded
+    SurfaceTriangles triangles_;  // corners welded; faces dropped when one_face_each_
+    // Every face is one triangle (triangle t is face t), as in most meshes:
+    // the faces' list is let go before the tree is built (4 MB a million
+    // triangles at the check's peak).
+    bool one_face_each_ = false;
     Eigen::Vector3d reference_;
     double per_unit_;
     std::pmr::vector<std::uint8_t> degenerate_;  // three collinear corners
+    // Copies are rare, and a list of them per triangle took 8 MB a million
+    // triangles at the check's peak: a bit per triangle says whether it has
+    // copies (with_copies_, 64 to a word, and the count of those in the
+    // words before each), and the lowest and next copy are kept for those
+    // triangles only, in the order of their indices.
+    std::pmr::vector<std::uint64_t> with_copies_;
+    std::pmr::vector<std::uint32_t> copies_before_;
     std::pmr::vector<std::uint32_t> lowest_, next_;
     BoxTree tree_;
 };

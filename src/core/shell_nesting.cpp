@@ -214,39 +214,100 @@ std::pmr::vector<int> count_windings(
         return counted ? winding : kUnknownWinding;
     };
 
-    // Whether the start lies on another shell's triangle: a look at the few
-    // triangles whose boxes hold it, before long probes that would only graze
-    // there. The vertices of parts resting on each other often do, and the
-    // starts next to the corners of faces resting flush always do.
-    auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell) {
-        bool on = false;
-        surface.tree().for_each_item_near_segment(
-            surface.in_units(start.p), surface.in_units(start.p), [&](std::uint32_t t) {
-                if (shell_of(t) == shell) return true;
-                const Triangle c = surface.triangle(t);
-                // A start off the triangle's box is off the triangle: of the
-                // many triangles around a corner where parts rest on each
-                // other, this leaves those in the start's plane, on its side.
-                ShellBox box;
-                for (const Eigen::Vector3d& corner : c) box.extend(corner);
-                on = box.holds(start) &&
-                     sign_at(start,
-                             [&](const Eigen::Vector3d& x) {
-                                 return orient3d(c[0], c[1], c[2], x);
-                             }) == 0 &&
-                     lies_on(c, start);
-                return !on;
-            });
-        return on;
+    // Whether a start lies on another shell's triangle, asked before long
+    // probes that would only graze there: the vertices of parts resting on
+    // each other often do, and the starts next to the corners of faces
+    // resting flush always do. A start next to the vertex p lies on a
+    // triangle only if p does, and so only in a triangle whose closed box
+    // holds p (each of the start's signs is first p's). The triangles of
+    // other shells whose boxes hold p are therefore listed once per vertex,
+    // by one look along the tree (all faces at p are of p's shell), and each
+    // start at p is tested against those alone: a corner where parts rest on
+    // each other starts several probes (five or so where cubes are stacked),
+    // which each looked along the tree before (docs/validity.md).
+    auto triangle_box = [&](std::uint32_t t) {
+        ShellBox box;
+        for (const Eigen::Vector3d& corner : surface.triangle(t)) box.extend(corner);
+        return box;
+    };
+    auto lies_on_triangle = [&](const ProbeStart& start, std::uint32_t t) {
+        const Triangle c = surface.triangle(t);
+        // A start off the triangle's box is off the triangle: of the many
+        // triangles around a corner where parts rest on each other, this
+        // leaves those in the start's plane, on its side.
+        return triangle_box(t).holds(start) &&
+               sign_at(start,
+                       [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); }) ==
+                   0 &&
+               lies_on(c, start);
+    };
+    // The vertices where probes start, numbered in the order of their ids:
+    // the probe vertices, and the corners of triangles touching another shell.
+    constexpr std::uint32_t kNoStart = UINT32_MAX;
+    std::uint32_t vertex_end = 0;
+    for (std::size_t t = 0; t < surface.size(); ++t)
+        for (const std::uint32_t vertex : surface.corners(t))
+            vertex_end = std::max(vertex_end, vertex + 1);
+    std::pmr::vector<std::uint32_t> start_of_vertex(vertex_end, kNoStart, memory);
+    for (std::size_t shell = 0; shell < shells.count; ++shell)
+        for (std::size_t k = 0; k < probe_count[shell]; ++k)
+            start_of_vertex[surface.corners(probes[shell][k])[0]] = 0;
+    for (std::size_t t = 0; t < surface.size(); ++t)
+        if (touches_other_shell[t].load(std::memory_order_relaxed))
+            for (const std::uint32_t vertex : surface.corners(t)) start_of_vertex[vertex] = 0;
+    std::uint32_t start_count = 0;
+    for (std::uint32_t& start : start_of_vertex)
+        if (start != kNoStart) start = start_count++;
+    // A corner (3 t + k) at each start vertex, for its position and shell.
+    std::pmr::vector<std::uint32_t> corner_of_start(start_count, 0, memory);
+    for (std::uint32_t t = 0; t < surface.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t start = start_of_vertex[surface.corners(t)[k]];
+            if (start != kNoStart) corner_of_start[start] = 3 * t + std::uint32_t(k);
+        }
+    // The other shells' triangles whose boxes hold each start vertex, looked
+    // up in blocks as tasks, then gathered in order: those of start vertex s
+    // are near_triangles[near_begin[s], near_begin[s + 1]).
+    const std::size_t start_blocks = (start_count + kTrianglesPerTask - 1) / kTrianglesPerTask;
+    std::pmr::vector<std::pmr::vector<std::uint32_t>> block_near(start_blocks, memory);
+    std::pmr::vector<std::uint32_t> near_count(start_count, 0, memory);
+    tasks.run(start_blocks, [&](std::size_t block) {
+        const std::size_t end = std::min<std::size_t>(start_count, (block + 1) * kTrianglesPerTask);
+        for (std::size_t s = block * kTrianglesPerTask; s < end; ++s) {
+            const std::uint32_t t = corner_of_start[s] / 3;
+            const Eigen::Vector3d p = surface.triangle(t, int(corner_of_start[s] % 3))[0];
+            const ProbeStart start{p, p, p, false};
+            surface.tree().for_each_item_near_segment(
+                surface.in_units(p), surface.in_units(p), [&](std::uint32_t other) {
+                    if (shell_of(other) != shell_of(t) && triangle_box(other).holds(start)) {
+                        block_near[block].push_back(other);
+                        ++near_count[s];
+                    }
+                    return true;
+                });
+        }
+    });
+    std::pmr::vector<std::size_t> near_begin(start_count + 1, 0, memory);
+    for (std::size_t s = 0; s < start_count; ++s) near_begin[s + 1] = near_begin[s] + near_count[s];
+    std::pmr::vector<std::uint32_t> near_triangles(memory);
+    near_triangles.reserve(near_begin.back());
+    for (const auto& found : block_near)
+        near_triangles.insert(near_triangles.end(), found.begin(), found.end());
+    block_near = {};
+    auto on_another_shell = [&](const ProbeStart& start, std::uint32_t vertex) {
+        const std::uint32_t s = start_of_vertex[vertex];
+        for (std::size_t k = near_begin[s]; k < near_begin[s + 1]; ++k)
+            if (lies_on_triangle(start, near_triangles[k])) return true;
+        return false;
     };
     // The winding at the start: kUnknownWinding when it lies on another
     // shell (asked first: the starts where parts rest flush on each other,
     // most of a touching assembly's, then need no look at the shells'
     // boxes) or every direction grazes, 0 when no other shell's box holds it
     // (no segment needed).
-    auto probe = [&](const ProbeStart& start, std::uint32_t shell) {
+    auto probe = [&](const ProbeStart& start, std::uint32_t shell, std::uint32_t vertex) {
         int winding = kUnknownWinding;
-        if (on_another_shell(start, shell)) return winding;
+        if (on_another_shell(start, vertex)) return winding;
         const Near near = shells_near(start, shell);
         if (near.count == 0) return 0;
         for (const Eigen::Vector3d& direction : kProbeDirections) {
@@ -262,7 +323,7 @@ std::pmr::vector<int> count_windings(
             int& winding = winding_of_shell[shell];
             for (std::size_t k = 0; k < probe_count[shell] && winding == kUnknownWinding; ++k) {
                 const Eigen::Vector3d p = surface.triangle(probes[shell][k])[0];
-                winding = probe({p, p, p, false}, shell);
+                winding = probe({p, p, p, false}, shell, surface.corners(probes[shell][k])[0]);
             }
         }
     });
@@ -286,8 +347,8 @@ std::pmr::vector<int> count_windings(
             int& winding = winding_inside[t];
             for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
                 const Triangle corners = surface.triangle(t, k);
-                winding = join_windings(
-                    winding, probe({corners[0], corners[1], corners[2], true}, shell_of(t)));
+                winding = join_windings(winding, probe({corners[0], corners[1], corners[2], true},
+                                                       shell_of(t), surface.corners(t)[k]));
             }
         }
     });

@@ -127,6 +127,35 @@ SharedCorners shared_corners(const std::array<std::uint32_t, 3>& first,
     return shared;
 }
 
+// Per corner k of a triangle, bits 6 k + axis: the corner is the
+// triangle's highest on that axis (its two others at or below it), and
+// bits 6 k + 3 + axis: its lowest.
+std::uint32_t corner_extremes(const Triangle& t) {
+    std::uint32_t bits = 0;
+    for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d& corner = t[k];
+        const Eigen::Vector3d& next = t[k == 2 ? 0 : k + 1];
+        const Eigen::Vector3d& last = t[k == 0 ? 2 : k - 1];
+        for (int axis = 0; axis < 3; ++axis) {
+            const bool highest = next[axis] <= corner[axis] && last[axis] <= corner[axis];
+            const bool lowest = next[axis] >= corner[axis] && last[axis] >= corner[axis];
+            bits |= (std::uint32_t(highest) << axis | std::uint32_t(lowest) << (axis + 3)) << 6 * k;
+        }
+    }
+    return bits;
+}
+
+// Whether two triangles sharing one vertex, corner k of the first (its
+// extremes `first`) and corner l of the second, lie on either side of a
+// plane x = c through it on some axis: the highest of one there is the
+// lowest of the other. Then they do not cross, and met at a shared corner
+// only crossing counts (triangle_contact decides them so, from their
+// extents): decided without their positions.
+bool apart_at_shared_corner(std::uint32_t first, int k, std::uint32_t second, int l) {
+    const std::uint32_t a = first >> 6 * k, b = second >> 6 * l;
+    return ((a & b >> 3) | (a >> 3 & b)) & 7u;
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
@@ -163,6 +192,19 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         }
     }
 
+    // Per triangle, the corner extremes (corner_extremes): on a surface most
+    // pairs of triangles around a vertex meet in the vertex's coordinate on
+    // some axis, and are decided from these alone, where fetching both
+    // triangles and testing their extents was a third of a clean surface's
+    // search.
+    std::pmr::vector<std::uint32_t> extremes(surface.size(), memory);
+    constexpr std::size_t kExtremesPerTask = 4096;
+    tasks.run((surface.size() + kExtremesPerTask - 1) / kExtremesPerTask, [&](std::size_t block) {
+        const std::size_t end = std::min(surface.size(), (block + 1) * kExtremesPerTask);
+        for (std::size_t t = block * kExtremesPerTask; t < end; ++t)
+            extremes[t] = corner_extremes(surface.triangle(t));
+    });
+
     // Adds the face pair of triangles i and j as its contact says. Coinciding
     // triangles of two shells bound the region behind both twice, as crossing
     // ones do; within one shell they may be a fan over a non-convex polygon,
@@ -176,25 +218,33 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         if (contact != Contact::none)
             (contact == Contact::crossing ? crossing : touching).add(pair);
     };
-    // Triangles sharing two corners are neighbours across an edge and meet
-    // nothing more, and so are those sharing three in opposite turns (a face
-    // beside its reverse: a sheet of no thickness, which cancels). Three in
-    // one turn are one triangle written twice, which bounds the region behind
-    // it twice (a surface welded to its copy and accepted as non-manifold):
-    // crossing, whatever the shells. Returns whether the shared corners
-    // decided the pair; the contact test decides every other.
-    auto decided_by_shared_corners = [&](std::uint32_t i, std::uint32_t j,
-                                         const SharedCorners& shared, const FacePair& pair,
-                                         PairCollector& crossing) {
-        if (shared.count < 2) return false;
-        if (shared.count == 3 && surface.corners(i)[(shared.at_first + 1) % 3] ==
-                                     surface.corners(j)[(shared.at_second + 1) % 3])
-            crossing.add(pair);
-        return true;
+    // Whether the corners triangles i and j share say that they add no pair:
+    // sharing two, they are neighbours across an edge and meet nothing more,
+    // and so are those sharing three in opposite turns (a face beside its
+    // reverse: a sheet of no thickness, which cancels); sharing one, they may
+    // lie on either side of an axis plane through it (apart_at_shared_corner).
+    // Three in one turn are one triangle written twice, which bounds the
+    // region behind it twice (a surface welded to its copy and accepted as
+    // non-manifold): crossing, whatever the shells, as decide_pair says.
+    auto add_nothing = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared) {
+        switch (shared.count) {
+            case 1:
+                return apart_at_shared_corner(extremes[i], shared.at_first, extremes[j],
+                                              shared.at_second);
+            case 2:
+                return true;
+            case 3:
+                return surface.corners(i)[(shared.at_first + 1) % 3] !=
+                       surface.corners(j)[(shared.at_second + 1) % 3];
+            default:
+                return false;
+        }
     };
-    // Triangles i and j, of different faces.
-    auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector& crossing,
-                         PairCollector& touching) {
+    // Triangles i and j that share the corners `shared`, and which
+    // add_nothing left: kept out of line, as most pairs never come here.
+    auto decide_pair = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared,
+                           PairCollector& crossing, PairCollector& touching)
+        __attribute__((noinline)) {
         const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
@@ -202,12 +252,22 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         // count of crossing ones wants it, which it does until 2048 cross:
         // every touching pair that the nesting needs is marked.
         if (!crossing.wants(pair) && !touching.wants(pair)) return;
-        const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
-        if (decided_by_shared_corners(i, j, shared, pair, crossing)) return;
+        if (shared.count == 3) {
+            crossing.add(pair);  // one triangle written twice
+            return;
+        }
         // The shared corner first.
         add(triangle_contact(surface.triangle(i, shared.at_first),
                              surface.triangle(j, shared.at_second), shared.count == 1),
             i, j, pair, crossing, touching);
+    };
+    // Triangles i and j, neither with copies. Inlined into the search: its
+    // pairs are mostly neighbours that add_nothing decides, for which a call
+    // (a frame for all that the rare rest needs) was half of their cost.
+    auto test_pair = [&](std::uint32_t i, std::uint32_t j, PairCollector & crossing,
+                         PairCollector & touching) __attribute__((always_inline)) {
+        const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
+        if (!add_nothing(i, j, shared)) decide_pair(i, j, shared, crossing, touching);
     };
     // The pairs of copies of shapes r and s (r != s), or of two distinct
     // copies of r (r == s). Which corners a pair shares decides its contact:
@@ -220,10 +280,6 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     // per pair of copies.
     auto pair_copies = [&](std::uint32_t r, std::uint32_t s, PairCollector& crossing,
                            PairCollector& touching) {
-        if (r != s && surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy) {
-            test_pair(r, s, crossing, touching);
-            return;
-        }
         // [0]: no corner shared; [1 + 3 k + l]: corner k of r's copy is corner l of s's.
         std::array<Contact, 10> contact_of;
         std::array<bool, 10> tested{};
@@ -270,7 +326,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
                     if (!(can_cross && cross_wants) && !(can_touch && touch_wants)) break;
                 }
                 const SharedCorners shared = shared_corners(surface.corners(i), surface.corners(j));
-                if (decided_by_shared_corners(i, j, shared, pair, crossing)) continue;
+                if (add_nothing(i, j, shared)) continue;
+                if (shared.count == 3) {
+                    crossing.add(pair);  // one triangle written twice
+                    continue;
+                }
                 add(contact(shared.at_first, shared.at_second, shared.count == 1), i, j, pair,
                     crossing, touching);
             }
@@ -289,7 +349,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     tasks.run(pieces.size(), [&](std::size_t piece) {
         surface.tree().for_each_overlapping_pair(
             pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
-                pair_copies(r, s, found[piece].crossing, found[piece].touching);
+                PieceContacts& contacts = found[piece];
+                if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
+                    test_pair(r, s, contacts.crossing, contacts.touching);
+                else
+                    pair_copies(r, s, contacts.crossing, contacts.touching);
             });
     });
     // The copies of one shape meet each other; the tree holds one of them.

@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory_resource>
+#include <random>
 #include <vector>
 
 #include "core/triangle_contact.hpp"
@@ -174,10 +175,47 @@ void check_many_pieces() {
     }
 }
 
+// Fans of triangles around one vertex, their other corners at random points
+// of a small integer grid, the vertex at each corner position: most pairs
+// share that vertex alone, many of them meet in its coordinate on an axis
+// (decided from the triangles' corner extremes, surface_contacts.cpp), and
+// many cross at it, some with the vertex the highest of one on an axis and
+// the lowest of the other on another.
+void check_fans() {
+    std::mt19937 random(27);
+    std::uniform_int_distribution<int> coordinate(-2, 2);
+    auto point = [&] {
+        return Eigen::Vector3d(coordinate(random), coordinate(random), 0.5 * coordinate(random));
+    };
+    std::size_t crossing = 0, pairs = 0;
+    for (int fan = 0; fan < 24; ++fan) {
+        TestMesh mesh;
+        const std::uint32_t centre = mesh.add_vertex(Eigen::Vector3d::Zero());
+        for (int t = 0; t < 40; ++t) {
+            Eigen::Vector3d a, b;
+            do {
+                a = point();
+                b = point();
+            } while (a.cross(b).isZero());  // collinear with the centre
+            const std::uint32_t corners[3] = {centre, mesh.add_vertex(a), mesh.add_vertex(b)};
+            mesh.add_face({corners[t % 3], corners[(t + 1) % 3], corners[(t + 2) % 3]});
+        }
+        char name[32];
+        std::snprintf(name, sizeof name, "fan %d", fan);
+        check_pile(name, mesh, nullptr);
+        crossing += test_every_pair(mesh, nullptr).crossing.size();
+        pairs += 40 * 39 / 2;
+    }
+    // The fans must cross often, or the test proves little.
+    CHECK(crossing > pairs / 20);
+    std::printf("  24 fans of 40 triangles: %zu of %zu pairs cross\n", crossing, pairs);
+}
+
 }  // namespace
 
 int main() {
     check_many_pieces();
+    check_fans();
     const Eigen::Matrix3d none = Eigen::Matrix3d::Identity();
     const Eigen::Matrix3d turned =
         Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
