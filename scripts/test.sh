@@ -174,13 +174,14 @@ step_rust() {
     # (brought up to date: a no-op after that step) rather than compiling the
     # library once more in the release preset; the bundled check still
     # compiles its own, as a user's cargo build does.
-    if [ -z "${POLYMASS_LIB_DIR:-}" ] && [ -f build/dev/CMakeCache.txt ]; then
+    local library=${POLYMASS_LIB_DIR:-}
+    if [ -z "$library" ] && [ -f build/dev/CMakeCache.txt ]; then
         cmake --build build/dev --target polymass polymass_static </dev/null >"$LOG_DIR/rust-library.log" 2>&1 ||
             { cat "$LOG_DIR/rust-library.log"; return 1; }
-        POLYMASS_LIB_DIR=$ROOT/build/dev/src bash scripts/test-rust.sh </dev/null 2>&1 | tee "$log" || rc=1
-    else
-        bash scripts/test-rust.sh </dev/null 2>&1 | tee "$log" || rc=1
+        library=$ROOT/build/dev/src
     fi
+    # (Empty: test-rust.sh builds the release preset's.)
+    POLYMASS_LIB_DIR=$library bash scripts/test-rust.sh </dev/null 2>&1 | tee "$log" || rc=1
     count_rust "$log"
     return $rc
 }

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "face_blocks.hpp"
+#include "smallest_index_sets.hpp"
 
 namespace polymass::core {
 namespace {
@@ -50,19 +51,21 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     };
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
     std::pmr::vector<std::uint32_t> parent(std::move(vertex_sets), memory);
-    const bool joined = !parent.empty();
-    if (!joined) {
+    const bool joined_by_topology = !parent.empty();
+    if (!joined_by_topology) {
         parent.resize(mesh.vertex_count);
         std::iota(parent.begin(), parent.end(), 0u);
     }
     const ConcurrentSmallestIndexSets sets(parent.data());
-    // Without welding, no test per index for the identities.
-    if (!joined && vertex_ids)
-        join_faces(mesh, starts, id, sets, tasks);
-    else if (!joined)
-        join_faces(
-            mesh, starts, [&](std::size_t position) { return mesh.indices[position]; }, sets,
-            tasks);
+    if (!joined_by_topology) {
+        // Without welding, no test per index for the identities.
+        if (vertex_ids)
+            join_faces(mesh, starts, id, sets, tasks);
+        else
+            join_faces(
+                mesh, starts, [&](std::size_t position) { return mesh.indices[position]; }, sets,
+                tasks);
+    }
     Shells shells(memory);
     // Every set holds the identities of some faces' vertices, and its root is
     // one of them: the shells are as many as the roots among those

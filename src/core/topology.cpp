@@ -10,7 +10,7 @@
 
 #include "face_blocks.hpp"
 #include "scratch_buffer.hpp"
-#include "shells.hpp"
+#include "smallest_index_sets.hpp"
 
 namespace polymass::core {
 namespace {

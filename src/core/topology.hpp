@@ -65,7 +65,7 @@ struct TopologyReport {
 // means the index itself. Indices must be in range. Edges whose two ends are
 // the same vertex (a repeated index) are no edges.
 // The walk that classifies each edge also joins its two ends: vertex_sets
-// gets one parent a vertex (ConcurrentSmallestIndexSets, shells.hpp), every
+// gets one parent a vertex (ConcurrentSmallestIndexSets, smallest_index_sets.hpp), every
 // identity joined with those it shares an edge with - the vertex sets of the
 // shells (find_shells), with no second pass over the faces.
 // The passes run in pieces on `tasks`; the report and the sets are the same

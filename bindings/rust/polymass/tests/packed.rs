@@ -62,20 +62,47 @@ fn assert_row_is(rows: &PackedMassProperties, i: usize, single: &MassProperties)
     );
 }
 
-/// Mesh `mesh` of the packed arrays computed by the single call, on u32
-/// local triangles (an index's type changes no digit).
-fn single_call<V: Vertex>(
+/// Rows `meshes` hold the single calls on those meshes of the packed arrays,
+/// each with `body(mesh)`, on u32 local triangles (an index's type changes
+/// no digit).
+fn assert_rows_are_single_calls<V: Vertex>(
+    rows: &PackedMassProperties,
+    meshes: impl IntoIterator<Item = usize>,
     positions: &[V],
     triangles: &[[u32; 3]],
     vertex_offsets: &[u64],
     triangle_offsets: &[u64],
-    mesh: usize,
-    body: &Body,
-) -> MassProperties {
-    let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
-    let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-    let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
-    polymass::mass_properties(&surface, &Options::new(), body).unwrap()
+    body: impl Fn(usize) -> Body,
+) {
+    for mesh in meshes {
+        let vertices = vertex_offsets[mesh] as usize..vertex_offsets[mesh + 1] as usize;
+        let faces = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
+        let surface = Surface::triangles(&positions[vertices], &triangles[faces]);
+        let single = polymass::mass_properties(&surface, &Options::new(), &body(mesh)).unwrap();
+        assert_row_is(rows, mesh, &single);
+    }
+}
+
+/// The packed local triangles with indices of type I, counted from each
+/// mesh's first vertex (local) or from the first of all (global).
+fn pack_indices<I>(
+    triangles: &[[u32; 3]],
+    vertex_offsets: &[u64],
+    triangle_offsets: &[u64],
+    global: bool,
+    index: impl Fn(u32) -> I,
+) -> Vec<[I; 3]> {
+    let mut packed = Vec::new();
+    for mesh in 0..vertex_offsets.len() - 1 {
+        let base = if global {
+            vertex_offsets[mesh] as u32
+        } else {
+            0
+        };
+        let range = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
+        packed.extend(triangles[range].iter().map(|t| t.map(|v| index(v + base))));
+    }
+    packed
 }
 
 /// Packs the tori with positions of type V and indices of type I, local or
@@ -89,18 +116,13 @@ fn check_types<V: Vertex + Copy, I: PackedIndex + Copy>(
     let positions: Vec<V> = positions.into_iter().map(vertex).collect();
     let densities: Vec<f64> = (0..5).map(|i| 0.5 + f64::from(i)).collect();
     for global in [false, true] {
-        let mut packed_triangles = Vec::new();
-        for mesh in 0..5 {
-            let base = if global {
-                vertex_offsets[mesh] as u32
-            } else {
-                0
-            };
-            let range = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-            for triangle in &triangles[range] {
-                packed_triangles.push(triangle.map(|v| index(v + base)));
-            }
-        }
+        let packed_triangles = pack_indices(
+            &triangles,
+            &vertex_offsets,
+            &triangle_offsets,
+            global,
+            &index,
+        );
         let mut meshes = PackedMeshes::new(
             &positions,
             &packed_triangles,
@@ -119,18 +141,15 @@ fn check_types<V: Vertex + Copy, I: PackedIndex + Copy>(
                 .packed_mass_properties(&meshes, &Options::new())
                 .unwrap();
             assert_eq!(rows.failed(), 0);
-            for (mesh, &density) in densities.iter().enumerate() {
-                let body = Body::density(density);
-                let single = single_call(
-                    &positions,
-                    &triangles,
-                    &vertex_offsets,
-                    &triangle_offsets,
-                    mesh,
-                    &body,
-                );
-                assert_row_is(&rows, mesh, &single);
-            }
+            assert_rows_are_single_calls(
+                &rows,
+                0..5,
+                &positions,
+                &triangles,
+                &vertex_offsets,
+                &triangle_offsets,
+                |mesh| Body::density(densities[mesh]),
+            );
         }
     }
 }
@@ -151,16 +170,13 @@ fn rows_are_single_calls_bit_for_bit() {
 fn a_64_bit_index_past_32_bits_fails_its_mesh_alone() {
     let (positions, triangles, vertex_offsets, triangle_offsets) = packed_tori();
     for global in [false, true] {
-        let mut wide: Vec<[u64; 3]> = Vec::new();
-        for mesh in 0..5 {
-            let base = if global { vertex_offsets[mesh] } else { 0 };
-            let range = triangle_offsets[mesh] as usize..triangle_offsets[mesh + 1] as usize;
-            wide.extend(
-                triangles[range]
-                    .iter()
-                    .map(|t| t.map(|v| u64::from(v) + base)),
-            );
-        }
+        let mut wide = pack_indices(
+            &triangles,
+            &vertex_offsets,
+            &triangle_offsets,
+            global,
+            u64::from,
+        );
         let too_large = (1u64 << 32) + 7;
         wide[triangle_offsets[2] as usize + 1][2] = too_large;
         let mut meshes =
@@ -177,17 +193,15 @@ fn a_64_bit_index_past_32_bits_fails_its_mesh_alone() {
             "{}",
             error.message()
         );
-        for mesh in [0, 1, 3, 4] {
-            let single = single_call(
-                &positions,
-                &triangles,
-                &vertex_offsets,
-                &triangle_offsets,
-                mesh,
-                &Body::default(),
-            );
-            assert_row_is(&rows, mesh, &single);
-        }
+        assert_rows_are_single_calls(
+            &rows,
+            [0, 1, 3, 4],
+            &positions,
+            &triangles,
+            &vertex_offsets,
+            &triangle_offsets,
+            |_| Body::default(),
+        );
     }
 }
 
@@ -216,17 +230,15 @@ fn a_failed_mesh_is_its_row_alone() {
         .message()
         .contains("vertex 1000000"));
     assert!(rows.volume[1].is_nan() && rows.inertia[3][2][2].is_nan());
-    for mesh in [0, 2, 4] {
-        let single = single_call(
-            &positions,
-            &triangles,
-            &vertex_offsets,
-            &triangle_offsets,
-            mesh,
-            &Body::default(),
-        );
-        assert_row_is(&rows, mesh, &single);
-    }
+    assert_rows_are_single_calls(
+        &rows,
+        [0, 2, 4],
+        &positions,
+        &triangles,
+        &vertex_offsets,
+        &triangle_offsets,
+        |_| Body::default(),
+    );
 }
 
 #[test]
