@@ -8,8 +8,10 @@
 // a shared corner; past the count's stop (2048 pairs) and below it; with the
 // search's pieces in order and in reverse, and a surface of many pieces; without shells and with
 // them (coinciding copies on two shells cross, on one they touch, and copies on the same vertices
-// in the same turn cross wherever they are). The reference tests all pairs with the same exact
-// predicate (test_triangle_contact checks that one).
+// in the same turn cross wherever they are); fans of triangles around one
+// vertex, and two triangles folded over each other in one plane around a
+// shared vertex (no pair: only crossing counts there). The reference tests all pairs with the same
+// exact predicate (test_triangle_contact checks that one).
 #include "core/surface_contacts.hpp"
 
 #include "check.hpp"
@@ -211,9 +213,65 @@ void check_fans() {
     std::printf("  24 fans of 40 triangles: %zu of %zu pairs cross\n", crossing, pairs);
 }
 
+// Two triangles in one plane around a vertex they share, overlapping over an
+// area: met at a shared corner only crossing counts (triangle_contact), and
+// a fold within a plane changes no point's winding number, so no pair is
+// reported, in either turn. In an axis plane the search decides them from
+// the corner extremes alone (the vertex is the highest and the lowest of
+// both on that axis); in a tilted plane, by the predicates. The same two
+// triangles on two vertices at one position coincide or touch there, and are
+// reported: what drops the pair is the shared vertex, not where it lies.
+void check_folds_at_a_shared_corner() {
+    // The plane's two steps: along x and y, or across every axis (integers,
+    // so that the corners lie exactly in one plane).
+    const std::array<Eigen::Vector3d, 2> axis_plane{Eigen::Vector3d(1, 0, 0),
+                                                    Eigen::Vector3d(0, 1, 0)};
+    const std::array<Eigen::Vector3d, 2> tilted{Eigen::Vector3d(1, -1, 0),
+                                                Eigen::Vector3d(1, 1, -2)};
+    for (const auto& steps : {axis_plane, tilted}) {
+        for (const bool same_turn : {true, false}) {
+            for (const bool shared : {true, false}) {
+                TestMesh mesh;
+                auto add = [&](double x, double y) {
+                    return mesh.add_vertex(Eigen::Vector3d(5, -3, 7) + x * steps[0] + y * steps[1]);
+                };
+                const std::uint32_t v = add(0, 0), a = add(2, 0), b = add(0, 2);
+                const std::uint32_t w = shared ? v : add(0, 0), c = add(2, 1), d = add(1, 2);
+                mesh.add_face({v, a, b});
+                if (same_turn)
+                    mesh.add_face({w, c, d});
+                else
+                    mesh.add_face({w, d, c});
+                const Triangle first{mesh.vertex(v), mesh.vertex(a), mesh.vertex(b)};
+                const Triangle second =
+                    same_turn ? Triangle{mesh.vertex(w), mesh.vertex(c), mesh.vertex(d)}
+                              : Triangle{mesh.vertex(w), mesh.vertex(d), mesh.vertex(c)};
+                const Contact expected = shared      ? Contact::none
+                                         : same_turn ? Contact::coinciding
+                                                     : Contact::touching;
+                CHECK(polymass::core::triangle_contact(first, second, shared) == expected);
+                Eigen::AlignedBox3d box;
+                for (std::size_t k = 0; k < mesh.vertex_count(); ++k) box.extend(mesh.vertex(k));
+                polymass::core::SerialTaskRunner serial;
+                const auto view = mesh.view();
+                const polymass::core::IndexedSurface surface(view, nullptr, box.center(),
+                                                             box.diagonal().norm(), serial,
+                                                             std::pmr::get_default_resource());
+                const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
+                    surface, nullptr, serial, std::pmr::get_default_resource());
+                // Without shells, coinciding faces are taken as touching.
+                CHECK(found.crossing.count == 0);
+                CHECK(found.touching.count == (shared ? 0u : 1u));
+                check_pile("a fold at a shared corner", mesh, nullptr);
+            }
+        }
+    }
+}
+
 }  // namespace
 
 int main() {
+    check_folds_at_a_shared_corner();
     check_many_pieces();
     check_fans();
     const Eigen::Matrix3d none = Eigen::Matrix3d::Identity();
