@@ -5,6 +5,13 @@
 namespace polymass::core {
 namespace {
 
+// Frees a vector's memory now (assigning {} empties it but keeps its memory).
+template <class T>
+void let_go(std::pmr::vector<T>& items) {
+    items.clear();
+    items.shrink_to_fit();
+}
+
 // Spreads the low 10 bits of v so that two zero bits follow each one.
 std::uint32_t spread_bits(std::uint32_t v) {
     v &= 0x3ffu;
@@ -41,13 +48,13 @@ bool SegmentSlabs::may_meet(const FloatBox& box) const {
     return true;
 }
 
-BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory)
+BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory)
     : order_(memory), leaf_boxes_(memory), nodes_(memory), level_begin_(memory), memory_(memory) {
     FloatBox all;
     for (const FloatBox& box : boxes) all.extend(box);
     // Morton codes of the centres on a 1024^3 grid over all boxes, each with
     // its item below it, sorted together.
-    std::pmr::vector<std::uint64_t> keys(memory);
+    std::pmr::vector<std::uint64_t> keys(memory);  // let go below
     keys.reserve(boxes.size());
     double width[3], extent = 0;
     for (int k = 0; k < 3; ++k) {
@@ -73,11 +80,22 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
     radix_sort(keys.data(), keys.data() + keys.size(), memory);
     order_.reserve(keys.size());
     for (const std::uint64_t key : keys) order_.push_back(std::uint32_t(key));
-    keys = {};
+    let_go(keys);
 
     // Leaves, then each level from the one below, up to a single root.
     std::size_t count = (order_.size() + kLeafSize - 1) / kLeafSize;
     leaf_boxes_.resize(count);
+    for (std::size_t leaf = 0; leaf < count; ++leaf) {
+        for (std::size_t lane = 0; lane < kLeafSize; ++lane) {
+            const std::size_t at = kLeafSize * leaf + lane;
+            const FloatBox item = at < order_.size() ? boxes[order_[at]] : FloatBox();
+            for (int k = 0; k < 3; ++k) {
+                leaf_boxes_[leaf].lo[k][lane] = item.lo[k];
+                leaf_boxes_[leaf].hi[k][lane] = item.hi[k];
+            }
+        }
+    }
+    let_go(boxes);
     // Exactly the nodes of every level: 2 count + 1 falls short when levels
     // of odd size round up, and the vector then doubled (12 MB more at the
     // check's peak for a million triangles).
@@ -90,15 +108,8 @@ BoxTree::BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resou
     level_begin_.push_back(0);
     for (std::size_t leaf = 0; leaf < count; ++leaf) {
         FloatBox box;
-        for (std::size_t lane = 0; lane < kLeafSize; ++lane) {
-            const std::size_t at = kLeafSize * leaf + lane;
-            const FloatBox item = at < order_.size() ? boxes[order_[at]] : FloatBox();
-            for (int k = 0; k < 3; ++k) {
-                leaf_boxes_[leaf].lo[k][lane] = item.lo[k];
-                leaf_boxes_[leaf].hi[k][lane] = item.hi[k];
-            }
-            box.extend(item);
-        }
+        for (std::size_t lane = 0; lane < kLeafSize; ++lane)
+            box.extend(item_box(kLeafSize * leaf + lane));
         nodes_.push_back(box);
     }
     level_begin_.push_back(nodes_.size());

@@ -80,12 +80,14 @@ private:
 
 class BoxTree {
 public:
-    // The items are the boxes' indices. The tree keeps its own copy of the
-    // boxes, in its order along the curve and side by side by leaf
-    // (LeafBoxes): the search reads a leaf's boxes one after another, where
-    // reading them through their indices missed the cache about once a box
-    // on a large surface.
-    BoxTree(const std::pmr::vector<FloatBox>& boxes, std::pmr::memory_resource* memory);
+    // The items are the boxes' indices. The tree keeps the boxes in its
+    // order along the curve and side by side by leaf (LeafBoxes): the search
+    // reads a leaf's boxes one after another, where reading them through
+    // their indices missed the cache about once a box on a large surface.
+    // It takes the boxes and lets them go once they are in its leaves, before
+    // its nodes are built: the boxes, their leaves and the nodes together
+    // were the intersection check's peak of memory.
+    BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory);
 
     // The box of every item (empty when there are none).
     FloatBox bounds() const { return order_.empty() ? FloatBox() : box(root()); }

@@ -43,7 +43,7 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
 // Welds the corners, boxes the triangles, and links the copies, whose boxes
 // above the lowest are then emptied: met through it. (Copies are found after
 // the boxes, so that the tree's scratch reuses their search's: 8 MB less at
-// the peak of a million triangles.) The tree keeps its own copy of the boxes.
+// the peak of a million triangles.) The tree takes the boxes.
 template <class Scalar, class Index>
 std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     const std::uint32_t* vertex_ids, TaskRunner& tasks, std::pmr::memory_resource* memory) {
