@@ -77,7 +77,7 @@ BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* me
         }
         keys.push_back(std::uint64_t{code} << 32 | item);
     }
-    radix_sort(keys.data(), keys.data() + keys.size(), memory);
+    radix_sort_high_half(keys.data(), keys.data() + keys.size(), memory);
     order_.reserve(keys.size());
     for (const std::uint64_t key : keys) order_.push_back(std::uint32_t(key));
     let_go(keys);

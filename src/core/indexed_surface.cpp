@@ -22,6 +22,34 @@ void for_each_in_blocks(std::size_t count, TaskRunner& tasks, const Visit& visit
     });
 }
 
+// A triangle's corner extremes (IndexedSurface::corner_extremes).
+std::uint32_t extremes_of_corners(const Triangle& t) {
+    std::uint32_t bits = 0;
+    for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d& corner = t[k];
+        const Eigen::Vector3d& next = t[k == 2 ? 0 : k + 1];
+        const Eigen::Vector3d& last = t[k == 0 ? 2 : k - 1];
+        for (int axis = 0; axis < 3; ++axis) {
+            const bool highest = next[axis] <= corner[axis] && last[axis] <= corner[axis];
+            const bool lowest = next[axis] >= corner[axis] && last[axis] >= corner[axis];
+            bits |= (std::uint32_t(highest) << axis | std::uint32_t(lowest) << (axis + 3)) << 6 * k;
+        }
+    }
+    return bits;
+}
+
+// The nine coordinates' bits (position_hash.hpp: -0 as +0) mixed in order:
+// copies of a shape hash alike.
+std::uint64_t shape_hash(const Triangle& t) {
+    std::uint64_t h = 0x9e3779b97f4a7c15u;
+    for (const Eigen::Vector3d& corner : t)
+        for (int c = 0; c < 3; ++c) {
+            h = (h ^ position_bits(corner[c])) * 0xff51afd7ed558ccdu;
+            h ^= h >> 32;
+        }
+    return h;
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
@@ -33,7 +61,7 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       triangles_(triangulate_faces(mesh, memory)),
       reference_(reference),
       per_unit_(1.0 / unit_length_near(size)),
-      degenerate_(memory),
+      corner_bits_(memory),
       with_copies_(memory),
       copies_before_(memory),
       lowest_(memory),
@@ -60,16 +88,22 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
         triangles_.face.clear();
         triangles_.face.shrink_to_fit();
     }
-    // Degenerate triangles keep an empty box.
+    // One pass over the triangles' positions for all that needs them: their
+    // copies' hash, corner extremes, degeneracy and boxes. Degenerate
+    // triangles keep an empty box.
+    std::pmr::vector<std::uint64_t> shape_keys(size(), memory);
+    corner_bits_.resize(size());
     std::pmr::vector<FloatBox> boxes(size(), memory);
-    degenerate_.resize(size());
     for_each_in_blocks(size(), tasks, [&](std::size_t t) {
         const Triangle corners = triangle(t);
-        degenerate_[t] = is_degenerate(corners);
-        if (degenerate_[t]) return;
+        shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
+        const bool degenerate = is_degenerate(corners);
+        corner_bits_[t] = extremes_of_corners(corners) | std::uint32_t(degenerate)
+                                                             << kDegenerateBit;
+        if (degenerate) return;
         for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
     });
-    find_copies(tasks, memory);
+    find_copies(std::move(shape_keys), memory);
     for_each_in_blocks(size(), tasks, [&](std::size_t t) {
         if (lowest_copy(t) != t) boxes[t] = FloatBox();
     });
@@ -97,7 +131,7 @@ double IndexedSurface<Scalar, Index>::span() const {
 // coordinate. Sorting every triangle by its coordinates took 40 % of the
 // intersection check of a million-triangle sphere.
 template <class Scalar, class Index>
-void IndexedSurface<Scalar, Index>::find_copies(TaskRunner& tasks,
+void IndexedSurface<Scalar, Index>::find_copies(std::pmr::vector<std::uint64_t> keys,
                                                 std::pmr::memory_resource* memory) {
     const std::size_t count = size();
     auto coordinates = [&](std::uint32_t t) {
@@ -107,20 +141,7 @@ void IndexedSurface<Scalar, Index>::find_copies(TaskRunner& tasks,
             for (int c = 0; c < 3; ++c) flat[3 * k + c] = corners[k][c];
         return flat;
     };
-    // The nine coordinates' bits (position_hash.hpp: -0 as +0) mixed in order.
-    auto hash = [](const std::array<double, 9>& flat) {
-        std::uint64_t h = 0x9e3779b97f4a7c15u;
-        for (double x : flat) {
-            h = (h ^ position_bits(x)) * 0xff51afd7ed558ccdu;
-            h ^= h >> 32;
-        }
-        return h;
-    };
-    std::pmr::vector<std::uint64_t> keys(count, memory);
-    for_each_in_blocks(count, tasks, [&](std::size_t t) {
-        keys[t] = (hash(coordinates(std::uint32_t(t))) & 0xffffffff00000000u) | t;
-    });
-    radix_sort(keys.data(), keys.data() + keys.size(), memory);
+    radix_sort_high_half(keys.data(), keys.data() + keys.size(), memory);
     auto triangle_of = [&](std::size_t k) { return std::uint32_t(keys[k]); };
     // Each triangle with copies, with its lowest and next copy, in the order
     // the groups come; then marked, and filed in the order of the indices.
@@ -156,7 +177,6 @@ void IndexedSurface<Scalar, Index>::find_copies(TaskRunner& tasks,
         }
         k = end;
     }
-    keys = {};
     with_copies_.assign((count + 63) / 64, 0);
     for (const Copy& copy : copies)
         with_copies_[copy.triangle / 64] |= std::uint64_t{1} << (copy.triangle % 64);

@@ -67,7 +67,15 @@ public:
         return has_copies(t) ? next_[copy_rank(t)] : kNoCopy;
     }
     // Degenerate triangles (three collinear corners) bound nothing and meet nothing.
-    bool meets_nothing(std::size_t t) const { return degenerate_[t] != 0; }
+    bool meets_nothing(std::size_t t) const { return corner_bits_[t] >> kDegenerateBit & 1; }
+    // Per corner k of triangle t, bits 6 k + axis: the corner is the
+    // triangle's highest on that axis (its two others at or below it), and
+    // bits 6 k + 3 + axis: its lowest. Exact comparisons of the corners'
+    // coordinates, taken in the pass that boxes the triangles, where a pass
+    // of their own fetched every triangle again.
+    std::uint32_t corner_extremes(std::size_t t) const {
+        return corner_bits_[t] & ((1u << kDegenerateBit) - 1);
+    }
 
     // The tree over the lowest copy of each shape, in units about the
     // reference: a power of two near the surface's size, so that single
@@ -83,8 +91,9 @@ private:
     std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids, TaskRunner& tasks,
                                                  std::pmr::memory_resource* memory);
     // Triangles at the same three positions in the same order: copies of a
-    // part stacked in place, or a surface exported twice.
-    void find_copies(TaskRunner& tasks, std::pmr::memory_resource* memory);
+    // part stacked in place, or a surface exported twice. keys: per
+    // triangle t, a hash of its coordinates (shape_hash) above t.
+    void find_copies(std::pmr::vector<std::uint64_t> keys, std::pmr::memory_resource* memory);
 
     // Inlined (the search asks for every candidate pair), but not the rank,
     // which only triangles with copies need.
@@ -103,7 +112,10 @@ private:
     bool one_face_each_ = false;
     Eigen::Vector3d reference_;
     double per_unit_;
-    std::pmr::vector<std::uint8_t> degenerate_;  // three collinear corners
+    // Per triangle, its corner extremes (corner_extremes), and above them
+    // whether it is degenerate: one word, not a byte more for the flag.
+    static constexpr int kDegenerateBit = 31;
+    std::pmr::vector<std::uint32_t> corner_bits_;
     // Copies are rare, and a list of them per triangle took 8 MB a million
     // triangles at the check's peak: a bit per triangle says whether it has
     // copies (with_copies_, 64 to a word, and the count of those in the

@@ -127,30 +127,14 @@ SharedCorners shared_corners(const std::array<std::uint32_t, 3>& first,
     return shared;
 }
 
-// Per corner k of a triangle, bits 6 k + axis: the corner is the
-// triangle's highest on that axis (its two others at or below it), and
-// bits 6 k + 3 + axis: its lowest.
-std::uint32_t corner_extremes(const Triangle& t) {
-    std::uint32_t bits = 0;
-    for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector3d& corner = t[k];
-        const Eigen::Vector3d& next = t[k == 2 ? 0 : k + 1];
-        const Eigen::Vector3d& last = t[k == 0 ? 2 : k - 1];
-        for (int axis = 0; axis < 3; ++axis) {
-            const bool highest = next[axis] <= corner[axis] && last[axis] <= corner[axis];
-            const bool lowest = next[axis] >= corner[axis] && last[axis] >= corner[axis];
-            bits |= (std::uint32_t(highest) << axis | std::uint32_t(lowest) << (axis + 3)) << 6 * k;
-        }
-    }
-    return bits;
-}
-
 // Whether two triangles sharing one vertex, corner k of the first (its
-// extremes `first`) and corner l of the second, lie on either side of a
-// plane x = c through it on some axis: the highest of one there is the
-// lowest of the other. Then they do not cross, and met at a shared corner
-// only crossing counts (triangle_contact decides them so, from their
-// extents): decided without their positions.
+// corner extremes `first`, IndexedSurface::corner_extremes) and corner l of
+// the second, lie on either side of a plane x = c through it on some axis:
+// the highest of one there is the lowest of the other (on a surface, most
+// pairs around a vertex; fetching both triangles and testing their extents
+// was a third of a clean surface's search). Then they do not cross, and
+// met at a shared corner only crossing counts (triangle_contact decides them
+// so, from their extents): decided without their positions.
 bool apart_at_shared_corner(std::uint32_t first, int k, std::uint32_t second, int l) {
     const std::uint32_t a = first >> 6 * k, b = second >> 6 * l;
     return ((a & b >> 3) | (a >> 3 & b)) & 7u;
@@ -192,19 +176,6 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         }
     }
 
-    // Per triangle, the corner extremes (corner_extremes): on a surface most
-    // pairs of triangles around a vertex meet in the vertex's coordinate on
-    // some axis, and are decided from these alone, where fetching both
-    // triangles and testing their extents was a third of a clean surface's
-    // search.
-    std::pmr::vector<std::uint32_t> extremes(surface.size(), memory);
-    constexpr std::size_t kExtremesPerTask = 4096;
-    tasks.run((surface.size() + kExtremesPerTask - 1) / kExtremesPerTask, [&](std::size_t block) {
-        const std::size_t end = std::min(surface.size(), (block + 1) * kExtremesPerTask);
-        for (std::size_t t = block * kExtremesPerTask; t < end; ++t)
-            extremes[t] = corner_extremes(surface.triangle(t));
-    });
-
     // Adds the face pair of triangles i and j as its contact says. Coinciding
     // triangles of two shells bound the region behind both twice, as crossing
     // ones do; within one shell they may be a fan over a non-convex polygon,
@@ -229,8 +200,8 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     auto add_nothing = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared) {
         switch (shared.count) {
             case 1:
-                return apart_at_shared_corner(extremes[i], shared.at_first, extremes[j],
-                                              shared.at_second);
+                return apart_at_shared_corner(surface.corner_extremes(i), shared.at_first,
+                                              surface.corner_extremes(j), shared.at_second);
             case 2:
                 return true;
             case 3:
