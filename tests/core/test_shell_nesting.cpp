@@ -255,6 +255,17 @@ int main() {
                pages, expected);
     }
 
+    // A tetrahedron under a box, its top face flush with part of the box's
+    // bottom, from a corner on the bottom's edge (x = 0): the start inside
+    // that face next to the corner moves first to x > 0, onto the box's
+    // bottom, then towards x < 0, which must not turn it away from the box
+    // (probed upwards, it would seem inside the box).
+    TestMesh under;
+    add_box(under, {0, 0, 1}, {2, 2, 2}, false);
+    const Eigen::Vector3d flush[4] = {{0, 1, 1}, {1, 0.5, 1}, {-0.5, 1.5, 1}, {0.25, 1, 0}};
+    add_tetrahedron(under, flush);
+    expect("a tetrahedron under a box, flush with part of its bottom", under, {0, 0});
+
     TestMesh through;
     add_box(through, {0, 0, 0}, {1, 1, 1}, false);
     add_double_pyramid(through);
