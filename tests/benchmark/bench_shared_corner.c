@@ -89,23 +89,6 @@ static polymass_mesh_desc make_parts(int book, uint32_t k) {
     return desc;
 }
 
-static double analysis_seconds(polymass_context* context, const polymass_mesh_desc* desc,
-                               uint32_t flags, polymass_diagnostics* report) {
-    polymass_options options = POLYMASS_OPTIONS_INIT;
-    polymass_mesh* analysed = NULL;
-    options.flags = flags;
-    polymass_diagnostics_init(report, sizeof *report);
-    const double start = now_seconds();
-    polymass_mesh_create(&analysed, context, desc, &options);
-    const double elapsed = now_seconds() - start;
-    if (analysed == NULL || polymass_mesh_diagnostics(report, context, analysed) != POLYMASS_OK) {
-        fprintf(stderr, "error: %s\n", polymass_context_message(context));
-        exit(1);
-    }
-    polymass_mesh_destroy(analysed);
-    return elapsed;
-}
-
 int main(int argc, char** argv) {
     const int rounds = argc > 1 ? atoi(argv[1]) : 3;
     const char* only = argc > 2 ? argv[2] : "";
@@ -119,6 +102,9 @@ int main(int argc, char** argv) {
            polymass_version_string(), rounds);
     static const char* const kinds[2] = {"needles at one apex", "pages around one spine"};
     static const uint32_t sizes[3] = {1000, 4000, 8000};
+    const polymass_options every_check = POLYMASS_OPTIONS_INIT;
+    polymass_options skip = POLYMASS_OPTIONS_INIT;
+    skip.flags = POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     for (int book = 0; book < 2; ++book) {
         if (!strstr(kinds[book], only)) continue;
         double previous = 0;
@@ -127,9 +113,8 @@ int main(int argc, char** argv) {
             double* seconds = checked_malloc(2 * (size_t)rounds * sizeof *seconds);
             polymass_diagnostics reports[2];
             for (int r = 0; r < rounds; ++r) {
-                seconds[2 * r] = analysis_seconds(
-                    context, &desc, POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, &reports[0]);
-                seconds[2 * r + 1] = analysis_seconds(context, &desc, 0, &reports[1]);
+                seconds[2 * r] = analysis_seconds(context, &desc, &skip, &reports[0]);
+                seconds[2 * r + 1] = analysis_seconds(context, &desc, &every_check, &reports[1]);
             }
             double medians[2];
             medians_of(seconds, rounds, 2, medians);
