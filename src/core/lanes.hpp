@@ -1,11 +1,11 @@
 // A few doubles processed as one value (GCC/Clang vector extension).
 //
-// Lanes are the logical unit of the triangle kernel: lane_count triangles go
-// through the closed forms side by side and each lane keeps its own running
-// sums, so the order of every addition is fixed by lane_count alone. Wider
-// hardware processes several lane groups at once (WideLanes) but adds them to
-// the running sums one group after the other: every instruction set gives the
-// same bits. Baseline x86-64 code runs a Lanes operation as two SSE2
+// The triangle kernel keeps its running sums in two lane groups (WideLanes,
+// eight lanes): triangle i of a batch adds to lane i mod 8, so the order of
+// every addition is fixed by the lanes alone. Narrower hardware computes one
+// group (Lanes, lane_count triangles) at a time and adds it to the sums'
+// groups in turn, wider hardware both at once: every instruction set gives
+// the same bits. Baseline x86-64 code runs a Lanes operation as two SSE2
 // instructions, the AVX2 kernel as one, the AVX-512 kernel a WideLanes
 // operation as one. The shipped library is built for the baseline: wider code
 // is only ever chosen at run time (instruction_sets.hpp).
@@ -69,6 +69,36 @@ __attribute__((always_inline)) inline double sum_lanes(const Lanes& lanes) {
     double sum = 0.0;
     for (int lane = 0; lane < lane_count; ++lane) sum += lanes[lane];
     return sum;
+}
+
+// Adds `groups` lane groups of `term` (Lanes or WideLanes) to the lane groups
+// of `sum` from `first_group` on: the whole register at once when they are
+// all of it, else group by group.
+template <class Vector>
+__attribute__((always_inline)) inline void add_lane_groups(WideLanes& sum, const Vector& term,
+                                                           int first_group, int groups) {
+    if constexpr (sizeof(Vector) == sizeof(WideLanes)) {
+        if (groups == groups_of<WideLanes>) {
+            sum += term;
+            return;
+        }
+    }
+    for (int group = 0; group < groups; ++group) {
+        Lanes lanes;
+        std::memcpy(&lanes,
+                    reinterpret_cast<const char*>(&sum) + (first_group + group) * sizeof(Lanes),
+                    sizeof lanes);
+        add_lane_group(lanes, term, group);
+        std::memcpy(reinterpret_cast<char*>(&sum) + (first_group + group) * sizeof(Lanes), &lanes,
+                    sizeof lanes);
+    }
+}
+
+// The sum of a WideLanes' lanes: its two groups added lane by lane, then
+// those four lanes, lane 0 first.
+__attribute__((always_inline)) inline double sum_lanes(const WideLanes& lanes) {
+    return sum_lanes(Lanes(__builtin_shufflevector(lanes, lanes, 0, 1, 2, 3) +
+                           __builtin_shufflevector(lanes, lanes, 4, 5, 6, 7)));
 }
 
 }  // namespace polymass::core

@@ -23,8 +23,11 @@ struct BatchResult {
 };
 
 // The closed forms over a gathered batch, `Wide` (one or two lane groups) at
-// a time. Each lane group joins the running sums in turn, so the sums are
-// those of one lane group at a time, in order, whatever Wide is.
+// a time. Triangle i of the batch goes to lane i mod 8 of the running sums
+// (two lane groups, one WideLanes), whatever Wide is: a Wide of one group
+// fills the sums' two groups in turn, one of two fills both at once. So the
+// sums, and their bits, are the same for every instruction set, and the
+// widest adds each term with one instruction.
 //
 // Slivers (measured without squaring) and degenerate triangles (reported) are
 // rare. The fast pass (`careful` false, for whole batches) only notes whether
@@ -36,75 +39,85 @@ __attribute__((always_inline)) inline bool integrate_gathered(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
     constexpr int width = width_of<Wide>;
+    constexpr int steps = groups_of<WideLanes> / groups_of<Wide>;  // of Wide, per 8 triangles
+    static_assert(
+        batch_capacity % width_of<WideLanes> == 0 && gathered_group % width_of<WideLanes> == 0,
+        "whole steps of 8 triangles, padded to them");
     // Below 2^-1022 squares lose digits (down to none: a well-shaped triangle
     // 1e-150 of the mesh's size squares to zero); above 2^-960 what they lose
     // is under 2^-115 of the sum. So a small δ (coordinates are of order one
     // here) is measured without squaring instead, rarely.
     constexpr double squares_keep_digits = 0x1p-960;
-    UnscaledTriangleSums<Lanes> sums;
-    Lanes twice_areas{}, extents{};
+    UnscaledTriangleSums<WideLanes> sums;
+    WideLanes twice_areas{}, extents{};
     // Over the fast pass: the smallest squared |δ| and twice area less the
     // degeneracy threshold (1 is above the thresholds of both).
     Wide smallest_norm = Wide{} + 1.0, smallest_margin = Wide{} + 1.0;
-    for (std::size_t first = 0; first < batch.count; first += width) {
-        Wide p[3][3];
-#pragma GCC unroll 3
-        for (int axis = 0; axis < 3; ++axis)
-#pragma GCC unroll 3
-            for (int vertex = 0; vertex < 3; ++vertex) {
-                Wide coordinate;
-                std::memcpy(&coordinate, &gathered.coordinates[axis][vertex][first],
-                            sizeof coordinate);
-                p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
-            }
-        const TriangleEdges<Wide> edges(p);
-        // Lane groups past the batch's end add nothing; padding lanes add zeros.
-        const int groups =
-            careful ? int(std::min<std::size_t>(
-                          groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count))
-                    : groups_of<Wide>;
-        add_unscaled_triangle_sums(sums, p, edges.delta, groups);
-
-        // Started from the first square rather than from zero: 0 + a² is a²
-        // exactly (a square is never −0), one addition fewer each.
-        Wide squared_norm = edges.delta[0] * edges.delta[0];
-        Wide e1_squared = edges.e1[0] * edges.e1[0], e2_squared = edges.e2[0] * edges.e2[0];
+    for (std::size_t eight = 0; eight < batch.count; eight += width_of<WideLanes>) {
 #pragma GCC unroll 2
-        for (int axis = 1; axis < 3; ++axis) {
-            squared_norm += edges.delta[axis] * edges.delta[axis];
-            e1_squared += edges.e1[axis] * edges.e1[axis];
-            e2_squared += edges.e2[axis] * edges.e2[axis];
-        }
-        Wide twice_area;
-        for (int lane = 0; lane < width; ++lane) twice_area[lane] = std::sqrt(squared_norm[lane]);
-        // A degenerate triangle is reported; its terms, at rounding level, stay:
-        // they are what keeps a closed surface's sum balanced.
-        const Wide extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
-        if constexpr (careful) {
-            if (any_lane((squared_norm < squares_keep_digits) |
-                         (twice_area <= degenerate_area_ratio * extent_squared))) {
-                for (int lane = 0; lane < width; ++lane)
-                    if (squared_norm[lane] < squares_keep_digits)
-                        twice_area[lane] = std::hypot(edges.delta[0][lane], edges.delta[1][lane],
-                                                      edges.delta[2][lane]);
-                const MaskOf<Wide> degenerate =
-                    twice_area <= degenerate_area_ratio * extent_squared;
-                const std::size_t used = std::min<std::size_t>(width, batch.count - first);
-                for (std::size_t lane = 0; lane < used; ++lane)
-                    if (degenerate[lane]) result.degenerate_faces.record(batch.face(first + lane));
+        for (int step = 0; step < steps; ++step) {
+            const std::size_t first = eight + std::size_t(step) * width;
+            if (careful && first >= batch.count) break;
+            const int first_group = step * groups_of<Wide>;
+            Wide p[3][3];
+#pragma GCC unroll 3
+            for (int axis = 0; axis < 3; ++axis)
+#pragma GCC unroll 3
+                for (int vertex = 0; vertex < 3; ++vertex) {
+                    Wide coordinate;
+                    std::memcpy(&coordinate, &gathered.coordinates[axis][vertex][first],
+                                sizeof coordinate);
+                    p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
+                }
+            const TriangleEdges<Wide> edges(p);
+            // Lane groups past the batch's end add nothing; padding lanes add zeros.
+            const int groups =
+                careful ? int(std::min<std::size_t>(
+                              groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count))
+                        : groups_of<Wide>;
+            add_unscaled_triangle_sums(sums, p, edges.delta, first_group, groups);
+
+            // Started from the first square rather than from zero: 0 + a² is a²
+            // exactly (a square is never −0), one addition fewer each.
+            Wide squared_norm = edges.delta[0] * edges.delta[0];
+            Wide e1_squared = edges.e1[0] * edges.e1[0], e2_squared = edges.e2[0] * edges.e2[0];
+#pragma GCC unroll 2
+            for (int axis = 1; axis < 3; ++axis) {
+                squared_norm += edges.delta[axis] * edges.delta[axis];
+                e1_squared += edges.e1[axis] * edges.e1[axis];
+                e2_squared += edges.e2[axis] * edges.e2[axis];
             }
-        } else {
-            // Minima rather than or'ed masks, which compilers build a lane at
-            // a time. The margin is ≤ 0 wherever the test above holds (and at
-            // worst also where it does not, when the subtraction underflows
-            // to zero under flush-to-zero: a needless careful pass).
-            smallest_norm = squared_norm < smallest_norm ? squared_norm : smallest_norm;
-            const Wide margin = twice_area - degenerate_area_ratio * extent_squared;
-            smallest_margin = margin < smallest_margin ? margin : smallest_margin;
-        }
-        for (int group = 0; group < groups; ++group) {
-            add_lane_group(twice_areas, twice_area, group);
-            add_lane_group(extents, extent_squared, group);
+            Wide twice_area;
+            for (int lane = 0; lane < width; ++lane)
+                twice_area[lane] = std::sqrt(squared_norm[lane]);
+            // A degenerate triangle is reported; its terms, at rounding level, stay:
+            // they are what keeps a closed surface's sum balanced.
+            const Wide extent_squared = e1_squared > e2_squared ? e1_squared : e2_squared;
+            if constexpr (careful) {
+                if (any_lane((squared_norm < squares_keep_digits) |
+                             (twice_area <= degenerate_area_ratio * extent_squared))) {
+                    for (int lane = 0; lane < width; ++lane)
+                        if (squared_norm[lane] < squares_keep_digits)
+                            twice_area[lane] = std::hypot(
+                                edges.delta[0][lane], edges.delta[1][lane], edges.delta[2][lane]);
+                    const MaskOf<Wide> degenerate =
+                        twice_area <= degenerate_area_ratio * extent_squared;
+                    const std::size_t used = std::min<std::size_t>(width, batch.count - first);
+                    for (std::size_t lane = 0; lane < used; ++lane)
+                        if (degenerate[lane])
+                            result.degenerate_faces.record(batch.face(first + lane));
+                }
+            } else {
+                // Minima rather than or'ed masks, which compilers build a lane at
+                // a time. The margin is ≤ 0 wherever the test above holds (and at
+                // worst also where it does not, when the subtraction underflows
+                // to zero under flush-to-zero: a needless careful pass).
+                smallest_norm = squared_norm < smallest_norm ? squared_norm : smallest_norm;
+                const Wide margin = twice_area - degenerate_area_ratio * extent_squared;
+                smallest_margin = margin < smallest_margin ? margin : smallest_margin;
+            }
+            add_lane_groups(twice_areas, twice_area, first_group, groups);
+            add_lane_groups(extents, extent_squared, first_group, groups);
         }
     }
     if (!careful)

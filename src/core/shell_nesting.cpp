@@ -219,24 +219,46 @@ std::pmr::vector<int> count_windings(
     // each other often do, and the starts next to the corners of faces
     // resting flush always do. A start next to the vertex p lies on a
     // triangle only if p does, and so only in a triangle whose closed box
-    // holds p (each of the start's signs is first p's). The triangles of
-    // other shells whose boxes hold p are therefore listed once per vertex,
-    // by one look along the tree (all faces at p are of p's shell), and each
-    // start at p is tested against those alone: a corner where parts rest on
-    // each other starts several probes (five or so where cubes are stacked),
-    // which each looked along the tree before (docs/validity.md).
+    // holds p (each of the start's signs is first p's). The triangles whose
+    // boxes hold p are therefore listed once per point, by one look along
+    // the tree, and each start at p is tested against those of other shells
+    // alone: a corner where parts rest on each other starts several probes
+    // (five or so for each of the cubes stacked there), which each looked
+    // along the tree before (docs/validity.md).
     auto triangle_box = [&](std::uint32_t t) {
         ShellBox box;
         for (const Eigen::Vector3d& corner : surface.triangle(t)) box.extend(corner);
         return box;
     };
+    // A start next to p lies in the closed box of a triangle listed at p
+    // (whose box holds p) unless, on some axis, p lies on the box's low side
+    // and the start moves below it, or on its high side and moves above:
+    // six bits each, those of the box (SideBits::of_box, kept in the list)
+    // and those of the start (SideBits::of_start), which must not share one.
+    struct SideBits {
+        static std::uint8_t of_box(const ShellBox& box, const Eigen::Vector3d& p) {
+            std::uint8_t bits = 0;
+            for (int k = 0; k < 3; ++k)
+                bits |= std::uint8_t((p[k] == box.lo[k]) << (2 * k) | (p[k] == box.hi[k])
+                                                                          << (2 * k + 1));
+            return bits;
+        }
+        // Where x(e) moves off p on each axis: the first nonzero of its steps to a and b.
+        static std::uint8_t of_start(const ProbeStart& start) {
+            std::uint8_t bits = 0;
+            if (!start.inside) return bits;
+            for (int k = 0; k < 3; ++k) {
+                const double to = start.a[k] != start.p[k] ? start.a[k] : start.b[k];
+                bits |=
+                    std::uint8_t((to < start.p[k]) << (2 * k) | (to > start.p[k]) << (2 * k + 1));
+            }
+            return bits;
+        }
+    };
+    // Whether the start lies on triangle t, whose box holds it.
     auto lies_on_triangle = [&](const ProbeStart& start, std::uint32_t t) {
         const Triangle c = surface.triangle(t);
-        // A start off the triangle's box is off the triangle: of the many
-        // triangles around a corner where parts rest on each other, this
-        // leaves those in the start's plane, on its side.
-        return triangle_box(t).holds(start) &&
-               sign_at(start,
+        return sign_at(start,
                        [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); }) ==
                    0 &&
                lies_on(c, start);
@@ -258,46 +280,83 @@ std::pmr::vector<int> count_windings(
     std::uint32_t start_count = 0;
     for (std::uint32_t& start : start_of_vertex)
         if (start != kNoStart) start = start_count++;
-    // A corner (3 t + k) at each start vertex, for its position and shell.
+    // A corner (3 t + k) at each start vertex, for its position.
     std::pmr::vector<std::uint32_t> corner_of_start(start_count, 0, memory);
     for (std::uint32_t t = 0; t < surface.size(); ++t)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t start = start_of_vertex[surface.corners(t)[k]];
             if (start != kNoStart) corner_of_start[start] = 3 * t + std::uint32_t(k);
         }
-    // The other shells' triangles whose boxes hold each start vertex, looked
-    // up in blocks as tasks, then gathered in order: those of start vertex s
-    // are near_triangles[near_begin[s], near_begin[s + 1]).
-    const std::size_t start_blocks = (start_count + kTrianglesPerTask - 1) / kTrianglesPerTask;
-    std::pmr::vector<std::pmr::vector<std::uint32_t>> block_near(start_blocks, memory);
-    std::pmr::vector<std::uint32_t> near_count(start_count, 0, memory);
-    tasks.run(start_blocks, [&](std::size_t block) {
-        const std::size_t end = std::min<std::size_t>(start_count, (block + 1) * kTrianglesPerTask);
-        for (std::size_t s = block * kTrianglesPerTask; s < end; ++s) {
-            const std::uint32_t t = corner_of_start[s] / 3;
-            const Eigen::Vector3d p = surface.triangle(t, int(corner_of_start[s] % 3))[0];
+    auto position_of_start = [&](std::uint32_t s) {
+        return surface.triangle(corner_of_start[s] / 3, int(corner_of_start[s] % 3))[0];
+    };
+    // Start vertices at one point (separate parts touching there, each with
+    // its own vertex) share one list: k parts meeting at a point would
+    // otherwise list each other's triangles k times over, k^2 in all. The
+    // starts sorted by position, the points numbered in that order.
+    std::pmr::vector<std::uint32_t> by_position(start_count, memory);
+    for (std::uint32_t s = 0; s < start_count; ++s) by_position[s] = s;
+    std::sort(by_position.begin(), by_position.end(), [&](std::uint32_t a, std::uint32_t b) {
+        const Eigen::Vector3d pa = position_of_start(a), pb = position_of_start(b);
+        return std::lexicographical_compare(pa.begin(), pa.end(), pb.begin(), pb.end());
+    });
+    std::pmr::vector<std::uint32_t> point_of_start(start_count, 0, memory);
+    std::pmr::vector<std::uint32_t> start_of_point(memory);  // one start at each point
+    for (std::uint32_t k = 0; k < start_count; ++k) {
+        const std::uint32_t s = by_position[k];
+        if (k == 0 || position_of_start(by_position[k - 1]) != position_of_start(s))
+            start_of_point.push_back(s);
+        point_of_start[s] = std::uint32_t(start_of_point.size() - 1);
+    }
+    by_position = {};
+    const std::size_t point_count = start_of_point.size();
+    // The triangles whose boxes hold each point, of every shell (a start
+    // skips its own shell's), with their boxes' side bits, looked up in
+    // blocks as tasks, then gathered in order: those of point i are
+    // near_triangles[near_begin[i], near_begin[i + 1]).
+    struct NearTriangle {
+        std::uint32_t triangle;
+        std::uint8_t box_sides;
+    };
+    const std::size_t point_blocks = (point_count + kTrianglesPerTask - 1) / kTrianglesPerTask;
+    std::pmr::vector<std::pmr::vector<NearTriangle>> block_near(point_blocks, memory);
+    std::pmr::vector<std::uint32_t> near_count(point_count, 0, memory);
+    tasks.run(point_blocks, [&](std::size_t block) {
+        const std::size_t end = std::min<std::size_t>(point_count, (block + 1) * kTrianglesPerTask);
+        for (std::size_t i = block * kTrianglesPerTask; i < end; ++i) {
+            const Eigen::Vector3d p = position_of_start(start_of_point[i]);
             const ProbeStart start{p, p, p, false};
             surface.tree().for_each_item_near_segment(
                 surface.in_units(p), surface.in_units(p), [&](std::uint32_t other) {
-                    if (shell_of(other) != shell_of(t) && triangle_box(other).holds(start)) {
-                        block_near[block].push_back(other);
-                        ++near_count[s];
+                    const ShellBox box = triangle_box(other);
+                    if (box.holds(start)) {
+                        block_near[block].push_back({other, SideBits::of_box(box, p)});
+                        ++near_count[i];
                     }
                     return true;
                 });
         }
     });
-    std::pmr::vector<std::size_t> near_begin(start_count + 1, 0, memory);
-    for (std::size_t s = 0; s < start_count; ++s) near_begin[s + 1] = near_begin[s] + near_count[s];
-    std::pmr::vector<std::uint32_t> near_triangles(memory);
+    std::pmr::vector<std::size_t> near_begin(point_count + 1, 0, memory);
+    for (std::size_t i = 0; i < point_count; ++i) near_begin[i + 1] = near_begin[i] + near_count[i];
+    std::pmr::vector<NearTriangle> near_triangles(memory);
     near_triangles.reserve(near_begin.back());
     for (const auto& found : block_near)
         near_triangles.insert(near_triangles.end(), found.begin(), found.end());
     block_near = {};
-    auto on_another_shell = [&](const ProbeStart& start, std::uint32_t vertex) {
-        const std::uint32_t s = start_of_vertex[vertex];
-        for (std::size_t k = near_begin[s]; k < near_begin[s + 1]; ++k)
-            if (lies_on_triangle(start, near_triangles[k])) return true;
+    auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell,
+                                std::uint32_t vertex) {
+        const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
+        const std::uint8_t start_sides = SideBits::of_start(start);
+        for (std::size_t k = near_begin[point]; k < near_begin[point + 1]; ++k) {
+            // A start off the triangle's box is off the triangle: of the
+            // many triangles around a corner where parts rest on each other,
+            // this leaves those on the start's side.
+            const NearTriangle near = near_triangles[k];
+            if ((start_sides & near.box_sides) == 0 && shell_of(near.triangle) != shell &&
+                lies_on_triangle(start, near.triangle))
+                return true;
+        }
         return false;
     };
     // The winding at the start: kUnknownWinding when it lies on another
@@ -307,7 +366,7 @@ std::pmr::vector<int> count_windings(
     // (no segment needed).
     auto probe = [&](const ProbeStart& start, std::uint32_t shell, std::uint32_t vertex) {
         int winding = kUnknownWinding;
-        if (on_another_shell(start, vertex)) return winding;
+        if (on_another_shell(start, shell, vertex)) return winding;
         const Near near = shells_near(start, shell);
         if (near.count == 0) return 0;
         for (const Eigen::Vector3d& direction : kProbeDirections) {

@@ -6,6 +6,7 @@
 
 #include "face_blocks.hpp"
 #include "smallest_index_sets.hpp"
+#include "welding.hpp"
 
 namespace polymass::core {
 namespace {
@@ -32,11 +33,13 @@ void join_faces(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std:
 std::size_t count_roots(const std::pmr::vector<std::uint32_t>& parent, const MeshScan& scan,
                         const std::uint32_t* vertex_ids) {
     const std::size_t reachable = std::min(parent.size(), 64 * scan.used.size());
-    std::size_t roots = 0;
-    for (std::size_t vertex = 0; vertex < reachable; ++vertex)
-        roots += scan.is_used(vertex) && parent[vertex] == vertex &&
-                 (!vertex_ids || vertex_ids[vertex] == vertex);
-    return roots;
+    // Both tests read for every vertex (&, not &&): no branch to mispredict.
+    if (vertex_ids)
+        return count_used_with(scan, reachable, [&](std::uint32_t vertex) {
+            return (parent[vertex] == vertex) & (vertex_ids[vertex] == vertex);
+        });
+    return count_used_with(scan, reachable,
+                           [&](std::uint32_t vertex) { return parent[vertex] == vertex; });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "face_blocks.hpp"
+#include "instruction_sets.hpp"
 #include "scratch_buffer.hpp"
 #include "smallest_index_sets.hpp"
 
@@ -74,7 +75,8 @@ constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
 // copy would wait for them.) The eight slots from `first` are read whatever
 // n is: the caller sees that they are all its piece's.
 // 32-bit entries only (64-bit ones, for meshes of billions, are sorted).
-bool small_bucket_of_common_edges(const std::uint32_t* first, std::size_t n) {
+__attribute__((always_inline)) inline bool small_bucket_of_common_edges(const std::uint32_t* first,
+                                                                        std::size_t n) {
     using Four = std::uint32_t __attribute__((vector_size(16)));
     static_assert(small_bucket == 8, "two vectors of four");
     Four low, high;
@@ -107,6 +109,50 @@ template <class Entry>
 bool small_bucket_of_common_edges(const Entry*, std::size_t) {
     return false;
 }
+
+#if defined(__x86_64__)
+// The same test on AVX2, the eight slots in one vector: turned by 1, 2 and 3
+// slots, each pair of slots 1, 2, 3, 5, 6 or 7 apart meets once; turned by 4,
+// the pairs 4 apart meet twice, and only the first meeting is counted. About
+// half the instructions of the test above, which SSE2 spends on shuffles.
+// Inlined only into the AVX2 walk, whose target it takes (a function with a
+// target of its own would not be inlined into the walk's shared body).
+__attribute__((always_inline)) inline bool small_bucket_of_common_edges_avx2(
+    const std::uint32_t* first, std::size_t n) {
+    using Eight = std::uint32_t __attribute__((vector_size(32)));
+    static_assert(small_bucket == 8, "one vector of eight");
+    Eight slots;
+    std::memcpy(&slots, first, sizeof slots);
+    const auto count = std::uint32_t(n);
+    const Eight in = Eight(Eight{0, 1, 2, 3, 4, 5, 6, 7} < count);
+    slots = (slots & in) | (Eight{0, 4, 8, 12, 16, 20, 24, 28} & ~in);
+    Eight partners{}, repeated{};
+    auto compare = [&](const Eight& turned, const Eight& counted) {
+        const Eight difference = slots ^ turned;
+        partners -= Eight(difference == 1) & counted;
+        repeated |= Eight(difference == 0);
+    };
+    const Eight all = ~Eight{}, first_half{~0u, ~0u, ~0u, ~0u, 0, 0, 0, 0};
+    compare(__builtin_shufflevector(slots, slots, 1, 2, 3, 4, 5, 6, 7, 0), all);
+    compare(__builtin_shufflevector(slots, slots, 2, 3, 4, 5, 6, 7, 0, 1), all);
+    compare(__builtin_shufflevector(slots, slots, 3, 4, 5, 6, 7, 0, 1, 2), all);
+    compare(__builtin_shufflevector(slots, slots, 4, 5, 6, 7, 0, 1, 2, 3), first_half);
+    // Summed across the lanes by folding halves (lane by lane, the sums took
+    // as many instructions as the comparisons).
+    partners += __builtin_shufflevector(partners, partners, 4, 5, 6, 7, 0, 1, 2, 3);
+    repeated |= __builtin_shufflevector(repeated, repeated, 4, 5, 6, 7, 0, 1, 2, 3);
+    partners += __builtin_shufflevector(partners, partners, 2, 3, 0, 1, 6, 7, 4, 5);
+    repeated |= __builtin_shufflevector(repeated, repeated, 2, 3, 0, 1, 6, 7, 4, 5);
+    partners += __builtin_shufflevector(partners, partners, 1, 0, 3, 2, 5, 4, 7, 6);
+    repeated |= __builtin_shufflevector(repeated, repeated, 1, 0, 3, 2, 5, 4, 7, 6);
+    return repeated[0] == 0 && 2 * std::size_t(partners[0]) == n;
+}
+
+template <class Entry>
+bool small_bucket_of_common_edges_avx2(const Entry*, std::size_t) {
+    return false;
+}
+#endif
 
 // Whether a sorted bucket holds only common edges, each traversed once each
 // way and by no other face: pairs (h << 1, h << 1 | 1), with h rising. That
@@ -144,18 +190,29 @@ void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
 // straight below low's root already (joined through a lower vertex, or by
 // the edge's other entry): one load each, and no search.
 template <class Entry>
-void join_ends(const ConcurrentSmallestIndexSets& sets, std::size_t low, const Entry* first,
+void join_ends(ConcurrentSmallestIndexSets sets, std::size_t low, const Entry* first,
                const Entry* last) {
     std::uint32_t root = sets.find(std::uint32_t(low));
     for (const Entry* at = first; at != last; ++at)
         root = sets.join_to(root, std::uint32_t(*at >> 1));
 }
 
+template <bool avx2, class Entry>
+__attribute__((always_inline)) inline bool small_bucket_test(const Entry* first, std::size_t n) {
+#if defined(__x86_64__)
+    if constexpr (avx2) return small_bucket_of_common_edges_avx2(first, n);
+#endif
+    return small_bucket_of_common_edges(first, n);
+}
+
 // Classifies the edges whose lower vertex is in [first_low, last_low), from
-// their bucket entries starting at `entries`, and joins their ends in `sets`.
-template <class Entry>
-TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t first_low,
-                            std::size_t last_low, const ConcurrentSmallestIndexSets& sets) {
+// their bucket entries starting at `entries`, and joins their ends in `sets`
+// (taken by value, as by join_ends: the parent array's address then stays in
+// a register; through a reference it was loaded again at every join).
+template <bool avx2, class Entry>
+__attribute__((always_inline)) inline TopologyReport walk_buckets_as(
+    Entry* entries, const Entry* end_of, std::size_t first_low, std::size_t last_low,
+    ConcurrentSmallestIndexSets sets) {
     TopologyReport report;
     Entry begin = first_low == 0 ? 0 : end_of[first_low - 1];
     // Reading past a bucket stays within the piece: the next piece's buckets
@@ -171,7 +228,7 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
         join_ends(sets, low, first, last);
         if (size <= small_bucket && low >= padded_from_low &&
             std::size_t(piece_end - first) >= small_bucket &&
-            small_bucket_of_common_edges(first, size)) {
+            small_bucket_test<avx2>(first, size)) {
             report.edge_count += size / 2;
             continue;
         }
@@ -202,9 +259,35 @@ TopologyReport walk_buckets(Entry* entries, const Entry* end_of, std::size_t fir
     return report;
 }
 
+// The walk built for each instruction set, chosen at run time (the shipped
+// library is built for the baseline); both give the same report and sets.
+template <class Entry>
+TopologyReport walk_buckets_baseline(Entry* entries, const Entry* end_of, std::size_t first_low,
+                                     std::size_t last_low,
+                                     const ConcurrentSmallestIndexSets& sets) {
+    return walk_buckets_as<false>(entries, end_of, first_low, last_low, sets);
+}
+#if defined(__x86_64__)
+template <class Entry>
+__attribute__((target("avx2"))) TopologyReport walk_buckets_avx2(
+    Entry* entries, const Entry* end_of, std::size_t first_low, std::size_t last_low,
+    const ConcurrentSmallestIndexSets& sets) {
+    return walk_buckets_as<true>(entries, end_of, first_low, last_low, sets);
+}
+#endif
+
+template <class Entry>
+auto walk_buckets_for(InstructionSet set) {
+#if defined(__x86_64__)
+    if (set != InstructionSet::baseline) return walk_buckets_avx2<Entry>;
+#endif
+    return walk_buckets_baseline<Entry>;
+}
+
 template <class Entry, class Scalar, class Index, class VertexId>
 TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, TaskRunner& tasks,
-                           std::pmr::memory_resource* memory, std::uint32_t* vertex_sets) {
+                           std::pmr::memory_resource* memory, std::uint32_t* vertex_sets,
+                           InstructionSet set) {
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
     // end_of[v]: first counts, then (after the prefix sum) where v's bucket
     // starts, then (after filing, each bucket filled from its start) where it ends.
@@ -250,6 +333,7 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     const std::size_t pieces = (mesh.vertex_count + vertices_per_piece - 1) / vertices_per_piece;
     std::pmr::vector<TopologyReport> parts(pieces, memory);
     const ConcurrentSmallestIndexSets sets(vertex_sets);
+    const auto walk_buckets = walk_buckets_for<Entry>(set);
     tasks.run(pieces, [&](std::size_t piece) {
         parts[piece] =
             walk_buckets(entries.data(), end_of.data(), piece * vertices_per_piece,
@@ -272,14 +356,15 @@ template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
                                 const std::uint32_t* vertex_ids, TaskRunner& tasks,
                                 std::pmr::memory_resource* memory,
-                                std::pmr::vector<std::uint32_t>& vertex_sets) {
+                                std::pmr::vector<std::uint32_t>& vertex_sets, InstructionSet set) {
     vertex_sets.resize(mesh.vertex_count);
     std::iota(vertex_sets.begin(), vertex_sets.end(), 0u);
     auto analyse = [&](auto&& id) {
         const bool narrow = mesh.vertex_count <= (std::size_t{1} << 31) &&
                             mesh.index_count <= std::numeric_limits<std::uint32_t>::max();
-        return narrow ? match_edges<std::uint32_t>(mesh, id, tasks, memory, vertex_sets.data())
-                      : match_edges<std::uint64_t>(mesh, id, tasks, memory, vertex_sets.data());
+        return narrow
+                   ? match_edges<std::uint32_t>(mesh, id, tasks, memory, vertex_sets.data(), set)
+                   : match_edges<std::uint64_t>(mesh, id, tasks, memory, vertex_sets.data(), set);
     };
     if (vertex_ids)
         return analyse([&](std::size_t position) { return vertex_ids[mesh.indices[position]]; });
@@ -289,7 +374,7 @@ TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                \
     template TopologyReport analyse_topology<Scalar, Index>(               \
         const MeshView<Scalar, Index>&, const std::uint32_t*, TaskRunner&, \
-        std::pmr::memory_resource*, std::pmr::vector<std::uint32_t>&);
+        std::pmr::memory_resource*, std::pmr::vector<std::uint32_t>&, InstructionSet);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

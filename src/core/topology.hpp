@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "findings.hpp"
-
+#include "instruction_sets.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
 
@@ -74,6 +74,7 @@ template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
                                 const std::uint32_t* vertex_ids, TaskRunner& tasks,
                                 std::pmr::memory_resource* memory,
-                                std::pmr::vector<std::uint32_t>& vertex_sets);
+                                std::pmr::vector<std::uint32_t>& vertex_sets,
+                                InstructionSet set = widest_instruction_set());
 
 }  // namespace polymass::core

@@ -180,7 +180,8 @@ struct Extent {
 };
 
 // The extent of the corners of t in `corners` (at least one) on axis.
-Extent extent(const Triangle& t, unsigned corners, int axis) {
+// Inlined: a pair of faces resting on each other asks for four to six.
+__attribute__((always_inline)) inline Extent extent(const Triangle& t, unsigned corners, int axis) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     std::array<double, 3> low, high;
     for (int i = 0; i < 3; ++i) {

@@ -45,14 +45,15 @@ void gather_baseline(const TriangleBatch<Scalar, Index>& batch, GatheredTriangle
 }
 
 #if defined(__x86_64__)
-// A vertex as x, y, z and a zero, in one register, as the caller stores it:
-// float rows are transposed as floats and widened afterwards, three
-// conversions a lane group and corner rather than four, and shuffles of
-// 128-bit registers rather than 256-bit ones. Trusted path, float32 torus of
-// 1e5 triangles, AVX-512 (Zen 4), thread CPU time: 0.72-0.74 ms widened
-// first, 0.68-0.69 so (float64: 0.67-0.69); with AVX2, 2.3 instructions a
-// triangle more (callgrind), the shuffles of a float transpose outnumbering
-// the conversion saved. (GCC takes no vector attribute on a template
+// A vertex as x, y, z and a zero, in one register. The AVX-512 gatherer
+// keeps a float row as floats, transposes it as floats and widens
+// afterwards: three conversions a lane group and corner rather than four, and
+// shuffles of 128-bit registers rather than 256-bit ones (trusted path,
+// float32 torus of 1e5 triangles, AVX-512 (Zen 4), thread CPU time: 0.72-0.74
+// ms widened first, 0.68-0.69 so; float64: 0.67-0.69). The AVX2 gatherer
+// widens each row as it loads it: there the float transpose's shuffles
+// outnumber the conversion saved (the gather 27.7 -> 25.4 instructions a
+// triangle, callgrind). (GCC takes no vector attribute on a template
 // parameter: a trait.)
 template <class Scalar>
 struct RowOf;
@@ -151,70 +152,68 @@ __attribute__((target("avx"), always_inline)) inline void store_transposed(
 // A vertex as x, y, z and a zero, in one register, for each wider set.
 // Masked loads: the lane past z is neither read nor able to fault, so the
 // last vertex of the array is read like any other. The AVX-512 gatherer
-// differs from the AVX2 one only in its masked load, which Zen 4 runs much
-// faster than AVX2's vmaskmovpd (the whole trusted path at 1e6 triangles,
-// 6.6 against 7.7 ns per triangle). Each has its own loop: a loop shared as a
-// template would have to inline code built for a wider set into code that is
-// not. Four rows at a time for both: a transpose of four 256-bit rows takes
-// fewer shuffle slots than one of eight in 512-bit registers, which Zen 4
-// runs as two halves.
+// differs from the AVX2 one in its masked load, which Zen 4 runs much faster
+// than AVX2's vmaskmovpd (the whole trusted path at 1e6 triangles, 6.6
+// against 7.7 ns per triangle), and in when it widens floats (above). Each has its own loop: a loop
+// shared as a template would have to inline code built for a wider set into code that is not. Four
+// rows at a time for both: a transpose of four 256-bit rows takes fewer shuffle slots than one of
+// eight in 512-bit registers, which Zen 4 runs as two halves.
+template <class Scalar>
 __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const unsigned char* xyz,
                                                                            Row<double>& row) {
-    row = Row<double>(_mm256_maskload_pd(reinterpret_cast<const double*>(xyz),
-                                         _mm256_setr_epi64x(-1, -1, -1, 0)));
-}
-
-__attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const unsigned char* xyz,
-                                                                           Row<float>& row) {
-    row = Row<float>(
-        _mm_maskload_ps(reinterpret_cast<const float*>(xyz), _mm_setr_epi32(-1, -1, -1, 0)));
+    if constexpr (sizeof(Scalar) == sizeof(float))
+        row = Row<double>(_mm256_cvtps_pd(
+            _mm_maskload_ps(reinterpret_cast<const float*>(xyz), _mm_setr_epi32(-1, -1, -1, 0))));
+    else
+        row = Row<double>(_mm256_maskload_pd(reinterpret_cast<const double*>(xyz),
+                                             _mm256_setr_epi64x(-1, -1, -1, 0)));
 }
 
 // The gathering loop for one instruction set: four vertex rows at a time,
-// loaded by vertex_row_<name>, transposed into the batch's lanes.
-#define POLYMASS_GATHER(name, target)                                                  \
-    template <bool listed, class Scalar, class Index>                                  \
-    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,               \
-                              GatheredTriangles& gathered) {                           \
-        const CornerSource<listed, Scalar, Index> source(batch);                       \
-        std::size_t slot = 0;                                                          \
-        for (; slot + lane_count <= batch.count; slot += lane_count) {                 \
-            if (!listed && slot + fetch_ahead + lane_count <= source.faces_left)       \
-                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)  \
-                    __builtin_prefetch(source.vertex(slot + fetch_ahead + lane, 2));   \
-            _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {       \
-                Row<Scalar> rows[lane_count];                                          \
-                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)  \
-                    vertex_row_##name(source.vertex(slot + lane, corner), rows[lane]); \
-                store_transposed<Scalar>(rows, gathered, corner, slot);                \
-            }                                                                          \
-        }                                                                              \
-        gather_one_by_one<listed>(batch, slot, gathered);                              \
-    }                                                                                  \
-    template <class Scalar, class Index>                                               \
-    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,               \
-                              GatheredTriangles& gathered) {                           \
-        if (batch.faces)                                                               \
-            gather_##name<true>(batch, gathered);                                      \
-        else                                                                           \
-            gather_##name<false>(batch, gathered);                                     \
+// loaded by vertex_row_<name> as rows of RowScalar, transposed into the
+// batch's lanes.
+#define POLYMASS_GATHER(name, target, RowScalar)                                               \
+    template <bool listed, class Scalar, class Index>                                          \
+    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,                       \
+                              GatheredTriangles& gathered) {                                   \
+        const CornerSource<listed, Scalar, Index> source(batch);                               \
+        std::size_t slot = 0;                                                                  \
+        for (; slot + lane_count <= batch.count; slot += lane_count) {                         \
+            if (!listed && slot + fetch_ahead + lane_count <= source.faces_left)               \
+                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
+                    __builtin_prefetch(source.vertex(slot + fetch_ahead + lane, 2));           \
+            _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {               \
+                Row<RowScalar> rows[lane_count];                                               \
+                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
+                    vertex_row_##name<Scalar>(source.vertex(slot + lane, corner), rows[lane]); \
+                store_transposed<RowScalar>(rows, gathered, corner, slot);                     \
+            }                                                                                  \
+        }                                                                                      \
+        gather_one_by_one<listed>(batch, slot, gathered);                                      \
+    }                                                                                          \
+    template <class Scalar, class Index>                                                       \
+    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,                       \
+                              GatheredTriangles& gathered) {                                   \
+        if (batch.faces)                                                                       \
+            gather_##name<true>(batch, gathered);                                              \
+        else                                                                                   \
+            gather_##name<false>(batch, gathered);                                             \
     }
 
-POLYMASS_GATHER(avx2, __attribute__((target("avx2"))))
+POLYMASS_GATHER(avx2, __attribute__((target("avx2"))), double)
 
 #define POLYMASS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw"
 
+template <class Scalar>
 __attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_avx512(
-    const unsigned char* xyz, Row<double>& row) {
-    row = Row<double>(_mm256_maskz_loadu_pd(0x7, xyz));
+    const unsigned char* xyz, Row<Scalar>& row) {
+    if constexpr (sizeof(Scalar) == sizeof(float))
+        row = Row<float>(_mm_maskz_loadu_ps(0x7, xyz));
+    else
+        row = Row<double>(_mm256_maskz_loadu_pd(0x7, xyz));
 }
 
-__attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_avx512(
-    const unsigned char* xyz, Row<float>& row) {
-    row = Row<float>(_mm_maskz_loadu_ps(0x7, xyz));
-}
-
-POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))))
+POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))), Scalar)
 #undef POLYMASS_GATHER
 #undef POLYMASS_AVX512
 #endif

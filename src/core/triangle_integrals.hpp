@@ -81,15 +81,17 @@ struct TriangleEdges {
 
 // Adds the unscaled face sums of triangles with vertex coordinates
 // p[axis][vertex] and δ from TriangleEdges (a lane whose δ is zero adds
-// zeros) to the running sums, lane group by lane group (T is Lanes or
-// WideLanes; `groups` of its lane groups are added). Each sum is added to as
-// soon as its term is known, which keeps fewer values alive at once; the
-// order of the additions into any one sum is the same.
+// zeros) to the running sums, whose lanes take the triangles' terms from lane
+// group first_group on (T is Lanes or WideLanes; `groups` of its lane groups
+// are added). Each sum is added to as soon as its term is known, which keeps
+// fewer values alive at once; the order of the additions into any one sum is
+// the same.
 template <class T>
 __attribute__((always_inline)) inline void add_unscaled_triangle_sums(
-    UnscaledTriangleSums<Lanes>& sums, const T (&p)[3][3], const T (&delta)[3], int groups) {
-    auto add = [groups](Lanes& sum, const T& term) {
-        for (int group = 0; group < groups; ++group) add_lane_group(sum, term, group);
+    UnscaledTriangleSums<WideLanes>& sums, const T (&p)[3][3], const T (&delta)[3], int first_group,
+    int groups) {
+    auto add = [first_group, groups](WideLanes& sum, const T& term) {
+        add_lane_groups(sum, term, first_group, groups);
     };
 #pragma GCC unroll 3
     for (int axis = 0; axis < 3; ++axis) {

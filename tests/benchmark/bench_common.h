@@ -1,8 +1,10 @@
 /* What the benchmarks share: a monotonic clock, the median of rounds, memory
-   or an exit, and the torus they measure (a closed grid of triangles far from
-   the origin). */
+   or an exit, the timed analysis of a mesh, and the torus they measure (a
+   closed grid of triangles far from the origin). */
 #ifndef POLYMASS_BENCH_COMMON_H
 #define POLYMASS_BENCH_COMMON_H
+
+#include <polymass/polymass.h>
 
 #include <math.h>
 #include <stdint.h>
@@ -46,6 +48,25 @@ static inline void medians_of(const double* seconds, int rounds, int measures, d
         medians[m] = median(column, rounds);
     }
     free(column);
+}
+
+/* The seconds of one analysis of the mesh (polymass_mesh_create: every check
+   the options leave on, run to its end), its findings in `report`; or the
+   program ends saying what failed. */
+static inline double analysis_seconds(polymass_context* context, const polymass_mesh_desc* desc,
+                                      const polymass_options* options,
+                                      polymass_diagnostics* report) {
+    polymass_mesh* analysed = NULL;
+    polymass_diagnostics_init(report, sizeof *report);
+    const double start = now_seconds();
+    polymass_mesh_create(&analysed, context, desc, options);
+    const double elapsed = now_seconds() - start;
+    if (analysed == NULL || polymass_mesh_diagnostics(report, context, analysed) != POLYMASS_OK) {
+        fprintf(stderr, "error: %s\n", polymass_context_message(context));
+        exit(1);
+    }
+    polymass_mesh_destroy(analysed);
+    return elapsed;
 }
 
 /* A torus of rings x segments quads, two triangles each, 1e6 from the origin:

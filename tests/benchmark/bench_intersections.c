@@ -107,23 +107,12 @@ static bench_mesh make_cubes(const char* name, uint32_t k, uint32_t side, int so
 static double check_seconds(polymass_context* context, const bench_mesh* mesh, uint32_t flags,
                             uint32_t threads, polymass_diagnostics* report) {
     polymass_options options = POLYMASS_OPTIONS_INIT;
-    polymass_mesh* analysed = NULL;
     options.flags = flags | mesh->flags;
-    polymass_diagnostics_init(report, sizeof *report);
     if (polymass_context_set_threads(context, threads) != POLYMASS_OK) {
         fprintf(stderr, "error: %s\n", polymass_context_message(context));
         exit(1);
     }
-    /* The analysis: every check the options leave on, run to its end. */
-    const double start = now_seconds();
-    polymass_mesh_create(&analysed, context, &mesh->desc, &options);
-    const double elapsed = now_seconds() - start;
-    if (analysed == NULL || polymass_mesh_diagnostics(report, context, analysed) != POLYMASS_OK) {
-        fprintf(stderr, "error: %s\n", polymass_context_message(context));
-        exit(1);
-    }
-    polymass_mesh_destroy(analysed);
-    return elapsed;
+    return analysis_seconds(context, &mesh->desc, &options, report);
 }
 
 /* MeshLib's seconds on the mesh (the median of `rounds`, on one processor),

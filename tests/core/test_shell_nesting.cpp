@@ -11,8 +11,10 @@
 #include "test_mesh.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdio>
 #include <memory_resource>
+#include <utility>
 #include <vector>
 
 #include "core/surface_contacts.hpp"
@@ -74,6 +76,52 @@ void add_l_prism(TestMesh& mesh) {
         const int next = (k + 1) % 6;
         mesh.add_face({bottom[k], bottom[next], top[next]});
         mesh.add_face({bottom[k], top[next], top[k]});
+    }
+}
+
+// A tetrahedron (its own four vertices, faces turned outward).
+void add_tetrahedron(TestMesh& mesh, const Eigen::Vector3d (&corner)[4]) {
+    const bool positive =
+        (corner[1] - corner[0]).dot((corner[2] - corner[0]).cross(corner[3] - corner[0])) > 0;
+    std::uint32_t v[4];
+    for (int k = 0; k < 4; ++k) v[k] = mesh.add_vertex(corner[k]);
+    if (!positive) std::swap(v[1], v[2]);
+    mesh.add_face({v[0], v[2], v[1]});
+    mesh.add_face({v[0], v[1], v[3]});
+    mesh.add_face({v[0], v[3], v[2]});
+    mesh.add_face({v[1], v[2], v[3]});
+}
+
+// k thin tetrahedra whose apexes are one point, `apex`, pointing out along
+// directions spread over the sphere (length 1, never meeting elsewhere):
+// separate parts, each its own vertex there, all touching each other at it.
+void add_needles(TestMesh& mesh, const Eigen::Vector3d& apex, int k) {
+    const double pi = 3.14159265358979323846;
+    for (int n = 0; n < k; ++n) {
+        const double z = 1 - (2 * n + 1.0) / k, r = std::sqrt(1 - z * z);
+        const double turn = n * pi * (3 - std::sqrt(5.0));
+        const Eigen::Vector3d d(r * std::cos(turn), r * std::sin(turn), z);
+        const Eigen::Vector3d u = d.unitOrthogonal(), v = d.cross(u);
+        const double width = 0.2 * std::sqrt(4 * pi / k);
+        Eigen::Vector3d corner[4] = {apex, apex, apex, apex};
+        for (int c = 0; c < 3; ++c)
+            corner[1 + c] +=
+                d + width * (std::cos(2 * pi * c / 3) * u + std::sin(2 * pi * c / 3) * v);
+        add_tetrahedron(mesh, corner);
+    }
+}
+
+// k thin tetrahedra around one edge from `foot` up by 1 along z, as the
+// pages of a book around its spine: touching each other along it.
+void add_pages(TestMesh& mesh, const Eigen::Vector3d& foot, int k) {
+    const double pi = 3.14159265358979323846;
+    for (int n = 0; n < k; ++n) {
+        const double angle = 2 * pi * n / k, width = pi / k;
+        const Eigen::Vector3d corner[4] = {
+            foot, foot + Eigen::Vector3d(0, 0, 1),
+            foot + Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.5),
+            foot + Eigen::Vector3d(std::cos(angle + width), std::sin(angle + width), 0.5)};
+        add_tetrahedron(mesh, corner);
     }
 }
 
@@ -185,6 +233,38 @@ int main() {
     }
     expect("41 nested shells, solids and cavities in turn", hollows, alternating);
     expect("41 nested solids", solids, depth);
+
+    // Many separate parts touching at one point, or along one edge: each
+    // start there lies on the others' triangles, or next to them, and more
+    // than kNearShells of their boxes hold it. Alone, and inside a solid.
+    for (const bool inside : {false, true}) {
+        TestMesh needles, pages;
+        std::vector<int> expected(1, 0);
+        expected.resize(41, inside ? 1 : 0);
+        add_box(needles, {-2, -2, -2}, {2, 2, 2}, false);
+        add_box(pages, {-2, -2, -2}, {2, 2, 2}, false);
+        if (!inside) {  // the solid moved aside, its part of the count 0
+            for (std::size_t v = 0; v < 8; ++v) needles.coordinates[3 * v] += 10;
+            for (std::size_t v = 0; v < 8; ++v) pages.coordinates[3 * v] += 10;
+        }
+        add_needles(needles, {0.25, -0.5, 0.125}, 40);
+        add_pages(pages, {0.25, -0.5, -0.375}, 40);
+        expect(inside ? "40 needles at one point inside a solid" : "40 needles at one point",
+               needles, expected);
+        expect(inside ? "40 pages around one edge inside a solid" : "40 pages around one edge",
+               pages, expected);
+    }
+
+    // A tetrahedron under a box, its top face flush with part of the box's
+    // bottom, from a corner on the bottom's edge (x = 0): the start inside
+    // that face next to the corner moves first to x > 0, onto the box's
+    // bottom, then towards x < 0, which must not turn it away from the box
+    // (probed upwards, it would seem inside the box).
+    TestMesh under;
+    add_box(under, {0, 0, 1}, {2, 2, 2}, false);
+    const Eigen::Vector3d flush[4] = {{0, 1, 1}, {1, 0.5, 1}, {-0.5, 1.5, 1}, {0.25, 1, 0}};
+    add_tetrahedron(under, flush);
+    expect("a tetrahedron under a box, flush with part of its bottom", under, {0, 0});
 
     TestMesh through;
     add_box(through, {0, 0, 0}, {1, 1, 1}, false);

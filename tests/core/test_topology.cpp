@@ -1,0 +1,159 @@
+// The topology check's edge walk, built for each instruction set, against a
+// count of every edge in a map: closed grids whose vertices are numbered at
+// random (buckets of every size and order), then broken by turning, removing
+// and repeating faces, so that small buckets hold every kind of edge. Every
+// instruction set this processor runs gives the reference's report and the
+// same vertex sets.
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <memory_resource>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "check.hpp"
+#include "core/instruction_sets.hpp"
+#include "core/task_runner.hpp"
+#include "core/topology.hpp"
+#include "reversed_task_runner.hpp"
+#include "test_mesh.hpp"
+
+namespace {
+
+using polymass::core::analyse_topology;
+using polymass::core::EdgeFinding;
+using polymass::core::InstructionSet;
+using polymass::core::TopologyReport;
+using polymass_test::TestMesh;
+
+// A closed torus of rows x columns quads, two triangles each, its vertices
+// numbered at random.
+TestMesh torus_grid(std::uint32_t rows, std::uint32_t columns, std::mt19937& random) {
+    std::vector<std::uint32_t> number(std::size_t(rows) * columns);
+    std::iota(number.begin(), number.end(), 0u);
+    std::shuffle(number.begin(), number.end(), random);
+    TestMesh mesh;
+    mesh.coordinates.assign(3 * number.size(), 0.0);
+    auto at = [&](std::uint32_t r, std::uint32_t c) {
+        return number[std::size_t(r % rows) * columns + c % columns];
+    };
+    for (std::uint32_t r = 0; r < rows; ++r)
+        for (std::uint32_t c = 0; c < columns; ++c) {
+            mesh.add_face({at(r, c), at(r + 1, c), at(r + 1, c + 1)});
+            mesh.add_face({at(r, c), at(r + 1, c + 1), at(r, c + 1)});
+        }
+    return mesh;
+}
+
+// Turns, removes or repeats (as it is or turned) `changes` random triangles.
+void break_faces(TestMesh& mesh, int changes, std::mt19937& random) {
+    for (int k = 0; k < changes; ++k) {
+        const std::size_t faces = mesh.indices.size() / 3;
+        const std::size_t face = std::uniform_int_distribution<std::size_t>(0, faces - 1)(random);
+        std::uint32_t* corners = &mesh.indices[3 * face];
+        switch (std::uniform_int_distribution<int>(0, 3)(random)) {
+            case 0:
+                std::swap(corners[1], corners[2]);
+                break;
+            case 1:
+                mesh.indices.erase(mesh.indices.begin() + std::ptrdiff_t(3 * face),
+                                   mesh.indices.begin() + std::ptrdiff_t(3 * face + 3));
+                mesh.face_sizes.pop_back();
+                break;
+            case 2:
+                mesh.add_face({corners[0], corners[1], corners[2]});
+                break;
+            default:
+                mesh.add_face({corners[0], corners[2], corners[1]});
+                break;
+        }
+    }
+}
+
+// The report by a map from each undirected edge to its traversals each way.
+TopologyReport reference_report(const TestMesh& mesh) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<std::size_t, std::size_t>> edges;
+    for (std::size_t first = 0; first < mesh.indices.size(); first += 3)
+        for (int i = 0; i < 3; ++i) {
+            const std::uint32_t from = mesh.indices[first + i];
+            const std::uint32_t to = mesh.indices[first + (i + 1) % 3];
+            if (from == to) continue;
+            auto& ways = edges[{std::min(from, to), std::max(from, to)}];
+            (from < to ? ways.first : ways.second) += 1;
+        }
+    TopologyReport report;
+    for (const auto& [edge, ways] : edges) {
+        const auto [ups, downs] = ways;
+        ++report.edge_count;
+        const std::uint32_t from = ups >= downs ? edge.first : edge.second;
+        const std::uint32_t to = ups >= downs ? edge.second : edge.first;
+        if (ups + downs == 1)
+            report.open.record(from, to, 1);
+        else if (ups + downs == 2 && ups != 1)
+            report.misoriented.record(from, to, 2);
+        else if (ups + downs > 2) {
+            report.non_manifold.record(from, to, ups + downs);
+            report.non_manifold_balanced &= ups == downs;
+        }
+    }
+    return report;
+}
+
+bool same_finding(const EdgeFinding& a, const EdgeFinding& b) {
+    return a.count == b.count && a.first_traversals == b.first_traversals &&
+           std::equal(a.lowest.begin(), a.lowest.begin() + std::ptrdiff_t(a.kept()),
+                      b.lowest.begin());
+}
+
+bool same_report(const TopologyReport& a, const TopologyReport& b) {
+    return a.edge_count == b.edge_count && same_finding(a.open, b.open) &&
+           same_finding(a.misoriented, b.misoriented) &&
+           same_finding(a.non_manifold, b.non_manifold) &&
+           a.non_manifold_balanced == b.non_manifold_balanced;
+}
+
+// Each vertex's set, named by its root.
+std::vector<std::uint32_t> roots_of(std::pmr::vector<std::uint32_t> parent) {
+    std::vector<std::uint32_t> roots(parent.size());
+    for (std::size_t v = 0; v < parent.size(); ++v) {
+        std::uint32_t r = std::uint32_t(v);
+        while (parent[r] != r) r = parent[r];
+        roots[v] = r;
+    }
+    return roots;
+}
+
+void check_mesh(const TestMesh& mesh) {
+    const TopologyReport expected = reference_report(mesh);
+    polymass_test::ReversedTaskRunner tasks;
+    std::vector<std::uint32_t> baseline_roots;
+    for (InstructionSet set :
+         {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
+        if (!polymass::core::runs_instruction_set(set)) continue;
+        std::pmr::vector<std::uint32_t> sets(std::pmr::new_delete_resource());
+        const TopologyReport report = analyse_topology(mesh.view(), nullptr, tasks,
+                                                       std::pmr::new_delete_resource(), sets, set);
+        CHECK(same_report(report, expected));
+        const std::vector<std::uint32_t> roots = roots_of(std::move(sets));
+        if (set == InstructionSet::baseline)
+            baseline_roots = roots;
+        else
+            CHECK(roots == baseline_roots);
+    }
+}
+
+}  // namespace
+
+int main() {
+    std::mt19937 random(27);
+    for (int round = 0; round < 60; ++round) {
+        const auto rows = std::uint32_t(3 + round % 7), columns = std::uint32_t(4 + round % 11);
+        TestMesh mesh = torus_grid(rows, columns, random);
+        check_mesh(mesh);  // every edge common
+        break_faces(mesh, 1 + round % 9, random);
+        check_mesh(mesh);
+    }
+    return polymass_test::finish("test_topology");
+}
