@@ -105,7 +105,7 @@ std::string face_text(const ShellView& shells, uint64_t face) {
 
 std::string vertex_text(const Model& model, uint64_t v) {
     if (v >= model.vertex_count()) return "vertex " + std::to_string(v);
-    const double* p = &model.positions[3 * v];
+    const std::array<double, 3> p = model.positions.vertex(v);
     return "vertex " + std::to_string(v) + " (" + readable_number(p[0]) + ", " +
            readable_number(p[1]) + ", " + readable_number(p[2]) + ")";
 }
