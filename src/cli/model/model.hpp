@@ -23,8 +23,9 @@ struct Part {
     std::string name;
     std::vector<uint32_t> indices;  // the faces' vertex indices, one face after another
     // Vertices of each face; empty when every face is a triangle (a binary
-    // STL, most meshes: read_mesh_file drops the threes), which saves 4 bytes
-    // a face and is what the library reads as "triangles only".
+    // STL, most meshes: read_mesh_file, triangulate_model and the parts'
+    // combinations drop the threes), which saves 4 bytes a face and is what
+    // the library reads as "triangles only".
     std::vector<uint32_t> face_sizes;
 
     uint64_t face_count() const {
