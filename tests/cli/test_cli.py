@@ -324,6 +324,32 @@ class EveryFormat(Case):
         self.assert_properties(out, expected, what="bent.obj --triangulate")
         self.assertEqual(out["faces"], len(fanned))
 
+    def test_float32_files_answer_as_their_doubles(self):
+        # Binary STL and .msh positions reach the library as float32, the text
+        # formats' as float64: the same coordinates give the same digits (the
+        # library widens each float exactly, as the tool did), with and without
+        # a scale (applied to the widened doubles), far from the origin.
+        def float32(v):
+            return struct.unpack("<3f", struct.pack("<3f", *v))
+
+        vertices = [
+            float32((1.1 * x + 1000.3, 0.7 * y - 250.1, 1.3 * z + 77.7))
+            for x, y, z in self.vertices
+        ]
+        fanned = fixtures.triangles(self.faces)
+        fixtures.write_obj(WORK / "float32.obj", vertices, fanned)
+        fixtures.write_binary_stl(WORK / "float32.stl", vertices, fanned)
+        fixtures.write_msh(WORK / "float32.msh", vertices, fanned)
+        for options in ([], ["--scale", "3.3"], ["--about", "origin", "--threads", "1"]):
+            answers = {}
+            for name in ("float32.obj", "float32.stl", "float32.msh"):
+                result, out = run_json(*options, WORK / name)
+                self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+                answers[name] = {k: v for k, v in out.items() if k not in ("file", "format")}
+            with self.subTest(options=options):
+                self.assertEqual(answers["float32.stl"], answers["float32.obj"])
+                self.assertEqual(answers["float32.msh"], answers["float32.obj"])
+
     def test_stl_soup_is_welded(self):
         _, out = run_json(WORK / "bracket_binary.stl")
         self.assertEqual(out["vertices"], len(self.vertices))

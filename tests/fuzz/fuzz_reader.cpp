@@ -118,11 +118,13 @@ Model read(const std::string& bytes) {
     fail("unknown POLYMASS_FUZZ_FORMAT");
 }
 
-void check(const Model& model) {
-    if (model.positions.size() % 3 != 0) fail("positions are not whole vertices");
+// model by value: its coordinates are counted as doubles.
+void check(Model model) {
+    if (model.positions.as_doubles().size() % 3 != 0) fail("positions are not whole vertices");
     for (const polymass_cli::Part& part : model.parts) {
         std::uint64_t corners = 0;
-        for (const std::uint32_t size : part.face_sizes) corners += size;
+        for (std::uint64_t face = 0; face < part.face_count(); ++face)
+            corners += part.face_size(face);
         if (corners != part.indices.size()) fail("face sizes do not add up to the indices");
     }
 }

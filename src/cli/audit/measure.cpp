@@ -1,6 +1,7 @@
 #include "audit/measure.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <optional>
@@ -225,8 +226,9 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
     if (body == MeshBody::kSurface) {
         // A surface's area does not follow a per-axis stretch of its moments:
         // the vertices are scaled first (and a mirror needs no turning).
-        for (std::size_t v = 0; v < model.positions.size(); ++v) {
-            model.positions[v] *= scale[static_cast<int>(v % 3)];
+        std::vector<double>& positions = model.positions.as_doubles();
+        for (std::size_t v = 0; v < positions.size(); ++v) {
+            positions[v] *= scale[static_cast<int>(v % 3)];
         }
     }
     Measured measured;
@@ -242,9 +244,9 @@ Measured measure_mesh_file(const Library& library, const polymass_options& optio
         measured = measured_by_modes(library, options, model, body, path);
         if (!measured.ok) return measured;
     }
-    for (std::size_t v = 0; v + 2 < model.positions.size(); v += 3) {
-        measured.points.emplace_back(model.positions[v], model.positions[v + 1],
-                                     model.positions[v + 2]);
+    for (uint64_t v = 0; v < model.vertex_count(); ++v) {
+        const std::array<double, 3> p = model.positions.vertex(v);
+        measured.points.emplace_back(p[0], p[1], p[2]);
     }
     if (legacy) {
         measured.legacy_asked = true;

@@ -15,14 +15,14 @@ using Triangle = std::array<Eigen::Vector3d, 3>;
 
 std::vector<Triangle> triangles_of(const Model& model, const Eigen::Vector3d& scale) {
     const auto vertex = [&](uint32_t index) -> Eigen::Vector3d {
-        return Eigen::Vector3d(model.positions[3 * index], model.positions[3 * index + 1],
-                               model.positions[3 * index + 2])
-            .cwiseProduct(scale);
+        const std::array<double, 3> p = model.positions.vertex(index);
+        return Eigen::Vector3d(p[0], p[1], p[2]).cwiseProduct(scale);
     };
     std::vector<Triangle> triangles;
     for (const Part& part : model.parts) {
         std::size_t first = 0;
-        for (const uint32_t size : part.face_sizes) {
+        for (uint64_t face = 0; face < part.face_count(); ++face) {
+            const uint32_t size = part.face_size(face);
             for (uint32_t k = 1; k + 1 < size; ++k) {
                 triangles.push_back({vertex(part.indices[first]), vertex(part.indices[first + k]),
                                      vertex(part.indices[first + k + 1])});

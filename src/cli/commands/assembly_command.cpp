@@ -75,7 +75,7 @@ PlacedPart place_part(const Library& library, const Model& model, const Assembly
     const Part whole = combined_part(model);
     placed.report.name = part.name;
     placed.report.vertices = used_vertices(model, whole);
-    placed.report.faces = whole.face_sizes.size();
+    placed.report.faces = whole.face_count();
     placed.report.computed = true;
     placed.report.material = part.material;
     const UnitSolid solid = unit_solid(library, model, whole);

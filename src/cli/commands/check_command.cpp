@@ -105,7 +105,7 @@ std::string face_text(const ShellView& shells, uint64_t face) {
 
 std::string vertex_text(const Model& model, uint64_t v) {
     if (v >= model.vertex_count()) return "vertex " + std::to_string(v);
-    const double* p = &model.positions[3 * v];
+    const std::array<double, 3> p = model.positions.vertex(v);
     return "vertex " + std::to_string(v) + " (" + readable_number(p[0]) + ", " +
            readable_number(p[1]) + ", " + readable_number(p[2]) + ")";
 }
@@ -349,7 +349,10 @@ ExitCode run_check(const Arguments& arguments) {
             continue;
         }
         prepare_model(model, arguments);
-        const Part all = combined_part(model);
+        // The file's solid: its one part as read (a copy would add 4 bytes a
+        // corner to the check's peak), or every part's faces in one.
+        const Part combined = model.parts.size() > 1 ? combined_part(model) : Part{};
+        const Part& all = model.parts.size() > 1 ? combined : model.parts.front();
         // A file of several parts is judged as polymass FILE judges it, once
         // for both the findings and the answer: when every part is a solid by
         // itself, its parts apart (each welded by itself, none sharing a

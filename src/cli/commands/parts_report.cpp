@@ -18,7 +18,7 @@ PartReport counted(const Model& model, const Part& part) {
     PartReport report;
     report.name = part.name;
     report.vertices = used_vertices(model, part);
-    report.faces = part.face_sizes.size();
+    report.faces = part.face_count();
     return report;
 }
 

@@ -24,7 +24,7 @@ PartReport solid_report(const Library& library, const Model& model, const Part& 
     PartReport report;
     report.name = part.name;
     report.vertices = used_vertices(model, part);
-    report.faces = part.face_sizes.size();
+    report.faces = part.face_count();
     report.computed = true;
     report.result = compute_solid(library, model, part, mass);
     return report;

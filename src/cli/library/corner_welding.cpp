@@ -53,7 +53,7 @@ std::vector<uint32_t> first_corner_at_each_position(const std::vector<Scalar>& c
 
 template <class Scalar>
 std::vector<uint32_t> weld_corners(const std::vector<Scalar>& corners,
-                                   std::vector<double>& positions) {
+                                   std::vector<Scalar>& positions) {
     const uint64_t corner_count = corners.size() / 3;
     if (corner_count == 0) return {};
     if (corner_count > UINT32_MAX)
@@ -74,12 +74,12 @@ std::vector<uint32_t> weld_corners(const std::vector<Scalar>& corners,
         if (next >= UINT32_MAX) throw std::length_error("more than 4294967294 distinct vertices");
         vertex_of[corner] = uint32_t(next++);
         const Scalar* p = &corners[3 * corner];
-        positions.insert(positions.end(), {double(p[0]), double(p[1]), double(p[2])});
+        positions.insert(positions.end(), p, p + 3);
     }
     return vertex_of;
 }
 
-template std::vector<uint32_t> weld_corners<float>(const std::vector<float>&, std::vector<double>&);
+template std::vector<uint32_t> weld_corners<float>(const std::vector<float>&, std::vector<float>&);
 template std::vector<uint32_t> weld_corners<double>(const std::vector<double>&,
                                                     std::vector<double>&);
 

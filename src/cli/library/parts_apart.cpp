@@ -1,5 +1,6 @@
 #include "library/parts_apart.hpp"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <new>
@@ -32,8 +33,8 @@ bool welded_corners(const Library& library, const Model& model, const Part& part
         if (local_of[index] == kUnset) {
             local_of[index] = uint32_t(file_of.size());
             file_of.push_back(index);
-            positions.insert(positions.end(), &model.positions[3 * size_t(index)],
-                             &model.positions[3 * size_t(index)] + 3);
+            const std::array<double, 3> p = model.positions.vertex(index);
+            positions.insert(positions.end(), p.begin(), p.end());
         }
         local_indices.push_back(local_of[index]);
     }
@@ -57,7 +58,10 @@ bool welded_corners(const Library& library, const Model& model, const Part& part
 std::optional<PartsApart> parts_apart(const Library& library, const Model& model) {
     PartsApart apart;
     apart.model.format = model.format;
+    // Doubles, the file's first and then the copies (widened when the
+    // file's are float32: the same values).
     apart.model.positions = model.positions;
+    std::vector<double>& wide = apart.model.positions.as_doubles();
     Part& all = apart.model.parts.emplace_back();
     all.name = "combined";
     const size_t file_count = model.vertex_count();
@@ -82,15 +86,16 @@ std::optional<PartsApart> parts_apart(const Library& library, const Model& model
                 if (copy >= kUnset) throw std::length_error("more than 2^32 - 1 vertices");
                 copy_of[v] = uint32_t(copy);
                 copied.push_back(v);
-                apart.model.positions.insert(apart.model.positions.end(),
-                                             &model.positions[3 * size_t(v)],
-                                             &model.positions[3 * size_t(v)] + 3);
+                const std::array<double, 3> p = model.positions.vertex(v);
+                wide.insert(wide.end(), p.begin(), p.end());
             }
             all.indices.push_back(copy_of[v]);
         }
         for (const uint32_t v : copied) copy_of[v] = kUnset;
-        all.face_sizes.insert(all.face_sizes.end(), part.face_sizes.begin(), part.face_sizes.end());
+        for (uint64_t face = 0; face < part.face_count(); ++face)
+            all.face_sizes.push_back(part.face_size(face));
     }
+    all.drop_triangle_sizes();
     return apart;
 }
 

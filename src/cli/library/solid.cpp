@@ -11,19 +11,19 @@ namespace polymass_cli {
 polymass_mesh_desc describe(const Model& model, const Part& part) {
     polymass_mesh_desc desc{};
     polymass_mesh_desc_init(&desc, sizeof desc);
-    desc.position_type = POLYMASS_POSITION_FLOAT64;
+    desc.position_type =
+        model.positions.is_float32() ? POLYMASS_POSITION_FLOAT32 : POLYMASS_POSITION_FLOAT64;
     desc.positions = model.positions.data();
     desc.vertex_count = model.vertex_count();
     desc.index_type = POLYMASS_INDEX_UINT32;
     desc.indices = part.indices.data();
     desc.index_count = part.indices.size();
-    // Triangles only (an STL, most meshes): no face sizes, so that the
-    // library takes its triangle paths (the integrals eight triangles at a
-    // time) and reads no array of threes.
-    const bool triangles = std::all_of(part.face_sizes.begin(), part.face_sizes.end(),
-                                       [](uint32_t size) { return size == 3; });
+    // Triangles only (an STL, most meshes: a part without face sizes): none,
+    // so that the library takes its triangle paths (the integrals eight
+    // triangles at a time).
+    const bool triangles = part.face_sizes.empty();
     desc.face_sizes = triangles ? nullptr : part.face_sizes.data();
-    desc.face_count = triangles ? 0 : part.face_sizes.size();
+    desc.face_count = part.face_sizes.size();
     return desc;
 }
 

@@ -18,7 +18,7 @@ void expect_ok(const Library& library, int32_t status, const char* what) {
 
 SurfaceAnalysis::SurfaceAnalysis(const Library& library, const Model& model, const Part& part,
                                  const polymass_options& options)
-    : face_count_(part.face_sizes.size()) {
+    : face_count_(part.face_count()) {
     polymass_diagnostics_init(&diagnostics_, sizeof diagnostics_);
     const polymass_mesh_desc desc = describe(model, part);
     status_ = polymass_mesh_create(&mesh_, library.context(), &desc, &options);

@@ -69,7 +69,7 @@ void append_mesh(Model& model, Part& part, const aiMesh& mesh, const Transform& 
         throw ReadError("more than 4294967294 vertices");
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
         const aiVector3D& p = mesh.mVertices[v];
-        append_transformed(model.positions, transform, p.x, p.y, p.z);
+        append_transformed(model.positions.as_doubles(), transform, p.x, p.y, p.z);
     }
     const bool mirrored = determinant(transform) < 0;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {

@@ -189,8 +189,8 @@ void add_primitive(Model& model, Part& part, const tinygltf::Model& gltf,
     const uint64_t first_vertex = model.vertex_count();
     for (size_t v = 0; v < bytes.count; ++v) {
         const unsigned char* at = bytes.first + v * bytes.stride;
-        append_transformed(model.positions, transform, load<float>(at), load<float>(at + 4),
-                           load<float>(at + 8));
+        append_transformed(model.positions.as_doubles(), transform, load<float>(at),
+                           load<float>(at + 4), load<float>(at + 8));
     }
     if (model.vertex_count() >= kIndexOutOfRange) throw ReadError("more than 4294967294 vertices");
     const bool mirrored = determinant(transform) < 0;

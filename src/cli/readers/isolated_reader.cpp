@@ -78,12 +78,13 @@ private:
     size_t at_ = 0;
 };
 
-std::string serialize(const Model& model) {
+// model by value: its positions are written as doubles (as_doubles).
+std::string serialize(Model model) {
     Writer out;
     out.value(Outcome::kModel);
     out.text(model.format);
     out.text(model.declared_unit);
-    out.array(model.positions);
+    out.array(model.positions.as_doubles());
     out.value<uint64_t>(model.parts.size());
     for (const Part& part : model.parts) {
         out.text(part.name);
@@ -101,7 +102,7 @@ Model deserialize(const std::string& data) {
     Model model;
     model.format = in.text();
     model.declared_unit = in.text();
-    model.positions = in.array<double>();
+    model.positions = Positions(in.array<double>());
     model.parts.resize(in.value<uint64_t>());
     for (Part& part : model.parts) {
         part.name = in.text();

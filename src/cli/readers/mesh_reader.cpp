@@ -33,7 +33,7 @@ void check_faces_match_indices(const Model& model) {
     for (size_t p = 0; p < model.parts.size(); ++p) {
         const Part& part = model.parts[p];
         uint64_t corners = 0;
-        for (const uint32_t size : part.face_sizes) corners += size;
+        for (uint64_t face = 0; face < part.face_count(); ++face) corners += part.face_size(face);
         if (corners != part.indices.size()) {
             throw ReadError("internal error in the " + model.format + " reader: part " +
                             std::to_string(p) + "'s face sizes add up to " +
@@ -108,9 +108,10 @@ Model read_mesh_file(const std::string& path, const std::string& format) {
     check_faces_match_indices(model);
     check_face_sizes(model);
     model.parts.erase(std::remove_if(model.parts.begin(), model.parts.end(),
-                                     [](const Part& part) { return part.face_sizes.empty(); }),
+                                     [](const Part& part) { return part.face_count() == 0; }),
                       model.parts.end());
     if (model.parts.empty()) throw ReadError("the file holds no faces");
+    for (Part& part : model.parts) part.drop_triangle_sizes();
     return model;
 }
 

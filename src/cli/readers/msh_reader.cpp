@@ -6,9 +6,11 @@
 // count is checked against the file's length before anything is allocated, so
 // a hostile header is a clear error, never a large allocation. Normals and
 // texture coordinates are skipped (the corners' order says which side is
-// out). The positions are floats in the file and exact as doubles.
+// out). The positions are floats in the file, kept so (model.hpp's Positions).
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "readers/format_readers.hpp"
 #include "readers/little_endian.hpp"
@@ -59,13 +61,13 @@ Model read_msh(std::string_view bytes) {
                         "no surface to integrate");
     }
     Model model;
-    model.positions.reserve(3 * vertex_count);
+    std::vector<float> positions(3 * vertex_count);
     for (uint64_t k = 0; k < 3 * vertex_count; ++k)
-        model.positions.push_back(little_endian_f32(at(bytes, kHeaderBytes + 4 * k)));
+        positions[k] = little_endian_f32(at(bytes, kHeaderBytes + 4 * k));
+    model.positions = Positions(std::move(positions));
     const uint64_t faces_at = expected - 12 * face_count;
     Part& part = model.parts.emplace_back();
     part.indices.reserve(3 * face_count);
-    part.face_sizes.assign(face_count, 3);
     for (uint64_t k = 0; k < 3 * face_count; ++k) {
         const int32_t index = little_endian_i32(at(bytes, faces_at + 4 * k));
         part.indices.push_back(index < 0 ? kIndexOutOfRange : uint32_t(index));

@@ -43,7 +43,7 @@ Model read_obj(std::string_view bytes) {
         if (!lines.next_token(keyword)) continue;
         if (keyword == "v") {
             for (const char* axis : {"an x coordinate", "a y coordinate", "a z coordinate"}) {
-                model.positions.push_back(lines.expect_double(axis));
+                model.positions.as_doubles().push_back(lines.expect_double(axis));
             }
         } else if (keyword == "f") {
             Part& part = model.parts.back();

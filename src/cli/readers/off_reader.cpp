@@ -4,6 +4,7 @@
 // vertex count followed by 0-based indices (and an optional colour).
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "readers/format_readers.hpp"
 #include "readers/mesh_reader.hpp"
@@ -61,14 +62,15 @@ Model read_off(std::string_view bytes) {
     const uint64_t face_count = header_count(lines, "face count", bytes.size());
 
     Model model;
-    model.positions.reserve(3 * vertex_count);
+    std::vector<double>& positions = model.positions.as_doubles();
+    positions.reserve(3 * vertex_count);
     for (uint64_t vertex = 0; vertex < vertex_count; ++vertex) {
         token = first_token_of_next_line(lines, "all the vertices are listed");
         double x = 0.0;
         if (!parse_double(token, x)) lines.fail("expected an x coordinate");
-        model.positions.push_back(x);
-        model.positions.push_back(lines.expect_double("a y coordinate"));
-        model.positions.push_back(lines.expect_double("a z coordinate"));
+        positions.push_back(x);
+        positions.push_back(lines.expect_double("a y coordinate"));
+        positions.push_back(lines.expect_double("a z coordinate"));
     }
     Part& part = model.parts.emplace_back();
     part.face_sizes.reserve(face_count);

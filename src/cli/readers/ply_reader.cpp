@@ -229,6 +229,7 @@ Model read_ply(std::string_view bytes) {
     BodyReader body(bytes, header.body_start, header.encoding);
     Model model;
     Part& part = model.parts.emplace_back();
+    std::vector<double>& positions = model.positions.as_doubles();
     for (const Element& element : header.elements) {
         const bool is_vertex = element.name == "vertex";
         const bool is_face = element.name == "face";
@@ -276,7 +277,7 @@ Model read_ply(std::string_view bytes) {
                 }
                 if (is_corners) part.face_sizes.push_back(static_cast<uint32_t>(length));
             }
-            if (is_vertex) model.positions.insert(model.positions.end(), xyz, xyz + 3);
+            if (is_vertex) positions.insert(positions.end(), xyz, xyz + 3);
         }
     }
     return model;

@@ -4,8 +4,11 @@
 // `facet normal ... outer loop vertex x y z ... endloop endfacet`, each block a
 // part. Normals are ignored (the vertex order says which side is out) and equal
 // positions are welded exactly, since STL stores every triangle's corners.
+// A binary STL's positions stay float32 (model.hpp's Positions) and its
+// triangles need no face sizes; an ASCII STL's decimals are read as doubles.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "library/corner_welding.hpp"
@@ -29,6 +32,7 @@ bool starts_with_solid(std::string_view bytes) {
 // triangle, against the file's 50), decoded in one pass over the mapping,
 // which is let go as it is read and before the corners are welded.
 // file, when given, holds bytes and is let go as they are decoded.
+// The welded positions stay float32 (12 bytes a vertex).
 Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_count) {
     std::vector<float> corners(9 * triangle_count);
     const unsigned char* triangle =
@@ -45,9 +49,10 @@ Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_cou
     }
     if (file != nullptr) file->release();
     Model model;
-    Part& part = model.parts.emplace_back();
-    part.indices = weld_corners(corners, model.positions);
-    part.face_sizes.assign(triangle_count, 3);
+    Part& part = model.parts.emplace_back();  // triangles only: no face sizes
+    std::vector<float> positions;
+    part.indices = weld_corners(corners, positions);
+    model.positions = Positions(std::move(positions));
     return model;
 }
 
@@ -111,7 +116,9 @@ Model read_ascii(std::string_view bytes) {
         }
     }
     if (in_loop || in_facet) lines.fail("the file ends inside a facet");
-    const std::vector<uint32_t> vertex_of = weld_corners(soup, model.positions);
+    std::vector<double> positions;
+    const std::vector<uint32_t> vertex_of = weld_corners(soup, positions);
+    model.positions = Positions(std::move(positions));
     for (Part& each : model.parts)
         for (uint32_t& index : each.indices) index = vertex_of[index];
     return model;

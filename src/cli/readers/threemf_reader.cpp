@@ -281,7 +281,7 @@ private:
         uint64_t vertex_count = 0;
         for (const pugi::xml_node vertex : mesh.child("vertices").children("vertex")) {
             const Where at{where, "vertex", vertex_count};
-            append_transformed(model_.positions, transform, number(vertex, "x", at),
+            append_transformed(model_.positions.as_doubles(), transform, number(vertex, "x", at),
                                number(vertex, "y", at), number(vertex, "z", at));
             ++vertex_count;
         }

@@ -17,7 +17,7 @@ struct Triangles {
 
 bool drawable(const Model& model, uint32_t vertex) {
     if (vertex >= model.vertex_count()) return false;
-    const double* p = &model.positions[3 * size_t(vertex)];
+    const std::array<double, 3> p = model.positions.vertex(vertex);
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
@@ -25,8 +25,8 @@ bool drawable(const Model& model, uint32_t vertex) {
 Triangles fan_triangles(const Model& model, const Part& part) {
     Triangles triangles;
     size_t start = 0;
-    for (size_t face = 0; face < part.face_sizes.size(); ++face) {
-        const uint32_t size = part.face_sizes[face];
+    for (size_t face = 0; face < part.face_count(); ++face) {
+        const uint32_t size = part.face_size(face);
         const uint32_t* corner = &part.indices[start];
         start += size;
         if (size < 3 ||
@@ -133,7 +133,7 @@ Json mesh_view(HtmlPage& page, const Model& model, const Part& part,
     Json view = Json::object();
     view["origin"] = json_numbers(origin.data(), 3);
     view["vertices"] = model.vertex_count();
-    view["faces"] = part.face_sizes.size();
+    view["faces"] = part.face_count();
     view["triangle_count"] = triangle_count;
     view["shown_triangles"] = triangles.faces.size();
     view["decimated"] = decimate;
@@ -142,13 +142,13 @@ Json mesh_view(HtmlPage& page, const Model& model, const Part& part,
     view["triangle_faces"] = page.add_uint32s(triangles.faces);
     if (!shell_of_face.empty()) view["face_shells"] = page.add_uint32s(shell_of_face);
 
-    std::vector<size_t> face_start(part.face_sizes.size() + 1, 0);
-    for (size_t face = 0; face < part.face_sizes.size(); ++face)
-        face_start[face + 1] = face_start[face] + part.face_sizes[face];
+    std::vector<size_t> face_start(part.face_count() + 1, 0);
+    for (size_t face = 0; face < part.face_count(); ++face)
+        face_start[face + 1] = face_start[face] + part.face_size(face);
     Json faces = Json::object();
     std::vector<uint64_t> vertices = located.vertices;
     for (const uint64_t face : located.faces) {
-        if (face >= part.face_sizes.size()) continue;
+        if (face >= part.face_count()) continue;
         const std::vector<uint32_t> corners(part.indices.begin() + face_start[face],
                                             part.indices.begin() + face_start[face + 1]);
         faces[std::to_string(face)] = corners;
@@ -157,7 +157,7 @@ Json mesh_view(HtmlPage& page, const Model& model, const Part& part,
     Json points = Json::object();
     for (const uint64_t v : vertices) {
         if (v >= model.vertex_count()) continue;
-        const double* p = &model.positions[3 * v];
+        const std::array<double, 3> p = model.positions.vertex(v);
         const double relative[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
         points[std::to_string(v)] = json_numbers(relative, 3);
     }
