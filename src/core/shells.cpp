@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "face_blocks.hpp"
+#include "mesh_scan.hpp"
 #include "smallest_index_sets.hpp"
-#include "welding.hpp"
 
 namespace polymass::core {
 namespace {

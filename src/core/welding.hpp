@@ -9,7 +9,6 @@
 // only serves the topology checks: the integrals use the positions as given.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory_resource>
@@ -50,28 +49,6 @@ struct WeldedPositions {
 template <class Scalar>
 WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size_t count,
                                double tolerance, std::pmr::memory_resource* memory);
-
-// How many of the used vertices among the first `count` (< 2^32) have
-// `property`, a test of a vertex's index. In a block of 64 vertices all used
-// (most of a mesh's blocks) it is read for each with no branch and no bit
-// test: about half the instructions of testing each vertex's bit first.
-template <class Property>
-std::size_t count_used_with(const MeshScan& scan, std::size_t count, Property&& property) {
-    std::size_t found = 0;
-    for (std::size_t block = 0; 64 * block < count; ++block) {
-        const std::size_t first = 64 * block, last = std::min(count, first + 64);
-        if (scan.used[block] == ~std::uint64_t{0} && last == first + 64) {
-            std::uint32_t in_block = 0;
-            const auto base = std::uint32_t(first);
-            for (std::uint32_t i = 0; i < 64; ++i) in_block += std::uint32_t(property(base + i));
-            found += in_block;
-            continue;
-        }
-        for (std::size_t vertex = first; vertex < last; ++vertex)
-            found += scan.is_used(vertex) && property(std::uint32_t(vertex));
-    }
-    return found;
-}
 
 // How many vertices are left once `welded` (weld_vertices' answer) is applied:
 // the used vertices that are their own smallest welded index.
