@@ -1,16 +1,10 @@
 #include "box_tree.hpp"
 
 #include "radix_sort.hpp"
+#include "scratch_buffer.hpp"
 
 namespace polymass::core {
 namespace {
-
-// Frees a vector's memory now (assigning {} empties it but keeps its memory).
-template <class T>
-void let_go(std::pmr::vector<T>& items) {
-    items.clear();
-    items.shrink_to_fit();
-}
 
 // Spreads the low 10 bits of v so that two zero bits follow each one.
 std::uint32_t spread_bits(std::uint32_t v) {

@@ -6,6 +6,7 @@
 #include "face_blocks.hpp"
 #include "position_hash.hpp"
 #include "radix_sort.hpp"
+#include "scratch_buffer.hpp"
 #include "volume_integrals.hpp"
 
 namespace polymass::core {
@@ -84,10 +85,7 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     std::uint32_t next = 0;
     one_face_each_ = std::all_of(triangles_.face.begin(), triangles_.face.end(),
                                  [&](std::uint32_t face) { return face == next++; });
-    if (one_face_each_) {
-        triangles_.face.clear();
-        triangles_.face.shrink_to_fit();
-    }
+    if (one_face_each_) let_go(triangles_.face);
     // One pass over the triangles' positions for all that needs them: their
     // copies' hash, corner extremes, degeneracy and boxes. Degenerate
     // triangles keep an empty box. (The boxes are allocated first: with the

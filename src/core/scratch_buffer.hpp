@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <memory_resource>
 #include <type_traits>
+#include <vector>
 
 namespace polymass::core {
 
@@ -33,5 +34,14 @@ private:
     std::size_t size_;
     T* data_;
 };
+
+// Gives a vector's memory back now. Assigning {} empties a vector but keeps
+// its memory, which at the checks' peaks (a tree's inputs, a search's lists)
+// counts.
+template <class T>
+void let_go(std::pmr::vector<T>& items) {
+    items.clear();
+    items.shrink_to_fit();
+}
 
 }  // namespace polymass::core

@@ -7,6 +7,7 @@
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
+#include "scratch_buffer.hpp"
 
 namespace polymass::core {
 namespace {
@@ -308,7 +309,7 @@ std::pmr::vector<int> count_windings(
             start_of_point.push_back(s);
         point_of_start[s] = std::uint32_t(start_of_point.size() - 1);
     }
-    by_position = {};
+    let_go(by_position);
     const std::size_t point_count = start_of_point.size();
     // The triangles whose boxes hold each point, of every shell (a start
     // skips its own shell's), with their boxes' side bits, looked up in
@@ -343,7 +344,7 @@ std::pmr::vector<int> count_windings(
     near_triangles.reserve(near_begin.back());
     for (const auto& found : block_near)
         near_triangles.insert(near_triangles.end(), found.begin(), found.end());
-    block_near = {};
+    let_go(block_near);
     auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell,
                                 std::uint32_t vertex) {
         const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
