@@ -99,7 +99,6 @@ if(MODE STREQUAL "find_package")
 elseif(MODE STREQUAL "add_subdirectory")
     # PREFIX is unused: the library is built from the checkout, in WORK_DIR.
     polymass_require_args(build_consumer.cmake CXX_COMPILER POLYMASS_SOURCE_DIR)
-    polymass_default_arg(BUILD_TYPE Debug)
     set(configure "${CMAKE_COMMAND}" -S "${SOURCE_DIR}" -B "${WORK_DIR}"
         "-DPOLYMASS_SOURCE_DIR=${POLYMASS_SOURCE_DIR}"
         "-DCMAKE_C_COMPILER=${C_COMPILER}"
@@ -108,8 +107,10 @@ elseif(MODE STREQUAL "add_subdirectory")
         "-DCMAKE_CXX_FLAGS=${C_FLAGS}"
         "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}"
         "-DCMAKE_SHARED_LINKER_FLAGS=${LINK_FLAGS}"
-        # The parent's build type (Debug when it has none): compiles fastest.
-        "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+        # No build type: neither optimisation nor debug information, the fastest
+        # compile (a fifth less CPU than Debug's -g); what this checks is the
+        # project's CMake as a subproject, not the code.
+        "-DCMAKE_BUILD_TYPE=")
     configure_build_and_run(${configure})
 
 elseif(MODE STREQUAL "pkg_config")
