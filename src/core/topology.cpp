@@ -195,19 +195,10 @@ void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
                            });
 }
 
-// Joins `low` with the other end of each entry's edge. Most ends hang
-// straight below low's root already (joined through a lower vertex, or by
-// the edge's other entry): one load each, and no search.
-template <class Entry>
-void join_ends(ConcurrentSmallestIndexSets sets, std::size_t low, const Entry* first,
-               const Entry* last) {
-    std::uint32_t root = sets.find(std::uint32_t(low));
-    for (const Entry* at = first; at != last; ++at)
-        root = sets.join_to(root, std::uint32_t(*at >> 1));
-}
-
 // Joins `low` with the higher end of the entries in the slots of `lanes`
 // from `first`: a common edge's up alone (its down names the same vertex).
+// Most ends hang straight below low's root already (joined through a lower
+// vertex): one load each, and no search.
 template <class Entry>
 __attribute__((always_inline)) inline void join_lanes(ConcurrentSmallestIndexSets sets,
                                                       std::size_t low, const Entry* first,
@@ -228,7 +219,7 @@ __attribute__((always_inline)) inline unsigned small_bucket_test(const Entry* fi
 
 // Classifies the edges whose lower vertex is in [first_low, last_low), from
 // their bucket entries starting at `entries`, and joins their ends in `sets`
-// (taken by value, as by join_ends: the parent array's address then stays in
+// (taken by value, as by join_lanes: the parent array's address then stays in
 // a register; through a reference it was loaded again at every join).
 template <bool avx2, class Entry>
 __attribute__((always_inline)) inline TopologyReport walk_buckets_as(
@@ -254,14 +245,18 @@ __attribute__((always_inline)) inline TopologyReport walk_buckets_as(
                 continue;
             }
         }
-        join_ends(sets, low, first, last);
         sort_bucket(first, last);  // by higher vertex, ups (bit 0) before downs
+        // Each edge joins its ends once, however many faces traverse it.
+        std::uint32_t root = sets.find(std::uint32_t(low));
         if (only_common_edges(first, last)) {
+            for (const Entry* up = first; up != last; up += 2)
+                root = sets.join_to(root, std::uint32_t(*up >> 1));
             report.edge_count += std::size_t(last - first) / 2;
             continue;
         }
         for (Entry* at = first; at != last;) {
             const Entry high = *at >> 1;
+            root = sets.join_to(root, std::uint32_t(high));
             std::size_t ups = 0, downs = 0;
             for (; at != last && (*at >> 1) == high; ++at) (*at & 1 ? downs : ups) += 1;
             ++report.edge_count;

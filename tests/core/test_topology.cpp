@@ -1,8 +1,8 @@
 // The topology check's edge walk, built for each instruction set, against a
 // count of every edge in a map: closed grids whose vertices are numbered at
-// random (buckets of every size and order), and many separate tetrahedra
-// (every edge a bridge of its piece's vertex set: a join left out splits it),
-// then broken by turning, removing and repeating faces, so that small buckets
+// random (buckets of every size and order), and many separate tetrahedra and
+// slivers (an edge that alone links its two vertices: a join left out splits
+// their set), then broken by turning, removing and repeating faces, so that small buckets
 // hold every kind of edge. Every instruction set this processor runs gives the
 // reference's report, and vertex sets that join the ends of every edge.
 #include <algorithm>
@@ -48,19 +48,23 @@ TestMesh torus_grid(std::uint32_t rows, std::uint32_t columns, std::mt19937& ran
     return mesh;
 }
 
-// `count` separate tetrahedra, outward, their vertices numbered at random.
-TestMesh tetrahedra(std::uint32_t count, std::mt19937& random) {
-    std::vector<std::uint32_t> number(4 * std::size_t(count));
+// `count` separate tetrahedra, outward, and as many slivers (a triangle with
+// a repeated corner: one edge, traversed once each way, the only link of its
+// two vertices, so that a join left out splits their set), their vertices
+// numbered at random.
+TestMesh separate_pieces(std::uint32_t count, std::mt19937& random) {
+    std::vector<std::uint32_t> number(6 * std::size_t(count));
     std::iota(number.begin(), number.end(), 0u);
     std::shuffle(number.begin(), number.end(), random);
     TestMesh mesh;
     mesh.coordinates.assign(3 * number.size(), 0.0);
     for (std::size_t t = 0; t < count; ++t) {
-        const std::uint32_t* v = &number[4 * t];
+        const std::uint32_t* v = &number[6 * t];
         mesh.add_face({v[0], v[2], v[1]});
         mesh.add_face({v[0], v[1], v[3]});
         mesh.add_face({v[1], v[2], v[3]});
         mesh.add_face({v[2], v[0], v[3]});
+        mesh.add_face({v[4], v[4], v[5]});
     }
     return mesh;
 }
@@ -186,7 +190,7 @@ int main() {
         check_mesh(mesh);  // every edge common
         break_faces(mesh, 1 + round % 9, random);
         check_mesh(mesh);
-        TestMesh pieces = tetrahedra(std::uint32_t(5 + round % 23), random);
+        TestMesh pieces = separate_pieces(std::uint32_t(5 + round % 23), random);
         check_mesh(pieces);
         break_faces(pieces, 1 + round % 5, random);
         check_mesh(pieces);
