@@ -235,8 +235,13 @@ __attribute__((always_inline)) inline TopologyReport walk_buckets_as(
         Entry* const last = entries + end_of[low];
         begin = end_of[low];
         const std::size_t size = std::size_t(last - first);
-        // No edge: an unused or a welded-away vertex (most of a welded soup's).
-        if (size == 0) continue;
+        // No edge: an unused or a welded-away vertex (most of a welded
+        // soup's); those after it passed in a loop of their own, one load
+        // and test each.
+        if (size == 0) {
+            while (low + 1 < last_low && end_of[low + 1] == begin) ++low;
+            continue;
+        }
         if (size <= small_bucket && low >= padded_from_low &&
             std::size_t(piece_end - first) >= small_bucket) {
             if (const unsigned ups = small_bucket_test<avx2>(first, size)) {

@@ -51,9 +51,9 @@ TestMesh torus_grid(std::uint32_t rows, std::uint32_t columns, std::mt19937& ran
 // `count` separate tetrahedra, outward, and as many slivers (a triangle with
 // a repeated corner: one edge, traversed once each way, the only link of its
 // two vertices, so that a join left out splits their set), their vertices
-// numbered at random.
+// numbered at random among twice as many: runs of unused vertices between.
 TestMesh separate_pieces(std::uint32_t count, std::mt19937& random) {
-    std::vector<std::uint32_t> number(6 * std::size_t(count));
+    std::vector<std::uint32_t> number(12 * std::size_t(count));
     std::iota(number.begin(), number.end(), 0u);
     std::shuffle(number.begin(), number.end(), random);
     TestMesh mesh;
