@@ -66,7 +66,9 @@ constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
 // Whether a small bucket, in any order, holds only common edges (each
 // traversed once each way and by no other face): all its entries distinct,
 // and n / 2 pairs of them partners (h << 1 and h << 1 | 1), so that every
-// higher vertex is there once up and once down. Every pair is compared,
+// higher vertex is there once up and once down. Returns the slots of the ups
+// (bit i for slot i: one entry an edge, whose ends the walk joins), or 0 when
+// the bucket holds another kind of edge. Every pair is compared,
 // four at a time and with no branch on the data, where a sort's branches
 // would be mispredicted about once an entry. The padded bucket's eight slots
 // against themselves turned by 1, 2 and 3 slots meet each pair of slots 1,
@@ -75,8 +77,8 @@ constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
 // copy would wait for them.) The eight slots from `first` are read whatever
 // n is: the caller sees that they are all its piece's.
 // 32-bit entries only (64-bit ones, for meshes of billions, are sorted).
-__attribute__((always_inline)) inline bool small_bucket_of_common_edges(const std::uint32_t* first,
-                                                                        std::size_t n) {
+__attribute__((always_inline)) inline unsigned small_bucket_of_common_edges(
+    const std::uint32_t* first, std::size_t n) {
     using Four = std::uint32_t __attribute__((vector_size(16)));
     static_assert(small_bucket == 8, "two vectors of four");
     Four low, high;
@@ -102,12 +104,15 @@ __attribute__((always_inline)) inline bool small_bucket_of_common_edges(const st
     compare(high, __builtin_shufflevector(low, high, 7, 0, 1, 2));
     const std::uint32_t pairs = partners[0] + partners[1] + partners[2] + partners[3];
     const std::uint32_t any_repeated = repeated[0] | repeated[1] | repeated[2] | repeated[3];
-    return any_repeated == 0 && 2 * std::size_t(pairs) == n;
+    if (any_repeated != 0 || 2 * std::size_t(pairs) != n) return 0;
+    unsigned ups = 0;
+    for (std::size_t i = 0; i < n; ++i) ups |= unsigned(~first[i] & 1) << i;
+    return ups;
 }
 
 template <class Entry>
-bool small_bucket_of_common_edges(const Entry*, std::size_t) {
-    return false;
+unsigned small_bucket_of_common_edges(const Entry*, std::size_t) {
+    return 0;
 }
 
 #if defined(__x86_64__)
@@ -117,7 +122,7 @@ bool small_bucket_of_common_edges(const Entry*, std::size_t) {
 // half the instructions of the test above, which SSE2 spends on shuffles.
 // Inlined only into the AVX2 walk, whose target it takes (a function with a
 // target of its own would not be inlined into the walk's shared body).
-__attribute__((always_inline)) inline bool small_bucket_of_common_edges_avx2(
+__attribute__((always_inline)) inline unsigned small_bucket_of_common_edges_avx2(
     const std::uint32_t* first, std::size_t n) {
     using Eight = std::uint32_t __attribute__((vector_size(32)));
     static_assert(small_bucket == 8, "one vector of eight");
@@ -137,20 +142,24 @@ __attribute__((always_inline)) inline bool small_bucket_of_common_edges_avx2(
     compare(__builtin_shufflevector(slots, slots, 2, 3, 4, 5, 6, 7, 0, 1), all);
     compare(__builtin_shufflevector(slots, slots, 3, 4, 5, 6, 7, 0, 1, 2), all);
     compare(__builtin_shufflevector(slots, slots, 4, 5, 6, 7, 0, 1, 2, 3), first_half);
+    // One word of flags a lane: bit i when slot i is an up in the bucket, and
+    // bit 8 when the lane met a repeat.
+    Eight flags = ((~slots & 1) << Eight{0, 1, 2, 3, 4, 5, 6, 7} & in) | (repeated & 0x100);
     // Summed across the lanes by folding halves (lane by lane, the sums took
     // as many instructions as the comparisons).
     partners += __builtin_shufflevector(partners, partners, 4, 5, 6, 7, 0, 1, 2, 3);
-    repeated |= __builtin_shufflevector(repeated, repeated, 4, 5, 6, 7, 0, 1, 2, 3);
+    flags |= __builtin_shufflevector(flags, flags, 4, 5, 6, 7, 0, 1, 2, 3);
     partners += __builtin_shufflevector(partners, partners, 2, 3, 0, 1, 6, 7, 4, 5);
-    repeated |= __builtin_shufflevector(repeated, repeated, 2, 3, 0, 1, 6, 7, 4, 5);
+    flags |= __builtin_shufflevector(flags, flags, 2, 3, 0, 1, 6, 7, 4, 5);
     partners += __builtin_shufflevector(partners, partners, 1, 0, 3, 2, 5, 4, 7, 6);
-    repeated |= __builtin_shufflevector(repeated, repeated, 1, 0, 3, 2, 5, 4, 7, 6);
-    return repeated[0] == 0 && 2 * std::size_t(partners[0]) == n;
+    flags |= __builtin_shufflevector(flags, flags, 1, 0, 3, 2, 5, 4, 7, 6);
+    if ((flags[0] & 0x100) != 0 || 2 * std::size_t(partners[0]) != n) return 0;
+    return flags[0];
 }
 
 template <class Entry>
-bool small_bucket_of_common_edges_avx2(const Entry*, std::size_t) {
-    return false;
+unsigned small_bucket_of_common_edges_avx2(const Entry*, std::size_t) {
+    return 0;
 }
 #endif
 
@@ -186,19 +195,22 @@ void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
                            });
 }
 
-// Joins `low` with the other end of each entry's edge. Most ends hang
-// straight below low's root already (joined through a lower vertex, or by
-// the edge's other entry): one load each, and no search.
+// Joins `low` with the higher end of the entries in the slots of `lanes`
+// from `first`: a common edge's up alone (its down names the same vertex).
+// Most ends hang straight below low's root already (joined through a lower
+// vertex): one load each, and no search.
 template <class Entry>
-void join_ends(ConcurrentSmallestIndexSets sets, std::size_t low, const Entry* first,
-               const Entry* last) {
+__attribute__((always_inline)) inline void join_lanes(ConcurrentSmallestIndexSets sets,
+                                                      std::size_t low, const Entry* first,
+                                                      unsigned lanes) {
     std::uint32_t root = sets.find(std::uint32_t(low));
-    for (const Entry* at = first; at != last; ++at)
-        root = sets.join_to(root, std::uint32_t(*at >> 1));
+    for (; lanes != 0; lanes &= lanes - 1)
+        root = sets.join_to(root, std::uint32_t(first[__builtin_ctz(lanes)] >> 1));
 }
 
 template <bool avx2, class Entry>
-__attribute__((always_inline)) inline bool small_bucket_test(const Entry* first, std::size_t n) {
+__attribute__((always_inline)) inline unsigned small_bucket_test(const Entry* first,
+                                                                 std::size_t n) {
 #if defined(__x86_64__)
     if constexpr (avx2) return small_bucket_of_common_edges_avx2(first, n);
 #endif
@@ -207,7 +219,7 @@ __attribute__((always_inline)) inline bool small_bucket_test(const Entry* first,
 
 // Classifies the edges whose lower vertex is in [first_low, last_low), from
 // their bucket entries starting at `entries`, and joins their ends in `sets`
-// (taken by value, as by join_ends: the parent array's address then stays in
+// (taken by value, as by join_lanes: the parent array's address then stays in
 // a register; through a reference it was loaded again at every join).
 template <bool avx2, class Entry>
 __attribute__((always_inline)) inline TopologyReport walk_buckets_as(
@@ -223,22 +235,33 @@ __attribute__((always_inline)) inline TopologyReport walk_buckets_as(
         Entry* const last = entries + end_of[low];
         begin = end_of[low];
         const std::size_t size = std::size_t(last - first);
-        // No edge: an unused or a welded-away vertex (most of a welded soup's).
-        if (size == 0) continue;
-        join_ends(sets, low, first, last);
-        if (size <= small_bucket && low >= padded_from_low &&
-            std::size_t(piece_end - first) >= small_bucket &&
-            small_bucket_test<avx2>(first, size)) {
-            report.edge_count += size / 2;
+        // No edge: an unused or a welded-away vertex (most of a welded
+        // soup's); those after it passed in a loop of their own, one load
+        // and test each.
+        if (size == 0) {
+            while (low + 1 < last_low && end_of[low + 1] == begin) ++low;
             continue;
         }
+        if (size <= small_bucket && low >= padded_from_low &&
+            std::size_t(piece_end - first) >= small_bucket) {
+            if (const unsigned ups = small_bucket_test<avx2>(first, size)) {
+                join_lanes(sets, low, first, ups);
+                report.edge_count += size / 2;
+                continue;
+            }
+        }
         sort_bucket(first, last);  // by higher vertex, ups (bit 0) before downs
+        // Each edge joins its ends once, however many faces traverse it.
+        std::uint32_t root = sets.find(std::uint32_t(low));
         if (only_common_edges(first, last)) {
+            for (const Entry* up = first; up != last; up += 2)
+                root = sets.join_to(root, std::uint32_t(*up >> 1));
             report.edge_count += std::size_t(last - first) / 2;
             continue;
         }
         for (Entry* at = first; at != last;) {
             const Entry high = *at >> 1;
+            root = sets.join_to(root, std::uint32_t(high));
             std::size_t ups = 0, downs = 0;
             for (; at != last && (*at >> 1) == high; ++at) (*at & 1 ? downs : ups) += 1;
             ++report.edge_count;
