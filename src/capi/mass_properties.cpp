@@ -104,10 +104,12 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
     const double density = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL
                                ? body_desc.mass / answered.integrals.volume
                                : body_desc.density;
-    const core::RigidBody body = core::rigid_body(answered.integrals, answered.reference, density);
+    const bool mass_given = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL;
+    core::RigidBody body = core::rigid_body(answered.integrals, answered.reference, density);
+    // A given mass is the answer's, to the bit: (mass / volume) · volume rounds.
+    if (mass_given) body.mass = body_desc.mass;
     const core::Moments moments =
         core::Moments::of_solid(answered.integrals, answered.bounds, answered.reference, density);
-    const bool mass_given = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL;
     return write_body(out, context, body, moments, answered.surface_area, answered.warnings,
                       answered.approximation, mass_given);
 }

@@ -34,7 +34,7 @@ struct BatchResult {
 // the batch holds one, with no branch per lane group, and then returns false
 // without touching `result`: the batch is run again carefully. Both passes
 // give the same bits for every triangle that is neither.
-template <class Wide, bool careful, class Scalar, class Index>
+template <TriangleForm form, class Wide, bool careful, class Scalar, class Index>
 __attribute__((always_inline)) inline bool integrate_gathered(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
@@ -75,7 +75,7 @@ __attribute__((always_inline)) inline bool integrate_gathered(
                 careful ? int(std::min<std::size_t>(
                               groups_of<Wide>, (batch.count - first + lane_count - 1) / lane_count))
                         : groups_of<Wide>;
-            add_unscaled_triangle_sums(sums, p, edges.delta, first_group, groups);
+            add_unscaled_triangle_sums<form>(sums, p, edges.delta, first_group, groups);
 
             // Started from the first square rather than from zero: 0 + a² is a²
             // exactly (a square is never −0), one addition fewer each.
@@ -133,41 +133,42 @@ __attribute__((always_inline)) inline bool integrate_gathered(
         reduced.cubes[axis] = sum_lanes(sums.cubes[axis]);
         reduced.mixed[axis] = sum_lanes(sums.mixed[axis]);
     }
-    result.sums += scaled(reduced);
+    result.sums += scaled<form>(reduced);
     return true;
 }
 
-template <class Wide, class Scalar, class Index>
+template <TriangleForm form, class Wide, class Scalar, class Index>
 __attribute__((always_inline)) inline void integrate_batch(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
-    if (batch.count == batch_capacity && integrate_gathered<Wide, false>(batch, gathered, result))
+    if (batch.count == batch_capacity &&
+        integrate_gathered<form, Wide, false>(batch, gathered, result))
         return;
-    integrate_gathered<Wide, true>(batch, gathered, result);
+    integrate_gathered<form, Wide, true>(batch, gathered, result);
 }
 
 // The kernel built for each instruction set. No FMA: a fused multiply-add
 // rounds once where the baseline rounds twice (and the file is compiled with
 // -ffp-contract=off, so that no other target fuses either).
-template <class Scalar, class Index>
+template <TriangleForm form, class Scalar, class Index>
 void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch,
                               const GatheredTriangles& gathered, BatchResult& result) {
-    integrate_batch<Lanes>(batch, gathered, result);
+    integrate_batch<form, Lanes>(batch, gathered, result);
 }
 
 #if defined(__x86_64__)
-template <class Scalar, class Index>
+template <TriangleForm form, class Scalar, class Index>
 __attribute__((target("avx2"))) void integrate_batch_avx2(const TriangleBatch<Scalar, Index>& batch,
                                                           const GatheredTriangles& gathered,
                                                           BatchResult& result) {
-    integrate_batch<Lanes>(batch, gathered, result);
+    integrate_batch<form, Lanes>(batch, gathered, result);
 }
 
-template <class Scalar, class Index>
+template <TriangleForm form, class Scalar, class Index>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))) void integrate_batch_avx512(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
-    integrate_batch<WideLanes>(batch, gathered, result);
+    integrate_batch<form, WideLanes>(batch, gathered, result);
 }
 #endif
 
@@ -175,14 +176,23 @@ template <class Scalar, class Index>
 using BatchKernel = void (*)(const TriangleBatch<Scalar, Index>&, const GatheredTriangles&,
                              BatchResult&);
 
-template <class Scalar, class Index>
+template <TriangleForm form, class Scalar, class Index>
 BatchKernel<Scalar, Index> batch_kernel(InstructionSet set) {
 #if defined(__x86_64__)
-    if (set == InstructionSet::avx512) return integrate_batch_avx512<Scalar, Index>;
-    if (set == InstructionSet::avx2) return integrate_batch_avx2<Scalar, Index>;
+    if (set == InstructionSet::avx512) return integrate_batch_avx512<form, Scalar, Index>;
+    if (set == InstructionSet::avx2) return integrate_batch_avx2<form, Scalar, Index>;
 #endif
     (void)set;
-    return integrate_batch_baseline<Scalar, Index>;
+    return integrate_batch_baseline<form, Scalar, Index>;
+}
+
+// A mesh of triangles only takes the cone form, fewer operations; one with
+// polygons the flux form, whose face sums add up with the polygons' (the two
+// forms agree on a closed surface's totals, not face by face).
+template <class Scalar, class Index>
+BatchKernel<Scalar, Index> batch_kernel(InstructionSet set, bool all_triangles) {
+    return all_triangles ? batch_kernel<TriangleForm::cone, Scalar, Index>(set)
+                         : batch_kernel<TriangleForm::flux, Scalar, Index>(set);
 }
 
 // What one block of faces adds up, in integration units.
@@ -220,7 +230,7 @@ public:
                     double unit)
         : settings_(settings),
           gatherer_(triangle_gatherer<Scalar, Index>(settings.instruction_set)),
-          kernel_(batch_kernel<Scalar, Index>(settings.instruction_set)) {
+          kernel_(batch_kernel<Scalar, Index>(settings.instruction_set, mesh.all_triangles())) {
         batch_.positions = mesh.positions;
         batch_.indices = mesh.indices;
         for (int axis = 0; axis < 3; ++axis) batch_.reference[axis] = settings.reference[axis];

@@ -1,9 +1,18 @@
-// Closed-form face sums of a triangle (the δ, f, g sub-expressions).
+// Closed-form sums of a triangle, in two forms (docs/integrals.md, section 3):
 //
-// Parameterising the triangle P0 + u E1 + v E2 makes n dS = δ du dv with
-// δ = E1 × E2, and the face integrals collapse to polynomials in the vertex
-// coordinates (docs/integrals.md, section 3, with the x²y term in full). This is the
-// fast path: no normalisation, no projection, no division per triangle.
+// - flux: the face sums of the divergence theorem (the δ, f, g
+//   sub-expressions). Parameterising the triangle P0 + u E1 + v E2 makes
+//   n dS = δ du dv with δ = E1 × E2, and the face integrals collapse to
+//   polynomials in the vertex coordinates (with the x²y term in full). A
+//   face's sums are those of the polygon path, so meshes mixing triangles and
+//   polygons take this form.
+// - cone: the integrals over the signed tetrahedron from the reference point
+//   to the triangle, a third fewer operations. Over a closed surface the
+//   two forms give the same totals (not face by face), so a mesh of triangles
+//   only takes this one.
+//
+// Both are the fast path: no normalisation, no projection, no division per
+// triangle.
 //
 // T is double or a vector of doubles (lanes.hpp): the same expressions then
 // integrate several triangles at once.
@@ -14,25 +23,30 @@
 
 namespace polymass::core {
 
-// The face sums of triangles, each times a constant (6 for x, 12 for the
-// squares, 20 for the cubes, 60 for the mixed terms) that scaled() divides out
-// once per batch instead of once per triangle. Summed lane by lane in the
-// triangles' order: the same sums, in the same order, whatever the
-// instruction set.
+enum class TriangleForm { flux, cone };
+
+// The sums of triangles (FaceSums, or the same volume integrals from cones),
+// each times a constant (6 for x, 12 for the squares, 20 for the flux form's
+// cubes and 40 for the cone form's, 60 for the mixed terms) that scaled()
+// divides out once per batch instead of once per triangle. Summed lane by
+// lane in the triangles' order: the same sums, in the same order, whatever
+// the instruction set.
 template <class T>
 struct UnscaledTriangleSums {
     T x{};
     T squares[3]{};
     T cubes[3]{};
-    T mixed[3]{};  // x²y, y²z, z²x
+    T mixed[3]{};  // x²y, y²z, z²x (flux); xy, yz, zx (cone)
 };
 
+template <TriangleForm form>
 inline FaceSums scaled(const UnscaledTriangleSums<double>& unscaled) {
+    constexpr double cubes_divisor = form == TriangleForm::cone ? 40.0 : 20.0;
     FaceSums sums;
     sums.x = unscaled.x / 6.0;
     for (int axis = 0; axis < 3; ++axis) {
         sums.squares[axis] = unscaled.squares[axis] / 12.0;
-        sums.cubes[axis] = unscaled.cubes[axis] / 20.0;
+        sums.cubes[axis] = unscaled.cubes[axis] / cubes_divisor;
         sums.mixed[axis] = unscaled.mixed[axis] / 60.0;
     }
     return sums;
@@ -79,20 +93,43 @@ struct TriangleEdges {
     }
 };
 
-// Adds the unscaled face sums of triangles with vertex coordinates
-// p[axis][vertex] and δ from TriangleEdges (a lane whose δ is zero adds
-// zeros) to the running sums, whose lanes take the triangles' terms from lane
-// group first_group on (T is Lanes or WideLanes; `groups` of its lane groups
-// are added). Each sum is added to as soon as its term is known, which keeps
-// fewer values alive at once; the order of the additions into any one sum is
-// the same.
-template <class T>
+// Adds the unscaled sums of triangles with vertex coordinates p[axis][vertex]
+// and δ from TriangleEdges (a lane whose δ is zero adds zeros) to the running
+// sums, whose lanes take the triangles' terms from lane group first_group on
+// (T is Lanes or WideLanes; `groups` of its lane groups are added). Each sum
+// is added to as soon as its term is known, which keeps fewer values alive at
+// once; the order of the additions into any one sum is the same.
+template <TriangleForm form, class T>
 __attribute__((always_inline)) inline void add_unscaled_triangle_sums(
     UnscaledTriangleSums<WideLanes>& sums, const T (&p)[3][3], const T (&delta)[3], int first_group,
     int groups) {
     auto add = [first_group, groups](WideLanes& sum, const T& term) {
         add_lane_groups(sum, term, first_group, groups);
     };
+    if constexpr (form == TriangleForm::cone) {
+        // d = p0 · δ = p0 · (p1 × p2): six times the tetrahedron's signed
+        // volume. With the pair sums q_k = p_k + p_(k+1) and s = p0 + p1 + p2,
+        // ∫ x_i x_j = d/120 · (Σ_k p_k,i p_k,j + s_i s_j) = d/120 · Σ_k q_k,i q_k,j.
+        const T d = p[0][0] * delta[0] + p[1][0] * delta[1] + p[2][0] * delta[2];
+        T q[3][3];
+#pragma GCC unroll 3
+        for (int axis = 0; axis < 3; ++axis) {
+            q[axis][0] = p[axis][0] + p[axis][1];
+            q[axis][1] = p[axis][1] + p[axis][2];
+            q[axis][2] = p[axis][2] + p[axis][0];
+        }
+        add(sums.x, d);
+#pragma GCC unroll 3
+        for (int axis = 0; axis < 3; ++axis) {
+            const int next = (axis + 1) % 3;
+            add(sums.squares[axis], d * (q[axis][0] + p[axis][2]));
+            add(sums.cubes[axis],
+                d * (q[axis][0] * q[axis][0] + q[axis][1] * q[axis][1] + q[axis][2] * q[axis][2]));
+            add(sums.mixed[axis],
+                d * (q[axis][0] * q[next][0] + q[axis][1] * q[next][1] + q[axis][2] * q[next][2]));
+        }
+        return;
+    }
 #pragma GCC unroll 3
     for (int axis = 0; axis < 3; ++axis) {
         // The mixed term of axis a is ∫a²b with b the next axis (x²y, y²z, z²x).
