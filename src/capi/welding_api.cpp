@@ -44,7 +44,7 @@ POLYMASS_API int32_t polymass_weld_positions(uint32_t* out_vertex_of, uint64_t* 
         auto weld = [&](auto scalar) {
             using Scalar = decltype(scalar);
             const core::PositionArray<Scalar> array{input.positions, input.position_stride};
-            return core::weld_positions(array, input.vertex_count, weld_tolerance,
+            return core::weld_positions(array, input.vertex_count, weld_tolerance, context->tasks(),
                                         &context->memory);
         };
         const core::WeldedPositions welded =

@@ -109,7 +109,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
 
     std::pmr::vector<std::uint32_t> welded(memory);
     if (settings.weld && (settings.check_topology || settings.list_shells)) {
-        welded = weld_vertices(mesh, scan, settings.weld_tolerance, memory);
+        welded = weld_vertices(mesh, scan, settings.weld_tolerance, tasks, memory);
         analysis.used_vertex_count = distinct_vertices(welded, scan);
     }
     const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();

@@ -253,8 +253,9 @@ RepairedMesh repair_mesh(const MeshView<Scalar, Index>& mesh, const MeshScan& sc
                          const RepairSettings& settings, std::pmr::memory_resource* memory) {
     RepairedMesh repaired(memory);
     RepairReport& report = repaired.report;
+    SerialTaskRunner one_thread;  // the repair runs on the caller's thread
     const std::pmr::vector<std::uint32_t> ids =
-        weld_vertices(mesh, scan, settings.weld_tolerance, memory);
+        weld_vertices(mesh, scan, settings.weld_tolerance, one_thread, memory);
 
     RepairSurface surface(memory);
     surface.reference = scan.reference_point();

@@ -4,8 +4,11 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <memory_resource>
+#include <utility>
 
 #include "position_hash.hpp"
+#include "scratch_buffer.hpp"
 #include "smallest_index_sets.hpp"
 
 namespace polymass::core {
@@ -34,22 +37,26 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
     return used;
 }
 
-// One hashing pass over the used vertices in index order (no list of them):
-// the first vertex met at a position (the lowest index) enters the table and
-// names every later one with the same bits. The table holds only distinct positions (a
-// triangle soup asks about each corner, but has a sixth as many vertices),
-// in open addressing with linear probing, at most half full. Each slot keeps
-// the vertex with the high half of its hash, so that a probe reads another
-// vertex's coordinates only when the halves agree (almost only for a copy),
-// and the slot of a vertex a few ahead is prefetched: the table outgrows the
-// caches, and waiting on it was the pass's cost. A vertex's first slot is
-// taken from that high half too, so that the table grows by moving its slots
-// alone: rehashing read every held vertex's coordinates in random order, a
-// third of the weld of a million-triangle STL. Comparing bits rather than
+// One hashing pass over the used vertices in index order (no list of them): the
+// first vertex met at a position (the lowest index) enters the table and names
+// every later one with the same bits. On several threads, each runs the pass
+// over a share of the positions, chosen by hash, with a table of its own: every
+// copy of a position is in one share, so each vertex gets the same answer from
+// its share as from one pass over all. The table holds only
+// distinct positions (a triangle soup asks about each corner, but has a sixth
+// as many vertices), in open addressing with linear probing, at most half full.
+// Each slot keeps the vertex with the high half of its hash, so that a probe
+// reads another vertex's coordinates only when the halves agree (almost only
+// for a copy), and the slot of a vertex a few ahead is prefetched: the table
+// outgrows the caches, and waiting on it was the pass's cost. A vertex's first
+// slot is taken from that high half too, so that the table grows by moving its
+// slots alone: rehashing read every held vertex's coordinates in random order,
+// a third of the weld of a million-triangle STL. Comparing bits rather than
 // values is exact welding for finite coordinates and still defined for NaN
 // (copies of one NaN are one vertex), which sorting is not.
-template <class Scalar, class Index>
-void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+template <class Scalar, class Index, class VertexAt, class HashOf>
+void weld_share(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, std::size_t items,
+                VertexAt&& vertex_at, HashOf&& hash_of,
                 std::pmr::vector<std::uint32_t>& representative,
                 std::pmr::memory_resource* memory) {
     using Bits = std::array<std::uint64_t, 3>;
@@ -73,23 +80,22 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
         while (slots[slot] != 0) slot = (slot + 1) & mask;
         slots[slot] = entry;
     };
-    // The hashes of the next kAhead vertices, by vertex % kAhead (stale for
-    // an unused one, which is never looked up).
-    const std::size_t count = representative.size();
+    // The hashes of the next kAhead items, by item % kAhead (stale for an
+    // unused vertex, which is never looked up).
     constexpr std::size_t kAhead = 16;
     std::array<std::uint64_t, kAhead> ahead{};
-    const auto hash_ahead = [&](std::size_t vertex) {
-        if (vertex >= count || !scan.is_used(vertex)) return;
-        const std::uint64_t hash = position_hash(bits_of(std::uint32_t(vertex)));
-        ahead[vertex % kAhead] = hash;
+    const auto hash_ahead = [&](std::size_t item) {
+        if (item >= items || !scan.is_used(vertex_at(item))) return;
+        const std::uint64_t hash = hash_of(vertex_at(item));
+        ahead[item % kAhead] = hash;
         __builtin_prefetch(&slots[home(hash)]);
     };
-    for (std::size_t vertex = 0; vertex < kAhead; ++vertex) hash_ahead(vertex);
-    for (std::size_t index = 0; index < count; ++index) {
-        const std::uint64_t hash = ahead[index % kAhead];  // before its slot is reused
-        hash_ahead(index + kAhead);
-        if (!scan.is_used(index)) continue;
-        const auto vertex = std::uint32_t(index);
+    for (std::size_t item = 0; item < kAhead; ++item) hash_ahead(item);
+    for (std::size_t item = 0; item < items; ++item) {
+        const std::uint64_t hash = ahead[item % kAhead];  // before its slot is reused
+        hash_ahead(item + kAhead);
+        const std::uint32_t vertex = vertex_at(item);
+        if (!scan.is_used(vertex)) continue;
         const Bits bits = bits_of(vertex);
         const std::uint64_t tag = hash & 0xFFFFFFFF00000000ull;
         const std::size_t mask = slots.size() - 1;
@@ -112,6 +118,77 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                 if (entry != 0) place(entry);
         }
     }
+}
+
+// At least this many vertices a thread, or the weld runs on one; and the
+// parts its hashes are found and dealt in.
+constexpr std::size_t kVerticesPerPart = std::size_t{1} << 16;
+
+// The exact weld in shares on `tasks` (a share a thread; the answer is the
+// same for any number of shares). Every used vertex is hashed once, in
+// parts, and dealt to its share, in index order (the order a share's pass
+// reads them in: with a few shares, almost every position in turn). Each
+// share allocates its own table, taken from `memory` one thread at a time.
+template <class Scalar, class Index>
+void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                std::pmr::vector<std::uint32_t>& representative, TaskRunner& tasks,
+                std::pmr::memory_resource* memory) {
+    const auto hash_of = [&](std::uint32_t vertex) {
+        const Eigen::Vector3d p = mesh.positions[vertex];
+        return position_hash({position_bits(p.x()), position_bits(p.y()), position_bits(p.z())});
+    };
+    const std::size_t count = representative.size();
+    const std::size_t shares = std::max<std::size_t>(
+        1, std::min(tasks.concurrency(), scan.used_vertex_count / kVerticesPerPart));
+    if (shares == 1) {
+        weld_share(
+            mesh, scan, count, [](std::size_t item) { return std::uint32_t(item); }, hash_of,
+            representative, memory);
+        return;
+    }
+    // A share from the hash's high half's highest bits (its lowest pick the slot).
+    const auto share_of = [shares](std::uint32_t high_half) {
+        return std::size_t((std::uint64_t(high_half) * shares) >> 32);
+    };
+    const std::size_t parts = (count + kVerticesPerPart - 1) / kVerticesPerPart;
+    const auto each_used_of_part = [&](std::size_t part, auto&& visit) {
+        const std::size_t first = part * kVerticesPerPart;
+        for (std::size_t vertex = first; vertex < std::min(count, first + kVerticesPerPart);
+             ++vertex)
+            if (scan.is_used(vertex)) visit(std::uint32_t(vertex));
+    };
+    ScratchBuffer<std::uint32_t> high_halves(count, memory);
+    // ends[part * shares + share]: the part's count, then where its next vertex goes.
+    std::pmr::vector<std::size_t> ends(parts * shares, 0, memory);
+    tasks.run(parts, [&](std::size_t part) {
+        each_used_of_part(part, [&](std::uint32_t vertex) {
+            high_halves[vertex] = std::uint32_t(hash_of(vertex) >> 32);
+            ++ends[part * shares + share_of(high_halves[vertex])];
+        });
+    });
+    std::pmr::vector<std::size_t> share_starts(shares + 1, memory);
+    std::size_t dealt = 0;
+    for (std::size_t share = 0; share < shares; ++share) {
+        share_starts[share] = dealt;
+        for (std::size_t part = 0; part < parts; ++part)
+            dealt += std::exchange(ends[part * shares + share], dealt);
+    }
+    share_starts[shares] = dealt;
+    ScratchBuffer<std::uint32_t> in_shares(dealt, memory);
+    tasks.run(parts, [&](std::size_t part) {
+        each_used_of_part(part, [&](std::uint32_t vertex) {
+            in_shares[ends[part * shares + share_of(high_halves[vertex])]++] = vertex;
+        });
+    });
+    std::pmr::synchronized_pool_resource one_at_a_time(memory);
+    tasks.run(shares, [&](std::size_t share) {
+        const std::uint32_t* const own = in_shares.data() + share_starts[share];
+        weld_share(
+            mesh, scan, share_starts[share + 1] - share_starts[share],
+            [own](std::size_t item) { return own[item]; },
+            [&](std::uint32_t vertex) { return std::uint64_t(high_halves[vertex]) << 32; },
+            representative, &one_at_a_time);
+    });
 }
 
 // A grid of cells `distance` wide: vertices in one cell are within `distance`
@@ -209,6 +286,7 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,
+                                              TaskRunner& tasks,
                                               std::pmr::memory_resource* memory) {
     std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, memory);
     // At least 2^-50 of the extent (a few of its ulps), so that every cell
@@ -220,13 +298,14 @@ std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mes
         weld_within(mesh, scan, distance, used_vertices(scan, representative.size(), memory),
                     representative, memory);
     else
-        weld_exact(mesh, scan, representative, memory);
+        weld_exact(mesh, scan, representative, tasks, memory);
     return representative;
 }
 
 template <class Scalar>
 WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size_t count,
-                               double tolerance, std::pmr::memory_resource* memory) {
+                               double tolerance, TaskRunner& tasks,
+                               std::pmr::memory_resource* memory) {
     // A scan of the positions as if every one were used by a face.
     MeshScan scan(memory);
     scan.used.assign((count + 63) / 64, ~std::uint64_t{0});
@@ -247,20 +326,21 @@ WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size
         if (result.non_finite.count > 0) return result;
     }
     const MeshView<Scalar, std::uint32_t> mesh{positions, count, {}, 0, nullptr, 0};
-    result.vertex_of = weld_vertices(mesh, scan, tolerance, memory);
+    result.vertex_of = weld_vertices(mesh, scan, tolerance, tasks, memory);
     for (std::size_t vertex = 0; vertex < count; ++vertex)
         result.distinct += result.vertex_of[vertex] == vertex;
     return result;
 }
 
 template WeldedPositions weld_positions<double>(const PositionArray<double>&, std::size_t, double,
-                                                std::pmr::memory_resource*);
+                                                TaskRunner&, std::pmr::memory_resource*);
 template WeldedPositions weld_positions<float>(const PositionArray<float>&, std::size_t, double,
-                                               std::pmr::memory_resource*);
+                                               TaskRunner&, std::pmr::memory_resource*);
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                \
-    template std::pmr::vector<std::uint32_t> weld_vertices<Scalar, Index>( \
-        const MeshView<Scalar, Index>&, const MeshScan&, double, std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                   \
+    template std::pmr::vector<std::uint32_t> weld_vertices<Scalar, Index>(    \
+        const MeshView<Scalar, Index>&, const MeshScan&, double, TaskRunner&, \
+        std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -16,6 +16,7 @@
 
 #include "mesh_scan.hpp"
 #include "mesh_view.hpp"
+#include "task_runner.hpp"
 
 namespace polymass::core {
 
@@ -24,12 +25,13 @@ namespace polymass::core {
 // reach (scan.used's bits; fewer than the mesh's when 16-bit indices meet
 // more than 65,536 vertices). scan must say the mesh is in range, and
 // finite when tolerance > 0 (an exact weld compares bits: copies of one NaN
-// are one vertex); tolerance is relative, >= 0. Exact welding is one hashing
-// pass; within a tolerance, a sort by grid cell.
+// are one vertex); tolerance is relative, >= 0. Exact welding deals the
+// positions into buckets by hash and hashes the buckets on `tasks`; within a
+// tolerance, a sort by grid cell. The answer is the same whatever runs the tasks.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,
-                                              std::pmr::memory_resource* memory);
+                                              TaskRunner& tasks, std::pmr::memory_resource* memory);
 
 // Welding a caller's positions alone, with no faces (polymass_weld_positions):
 // every position is a vertex.
@@ -48,7 +50,8 @@ struct WeldedPositions {
 // finite positions.
 template <class Scalar>
 WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size_t count,
-                               double tolerance, std::pmr::memory_resource* memory);
+                               double tolerance, TaskRunner& tasks,
+                               std::pmr::memory_resource* memory);
 
 // How many vertices are left once `welded` (weld_vertices' answer) is applied:
 // the used vertices that are their own smallest welded index.

@@ -121,9 +121,8 @@ static void test_noisy_soup_closes(void** state) {
     polymass_context_destroy(ctx);
 }
 
-/* The exact weld's table grows past its first 4096 slots (2048 distinct
- * positions) and keeps every position it held: a torus of 2,304 vertices as a
- * soup of 13,824 welds each corner to the first corner at its position. */
+/* A torus of 2,304 vertices as a soup of 13,824 welds each corner to the
+ * first corner at its position. */
 static void test_exact_weld_of_many_positions(void** state) {
     static const double centre[3] = {1e6, 0, -1e6};
     polymass_context* ctx = pm_context_new();
@@ -164,6 +163,108 @@ static void test_exact_weld_of_many_positions(void** state) {
     free(first_of);
     pm_mesh_free(&m);
     polymass_context_destroy(ctx);
+}
+
+/* A position's identity for the exact weld: its bits, +0 for -0. */
+typedef struct weld_key {
+    uint64_t bits[3];
+    uint32_t vertex;
+} weld_key;
+
+static int compare_weld_keys(const void* a, const void* b) {
+    const weld_key *x = a, *y = b;
+    int i;
+    for (i = 0; i < 3; ++i)
+        if (x->bits[i] != y->bits[i]) return x->bits[i] < y->bits[i] ? -1 : 1;
+    return x->vertex < y->vertex ? -1 : x->vertex > y->vertex;
+}
+
+/* The exact weld's answer found by sorting: each position's lowest index. */
+static uint64_t weld_by_sorting(const double* xyz, size_t count, uint32_t* of_vertex) {
+    weld_key* keys = malloc(count * sizeof *keys);
+    uint64_t distinct = 0;
+    size_t v, first = 0;
+    int i;
+    assert_non_null(keys);
+    for (v = 0; v < count; ++v) {
+        for (i = 0; i < 3; ++i) {
+            const double c = xyz[3 * v + i] == 0.0 ? 0.0 : xyz[3 * v + i];
+            memcpy(&keys[v].bits[i], &c, sizeof c);
+        }
+        keys[v].vertex = (uint32_t)v;
+    }
+    qsort(keys, count, sizeof *keys, compare_weld_keys);
+    for (v = 0; v < count; ++v) {
+        if (v == 0 || memcmp(keys[v].bits, keys[v - 1].bits, sizeof keys[v].bits) != 0) {
+            first = v;
+            ++distinct;
+        }
+        of_vertex[keys[v].vertex] = keys[first].vertex;
+    }
+    free(keys);
+    return distinct;
+}
+
+/* The exact weld of many positions (more than one bucket and one part of its
+ * dealing, tables that grow), drawn with repeats from coordinates that
+ * include +0 and -0, NaNs of two payloads and infinities, as float64 and as
+ * float32: on one thread and on two, each position welds to the lowest index
+ * at its position, as sorting finds it. */
+static void test_exact_weld_on_threads(void** state) {
+    const size_t count = 300000;
+    double* xyz = malloc(3 * count * sizeof *xyz);
+    float* xyz32 = malloc(3 * count * sizeof *xyz32);
+    double* widened = malloc(3 * count * sizeof *widened);
+    uint32_t* expected = malloc(count * sizeof *expected);
+    uint32_t* of_vertex = malloc(count * sizeof *of_vertex);
+    uint64_t state_of_draws = 12345, expected_distinct, distinct = 0;
+    double special[6] = {0.0, -0.0, INFINITY, -INFINITY, 0.0, 0.0};
+    static const uint64_t nan_bits[2] = {0x7FF8000000000001u, 0x7FF8000000400000u};
+    size_t v;
+    int precision;
+    uint32_t threads;
+    (void)state;
+    assert_non_null(xyz);
+    assert_non_null(xyz32);
+    assert_non_null(widened);
+    assert_non_null(expected);
+    assert_non_null(of_vertex);
+    memcpy(&special[4], &nan_bits[0], sizeof(double));
+    memcpy(&special[5], &nan_bits[1], sizeof(double));
+    for (v = 0; v < 3 * count; ++v) {
+        /* A sixth of the coordinates special, the rest one of 60 values. */
+        const double draw = next_noise(&state_of_draws);
+        const int pick = (int)floor((draw + 1.0) * 36.0); /* 0..71 */
+        xyz[v] = pick < 12 ? special[pick % 6] : 1e3 + 0.25 * pick;
+        xyz32[v] = (float)xyz[v];
+        widened[v] = (double)xyz32[v];
+    }
+    for (precision = 0; precision < 2; ++precision) {
+        const double* as_doubles = precision == 0 ? xyz : widened;
+        expected_distinct = weld_by_sorting(as_doubles, count, expected);
+        /* Many repeats, and enough distinct positions for the tables to grow. */
+        assert_true(expected_distinct > count / 2);
+        assert_true(expected_distinct < 3 * count / 4);
+        for (threads = 1; threads <= 2; ++threads) {
+            polymass_context* ctx = pm_context_new();
+            PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, threads));
+            memset(of_vertex, 0xFF, count * sizeof *of_vertex);
+            PM_ASSERT_OK(ctx,
+                         polymass_weld_positions(
+                             of_vertex, &distinct, ctx,
+                             precision == 0 ? (const void*)xyz : (const void*)xyz32,
+                             precision == 0 ? POLYMASS_POSITION_FLOAT64 : POLYMASS_POSITION_FLOAT32,
+                             count, 0, 0.0));
+            assert_int_equal(distinct, expected_distinct);
+            assert_memory_equal(of_vertex, expected, count * sizeof *of_vertex);
+            polymass_context_destroy(ctx);
+        }
+    }
+    free(xyz);
+    free(xyz32);
+    free(widened);
+    free(expected);
+    free(of_vertex);
 }
 
 /* Two closed boxes a gap of 1e-6 of the extent apart stay two solids under a
@@ -578,6 +679,7 @@ int main(void) {
         cmocka_unit_test(test_weld_on_its_own),
         cmocka_unit_test(test_weld_of_positions_past_sixteen_bit_reach),
         cmocka_unit_test(test_exact_weld_of_many_positions),
+        cmocka_unit_test(test_exact_weld_on_threads),
     };
     return cmocka_run_group_tests_name("welding", tests, NULL, NULL);
 }
