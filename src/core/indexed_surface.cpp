@@ -12,17 +12,6 @@
 namespace polymass::core {
 namespace {
 
-// visit(t) for each t in [0, count), in fixed blocks run as tasks: for
-// passes over the triangles whose items are independent of one another.
-template <class Visit>
-void for_each_in_blocks(std::size_t count, TaskRunner& tasks, const Visit& visit) {
-    const std::size_t blocks = (count + kFacesPerBlock - 1) / kFacesPerBlock;
-    tasks.run(blocks, [&](std::size_t block) {
-        const std::size_t end = std::min(count, (block + 1) * kFacesPerBlock);
-        for (std::size_t t = block * kFacesPerBlock; t < end; ++t) visit(t);
-    });
-}
-
 // A triangle's corner extremes (IndexedSurface::corner_extremes).
 std::uint32_t extremes_of_corners(const Triangle& t) {
     std::uint32_t bits = 0;
@@ -67,7 +56,7 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       copies_before_(memory),
       lowest_(memory),
       next_(memory),
-      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory) {}
+      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory, tasks) {}
 
 // Welds the corners, boxes the triangles, and links the copies, whose boxes
 // above the lowest are then emptied: met through it. (Copies are found after
@@ -96,7 +85,7 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     std::pmr::vector<FloatBox> boxes(size(), memory);
     corner_bits_.resize(size());
     std::pmr::vector<std::uint64_t> shape_keys(size(), memory);
-    for_each_in_blocks(size(), tasks, [&](std::size_t t) {
+    for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
         const Triangle corners = triangle(t);
         shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
         const bool degenerate = is_degenerate(corners);
@@ -106,7 +95,7 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
         for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
     });
     find_copies(std::move(shape_keys), memory);
-    for_each_in_blocks(size(), tasks, [&](std::size_t t) {
+    for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
         if (lowest_copy(t) != t) boxes[t] = FloatBox();
     });
     return boxes;
