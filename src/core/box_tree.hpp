@@ -34,6 +34,15 @@ struct FloatBox {
     std::array<float, 3> lo{INFINITY, INFINITY, INFINITY};
     std::array<float, 3> hi{-INFINITY, -INFINITY, -INFINITY};  // empty: meets nothing
 
+    // The box from lo to hi (about the tree's reference point), rounded outward.
+    static FloatBox spanning(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+        FloatBox box;
+        for (int k = 0; k < 3; ++k) {
+            box.lo[k] = below(lo[k]);
+            box.hi[k] = above(hi[k]);
+        }
+        return box;
+    }
     // Grows to contain p (given about the tree's reference point).
     void extend(const Eigen::Vector3d& p) {
         for (int k = 0; k < 3; ++k) {
