@@ -22,6 +22,8 @@
 #include <memory_resource>
 #include <vector>
 
+#include "task_runner.hpp"
+
 #if defined(__SSE2__)
 #include <immintrin.h>
 #endif
@@ -32,6 +34,15 @@ struct FloatBox {
     std::array<float, 3> lo{INFINITY, INFINITY, INFINITY};
     std::array<float, 3> hi{-INFINITY, -INFINITY, -INFINITY};  // empty: meets nothing
 
+    // The box from lo to hi (about the tree's reference point), rounded outward.
+    static FloatBox spanning(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+        FloatBox box;
+        for (int k = 0; k < 3; ++k) {
+            box.lo[k] = below(lo[k]);
+            box.hi[k] = above(hi[k]);
+        }
+        return box;
+    }
     // Grows to contain p (given about the tree's reference point).
     void extend(const Eigen::Vector3d& p) {
         for (int k = 0; k < 3; ++k) {
@@ -86,7 +97,10 @@ public:
     // their indices missed the cache about once a box on a large surface.
     // It takes the boxes and lets them go once they are in its leaves, before
     // its nodes are built: the boxes, their leaves and the nodes together
-    // were the intersection check's peak of memory.
+    // were the intersection check's peak of memory. Its passes over the
+    // items run in fixed blocks on `tasks` (the same tree for every
+    // runner); without them, on the calling thread.
+    BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory, TaskRunner& tasks);
     BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory);
 
     // The box of every item (empty when there are none).
@@ -124,6 +138,8 @@ private:
     // a million triangles give a few hundred pieces, enough to share among
     // threads; the pieces of a small surface are one.
     static constexpr std::uint32_t kPieceLevel = 10;
+    // Items (and nodes) a task of the construction's passes takes.
+    static constexpr std::size_t kItemsPerBlock = std::size_t{1} << 16;
 
     // The boxes of a leaf, one lane each, so that one box is tested against
     // the four of another leaf at once (overlap_masks): tested one pair at

@@ -12,31 +12,29 @@
 namespace polymass::core {
 namespace {
 
-// visit(t) for each t in [0, count), in fixed blocks run as tasks: for
-// passes over the triangles whose items are independent of one another.
-template <class Visit>
-void for_each_in_blocks(std::size_t count, TaskRunner& tasks, const Visit& visit) {
-    const std::size_t blocks = (count + kFacesPerBlock - 1) / kFacesPerBlock;
-    tasks.run(blocks, [&](std::size_t block) {
-        const std::size_t end = std::min(count, (block + 1) * kFacesPerBlock);
-        for (std::size_t t = block * kFacesPerBlock; t < end; ++t) visit(t);
-    });
-}
-
-// A triangle's corner extremes (IndexedSurface::corner_extremes).
-std::uint32_t extremes_of_corners(const Triangle& t) {
-    std::uint32_t bits = 0;
-    for (int k = 0; k < 3; ++k) {
-        const Eigen::Vector3d& corner = t[k];
-        const Eigen::Vector3d& next = t[k == 2 ? 0 : k + 1];
-        const Eigen::Vector3d& last = t[k == 0 ? 2 : k - 1];
-        for (int axis = 0; axis < 3; ++axis) {
-            const bool highest = next[axis] <= corner[axis] && last[axis] <= corner[axis];
-            const bool lowest = next[axis] >= corner[axis] && last[axis] >= corner[axis];
-            bits |= (std::uint32_t(highest) << axis | std::uint32_t(lowest) << (axis + 3)) << 6 * k;
-        }
+// A triangle's corner extremes (IndexedSurface::corner_extremes), and its
+// lowest and highest coordinate on each axis: both from the six comparisons
+// of its corners' coordinates per axis. (Each corner against its two others
+// took twelve, and the box then compared each corner again: a third of the
+// pass over the positions.)
+struct CornerOrder {
+    std::uint32_t extremes = 0;
+    Eigen::Vector3d lowest, highest;
+};
+CornerOrder order_corners(const Triangle& t) {
+    CornerOrder order;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double a = t[0][axis], b = t[1][axis], c = t[2][axis];
+        // xy: x at or below y (finite coordinates: not y below x).
+        const std::uint32_t ab = a <= b, ba = b <= a, bc = b <= c, cb = c <= b, ca = c <= a,
+                            ac = a <= c;
+        const std::uint32_t highest = (ba & ca) | (cb & ab) << 6 | (ac & bc) << 12;
+        const std::uint32_t lowest = (ab & ac) | (bc & ba) << 6 | (ca & cb) << 12;
+        order.extremes |= highest << axis | lowest << (axis + 3);
+        order.lowest[axis] = std::min(std::min(a, b), c);
+        order.highest[axis] = std::max(std::max(a, b), c);
     }
-    return bits;
+    return order;
 }
 
 // The nine coordinates' bits (position_hash.hpp: -0 as +0) mixed in order:
@@ -67,7 +65,7 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       copies_before_(memory),
       lowest_(memory),
       next_(memory),
-      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory) {}
+      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory, tasks) {}
 
 // Welds the corners, boxes the triangles, and links the copies, whose boxes
 // above the lowest are then emptied: met through it. (Copies are found after
@@ -96,17 +94,19 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     std::pmr::vector<FloatBox> boxes(size(), memory);
     corner_bits_.resize(size());
     std::pmr::vector<std::uint64_t> shape_keys(size(), memory);
-    for_each_in_blocks(size(), tasks, [&](std::size_t t) {
+    for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
         const Triangle corners = triangle(t);
         shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
         const bool degenerate = is_degenerate(corners);
-        corner_bits_[t] = extremes_of_corners(corners) | std::uint32_t(degenerate)
-                                                             << kDegenerateBit;
-        if (degenerate) return;
-        for (const Eigen::Vector3d& corner : corners) boxes[t].extend(in_units(corner));
+        const CornerOrder order = order_corners(corners);
+        corner_bits_[t] = order.extremes | std::uint32_t(degenerate) << kDegenerateBit;
+        // in_units is monotone (a positive scale), so it keeps the lowest
+        // and the highest: rounded outward, they bound the three corners.
+        if (!degenerate)
+            boxes[t] = FloatBox::spanning(in_units(order.lowest), in_units(order.highest));
     });
     find_copies(std::move(shape_keys), memory);
-    for_each_in_blocks(size(), tasks, [&](std::size_t t) {
+    for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
         if (lowest_copy(t) != t) boxes[t] = FloatBox();
     });
     return boxes;

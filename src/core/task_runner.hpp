@@ -6,6 +6,7 @@
 // the same bits.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 
@@ -33,5 +34,17 @@ public:
     }
     std::size_t concurrency() const override { return 1; }
 };
+
+// Calls visit(i) for each i in [0, count), in blocks of block_size run as
+// tasks on `tasks`: for passes whose items are independent of one another.
+template <class Visit>
+void for_each_in_blocks(std::size_t count, std::size_t block_size, TaskRunner& tasks,
+                        const Visit& visit) {
+    const std::size_t blocks = (count + block_size - 1) / block_size;
+    tasks.run(blocks, [&](std::size_t block) {
+        const std::size_t end = std::min(count, (block + 1) * block_size);
+        for (std::size_t i = block * block_size; i < end; ++i) visit(i);
+    });
+}
 
 }  // namespace polymass::core

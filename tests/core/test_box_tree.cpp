@@ -1,0 +1,98 @@
+// BoxTree's search for overlapping pairs against a sweep along x, on more
+// boxes than one block of its construction takes (so that the blocks' box
+// of all, leaves and levels are joined across blocks), built on the calling
+// thread and on a runner that runs its blocks last first: every overlapping
+// pair once, none else, and the same tree for both.
+#include "core/box_tree.hpp"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory_resource>
+#include <random>
+#include <vector>
+
+#include "check.hpp"
+#include "reversed_task_runner.hpp"
+
+namespace {
+
+using polymass::core::BoxTree;
+using polymass::core::FloatBox;
+using Pair = std::array<std::uint32_t, 2>;
+
+// Boxes along a slab, long enough that a sweep along it tests few pairs;
+// every 97th empty (it meets nothing), and some repeated.
+std::vector<FloatBox> random_boxes(std::size_t count) {
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> along(0.0, 300.0), across(0.0, 1.0), size(0.0, 0.1);
+    std::vector<FloatBox> boxes(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i % 97 == 0) continue;
+        if (i % 89 == 0) {
+            boxes[i] = boxes[i - 1];
+            continue;
+        }
+        const Eigen::Vector3d lo(along(random), across(random), across(random));
+        boxes[i] =
+            FloatBox::spanning(lo, lo + Eigen::Vector3d(size(random), size(random), size(random)));
+    }
+    return boxes;
+}
+
+std::vector<Pair> pairs_of(const BoxTree& tree) {
+    std::vector<Pair> pairs;
+    for (const BoxTree::PairTask& piece : tree.pair_tasks())
+        tree.for_each_overlapping_pair(piece, [&](std::uint32_t i, std::uint32_t j) {
+            pairs.push_back({std::min(i, j), std::max(i, j)});
+        });
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+// Every overlapping pair, by a sweep of the boxes in order of their low x.
+std::vector<Pair> sweep(const std::vector<FloatBox>& boxes) {
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        if (boxes[i].lo[0] <= boxes[i].hi[0]) order.push_back(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return boxes[a].lo[0] < boxes[b].lo[0]; });
+    std::vector<Pair> pairs;
+    for (std::size_t m = 0; m < order.size(); ++m)
+        for (std::size_t n = m + 1; n < order.size(); ++n) {
+            const FloatBox &a = boxes[order[m]], &b = boxes[order[n]];
+            if (b.lo[0] > a.hi[0]) break;
+            if (a.overlaps(b))
+                pairs.push_back({std::min(order[m], order[n]), std::max(order[m], order[n])});
+        }
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+bool same_box(const FloatBox& a, const FloatBox& b) { return a.lo == b.lo && a.hi == b.hi; }
+
+void check_pairs_across_blocks() {
+    // Five blocks of items, two of leaves.
+    const std::vector<FloatBox> boxes = random_boxes(270000);
+    const std::vector<Pair> expected = sweep(boxes);
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource();
+    const BoxTree serial(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory);
+    polymass_test::ReversedTaskRunner reversed;
+    const BoxTree blocks_reversed(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory),
+                                  memory, reversed);
+    CHECK(expected.size() > boxes.size() / 4);  // many boxes meet another
+    CHECK(pairs_of(serial) == expected);
+    CHECK(pairs_of(blocks_reversed) == expected);
+    FloatBox all;
+    for (const FloatBox& box : boxes) all.extend(box);
+    CHECK(same_box(serial.bounds(), all));
+    CHECK(same_box(blocks_reversed.bounds(), all));
+}
+
+}  // namespace
+
+int main() {
+    check_pairs_across_blocks();
+    return polymass_test::finish("test_box_tree");
+}
