@@ -10,8 +10,9 @@
 // them (coinciding copies on two shells cross, on one they touch, and copies on the same vertices
 // in the same turn cross wherever they are); fans of triangles around one
 // vertex, and two triangles folded over each other in one plane around a
-// shared vertex (no pair: only crossing counts there). The reference tests all pairs with the same
-// exact predicate (test_triangle_contact checks that one).
+// shared vertex (no pair: only crossing counts there); an assembly of touching cubes, past the
+// count's stop, with a crossing cube and coinciding faces late. The reference tests all pairs with
+// the same exact predicate (test_triangle_contact checks that one).
 #include "core/surface_contacts.hpp"
 
 #include "check.hpp"
@@ -268,9 +269,63 @@ void check_folds_at_a_shared_corner() {
     }
 }
 
+// Separate cubes stacked in a grid, each resting on its neighbours: far
+// more touching pairs than the count keeps, so that past its stop a pair
+// between two triangles already marked as touching another shell is asked
+// only whether it crosses or coincides (crossing_or_coinciding). Among them,
+// late in face order, a small cube crossing the top of the last one and a
+// box around the first, twice its height, whose faces coincide with its
+// faces in part (on two shells: crossing). The findings must be those of a
+// test of every pair, and the marks of triangles touching another shell
+// those its touching pairs give.
+void check_touching_assembly() {
+    constexpr int side = 5;
+    TestMesh mesh;
+    const Eigen::Vector3d far(1e3, -2e3, 3e3), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    for (int k = 0; k < side * side * side; ++k) {
+        const Eigen::Vector3d at(k % side, k / side % side, k / side / side);
+        polymass_test::append(mesh, polymass_test::box_mesh(far + at, x, y, z, true));
+    }
+    const Eigen::Vector3d top = far + Eigen::Vector3d::Constant(side - 1);
+    polymass_test::append(mesh, polymass_test::box_mesh(top + Eigen::Vector3d(0.25, 0.25, 0.5),
+                                                        0.5 * x, 0.5 * y, 0.5 * z, true));
+    polymass_test::append(mesh, polymass_test::box_mesh(far, x, 2 * y, 2 * z, true));
+    const polymass::core::Shells shells = polymass_test::shells_of(mesh);
+    const Reference expected = test_every_pair(mesh, &shells);
+    std::vector<bool> marked(mesh.indices.size() / 3, false);
+    for (const auto& [f, g] : expected.touching)
+        if (shells.of_face[f] != shells.of_face[g]) marked[f] = marked[g] = true;
+    CHECK(expected.touching.size() > 8 * kMostCountedPairs);
+    CHECK(!expected.crossing.empty());
+    const auto view = mesh.view();
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    for (polymass::core::TaskRunner* runner :
+         {static_cast<polymass::core::TaskRunner*>(&serial),
+          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
+        const polymass::core::IndexedSurface surface(view, nullptr, top, 10.0, *runner,
+                                                     std::pmr::get_default_resource());
+        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
+            surface, &shells, *runner, std::pmr::get_default_resource());
+        CHECK(agrees(found.crossing, expected.crossing));
+        CHECK(agrees(found.touching, expected.touching));
+        std::size_t wrong_marks = 0;
+        for (std::size_t t = 0; t < marked.size(); ++t)
+            wrong_marks += marked[t] != (found.touches_other_shell[t].load() != 0);
+        CHECK(wrong_marks == 0);
+        if (wrong_marks)
+            std::fprintf(stderr, "touching assembly: %zu triangles marked wrongly\n", wrong_marks);
+    }
+    std::printf(
+        "  %d touching cubes, a crossing cube and a coinciding box: %zu pairs crossing, "
+        "%zu touching\n",
+        side * side * side, expected.crossing.size(), expected.touching.size());
+}
+
 }  // namespace
 
 int main() {
+    check_touching_assembly();
     check_folds_at_a_shared_corner();
     check_many_pieces();
     check_fans();
