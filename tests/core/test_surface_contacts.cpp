@@ -106,21 +106,29 @@ bool agrees(const PairFinding& found, const std::vector<std::array<std::uint64_t
     return true;
 }
 
-void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Shells* shells) {
-    const Reference expected = test_every_pair(mesh, shells);
+// The search's contacts on `mesh`, with its pieces in order and in reverse,
+// each given to `check`.
+template <class Check>
+void on_each_runner(const TestMesh& mesh, const polymass::core::Shells* shells,
+                    const Eigen::Vector3d& reference, double size, const Check& check) {
     const auto view = mesh.view();
-    Eigen::AlignedBox3d box;
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) box.extend(mesh.vertex(v));
     polymass::core::SerialTaskRunner serial;
     polymass_test::ReversedTaskRunner reversed;
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, box.center(),
-                                                     box.diagonal().norm(), *runner,
+        const polymass::core::IndexedSurface surface(view, nullptr, reference, size, *runner,
                                                      std::pmr::get_default_resource());
-        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
-            surface, shells, *runner, std::pmr::get_default_resource());
+        check(polymass::core::find_contacts(surface, shells, *runner,
+                                            std::pmr::get_default_resource()));
+    }
+}
+
+void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Shells* shells) {
+    const Reference expected = test_every_pair(mesh, shells);
+    Eigen::AlignedBox3d box;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) box.extend(mesh.vertex(v));
+    on_each_runner(mesh, shells, box.center(), box.diagonal().norm(), [&](const auto& found) {
         const bool crossing = agrees(found.crossing, expected.crossing);
         const bool touching = agrees(found.touching, expected.touching);
         if (!crossing || !touching)
@@ -132,7 +140,7 @@ void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Sh
                          touching ? "" : "; the touching pairs differ");
         CHECK(crossing);
         CHECK(touching);
-    }
+    });
 }
 
 // Pairs of crossing triangles, each pair in a cell of a grid with a third
@@ -159,23 +167,13 @@ void check_many_pieces() {
     }
     for (const auto& triangles : {flat, upright, apart})
         for (const auto& t : triangles) mesh.add_face({t[0], t[1], t[2]});
-    const auto view = mesh.view();
-    polymass::core::SerialTaskRunner serial;
-    polymass_test::ReversedTaskRunner reversed;
-    for (polymass::core::TaskRunner* runner :
-         {static_cast<polymass::core::TaskRunner*>(&serial),
-          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(90, 75, 0),
-                                                     300.0, *runner,
-                                                     std::pmr::get_default_resource());
-        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
-            surface, nullptr, *runner, std::pmr::get_default_resource());
+    on_each_runner(mesh, nullptr, Eigen::Vector3d(90, 75, 0), 300.0, [&](const auto& found) {
         CHECK(found.crossing.count == kMostCountedPairs);
         CHECK(!found.crossing.complete);
         for (std::uint64_t k = 0; k < found.crossing.kept(); ++k)
             CHECK((found.crossing.lowest[k] == std::array<std::uint64_t, 2>{k, cells + k}));
         CHECK(found.touching.count == 0 && found.touching.complete);
-    }
+    });
 }
 
 // Fans of triangles around one vertex, their other corners at random points
@@ -297,16 +295,7 @@ void check_touching_assembly() {
         if (shells.of_face[f] != shells.of_face[g]) marked[f] = marked[g] = true;
     CHECK(expected.touching.size() > 8 * kMostCountedPairs);
     CHECK(!expected.crossing.empty());
-    const auto view = mesh.view();
-    polymass::core::SerialTaskRunner serial;
-    polymass_test::ReversedTaskRunner reversed;
-    for (polymass::core::TaskRunner* runner :
-         {static_cast<polymass::core::TaskRunner*>(&serial),
-          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, top, 10.0, *runner,
-                                                     std::pmr::get_default_resource());
-        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
-            surface, &shells, *runner, std::pmr::get_default_resource());
+    on_each_runner(mesh, &shells, top, 10.0, [&](const auto& found) {
         CHECK(agrees(found.crossing, expected.crossing));
         CHECK(agrees(found.touching, expected.touching));
         std::size_t wrong_marks = 0;
@@ -315,7 +304,7 @@ void check_touching_assembly() {
         CHECK(wrong_marks == 0);
         if (wrong_marks)
             std::fprintf(stderr, "touching assembly: %zu triangles marked wrongly\n", wrong_marks);
-    }
+    });
     std::printf(
         "  %d touching cubes, a crossing cube and a coinciding box: %zu pairs crossing, "
         "%zu touching\n",
