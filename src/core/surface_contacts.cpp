@@ -245,11 +245,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         // The shared corner first.
         const Triangle p = surface.triangle(i, shared.at_first);
         const Triangle q = surface.triangle(j, shared.at_second);
-        if (shared.count == 0 && !touching_matters(i, j, pair, touching)) {
-            add(crossing_or_coinciding(p, q), i, j, pair, crossing, touching);
-            return;
-        }
-        add(triangle_contact(p, q, shared.count == 1), i, j, pair, crossing, touching);
+        // One call of add: two had it left out of line.
+        const Contact contact = shared.count == 0 && !touching_matters(i, j, pair, touching)
+                                    ? crossing_or_coinciding(p, q)
+                                    : triangle_contact(p, q, shared.count == 1);
+        add(contact, i, j, pair, crossing, touching);
     };
     // Triangles i and j, neither with copies. Inlined into the search: its
     // pairs are mostly neighbours that add_nothing decides, for which a call

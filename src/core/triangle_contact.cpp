@@ -332,8 +332,10 @@ Contact shared_corner_contact(const Triangle& p, const Triangle& q) {
 }
 
 // The triangles' contact from orientation predicates (steps 1 to 5 of
-// docs/exact-predicates.md), without a shared corner.
-Contact contact_by_orientations(const Triangle& p, const Triangle& q) {
+// docs/exact-predicates.md), without a shared corner. Inlined into both
+// callers, as it was into triangle_contact before crossing_or_coinciding.
+__attribute__((always_inline)) inline Contact contact_by_orientations(const Triangle& p,
+                                                                      const Triangle& q) {
     const Signs p_sides = sides(q, p);
     if (all_strictly_one_side(p_sides)) return Contact::none;
     const Signs q_sides = sides(p, q);
