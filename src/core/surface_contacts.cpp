@@ -161,6 +161,21 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
         }
     };
 
+    // Whether telling touching from none, for the pair of triangles i and j
+    // (their faces `pair`), could change the finding: the touching pairs
+    // still want it, or it would mark a triangle touching another shell
+    // that is not yet marked. Past the stop of touching pairs, an assembly
+    // resting on itself has every triangle marked by its first touching
+    // pair, and its other pairs need only say whether they cross (a mark
+    // read unset by a race only costs the full test).
+    auto touching_matters = [&](std::uint32_t i, std::uint32_t j, const FacePair& pair,
+                                const PairCollector& touching) {
+        if (touching.wants(pair)) return true;
+        if (!nesting || shell_of(i) == shell_of(j)) return false;
+        return !touches_other_shell[surface.lowest_copy(i)].load(std::memory_order_relaxed) ||
+               !touches_other_shell[surface.lowest_copy(j)].load(std::memory_order_relaxed);
+    };
+
     // Per shape (its lowest triangle), with shells: whether two of its
     // copies lie on one shell.
     std::pmr::vector<std::uint8_t> copies_share_a_shell(shells ? surface.size() : 0, 0, memory);
@@ -228,9 +243,13 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
             return;
         }
         // The shared corner first.
-        add(triangle_contact(surface.triangle(i, shared.at_first),
-                             surface.triangle(j, shared.at_second), shared.count == 1),
-            i, j, pair, crossing, touching);
+        const Triangle p = surface.triangle(i, shared.at_first);
+        const Triangle q = surface.triangle(j, shared.at_second);
+        // One call of add: two had it left out of line.
+        const Contact contact = shared.count == 0 && !touching_matters(i, j, pair, touching)
+                                    ? crossing_or_coinciding(p, q)
+                                    : triangle_contact(p, q, shared.count == 1);
+        add(contact, i, j, pair, crossing, touching);
     };
     // Triangles i and j, neither with copies. Inlined into the search: its
     // pairs are mostly neighbours that add_nothing decides, for which a call

@@ -6,7 +6,10 @@
 // tests as each triangle has neighbours. Each candidate is decided with exact
 // predicates (triangle_contact.hpp). Faces that share an edge meet there by
 // construction and are not compared; faces that share one vertex are
-// compared for crossing only.
+// compared for crossing only. Past the stop of the touching count, a pair
+// whose touching would neither be kept nor mark a triangle (touches_other_shell
+// already set for both, or one shell) is asked only whether it crosses or
+// coincides, which faces resting on each other answer from their extents.
 #pragma once
 
 #include <atomic>

@@ -243,6 +243,28 @@ Contact contact_in_plane(const Triangle& p, const Triangle& q, int plane_axis, d
     return meets(flat(p, s), flat(q, t)) ? Contact::touching : Contact::none;
 }
 
+// The exact coordinate box of a triangle.
+struct Bounds {
+    Eigen::Array3d low, high;
+
+    explicit Bounds(const Triangle& t)
+        : low(t[0].array().min(t[1].array()).min(t[2].array())),
+          high(t[0].array().max(t[1].array()).max(t[2].array())) {}
+};
+
+bool boxes_disjoint(const Bounds& p, const Bounds& q) {
+    return ((p.high < q.low) || (q.high < p.low)).any();
+}
+
+// The first axis from `first` on on which overlapping boxes meet in one
+// value only (one triangle at x <= c, the other at x >= c), or 3 when none
+// does.
+int axis_met_once(const Bounds& p, const Bounds& q, int first = 0) {
+    int axis = first;
+    while (axis < 3 && p.high[axis] != q.low[axis] && q.high[axis] != p.low[axis]) ++axis;
+    return axis;
+}
+
 // Decides the triangles from their exact coordinate extents when these are
 // disjoint on an axis (none), or meet there in one value c only (one lies
 // at x <= c, the other at x >= c): then the triangles cannot cross, they
@@ -252,22 +274,19 @@ Contact contact_in_plane(const Triangle& p, const Triangle& q, int plane_axis, d
 // predicate. Returns false, deciding nothing, when no axis does either.
 bool decided_by_extents(const Triangle& p, const Triangle& q, bool shared_corner,
                         Contact& contact) {
-    const Eigen::Array3d p_low = p[0].array().min(p[1].array()).min(p[2].array());
-    const Eigen::Array3d p_high = p[0].array().max(p[1].array()).max(p[2].array());
-    const Eigen::Array3d q_low = q[0].array().min(q[1].array()).min(q[2].array());
-    const Eigen::Array3d q_high = q[0].array().max(q[1].array()).max(q[2].array());
-    if (((p_high < q_low) || (q_high < p_low)).any()) {
+    const Bounds p_box(p), q_box(q);
+    if (boxes_disjoint(p_box, q_box)) {
         contact = Contact::none;
         return true;
     }
-    int axis = 0;
-    while (axis < 3 && p_high[axis] != q_low[axis] && q_high[axis] != p_low[axis]) ++axis;
+    const int axis = axis_met_once(p_box, q_box);
     if (axis == 3) return false;
     // Triangles meeting at a shared vertex are reported only if they cross.
     contact = shared_corner
                   ? Contact::none
-                  : contact_in_plane(p, q, axis,
-                                     p_high[axis] == q_low[axis] ? p_high[axis] : p_low[axis]);
+                  : contact_in_plane(
+                        p, q, axis,
+                        p_box.high[axis] == q_box.low[axis] ? p_box.high[axis] : p_box.low[axis]);
     return true;
 }
 
@@ -312,11 +331,11 @@ Contact shared_corner_contact(const Triangle& p, const Triangle& q) {
     return contact == Contact::crossing ? contact : Contact::none;
 }
 
-}  // namespace
-
-Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corner) {
-    if (Contact contact{}; decided_by_extents(p, q, shared_corner, contact)) return contact;
-    if (shared_corner) return shared_corner_contact(p, q);
+// The triangles' contact from orientation predicates (steps 1 to 5 of
+// docs/exact-predicates.md), without a shared corner. Inlined into both
+// callers, as it was into triangle_contact before crossing_or_coinciding.
+__attribute__((always_inline)) inline Contact contact_by_orientations(const Triangle& p,
+                                                                      const Triangle& q) {
     const Signs p_sides = sides(q, p);
     if (all_strictly_one_side(p_sides)) return Contact::none;
     const Signs q_sides = sides(p, q);
@@ -331,6 +350,37 @@ Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corne
     const bool meet =
         p_straddles ? touches_on_plane(q, q_sides, p) : touches_on_plane(p, p_sides, q);
     return meet ? Contact::touching : Contact::none;
+}
+
+}  // namespace
+
+Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corner) {
+    if (Contact contact{}; decided_by_extents(p, q, shared_corner, contact)) return contact;
+    return shared_corner ? shared_corner_contact(p, q) : contact_by_orientations(p, q);
+}
+
+Contact crossing_or_coinciding(const Triangle& p, const Triangle& q) {
+    const Bounds p_box(p), q_box(q);
+    if (boxes_disjoint(p_box, q_box)) return Contact::none;
+    const int axis = axis_met_once(p_box, q_box);
+    if (axis == 3) {
+        const Contact contact = contact_by_orientations(p, q);
+        return contact == Contact::touching ? Contact::none : contact;
+    }
+    // One triangle at x <= c, the other at x >= c: they do not cross, and
+    // coincide only when both lie in the plane x = c (both flat on the axis)
+    // and their extents there overlap in more than a value on both other
+    // axes (else they have no common area).
+    if (p_box.low[axis] != p_box.high[axis] || q_box.low[axis] != q_box.high[axis] ||
+        axis_met_once(p_box, q_box, axis + 1) != 3)
+        return Contact::none;
+    const Projection projection = dropping_axis[axis];
+    const int p_turn = projected_orientation(p, projection);
+    const int q_turn = projected_orientation(q, projection);
+    return p_turn == q_turn && interiors_overlap(FlatPiece(p, projection, p_turn),
+                                                 FlatPiece(q, projection, q_turn))
+               ? Contact::coinciding
+               : Contact::none;
 }
 
 bool is_degenerate(const Triangle& t) {

@@ -35,6 +35,15 @@ using Triangle = std::array<Eigen::Vector3d, 3>;
 // not passed here.
 Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corner);
 
+// What triangle_contact(p, q, false) answers, with touching answered none:
+// for a caller to whom touching no longer matters (its report of touching
+// pairs is full, and what the pair would mark is marked). Triangles whose
+// extents meet in one value on an axis (faces of parts resting on each
+// other) then cost a few comparisons, and an orientation or two when both
+// lie in one axis-aligned plane, where the full answer tested how their
+// pieces in that plane meet.
+Contact crossing_or_coinciding(const Triangle& p, const Triangle& q);
+
 // True when the three corners are collinear (exactly).
 bool is_degenerate(const Triangle& t);
 

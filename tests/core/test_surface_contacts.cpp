@@ -10,8 +10,9 @@
 // them (coinciding copies on two shells cross, on one they touch, and copies on the same vertices
 // in the same turn cross wherever they are); fans of triangles around one
 // vertex, and two triangles folded over each other in one plane around a
-// shared vertex (no pair: only crossing counts there). The reference tests all pairs with the same
-// exact predicate (test_triangle_contact checks that one).
+// shared vertex (no pair: only crossing counts there); an assembly of touching cubes, past the
+// count's stop, with a crossing cube and coinciding faces late. The reference tests all pairs with
+// the same exact predicate (test_triangle_contact checks that one).
 #include "core/surface_contacts.hpp"
 
 #include "check.hpp"
@@ -105,21 +106,29 @@ bool agrees(const PairFinding& found, const std::vector<std::array<std::uint64_t
     return true;
 }
 
-void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Shells* shells) {
-    const Reference expected = test_every_pair(mesh, shells);
+// The search's contacts on `mesh`, with its pieces in order and in reverse,
+// each given to `check`.
+template <class Check>
+void on_each_runner(const TestMesh& mesh, const polymass::core::Shells* shells,
+                    const Eigen::Vector3d& reference, double size, const Check& check) {
     const auto view = mesh.view();
-    Eigen::AlignedBox3d box;
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) box.extend(mesh.vertex(v));
     polymass::core::SerialTaskRunner serial;
     polymass_test::ReversedTaskRunner reversed;
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, box.center(),
-                                                     box.diagonal().norm(), *runner,
+        const polymass::core::IndexedSurface surface(view, nullptr, reference, size, *runner,
                                                      std::pmr::get_default_resource());
-        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
-            surface, shells, *runner, std::pmr::get_default_resource());
+        check(polymass::core::find_contacts(surface, shells, *runner,
+                                            std::pmr::get_default_resource()));
+    }
+}
+
+void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Shells* shells) {
+    const Reference expected = test_every_pair(mesh, shells);
+    Eigen::AlignedBox3d box;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) box.extend(mesh.vertex(v));
+    on_each_runner(mesh, shells, box.center(), box.diagonal().norm(), [&](const auto& found) {
         const bool crossing = agrees(found.crossing, expected.crossing);
         const bool touching = agrees(found.touching, expected.touching);
         if (!crossing || !touching)
@@ -131,7 +140,7 @@ void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Sh
                          touching ? "" : "; the touching pairs differ");
         CHECK(crossing);
         CHECK(touching);
-    }
+    });
 }
 
 // Pairs of crossing triangles, each pair in a cell of a grid with a third
@@ -158,23 +167,13 @@ void check_many_pieces() {
     }
     for (const auto& triangles : {flat, upright, apart})
         for (const auto& t : triangles) mesh.add_face({t[0], t[1], t[2]});
-    const auto view = mesh.view();
-    polymass::core::SerialTaskRunner serial;
-    polymass_test::ReversedTaskRunner reversed;
-    for (polymass::core::TaskRunner* runner :
-         {static_cast<polymass::core::TaskRunner*>(&serial),
-          static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(90, 75, 0),
-                                                     300.0, *runner,
-                                                     std::pmr::get_default_resource());
-        const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
-            surface, nullptr, *runner, std::pmr::get_default_resource());
+    on_each_runner(mesh, nullptr, Eigen::Vector3d(90, 75, 0), 300.0, [&](const auto& found) {
         CHECK(found.crossing.count == kMostCountedPairs);
         CHECK(!found.crossing.complete);
         for (std::uint64_t k = 0; k < found.crossing.kept(); ++k)
             CHECK((found.crossing.lowest[k] == std::array<std::uint64_t, 2>{k, cells + k}));
         CHECK(found.touching.count == 0 && found.touching.complete);
-    }
+    });
 }
 
 // Fans of triangles around one vertex, their other corners at random points
@@ -268,9 +267,54 @@ void check_folds_at_a_shared_corner() {
     }
 }
 
+// Separate cubes stacked in a grid, each resting on its neighbours: far
+// more touching pairs than the count keeps, so that past its stop a pair
+// between two triangles already marked as touching another shell is asked
+// only whether it crosses or coincides (crossing_or_coinciding). Among them,
+// late in face order, a small cube crossing the top of the last one and a
+// box around the first, twice its height, whose faces coincide with its
+// faces in part (on two shells: crossing). The findings must be those of a
+// test of every pair, and the marks of triangles touching another shell
+// those its touching pairs give.
+void check_touching_assembly() {
+    constexpr int side = 5;
+    TestMesh mesh;
+    const Eigen::Vector3d far(1e3, -2e3, 3e3), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    for (int k = 0; k < side * side * side; ++k) {
+        const Eigen::Vector3d at(k % side, k / side % side, k / side / side);
+        polymass_test::append(mesh, polymass_test::box_mesh(far + at, x, y, z, true));
+    }
+    const Eigen::Vector3d top = far + Eigen::Vector3d::Constant(side - 1);
+    polymass_test::append(mesh, polymass_test::box_mesh(top + Eigen::Vector3d(0.25, 0.25, 0.5),
+                                                        0.5 * x, 0.5 * y, 0.5 * z, true));
+    polymass_test::append(mesh, polymass_test::box_mesh(far, x, 2 * y, 2 * z, true));
+    const polymass::core::Shells shells = polymass_test::shells_of(mesh);
+    const Reference expected = test_every_pair(mesh, &shells);
+    std::vector<bool> marked(mesh.indices.size() / 3, false);
+    for (const auto& [f, g] : expected.touching)
+        if (shells.of_face[f] != shells.of_face[g]) marked[f] = marked[g] = true;
+    CHECK(expected.touching.size() > 8 * kMostCountedPairs);
+    CHECK(!expected.crossing.empty());
+    on_each_runner(mesh, &shells, top, 10.0, [&](const auto& found) {
+        CHECK(agrees(found.crossing, expected.crossing));
+        CHECK(agrees(found.touching, expected.touching));
+        std::size_t wrong_marks = 0;
+        for (std::size_t t = 0; t < marked.size(); ++t)
+            wrong_marks += marked[t] != (found.touches_other_shell[t].load() != 0);
+        CHECK(wrong_marks == 0);
+        if (wrong_marks)
+            std::fprintf(stderr, "touching assembly: %zu triangles marked wrongly\n", wrong_marks);
+    });
+    std::printf(
+        "  %d touching cubes, a crossing cube and a coinciding box: %zu pairs crossing, "
+        "%zu touching\n",
+        side * side * side, expected.crossing.size(), expected.touching.size());
+}
+
 }  // namespace
 
 int main() {
+    check_touching_assembly();
     check_folds_at_a_shared_corner();
     check_many_pieces();
     check_fans();

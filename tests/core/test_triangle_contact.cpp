@@ -28,6 +28,7 @@ namespace {
 
 using Eigen::Vector3d;
 using polymass::core::Contact;
+using polymass::core::crossing_or_coinciding;
 using polymass::core::is_degenerate;
 using polymass::core::Triangle;
 using polymass::core::triangle_contact;
@@ -56,6 +57,12 @@ Triangle reversed(Triangle t) {
     return t;
 }
 
+// What crossing_or_coinciding answers where triangle_contact (without a
+// shared corner) answers `contact`.
+Contact unless_touching(Contact contact) {
+    return contact == Contact::touching ? Contact::none : contact;
+}
+
 // The answer must not depend on which triangle comes first, on the corner the
 // triangles start at (except the shared corner, which stays first), or on
 // their orientations but through whether they face the same way (expected)
@@ -74,6 +81,9 @@ int variants_disagreeing(const Triangle& p, const Triangle& q, bool shared, Cont
                 const Contact want = flip == 1 || flip == 2 ? expected_opposite : expected;
                 wrong += triangle_contact(a, b, shared) != want;
                 wrong += triangle_contact(b, a, shared) != want;
+                if (shared) continue;
+                wrong += crossing_or_coinciding(a, b) != unless_touching(want);
+                wrong += crossing_or_coinciding(b, a) != unless_touching(want);
             }
         }
     }
@@ -540,6 +550,15 @@ void random_triangles() {
             if (got != expected && wrong[k] <= 3)
                 std::fprintf(stderr, "  random pair %ld %s (kind %d): got %s, expected %s\n", pairs,
                              placements[k].what, kind, name(got), name(expected));
+            if (!shared) {
+                const Contact unless = crossing_or_coinciding(tp, tq);
+                wrong[k] += unless != unless_touching(expected);
+                if (unless != unless_touching(expected) && wrong[k] <= 3)
+                    std::fprintf(stderr,
+                                 "  random pair %ld %s (kind %d): crossing_or_coinciding %s, "
+                                 "expected %s\n",
+                                 pairs, placements[k].what, kind, name(unless), name(expected));
+            }
             if (k == 0 && pairs % 4 == 0)
                 disagreeing +=
                     variants_disagreeing(tp, tq, shared, got,
