@@ -6,8 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/approximation_bound.hpp"
-#include "core/principal_axes.hpp"
+#include "core/mass_properties.hpp"
 #include "core/rigid_body.hpp"
 #include "struct_io.hpp"
 
@@ -16,13 +15,14 @@ namespace {
 
 using RowMajor3d = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
-// A NULL mass description means unit density.
+// The mass `mass` gives (NULL: unit density), checked.
 int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass,
-                       polymass_mass_desc& out) {
-    out = StructVersions<polymass_mass_desc>::defaults();
+                       core::GivenMass& out) {
+    out = core::GivenMass{};
     if (!mass) return POLYMASS_OK;
     if (const int32_t status = check_struct(context, mass, "mass")) return status;
-    const polymass_mass_desc read = read_struct(*mass, out);
+    const polymass_mass_desc read =
+        read_struct(*mass, StructVersions<polymass_mass_desc>::defaults());
     const bool from_density = read.mass_mode == POLYMASS_MASS_FROM_DENSITY;
     if (!from_density && read.mass_mode != POLYMASS_MASS_FROM_TOTAL)
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
@@ -34,7 +34,7 @@ int32_t read_mass_desc(polymass_context* context, const polymass_mass_desc* mass
         return context->fail(POLYMASS_ERROR_INVALID_ARGUMENT,
                              "mass->%s is %g; it must be positive and finite",
                              from_density ? "density" : "mass", value);
-    out = read;
+    out = core::GivenMass{!from_density, value};
     return POLYMASS_OK;
 }
 
@@ -58,15 +58,11 @@ bool result_in_range(const polymass_mass_properties& p) {
            all_finite(p.principal_moments) && all_finite(p.principal_axes);
 }
 
-// The body's properties, written to *out when they fit in doubles. `moments`
-// are those the body was computed from, for the error bounds.
+// The properties, written to *out when they fit in doubles.
 int32_t write_body(polymass_mass_properties* out, polymass_context* context,
-                   const core::RigidBody& body, const core::Moments& moments, double surface_area,
-                   uint32_t warnings, const core::ApproximationBound& approximation = {},
-                   bool mass_given = false) {
-    const core::PrincipalAxes principal = core::principal_axes(body.inertia);
-    const core::ResultBounds bounds = core::widen(moments.result_bounds(body, principal),
-                                                  approximation, body, mass_given, principal);
+                   const core::MassProperties& properties, double surface_area, uint32_t warnings) {
+    const core::RigidBody& body = properties.body;
+    const core::ResultBounds& bounds = properties.bounds;
     polymass_mass_properties result{};
     result.struct_size = sizeof result;
     result.warnings = warnings;
@@ -76,9 +72,9 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
     result.surface_area = surface_area;
     copy_vector(body.center_of_mass, result.center_of_mass);
     copy_matrix(body.inertia, result.inertia);
-    copy_matrix(core::inertia_about(body, Eigen::Vector3d::Zero()), result.inertia_origin);
-    copy_vector(principal.moments, result.principal_moments);
-    copy_matrix(principal.axes, result.principal_axes);
+    copy_matrix(properties.inertia_about_origin, result.inertia_origin);
+    copy_vector(properties.principal.moments, result.principal_moments);
+    copy_matrix(properties.principal.axes, result.principal_axes);
     result.error_bound_volume = bounds.volume;
     result.error_bound_center_of_mass = bounds.center_of_mass;
     result.error_bound_inertia = bounds.inertia;
@@ -99,19 +95,10 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
 
 int32_t mass_properties(polymass_mass_properties* out, polymass_context* context,
                         const core::Body& answered, const polymass_mass_desc* mass) {
-    polymass_mass_desc body_desc;
-    if (const int32_t status = read_mass_desc(context, mass, body_desc)) return status;
-    const double density = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL
-                               ? body_desc.mass / answered.integrals.volume
-                               : body_desc.density;
-    const bool mass_given = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL;
-    core::RigidBody body = core::rigid_body(answered.integrals, answered.reference, density);
-    // A given mass is the answer's, to the bit: (mass / volume) · volume rounds.
-    if (mass_given) body.mass = body_desc.mass;
-    const core::Moments moments =
-        core::Moments::of_solid(answered.integrals, answered.bounds, answered.reference, density);
-    return write_body(out, context, body, moments, answered.surface_area, answered.warnings,
-                      answered.approximation, mass_given);
+    core::GivenMass given;
+    if (const int32_t status = read_mass_desc(context, mass, given)) return status;
+    return write_body(out, context, core::mass_properties(answered, given), answered.surface_area,
+                      answered.warnings);
 }
 
 int32_t weight_moments(polymass_context* context, const core::Moments& moments,
@@ -120,18 +107,14 @@ int32_t weight_moments(polymass_context* context, const core::Moments& moments,
         out = moments;
         return POLYMASS_OK;
     }
-    polymass_mass_desc body_desc;
-    if (const int32_t status = read_mass_desc(context, mass, body_desc)) return status;
+    core::GivenMass given;
+    if (const int32_t status = read_mass_desc(context, mass, given)) return status;
     if (!(moments.volume > 0.0 && moments.mass.volume > 0.0))
         return context->fail(POLYMASS_ERROR_ZERO_VOLUME,
                              "the moments have volume %g and mass %g; a density or mass applies "
                              "to a body of positive volume and mass",
                              moments.volume, moments.mass.volume);
-    // Both rescale the whole mass distribution: its mean density, or its total.
-    const double factor = body_desc.mass_mode == POLYMASS_MASS_FROM_TOTAL
-                              ? body_desc.mass / moments.mass.volume
-                              : body_desc.density * (moments.volume / moments.mass.volume);
-    out = moments.weighted(factor);
+    out = core::weighed(moments, given);
     return POLYMASS_OK;
 }
 
@@ -145,7 +128,7 @@ int32_t moments_mass_properties(polymass_mass_properties* out, polymass_context*
                              "body of positive volume and mass (a difference larger than what "
                              "it is taken from?)",
                              weighted.volume, weighted.mass.volume);
-    return write_body(out, context, weighted.rigid_body(), weighted,
+    return write_body(out, context, core::mass_properties(weighted),
                       std::numeric_limits<double>::quiet_NaN(), 0);
 }
 
