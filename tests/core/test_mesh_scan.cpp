@@ -95,18 +95,19 @@ void check_pieces(const char* name, const polymass::core::MeshView<Scalar, Index
 }
 
 // Positions (xyz per vertex, `stride` coordinates apart) and triangles over
-// every vertex but the unused ones.
+// every vertex but the unused ones, listed `copies` times over.
 template <class Scalar>
 void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t stride,
-                  const std::vector<bool>& unused) {
+                  const std::vector<bool>& unused, std::size_t copies) {
     const std::size_t vertices = unused.size();
     std::vector<Scalar> positions(vertices * stride, Scalar(7));
     for (std::size_t v = 0; v < vertices; ++v)
         for (int axis = 0; axis < 3; ++axis)
             positions[v * stride + axis] = Scalar(xyz[3 * v + axis]);
     std::vector<std::uint32_t> indices;
-    for (std::size_t v = 0; v < vertices; ++v)
-        if (!unused[v]) indices.push_back(std::uint32_t(v));
+    for (std::size_t copy = 0; copy < copies; ++copy)
+        for (std::size_t v = 0; v < vertices; ++v)
+            if (!unused[v]) indices.push_back(std::uint32_t(v));
     while (indices.size() % 3 != 0) indices.push_back(indices.back());
 
     // Vertex by vertex, keeping the first of equal values.
@@ -181,9 +182,9 @@ void check_bounds(const char* name, const std::vector<double>& xyz, std::size_t 
 
 template <class Scalar>
 void check_layouts(const char* name, const std::vector<double>& xyz,
-                   const std::vector<bool>& unused) {
-    check_bounds<Scalar>(name, xyz, 3, unused);
-    check_bounds<Scalar>(name, xyz, 5, unused);
+                   const std::vector<bool>& unused, std::size_t copies) {
+    check_bounds<Scalar>(name, xyz, 3, unused, copies);
+    check_bounds<Scalar>(name, xyz, 5, unused, copies);
 }
 
 }  // namespace
@@ -191,15 +192,20 @@ void check_layouts(const char* name, const std::vector<double>& xyz,
 int main() {
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
-    // 300,000 vertices: several parts of the index array and of the vertices.
-    for (std::size_t vertices : {5, 64, 200, 1000, 300000}) {
+    // The scan's parts hold 2^18 indices and 2^16 vertices: 66,536 vertices
+    // (a whole part, then one ending in a partial block) with their indices
+    // listed five times over (two parts of the index array, each marking
+    // vertices the other marks too) reach every join of parts. (The test
+    // runs unoptimised in the dev build: each vertex costs.)
+    for (std::size_t vertices : {5, 64, 200, 1000, 66536}) {
+        const std::size_t copies = vertices > 65536 ? 5 : 1;
         std::vector<double> xyz(3 * vertices);
         for (double& c : xyz) c = coordinate(random);
         std::vector<bool> none(vertices, false), some(vertices, false);
         for (std::size_t v = 3; v < vertices; v += 37) some[v] = true;
-        check_layouts<double>("random", xyz, none);
-        check_layouts<float>("random, float", xyz, none);
-        check_layouts<double>("random, some unused", xyz, some);
+        check_layouts<double>("random", xyz, none, copies);
+        check_layouts<float>("random, float", xyz, none, copies);
+        check_layouts<double>("random, some unused", xyz, some, copies);
 
         // Bounds of zero, reached by zeros of both signs: x ≥ 0 with −0 first
         // and +0 later, y ≤ 0 with +0 first, z ≥ 0 with +0 first.
@@ -214,14 +220,14 @@ int main() {
             zeros[3 * v + 1] = v == vertices / 3 ? 0.0 : -0.0;
             zeros[3 * v + 2] = v == vertices / 3 ? 0.0 : -0.0;
         }
-        check_layouts<double>("zeros", zeros, none);
-        check_layouts<float>("zeros, float", zeros, none);
-        check_layouts<double>("zeros, some unused", zeros, some);
+        check_layouts<double>("zeros", zeros, none, copies);
+        check_layouts<float>("zeros, float", zeros, none, copies);
+        check_layouts<double>("zeros, some unused", zeros, some, copies);
 
         // A non-finite vertex: its block is read vertex by vertex.
         std::vector<double> infinite = zeros;
         infinite[3 * (vertices / 2) + 1] = std::numeric_limits<double>::infinity();
-        check_layouts<double>("an infinite coordinate", infinite, none);
+        check_layouts<double>("an infinite coordinate", infinite, none, copies);
     }
     return polymass_test::finish("test_mesh_scan");
 }
