@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "mesh_view.hpp"
+#include "task_runner.hpp"
 
 namespace polymass::core {
 
-inline constexpr std::size_t kFacesPerBlock = std::size_t{1} << 16;
+inline constexpr std::size_t kFacesPerBlock = kItemsPerBlock;
 
 // Where each block's first face starts in the index array.
 template <class Scalar, class Index>

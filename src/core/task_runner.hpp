@@ -35,16 +35,36 @@ public:
     std::size_t concurrency() const override { return 1; }
 };
 
+// How many items a block of a pass cut in fixed blocks holds: enough work a
+// task to outweigh handing it out, and a million items make blocks enough to
+// share among threads.
+inline constexpr std::size_t kItemsPerBlock = std::size_t{1} << 16;
+
+// How many blocks of block_size items `count` items make (the last maybe shorter).
+inline std::size_t block_count(std::size_t count, std::size_t block_size) {
+    return (count + block_size - 1) / block_size;
+}
+
+// Calls visit(block, i) for each i in [0, count), in blocks of block_size
+// (block i / block_size) run as tasks on `tasks`, each block's items in
+// ascending order: for passes that keep results per block and join them in
+// block order.
+template <class Visit>
+void for_each_in_numbered_blocks(std::size_t count, std::size_t block_size, TaskRunner& tasks,
+                                 const Visit& visit) {
+    tasks.run(block_count(count, block_size), [&](std::size_t block) {
+        const std::size_t end = std::min(count, (block + 1) * block_size);
+        for (std::size_t i = block * block_size; i < end; ++i) visit(block, i);
+    });
+}
+
 // Calls visit(i) for each i in [0, count), in blocks of block_size run as
 // tasks on `tasks`: for passes whose items are independent of one another.
 template <class Visit>
 void for_each_in_blocks(std::size_t count, std::size_t block_size, TaskRunner& tasks,
                         const Visit& visit) {
-    const std::size_t blocks = (count + block_size - 1) / block_size;
-    tasks.run(blocks, [&](std::size_t block) {
-        const std::size_t end = std::min(count, (block + 1) * block_size);
-        for (std::size_t i = block * block_size; i < end; ++i) visit(i);
-    });
+    for_each_in_numbered_blocks(count, block_size, tasks,
+                                [&](std::size_t, std::size_t i) { visit(i); });
 }
 
 }  // namespace polymass::core

@@ -120,15 +120,12 @@ void weld_share(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, std::
     }
 }
 
-// At least this many vertices a thread, or the weld runs on one; and the
-// parts its hashes are found and dealt in.
-constexpr std::size_t kVerticesPerPart = std::size_t{1} << 16;
-
-// The exact weld in shares on `tasks` (a share a thread; the answer is the
-// same for any number of shares). Every used vertex is hashed once, in
-// parts, and dealt to its share, in index order (the order a share's pass
-// reads them in: with a few shares, almost every position in turn). Each
-// share allocates its own table, taken from `memory` one thread at a time.
+// The exact weld in shares on `tasks` (a share a thread, each of at least a
+// block of used vertices; the answer is the same for any number of shares).
+// Every used vertex is hashed once, in blocks of kItemsPerBlock, and dealt to
+// its share, in index order (the order a share's pass reads them in: with a
+// few shares, almost every position in turn). Each share allocates its own
+// table, taken from `memory` one thread at a time.
 template <class Scalar, class Index>
 void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                 std::pmr::vector<std::uint32_t>& representative, TaskRunner& tasks,
@@ -139,7 +136,7 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     };
     const std::size_t count = representative.size();
     const std::size_t shares = std::max<std::size_t>(
-        1, std::min(tasks.concurrency(), scan.used_vertex_count / kVerticesPerPart));
+        1, std::min(tasks.concurrency(), scan.used_vertex_count / kItemsPerBlock));
     if (shares == 1) {
         weld_share(
             mesh, scan, count, [](std::size_t item) { return std::uint32_t(item); }, hash_of,
@@ -150,35 +147,32 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     const auto share_of = [shares](std::uint32_t high_half) {
         return std::size_t((std::uint64_t(high_half) * shares) >> 32);
     };
-    const std::size_t parts = (count + kVerticesPerPart - 1) / kVerticesPerPart;
-    const auto each_used_of_part = [&](std::size_t part, auto&& visit) {
-        const std::size_t first = part * kVerticesPerPart;
-        for (std::size_t vertex = first; vertex < std::min(count, first + kVerticesPerPart);
-             ++vertex)
-            if (scan.is_used(vertex)) visit(std::uint32_t(vertex));
+    const std::size_t blocks = block_count(count, kItemsPerBlock);
+    const auto each_used = [&](auto&& visit) {
+        for_each_in_numbered_blocks(count, kItemsPerBlock, tasks,
+                                    [&](std::size_t block, std::size_t vertex) {
+                                        if (scan.is_used(vertex))
+                                            visit(block, std::uint32_t(vertex));
+                                    });
     };
     ScratchBuffer<std::uint32_t> high_halves(count, memory);
-    // ends[part * shares + share]: the part's count, then where its next vertex goes.
-    std::pmr::vector<std::size_t> ends(parts * shares, 0, memory);
-    tasks.run(parts, [&](std::size_t part) {
-        each_used_of_part(part, [&](std::uint32_t vertex) {
-            high_halves[vertex] = std::uint32_t(hash_of(vertex) >> 32);
-            ++ends[part * shares + share_of(high_halves[vertex])];
-        });
+    // ends[block * shares + share]: the block's count, then where its next vertex goes.
+    std::pmr::vector<std::size_t> ends(blocks * shares, 0, memory);
+    each_used([&](std::size_t block, std::uint32_t vertex) {
+        high_halves[vertex] = std::uint32_t(hash_of(vertex) >> 32);
+        ++ends[block * shares + share_of(high_halves[vertex])];
     });
     std::pmr::vector<std::size_t> share_starts(shares + 1, memory);
     std::size_t dealt = 0;
     for (std::size_t share = 0; share < shares; ++share) {
         share_starts[share] = dealt;
-        for (std::size_t part = 0; part < parts; ++part)
-            dealt += std::exchange(ends[part * shares + share], dealt);
+        for (std::size_t block = 0; block < blocks; ++block)
+            dealt += std::exchange(ends[block * shares + share], dealt);
     }
     share_starts[shares] = dealt;
     ScratchBuffer<std::uint32_t> in_shares(dealt, memory);
-    tasks.run(parts, [&](std::size_t part) {
-        each_used_of_part(part, [&](std::uint32_t vertex) {
-            in_shares[ends[part * shares + share_of(high_halves[vertex])]++] = vertex;
-        });
+    each_used([&](std::size_t block, std::uint32_t vertex) {
+        in_shares[ends[block * shares + share_of(high_halves[vertex])]++] = vertex;
     });
     std::pmr::synchronized_pool_resource one_at_a_time(memory);
     tasks.run(shares, [&](std::size_t share) {
