@@ -1,10 +1,7 @@
 #include "mass_properties.hpp"
 
 #include <Eigen/Core>
-#include <algorithm>
-#include <cfloat>
 #include <cmath>
-#include <limits>
 
 #include "core/mass_properties.hpp"
 #include "core/rigid_body.hpp"
@@ -44,23 +41,9 @@ void copy_vector(const Eigen::Vector3d& vector, double (&out)[3]) {
     Eigen::Vector3d::Map(out) = vector;
 }
 
-// Every value finite (the surface area may be unknown: NaN), and mass and
-// moments not underflowed to zero or to subnormal numbers (which keep too few
-// digits).
-bool result_in_range(const polymass_mass_properties& p) {
-    const double scalars[] = {p.volume, p.mass, p.density};
-    // By magnitude: an unchecked non-solid can have negative moments.
-    const double largest_moment =
-        Eigen::Map<const Eigen::Vector3d>(p.principal_moments).cwiseAbs().maxCoeff();
-    return all_finite(scalars) && !std::isinf(p.surface_area) && p.mass >= DBL_MIN &&
-           p.density >= DBL_MIN && largest_moment >= DBL_MIN && all_finite(p.center_of_mass) &&
-           all_finite(p.inertia) && all_finite(p.inertia_origin) &&
-           all_finite(p.principal_moments) && all_finite(p.principal_axes);
-}
-
 // The properties, written to *out when they fit in doubles.
 int32_t write_body(polymass_mass_properties* out, polymass_context* context,
-                   const core::MassProperties& properties, double surface_area, uint32_t warnings) {
+                   const core::MassProperties& properties, uint32_t warnings) {
     const core::RigidBody& body = properties.body;
     const core::ResultBounds& bounds = properties.bounds;
     polymass_mass_properties result{};
@@ -69,7 +52,7 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
     result.volume = body.volume;
     result.mass = body.mass;
     result.density = body.density;
-    result.surface_area = surface_area;
+    result.surface_area = properties.surface_area;
     copy_vector(body.center_of_mass, result.center_of_mass);
     copy_matrix(body.inertia, result.inertia);
     copy_matrix(properties.inertia_about_origin, result.inertia_origin);
@@ -80,7 +63,7 @@ int32_t write_body(polymass_mass_properties* out, polymass_context* context,
     result.error_bound_inertia = bounds.inertia;
     result.error_bound_principal_moments = bounds.principal_moments;
     result.error_bound_principal_axes = bounds.principal_axes;
-    if (!(result_in_range(result)))
+    if (!core::fits_in_doubles(properties))
         return context->fail(
             POLYMASS_ERROR_OVERFLOW,
             "the mass properties do not fit in a double (mass %g, density %g, "
@@ -97,8 +80,7 @@ int32_t mass_properties(polymass_mass_properties* out, polymass_context* context
                         const core::Body& answered, const polymass_mass_desc* mass) {
     core::GivenMass given;
     if (const int32_t status = read_mass_desc(context, mass, given)) return status;
-    return write_body(out, context, core::mass_properties(answered, given), answered.surface_area,
-                      answered.warnings);
+    return write_body(out, context, core::mass_properties(answered, given), answered.warnings);
 }
 
 int32_t weight_moments(polymass_context* context, const core::Moments& moments,
@@ -128,8 +110,7 @@ int32_t moments_mass_properties(polymass_mass_properties* out, polymass_context*
                              "body of positive volume and mass (a difference larger than what "
                              "it is taken from?)",
                              weighted.volume, weighted.mass.volume);
-    return write_body(out, context, core::mass_properties(weighted),
-                      std::numeric_limits<double>::quiet_NaN(), 0);
+    return write_body(out, context, core::mass_properties(weighted), 0);
 }
 
 int32_t inertia_about(double* out, const polymass_mass_properties& properties,

@@ -1,5 +1,9 @@
 #include "mass_properties.hpp"
 
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
 #include "approximation_bound.hpp"
 
 namespace polymass::core {
@@ -26,7 +30,9 @@ MassProperties mass_properties(const Body& solid, const GivenMass& mass) {
     if (mass.total) body.mass = mass.value;
     const Moments moments =
         Moments::of_solid(solid.integrals, solid.bounds, solid.reference, density);
-    return with_bounds(body, moments, solid.approximation, mass.total);
+    MassProperties properties = with_bounds(body, moments, solid.approximation, mass.total);
+    properties.surface_area = solid.surface_area;
+    return properties;
 }
 
 Moments weighed(const Moments& moments, const GivenMass& mass) {
@@ -38,7 +44,20 @@ Moments weighed(const Moments& moments, const GivenMass& mass) {
 }
 
 MassProperties mass_properties(const Moments& moments) {
-    return with_bounds(moments.rigid_body(), moments, {}, false);
+    MassProperties properties = with_bounds(moments.rigid_body(), moments, {}, false);
+    properties.surface_area = std::numeric_limits<double>::quiet_NaN();
+    return properties;
+}
+
+bool fits_in_doubles(const MassProperties& properties) {
+    const RigidBody& body = properties.body;
+    const PrincipalAxes& principal = properties.principal;
+    return std::isfinite(body.volume) && std::isfinite(body.mass) && std::isfinite(body.density) &&
+           !std::isinf(properties.surface_area) && body.mass >= DBL_MIN &&
+           body.density >= DBL_MIN && principal.moments.cwiseAbs().maxCoeff() >= DBL_MIN &&
+           body.center_of_mass.allFinite() && body.inertia.allFinite() &&
+           properties.inertia_about_origin.allFinite() && principal.moments.allFinite() &&
+           principal.axes.allFinite();
 }
 
 }  // namespace polymass::core

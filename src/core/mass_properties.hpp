@@ -23,7 +23,8 @@ struct GivenMass {
 
 // A body's mass properties with their error bounds.
 struct MassProperties {
-    RigidBody body;  // inertia about the centre of mass
+    RigidBody body;             // inertia about the centre of mass
+    double surface_area = 0.0;  // NaN: unknown (moments do not keep the surface)
     Eigen::Matrix3d inertia_about_origin = Eigen::Matrix3d::Zero();
     PrincipalAxes principal;
     ResultBounds bounds;  // rounding, widened by an approximation's bound
@@ -40,5 +41,11 @@ Moments weighed(const Moments& moments, const GivenMass& mass);
 // The properties of a body given by its moments: mass, centre of mass and
 // inertia as weighted; density the mean density, mass / volume.
 MassProperties mass_properties(const Moments& moments);
+
+// Whether the properties can be answered in doubles: every value finite (the
+// surface area may be unknown), and the mass, the density and the largest
+// principal moment by magnitude (an unchecked non-solid can have negative
+// moments) normal numbers: zero or subnormal ones keep too few digits.
+bool fits_in_doubles(const MassProperties& properties);
 
 }  // namespace polymass::core
