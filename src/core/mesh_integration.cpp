@@ -5,7 +5,6 @@
 #include <cstring>
 
 #include "lanes.hpp"
-#include "mesh_scan.hpp"
 #include "polygon_integrals.hpp"
 #include "triangle_gather.hpp"
 #include "triangle_integrals.hpp"
@@ -235,17 +234,21 @@ public:
         batch_.indices = mesh.indices;
         for (int axis = 0; axis < 3; ++axis) batch_.reference[axis] = settings.reference[axis];
         batch_.inverse_unit = 1.0 / unit;  // a power of two: exact
+        if (settings.used_marks) {
+            batch_.marking = true;
+            batch_.used_marks = settings.used_marks->data();
+            batch_.vertex_count = mesh.vertex_count;
+        }
     }
 
     // Faces [begin, end) of an all-triangle mesh: whole batches now, the rest
-    // at finish(). Called again, for the faces from `end` on, only after whole
-    // batches.
+    // at finish(). Marking, it stops at a batch with an index out of range.
     void add_triangles(std::size_t begin, std::size_t end) {
         batch_.last_face = end;
         for (batch_.first_face = begin; end - batch_.first_face >= batch_capacity;
              batch_.first_face += batch_capacity) {
             batch_.count = batch_capacity;
-            flush_triangles();
+            if (!flush_triangles()) return;
         }
         batch_.count = end - batch_.first_face;
     }
@@ -284,21 +287,26 @@ public:
 
     // The last batch, full or not (even empty: it counts as a term).
     BlockSums finish() {
-        flush_triangles();
+        if (block_.indices_in_range) flush_triangles();
         return block_;
     }
 
 private:
-    void flush_triangles() {
+    // False when the batch's indices were found out of range (marking).
+    bool flush_triangles() {
         BatchResult batch_result;
-        gatherer_(batch_, gathered_);
-        kernel_(batch_, gathered_, batch_result);
-        block_.sums += batch_result.sums;
-        block_.surface_area += batch_result.surface_area;
-        block_.extents_squared += batch_result.extents_squared;
-        ++block_.summed_terms;
-        block_.degenerate_faces.merge(batch_result.degenerate_faces);
+        const bool in_range = gatherer_(batch_, gathered_);
+        if (in_range) {
+            kernel_(batch_, gathered_, batch_result);
+            block_.sums += batch_result.sums;
+            block_.surface_area += batch_result.surface_area;
+            block_.extents_squared += batch_result.extents_squared;
+            ++block_.summed_terms;
+            block_.degenerate_faces.merge(batch_result.degenerate_faces);
+        }
+        block_.indices_in_range = block_.indices_in_range && in_range;
         batch_.count = 0;
+        return in_range;
     }
 
     const IntegrationSettings& settings_;
@@ -362,13 +370,6 @@ private:
     std::size_t blocks_ = 0;
 };
 
-// With used marks: the triangles whose indices are checked and marked just
-// before they are integrated, a few dozen kilobytes of indices, read again
-// from the L1 or L2 cache. Whole batches but the last.
-constexpr std::size_t kMarkedTogether = 2048;
-static_assert(kMarkedTogether % batch_capacity == 0 && kFacesPerBlock % kMarkedTogether == 0,
-              "whole batches");
-
 // Blocks are run this many at a time, their sums kept on the stack until
 // they join the total in order.
 constexpr std::size_t blocks_per_round = 32;
@@ -404,17 +405,7 @@ IntegrationResult integrate_mesh(const MeshView<Scalar, Index>& mesh,
             const std::size_t end = std::min(begin + kFacesPerBlock, mesh.face_count);
             BlockIntegrator<Scalar, Index> integrator(mesh, settings, unit);
             if (mesh.all_triangles()) {
-                const std::size_t piece = settings.used_marks ? kMarkedTogether : kFacesPerBlock;
-                for (std::size_t first = begin; first < end; first += piece) {
-                    const std::size_t last = std::min(first + piece, end);
-                    if (settings.used_marks &&
-                        !mark_used_vertices(mesh, 3 * first, 3 * last, settings.used_marks->data(),
-                                            settings.instruction_set)) {
-                        sums[block].indices_in_range = false;
-                        return;
-                    }
-                    integrator.add_triangles(first, last);
-                }
+                integrator.add_triangles(begin, end);
                 sums[block] = integrator.finish();
                 return;
             }

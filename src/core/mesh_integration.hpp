@@ -28,9 +28,10 @@ struct IntegrationSettings {
     InstructionSet instruction_set = widest_instruction_set();
     // When set (all-triangle meshes only): the pass marks the vertices the
     // faces use here, as mark_used_vertices (mesh_scan.hpp) does, and checks
-    // the indices of each piece of faces before it reads their vertices - the
-    // scan's own pass over the index array, made while the indices are in the
-    // cache. addressable_vertices(mesh) bytes, zero to start with. (The
+    // the indices of each batch of faces before it reads their vertices - the
+    // scan's own pass over the index array, made by the gather that reads the
+    // indices anyway (triangle_gather.hpp). addressable_vertices(mesh) bytes,
+    // zero to start with. (The
     // vector, not its data: a mesh of no vertex has no marks, and its indices
     // must still be checked - every one is out of range.)
     std::pmr::vector<unsigned char>* used_marks = nullptr;

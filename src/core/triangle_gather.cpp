@@ -1,6 +1,8 @@
 #include "triangle_gather.hpp"
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #if defined(__x86_64__)
@@ -17,15 +19,46 @@ __attribute__((always_inline)) inline std::size_t corner_position(
     return (listed ? batch.corners[slot] : 3 * (batch.first_face + slot)) + std::size_t(corner);
 }
 
+// Marks a vertex read by a marking batch (TriangleBatch::used_marks).
+__attribute__((always_inline)) inline void mark_used(unsigned char* used_marks,
+                                                     std::uint32_t vertex) {
+    __atomic_store_n(&used_marks[vertex], static_cast<unsigned char>(1), __ATOMIC_RELAXED);
+}
+
+// Whether every index of a marking batch is below its vertex count (none is
+// when there is no vertex). A loop with no branch, of a fixed length for a
+// whole batch, which each instruction set's compiler vectorises: about half
+// an instruction a triangle with AVX-512.
+template <class Scalar, class Index>
+__attribute__((always_inline)) inline bool indices_in_range(
+    const TriangleBatch<Scalar, Index>& batch) {
+    const auto indices = batch.indices;
+    const std::size_t first = 3 * batch.first_face;
+    if (batch.vertex_count == 0) return batch.count == 0;
+    // In 32 bits, which vectorise: the largest index in range (every 32-bit
+    // index when there are more vertices).
+    const std::uint32_t last =
+        std::uint32_t(std::min<std::size_t>(batch.vertex_count, std::size_t{1} << 32) - 1);
+    auto out_of_range = [&](std::size_t length) {
+        std::uint32_t out = 0;
+        for (std::size_t i = 0; i < length; ++i) out |= std::uint32_t(indices[first + i] > last);
+        return out;
+    };
+    return (batch.count == batch_capacity ? out_of_range(3 * batch_capacity)
+                                          : out_of_range(3 * batch.count)) == 0;
+}
+
 // Slots [begin, count) one coordinate at a time, then the padding. The whole
 // batch for the baseline; the slots short of a whole group for the others.
-template <bool listed, class Scalar, class Index>
+template <bool listed, bool marking, class Scalar, class Index>
 void gather_one_by_one(const TriangleBatch<Scalar, Index>& batch, std::size_t begin,
                        GatheredTriangles& gathered) {
     for (std::size_t slot = begin; slot < batch.count; ++slot)
         for (int corner = 0; corner < 3; ++corner) {
-            const Eigen::Vector3d position =
-                batch.positions[batch.indices[corner_position<listed>(batch, slot, corner)]];
+            const std::uint32_t vertex =
+                batch.indices[corner_position<listed>(batch, slot, corner)];
+            if constexpr (marking) mark_used(batch.used_marks, vertex);
+            const Eigen::Vector3d position = batch.positions[vertex];
             for (int axis = 0; axis < 3; ++axis)
                 gathered.coordinates[axis][corner][slot] = position[axis];
         }
@@ -36,12 +69,34 @@ void gather_one_by_one(const TriangleBatch<Scalar, Index>& batch, std::size_t be
                 gathered.coordinates[axis][corner][slot] = batch.reference[axis];
 }
 
+// Runs gather<listed, marking> for the batch's kind: listed faces, or
+// consecutive ones with or without marks (checked first). Inlined into each
+// instruction set's gatherer, whose range check it then vectorises too.
+template <template <bool, bool> class Gather, class Scalar, class Index>
+__attribute__((always_inline)) inline bool gather_batch(const TriangleBatch<Scalar, Index>& batch,
+                                                        GatheredTriangles& gathered) {
+    if (batch.faces) {
+        Gather<true, false>::run(batch, gathered);
+    } else if (!batch.marking) {
+        Gather<false, false>::run(batch, gathered);
+    } else {
+        if (!indices_in_range(batch)) return false;
+        Gather<false, true>::run(batch, gathered);
+    }
+    return true;
+}
+
+template <bool listed, bool marking>
+struct GatherBaseline {
+    template <class Scalar, class Index>
+    static void run(const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
+        gather_one_by_one<listed, marking>(batch, 0, gathered);
+    }
+};
+
 template <class Scalar, class Index>
-void gather_baseline(const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
-    if (batch.faces)
-        gather_one_by_one<true>(batch, 0, gathered);
-    else
-        gather_one_by_one<false>(batch, 0, gathered);
+bool gather_baseline(const TriangleBatch<Scalar, Index>& batch, GatheredTriangles& gathered) {
+    return gather_batch<GatherBaseline>(batch, gathered);
 }
 
 #if defined(__x86_64__)
@@ -96,7 +151,7 @@ constexpr std::size_t fetch_ahead = 32;
 // Where the corners of a batch's triangles are, in locals: the stores into
 // GatheredTriangles could alias the batch's fields for all the compiler knows,
 // and it would read them again after each.
-template <bool listed, class Scalar, class Index>
+template <bool listed, bool marking, class Scalar, class Index>
 struct CornerSource {
     const unsigned char* base;
     std::size_t stride;
@@ -104,6 +159,7 @@ struct CornerSource {
     std::size_t first_corner;    // when not listed
     const std::size_t* corners;  // when listed
     std::size_t faces_left;      // from the batch's first to its block's last, when not listed
+    unsigned char* used_marks;   // when marking
 
     __attribute__((always_inline)) explicit CornerSource(const TriangleBatch<Scalar, Index>& batch)
         : base(batch.positions.base),
@@ -113,13 +169,27 @@ struct CornerSource {
           corners(batch.corners),
           faces_left(listed || batch.last_face < batch.first_face
                          ? 0
-                         : batch.last_face - batch.first_face) {}
+                         : batch.last_face - batch.first_face),
+          used_marks(batch.used_marks) {}
 
-    // The first coordinate of corner `corner` of the batch's triangle `slot`.
+    __attribute__((always_inline)) std::uint32_t index(std::size_t slot, int corner) const {
+        return indices[(listed ? corners[slot] : first_corner + 3 * slot) + std::size_t(corner)];
+    }
+
+    // The first coordinate of corner `corner` of the batch's triangle `slot`,
+    // marked as used when marking.
     __attribute__((always_inline)) const unsigned char* vertex(std::size_t slot, int corner) const {
-        const std::size_t position =
-            (listed ? corners[slot] : first_corner + 3 * slot) + std::size_t(corner);
-        return base + std::size_t(indices[position]) * stride;
+        const std::uint32_t vertex = index(slot, corner);
+        if constexpr (marking) mark_used(used_marks, vertex);
+        return base + std::size_t(vertex) * stride;
+    }
+
+    // Asks for that vertex ahead of its batch, whose indices may not be
+    // checked yet: the address is formed as an integer (it may lie past the
+    // array), and an x86 prefetch never faults.
+    __attribute__((always_inline)) void fetch(std::size_t slot, int corner) const {
+        __builtin_prefetch(reinterpret_cast<const void*>(
+            reinterpret_cast<std::uintptr_t>(base) + std::size_t(index(slot, corner)) * stride));
     }
 };
 
@@ -172,32 +242,32 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
 // The gathering loop for one instruction set: four vertex rows at a time,
 // loaded by vertex_row_<name> as rows of RowScalar, transposed into the
 // batch's lanes.
-#define POLYMASS_GATHER(name, target, RowScalar)                                               \
-    template <bool listed, class Scalar, class Index>                                          \
-    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,                       \
-                              GatheredTriangles& gathered) {                                   \
-        const CornerSource<listed, Scalar, Index> source(batch);                               \
-        std::size_t slot = 0;                                                                  \
-        for (; slot + lane_count <= batch.count; slot += lane_count) {                         \
-            if (!listed && slot + fetch_ahead + lane_count <= source.faces_left)               \
-                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
-                    __builtin_prefetch(source.vertex(slot + fetch_ahead + lane, 2));           \
-            _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {               \
-                Row<RowScalar> rows[lane_count];                                               \
-                _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
-                    vertex_row_##name<Scalar>(source.vertex(slot + lane, corner), rows[lane]); \
-                store_transposed<RowScalar>(rows, gathered, corner, slot);                     \
-            }                                                                                  \
-        }                                                                                      \
-        gather_one_by_one<listed>(batch, slot, gathered);                                      \
-    }                                                                                          \
-    template <class Scalar, class Index>                                                       \
-    target void gather_##name(const TriangleBatch<Scalar, Index>& batch,                       \
-                              GatheredTriangles& gathered) {                                   \
-        if (batch.faces)                                                                       \
-            gather_##name<true>(batch, gathered);                                              \
-        else                                                                                   \
-            gather_##name<false>(batch, gathered);                                             \
+#define POLYMASS_GATHER(name, target, RowScalar)                                                   \
+    template <bool listed, bool marking>                                                           \
+    struct Gather_##name {                                                                         \
+        template <class Scalar, class Index>                                                       \
+        target static void run(const TriangleBatch<Scalar, Index>& batch,                          \
+                               GatheredTriangles& gathered) {                                      \
+            const CornerSource<listed, marking, Scalar, Index> source(batch);                      \
+            std::size_t slot = 0;                                                                  \
+            for (; slot + lane_count <= batch.count; slot += lane_count) {                         \
+                if (!listed && slot + fetch_ahead + lane_count <= source.faces_left)               \
+                    _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
+                        source.fetch(slot + fetch_ahead + lane, 2);                                \
+                _Pragma("GCC unroll 3") for (int corner = 0; corner < 3; ++corner) {               \
+                    Row<RowScalar> rows[lane_count];                                               \
+                    _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
+                        vertex_row_##name<Scalar>(source.vertex(slot + lane, corner), rows[lane]); \
+                    store_transposed<RowScalar>(rows, gathered, corner, slot);                     \
+                }                                                                                  \
+            }                                                                                      \
+            gather_one_by_one<listed, marking>(batch, slot, gathered);                             \
+        }                                                                                          \
+    };                                                                                             \
+    template <class Scalar, class Index>                                                           \
+    target bool gather_##name(const TriangleBatch<Scalar, Index>& batch,                           \
+                              GatheredTriangles& gathered) {                                       \
+        return gather_batch<Gather_##name>(batch, gathered);                                       \
     }
 
 POLYMASS_GATHER(avx2, __attribute__((target("avx2"))), double)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "face_blocks.hpp"
 #include "instruction_sets.hpp"
@@ -40,6 +41,15 @@ struct TriangleBatch {
     const std::size_t* corners = nullptr;  // their first corner's position in the index array
     double reference[3];
     double inverse_unit;  // a power of two: exact
+    // When set (faces not listed): the gatherer checks the batch's indices
+    // against vertex_count before it reads a vertex, and marks each vertex
+    // it reads in used_marks (addressable_vertices(mesh) bytes, mesh_scan.hpp)
+    // with a relaxed byte store: blocks run at the same time may mark one
+    // vertex together. The scan's pass over the index array, made by the
+    // gather that reads the indices anyway.
+    bool marking = false;
+    unsigned char* used_marks = nullptr;
+    std::size_t vertex_count = 0;
 
     std::size_t face(std::size_t slot) const { return faces ? faces[slot] : first_face + slot; }
 };
@@ -53,11 +63,13 @@ struct GatheredTriangles {
     alignas(64) double coordinates[3][3][batch_capacity];
 };
 
+// False, having read no vertex, when the batch is marking and an index is
+// out of range.
 template <class Scalar, class Index>
-using TriangleGatherer = void (*)(const TriangleBatch<Scalar, Index>&, GatheredTriangles&);
+using TriangleGatherer = bool (*)(const TriangleBatch<Scalar, Index>&, GatheredTriangles&);
 
 // The gatherer built for `set` (which this processor must run). Every one
-// gathers the same values.
+// gathers the same values and sets the same marks.
 template <class Scalar, class Index>
 TriangleGatherer<Scalar, Index> triangle_gatherer(InstructionSet set);
 

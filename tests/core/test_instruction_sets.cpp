@@ -4,7 +4,9 @@
 // soups with partial batches, degenerate triangles and slivers, far from the
 // origin; polygon meshes with planar and non-planar faces; float positions
 // and 16-bit indices; a mesh of more than one block of faces; and a vertex
-// array that ends where an unreadable page begins.
+// array that ends where an unreadable page begins. With used marks (the
+// trusted path's), the same bits, the same marks, and a pass that stops at
+// an index out of range wherever it is.
 #include "core/mesh_integration.hpp"
 
 #include "check.hpp"
@@ -13,10 +15,12 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory_resource>
 #include <random>
 #include <vector>
 
@@ -99,6 +103,73 @@ void check_all_sets(const char* name, const TestMesh& mesh, const Eigen::Vector3
     const bool same = same_result(integrate_mesh(typed.view, settings, reversed), expected);
     if (!same) std::fprintf(stderr, "%s: blocks run in reverse differ\n", name);
     CHECK(same);
+}
+
+// The mesh's vertices at even positions, an unused vertex at each odd one.
+TestMesh with_unused_vertices(const TestMesh& mesh) {
+    TestMesh spread = mesh;
+    spread.coordinates.clear();
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+        spread.add_vertex(mesh.vertex(v));
+        spread.add_vertex(Eigen::Vector3d(1e30, -7.0, 0.5));
+    }
+    for (std::uint32_t& index : spread.indices) index *= 2;
+    return spread;
+}
+
+// An all-triangle mesh integrated with used marks on every set this
+// processor runs (the widest also with its blocks in reverse): the bits of
+// the pass without marks, every used vertex marked and no other. Then an
+// index out of range, first, in the middle and last: every set stops without
+// reading a vertex there (the sanitizers would see it read).
+template <class Scalar, class Index>
+void check_marks(const char* name, const TestMesh& unspread, const Eigen::Vector3d& reference,
+                 double size) {
+    const TestMesh mesh = with_unused_vertices(unspread);
+    TypedMesh<Scalar, Index> typed(mesh);
+    IntegrationSettings settings;
+    settings.reference = reference;
+    settings.size = size;
+    settings.instruction_set = InstructionSet::baseline;
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    const IntegrationResult expected = integrate_mesh(typed.view, settings, serial);
+    std::vector<unsigned char> used(mesh.vertex_count(), 0);
+    for (std::uint32_t index : mesh.indices) used[index] = 1;
+    auto run = [&](InstructionSet set, polymass::core::TaskRunner& runner,
+                   std::pmr::vector<unsigned char>& marks) {
+        settings.instruction_set = set;
+        settings.used_marks = &marks;
+        const IntegrationResult result = integrate_mesh(typed.view, settings, runner);
+        settings.used_marks = nullptr;
+        return result;
+    };
+    for (InstructionSet set :
+         {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
+        if (!polymass::core::runs_instruction_set(set)) continue;
+        for (polymass::core::TaskRunner* runner :
+             {static_cast<polymass::core::TaskRunner*>(&serial),
+              static_cast<polymass::core::TaskRunner*>(&reversed)}) {
+            std::pmr::vector<unsigned char> marks(mesh.vertex_count(), 0);
+            const IntegrationResult marked = run(set, *runner, marks);
+            const bool same = marked.indices_in_range && same_result(marked, expected) &&
+                              std::equal(marks.begin(), marks.end(), used.begin());
+            if (!same) std::fprintf(stderr, "%s: marking with set %d differs\n", name, int(set));
+            CHECK(same);
+        }
+        for (std::size_t position :
+             {std::size_t{0}, typed.indices.size() / 2, typed.indices.size() - 1}) {
+            const Index kept = typed.indices[position];
+            typed.indices[position] = Index(mesh.vertex_count());
+            std::pmr::vector<unsigned char> marks(mesh.vertex_count(), 0);
+            const bool stopped = !run(set, serial, marks).indices_in_range;
+            if (!stopped)
+                std::fprintf(stderr, "%s: set %d reads past index %zu out of range\n", name,
+                             int(set), position);
+            CHECK(stopped);
+            typed.indices[position] = kept;
+        }
+    }
 }
 
 // Random triangles around `centre` (some degenerate: a repeated vertex, three
@@ -197,6 +268,10 @@ int main() {
     for (std::size_t triangles : {1, 3, 7, 9, 63, 64, 65, 1000, 1031}) {
         const TestMesh soup = triangle_soup(triangles, far, random);
         check_all_sets<double, std::uint32_t>("triangles", soup, far, 4.0);
+        check_marks<double, std::uint32_t>("triangles, marked", soup, far, 4.0);
+        check_marks<float, std::uint16_t>("triangles, float, 16-bit indices, marked",
+                                          triangle_soup(triangles, Eigen::Vector3d::Zero(), random),
+                                          Eigen::Vector3d::Zero(), 4.0);
         check_all_sets<double, std::uint16_t>("triangles, 16-bit indices", soup, far, 4.0);
         const TestMesh near = triangle_soup(triangles, Eigen::Vector3d::Zero(), random);
         check_all_sets<float, std::uint32_t>("triangles, float", near, Eigen::Vector3d::Zero(),
@@ -213,8 +288,9 @@ int main() {
     // More than one block: the blocks' sums join in block order however the
     // blocks run; a mixed mesh over a block boundary too.
     const std::size_t beyond_a_block = polymass::core::kFacesPerBlock + 1001;
-    check_all_sets<double, std::uint32_t>("two blocks", triangle_soup(beyond_a_block, far, random),
-                                          far, 4.0);
+    const TestMesh two_blocks = triangle_soup(beyond_a_block, far, random);
+    check_all_sets<double, std::uint32_t>("two blocks", two_blocks, far, 4.0);
+    check_marks<double, std::uint32_t>("two blocks, marked", two_blocks, far, 4.0);
     check_all_sets<double, std::uint32_t>(
         "two blocks, polygons", polygon_soup(beyond_a_block, random), Eigen::Vector3d::Zero(), 6.0);
 #if defined(__unix__) || defined(__APPLE__)

@@ -217,7 +217,7 @@ static int32_t trusted_as_checked(polymass_context* ctx, const pm_mesh* m, uint3
 
 /* The trusted path checks each index before it reads the vertex: whatever
    the position and index types, an index one past the last vertex in the
-   first triangle, past a piece of 2048 triangles, past a block of 65,536 or
+   first triangle, in a later batch of 64 triangles, past a block of 65,536 or
    in the last triangle, or any index with no vertex at all (the position
    array a single byte), is refused as the checked path refuses it, on one
    thread and on two, and nothing past the arrays is read; an index at the
