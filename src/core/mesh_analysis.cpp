@@ -107,23 +107,28 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         return analysis;
     }
 
+    // The intersection check takes each vertex's lowest welded vertex; the
+    // topology and the shells, the welded positions numbered densely.
     std::pmr::vector<std::uint32_t> welded(memory);
+    NumberedVertices numbered(memory);
     if (settings.weld && (settings.check_topology || settings.list_shells)) {
         welded = weld_vertices(mesh, scan, settings.weld_tolerance, tasks, memory);
         analysis.used_vertex_count = distinct_vertices(welded, scan);
+        numbered = number_welded_vertices(welded, scan, analysis.used_vertex_count, memory);
     }
     const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
+    const VertexIdentities identities = welded.empty() ? VertexIdentities{} : numbered.identities();
     // The vertices joined along the edges by the topology check: the shells' sets.
     std::pmr::vector<std::uint32_t> vertex_sets(memory);
     // The shells as connected pieces, when they were not judged.
     auto finish = [&] {
         if (settings.list_shells && !analysis.shells)
             analysis.unjudged_shells =
-                find_shells(mesh, scan, vertex_ids, std::move(vertex_sets), tasks, memory);
+                find_shells(mesh, scan, identities, std::move(vertex_sets), tasks, memory);
         return std::move(analysis);
     };
     if (settings.check_topology) {
-        analysis.topology = analyse_topology(mesh, vertex_ids, tasks, memory, vertex_sets);
+        analysis.topology = analyse_topology(mesh, identities, tasks, memory, vertex_sets);
         if (stop()) return finish();
     }
 
@@ -139,7 +144,7 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         analysis.topology->closed_and_oriented(settings.policy.accept_balanced_non_manifold) &&
         (defect == Defect::none || defect == Defect::inverted || defect == Defect::zero_volume)) {
         analysis.shells =
-            survey_shells(mesh, scan, vertex_ids, std::move(vertex_sets), integration.reference,
+            survey_shells(mesh, scan, identities, std::move(vertex_sets), integration.reference,
                           analysis.verdict.outward, analysis.integration->integrals.volume,
                           analysis.integration->encloses_no_volume, tasks, memory);
         if (stop()) return finish();

@@ -29,12 +29,12 @@ void record_kinds(ShellSurvey& survey) {
 
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                          const std::uint32_t* vertex_ids,
+                          const VertexIdentities& identities,
                           std::pmr::vector<std::uint32_t> vertex_sets,
                           const Eigen::Vector3d& reference, int outward, double whole_volume,
                           bool whole_encloses_no_volume, TaskRunner& tasks,
                           std::pmr::memory_resource* memory) {
-    ShellSurvey survey(find_shells(mesh, scan, vertex_ids, std::move(vertex_sets), tasks, memory),
+    ShellSurvey survey(find_shells(mesh, scan, identities, std::move(vertex_sets), tasks, memory),
                        memory);
     survey.summary.resize(survey.shells.count);
     // One shell is the whole surface, whose volume the caller has judged:
@@ -108,7 +108,7 @@ void classify_by_winding(ShellSurvey& survey, const std::pmr::vector<int>& windi
 
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                                      \
     template ShellSurvey survey_shells<Scalar, Index>(                                           \
-        const MeshView<Scalar, Index>&, const MeshScan&, const std::uint32_t*,                   \
+        const MeshView<Scalar, Index>&, const MeshScan&, const VertexIdentities&,                \
         std::pmr::vector<std::uint32_t>, const Eigen::Vector3d&, int, double, bool, TaskRunner&, \
         std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)

@@ -54,10 +54,11 @@ struct ShellSurvey {
 // outward is +1, or -1 for a surface taken inside out as a whole;
 // whole_volume is the surface's signed volume and whole_encloses_no_volume
 // its verdict (the one shell's, when it is in one piece: the common case
-// costs no second pass over the faces). vertex_sets as find_shells'.
+// costs no second pass over the faces). identities and vertex_sets as
+// find_shells'.
 template <class Scalar, class Index>
 ShellSurvey survey_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                          const std::uint32_t* vertex_ids,
+                          const VertexIdentities& identities,
                           std::pmr::vector<std::uint32_t> vertex_sets,
                           const Eigen::Vector3d& reference, int outward, double whole_volume,
                           bool whole_encloses_no_volume, TaskRunner& tasks,

@@ -27,17 +27,18 @@ void join_faces(const MeshView<Scalar, Index>& mesh, const std::pmr::vector<std:
     });
 }
 
-// The roots among the identities the faces use: the used vertices that are
-// their own identity (weld_vertices maps a used vertex to the smallest used
-// vertex welded to it). scan.used ends with the vertices indices can reach.
+// The roots among the identities the faces use: with welded positions
+// numbered densely, every identity is used; without, the used vertices.
+// scan.used ends with the vertices indices can reach.
 std::size_t count_roots(const std::pmr::vector<std::uint32_t>& parent, const MeshScan& scan,
-                        const std::uint32_t* vertex_ids) {
+                        const VertexIdentities& identities) {
+    if (identities.of_vertex) {
+        std::size_t roots = 0;
+        for (std::size_t identity = 0; identity < parent.size(); ++identity)
+            roots += parent[identity] == identity;
+        return roots;
+    }
     const std::size_t reachable = std::min(parent.size(), 64 * scan.used.size());
-    // Both tests read for every vertex (&, not &&): no branch to mispredict.
-    if (vertex_ids)
-        return count_used_with(scan, reachable, [&](std::uint32_t vertex) {
-            return (parent[vertex] == vertex) & (vertex_ids[vertex] == vertex);
-        });
     return count_used_with(scan, reachable,
                            [&](std::uint32_t vertex) { return parent[vertex] == vertex; });
 }
@@ -46,8 +47,9 @@ std::size_t count_roots(const std::pmr::vector<std::uint32_t>& parent, const Mes
 
 template <class Scalar, class Index>
 Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                   const std::uint32_t* vertex_ids, std::pmr::vector<std::uint32_t> vertex_sets,
+                   const VertexIdentities& identities, std::pmr::vector<std::uint32_t> vertex_sets,
                    TaskRunner& tasks, std::pmr::memory_resource* memory) {
+    const std::uint32_t* const vertex_ids = identities.of_vertex;
     auto id = [&](std::size_t position) {
         const std::uint32_t vertex = mesh.indices[position];
         return vertex_ids ? vertex_ids[vertex] : vertex;
@@ -56,7 +58,7 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     std::pmr::vector<std::uint32_t> parent(std::move(vertex_sets), memory);
     const bool joined_by_topology = !parent.empty();
     if (!joined_by_topology) {
-        parent.resize(mesh.vertex_count);
+        parent.resize(identities.count_among(mesh.vertex_count));
         std::iota(parent.begin(), parent.end(), 0u);
     }
     const ConcurrentSmallestIndexSets sets(parent.data());
@@ -74,7 +76,7 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     // one of them: the shells are as many as the roots among those
     // identities. One root (the common case) makes every face shell 0, with
     // no search per face.
-    if (count_roots(parent, scan, vertex_ids) == 1) {
+    if (count_roots(parent, scan, identities) == 1) {
         shells.count = 1;
         shells.of_face.assign(mesh.face_count, 0u);
         return shells;
@@ -88,7 +90,7 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                                });
     });
     constexpr std::uint32_t unnumbered = UINT32_MAX;
-    std::pmr::vector<std::uint32_t> number_of_root(mesh.vertex_count, unnumbered, memory);
+    std::pmr::vector<std::uint32_t> number_of_root(parent.size(), unnumbered, memory);
     for (std::uint32_t& shell : shells.of_face) {
         std::uint32_t& number = number_of_root[shell];
         if (number == unnumbered) number = std::uint32_t(shells.count++);
@@ -97,9 +99,9 @@ Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
     return shells;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                    \
-    template Shells find_shells<Scalar, Index>(                                \
-        const MeshView<Scalar, Index>&, const MeshScan&, const std::uint32_t*, \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                       \
+    template Shells find_shells<Scalar, Index>(                                   \
+        const MeshView<Scalar, Index>&, const MeshScan&, const VertexIdentities&, \
         std::pmr::vector<std::uint32_t>, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

@@ -12,6 +12,7 @@
 #include "mesh_scan.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
+#include "vertex_identities.hpp"
 
 namespace polymass::core {
 
@@ -22,16 +23,16 @@ struct Shells {
     explicit Shells(std::pmr::memory_resource* memory) : of_face(memory) {}
 };
 
-// vertex_ids maps a vertex to its identity (welding; see weld_vertices), null
-// meaning the index itself; `scan` is the mesh's (its used vertices). Indices
-// must be in range; faces fewer than 2^32. vertex_sets: the identities
-// already joined along the faces' edges (ConcurrentSmallestIndexSets' parents,
-// one a vertex: analyse_topology's), taken over; or empty, and the faces are
-// joined here, in blocks on `tasks`. The numbering is the same for every
-// runner.
+// identities: each vertex's (vertex_identities.hpp: itself, or its welded
+// position numbered densely); `scan` is the mesh's (its used vertices).
+// Indices must be in range; faces fewer than 2^32. vertex_sets: the
+// identities already joined along the faces' edges
+// (ConcurrentSmallestIndexSets' parents, one an identity: analyse_topology's),
+// taken over; or empty, and the faces are joined here, in blocks on `tasks`.
+// The numbering is the same for every runner.
 template <class Scalar, class Index>
 Shells find_shells(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                   const std::uint32_t* vertex_ids, std::pmr::vector<std::uint32_t> vertex_sets,
+                   const VertexIdentities& identities, std::pmr::vector<std::uint32_t> vertex_sets,
                    TaskRunner& tasks, std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

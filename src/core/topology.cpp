@@ -308,20 +308,21 @@ auto walk_buckets_for(InstructionSet set) {
 }
 
 template <class Entry, class Scalar, class Index, class VertexId>
-TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, TaskRunner& tasks,
-                           std::pmr::memory_resource* memory, std::uint32_t* vertex_sets,
-                           InstructionSet set) {
+TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, std::size_t identity_count,
+                           VertexId&& id, TaskRunner& tasks, std::pmr::memory_resource* memory,
+                           std::uint32_t* vertex_sets, InstructionSet set) {
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
     // end_of[v]: first counts, then (after the prefix sum) where v's bucket
-    // starts, then (after filing, each bucket filled from its start) where it ends.
-    std::pmr::vector<Entry> end_of(mesh.vertex_count, Entry{0}, memory);
+    // starts, then (after filing, each bucket filled from its start) where it
+    // ends. (v: an identity, as every vertex below.)
+    std::pmr::vector<Entry> end_of(identity_count, Entry{0}, memory);
     // The passes below write through copies of the arrays' addresses: read
     // through the containers, they were loaded again after every store.
     Entry* const bucket_end = end_of.data();
     // Each edge of every face whose lower vertex is in range `range` of the
     // tasks' concurrency.
     const std::size_t ranges = std::max<std::size_t>(1, tasks.concurrency());
-    const std::size_t per_range = (mesh.vertex_count + ranges - 1) / ranges;
+    const std::size_t per_range = (identity_count + ranges - 1) / ranges;
     auto each_edge_in_range = [&](std::size_t range, auto&& visit) {
         if (ranges == 1) {  // every edge: no test per edge on one thread
             for (std::size_t block = 0; block < starts.size(); ++block)
@@ -329,7 +330,7 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
             return;
         }
         const std::size_t low = range * per_range;
-        const std::size_t high = std::min(mesh.vertex_count, low + per_range);
+        const std::size_t high = std::min(identity_count, low + per_range);
         for (std::size_t block = 0; block < starts.size(); ++block)
             each_edge_of_block(mesh, block, starts[block], id,
                                [&visit, low, high](std::uint32_t from, std::uint32_t to) {
@@ -353,14 +354,14 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
         });
     });
 
-    const std::size_t pieces = (mesh.vertex_count + vertices_per_piece - 1) / vertices_per_piece;
+    const std::size_t pieces = (identity_count + vertices_per_piece - 1) / vertices_per_piece;
     std::pmr::vector<TopologyReport> parts(pieces, memory);
     const ConcurrentSmallestIndexSets sets(vertex_sets);
     const auto walk_buckets = walk_buckets_for<Entry>(set);
     tasks.run(pieces, [&](std::size_t piece) {
         parts[piece] =
             walk_buckets(entries.data(), end_of.data(), piece * vertices_per_piece,
-                         std::min(mesh.vertex_count, (piece + 1) * vertices_per_piece), sets);
+                         std::min(identity_count, (piece + 1) * vertices_per_piece), sets);
     });
     TopologyReport report;
     for (const TopologyReport& part : parts) {
@@ -373,30 +374,43 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, VertexId&& id, T
     return report;
 }
 
+// Findings name identities' vertices (a welded position by its lowest vertex).
+void name_vertices(EdgeFinding& finding, const VertexIdentities& identities) {
+    for (std::size_t i = 0; i < finding.kept(); ++i)
+        for (std::uint32_t& end : finding.lowest[i]) end = identities.vertex(end);
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
-                                const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                                const VertexIdentities& identities, TaskRunner& tasks,
                                 std::pmr::memory_resource* memory,
                                 std::pmr::vector<std::uint32_t>& vertex_sets, InstructionSet set) {
-    vertex_sets.resize(mesh.vertex_count);
+    const std::size_t count = identities.count_among(mesh.vertex_count);
+    vertex_sets.resize(count);
     std::iota(vertex_sets.begin(), vertex_sets.end(), 0u);
     auto analyse = [&](auto&& id) {
-        const bool narrow = mesh.vertex_count <= (std::size_t{1} << 31) &&
+        const bool narrow = count <= (std::size_t{1} << 31) &&
                             mesh.index_count <= std::numeric_limits<std::uint32_t>::max();
-        return narrow
-                   ? match_edges<std::uint32_t>(mesh, id, tasks, memory, vertex_sets.data(), set)
-                   : match_edges<std::uint64_t>(mesh, id, tasks, memory, vertex_sets.data(), set);
+        return narrow ? match_edges<std::uint32_t>(mesh, count, id, tasks, memory,
+                                                   vertex_sets.data(), set)
+                      : match_edges<std::uint64_t>(mesh, count, id, tasks, memory,
+                                                   vertex_sets.data(), set);
     };
-    if (vertex_ids)
-        return analyse([&](std::size_t position) { return vertex_ids[mesh.indices[position]]; });
-    return analyse([&](std::size_t position) { return mesh.indices[position]; });
+    if (!identities.of_vertex)
+        return analyse([&](std::size_t position) { return mesh.indices[position]; });
+    TopologyReport report =
+        analyse([&](std::size_t position) { return identities.of_vertex[mesh.indices[position]]; });
+    name_vertices(report.open, identities);
+    name_vertices(report.misoriented, identities);
+    name_vertices(report.non_manifold, identities);
+    return report;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                \
-    template TopologyReport analyse_topology<Scalar, Index>(               \
-        const MeshView<Scalar, Index>&, const std::uint32_t*, TaskRunner&, \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                   \
+    template TopologyReport analyse_topology<Scalar, Index>(                  \
+        const MeshView<Scalar, Index>&, const VertexIdentities&, TaskRunner&, \
         std::pmr::memory_resource*, std::pmr::vector<std::uint32_t>&, InstructionSet);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

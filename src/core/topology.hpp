@@ -19,6 +19,7 @@
 #include "instruction_sets.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
+#include "vertex_identities.hpp"
 
 namespace polymass::core {
 
@@ -61,18 +62,20 @@ struct TopologyReport {
     }
 };
 
-// vertex_ids maps a vertex index to its identity for the check (welding); null
-// means the index itself. Indices must be in range. Edges whose two ends are
-// the same vertex (a repeated index) are no edges.
+// identities: each vertex's for the check (vertex_identities.hpp: itself, or
+// its welded position numbered densely); edges are named by the vertices
+// identities.vertex gives. Indices must be in range. Edges whose two ends are
+// the same identity (a repeated index) are no edges.
 // The walk that classifies each edge also joins its two ends: vertex_sets
-// gets one parent a vertex (ConcurrentSmallestIndexSets, smallest_index_sets.hpp), every
-// identity joined with those it shares an edge with - the vertex sets of the
-// shells (find_shells), with no second pass over the faces.
+// gets one parent an identity (ConcurrentSmallestIndexSets,
+// smallest_index_sets.hpp), every identity joined with those it shares an
+// edge with - the sets of the shells (find_shells), with no second pass over
+// the faces.
 // The passes run in pieces on `tasks`; the report and the sets are the same
 // for every runner.
 template <class Scalar, class Index>
 TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
-                                const std::uint32_t* vertex_ids, TaskRunner& tasks,
+                                const VertexIdentities& identities, TaskRunner& tasks,
                                 std::pmr::memory_resource* memory,
                                 std::pmr::vector<std::uint32_t>& vertex_sets,
                                 InstructionSet set = widest_instruction_set());

@@ -4,9 +4,14 @@
 // slivers (an edge that alone links its two vertices: a join left out splits
 // their set), then broken by turning, removing and repeating faces, so that small buckets
 // hold every kind of edge. Every instruction set this processor runs gives the
-// reference's report, and vertex sets that join the ends of every edge.
+// reference's report, and vertex sets that join the ends of every edge. Each
+// mesh is also checked as a welded soup (every corner its own copy of its
+// vertex, the copies numbered at random among more, with unused ones between):
+// its welded positions numbered densely (vertex_identities.hpp) give the report
+// and the sets of the soup with each copy replaced by its lowest one.
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory_resource>
 #include <numeric>
@@ -16,8 +21,10 @@
 
 #include "check.hpp"
 #include "core/instruction_sets.hpp"
+#include "core/mesh_scan.hpp"
 #include "core/task_runner.hpp"
 #include "core/topology.hpp"
+#include "core/vertex_identities.hpp"
 #include "reversed_task_runner.hpp"
 #include "test_mesh.hpp"
 
@@ -27,6 +34,7 @@ using polymass::core::analyse_topology;
 using polymass::core::EdgeFinding;
 using polymass::core::InstructionSet;
 using polymass::core::TopologyReport;
+using polymass::core::VertexIdentities;
 using polymass_test::TestMesh;
 
 // A closed torus of rows x columns quads, two triangles each, its vertices
@@ -165,19 +173,73 @@ std::vector<std::uint32_t> reference_roots(const TestMesh& mesh) {
     return roots_of(std::move(parent));
 }
 
-void check_mesh(const TestMesh& mesh) {
-    const TopologyReport expected = reference_report(mesh);
-    const std::vector<std::uint32_t> expected_roots = reference_roots(mesh);
+// `mesh`'s report and vertex sets, on each instruction set this processor
+// runs, against those expected; the sets named by each vertex's root through
+// `root_vertex`.
+template <class RootVertex>
+void check_analysis(const TestMesh& mesh, const VertexIdentities& identities,
+                    const TopologyReport& expected, RootVertex&& root_vertex) {
     polymass_test::ReversedTaskRunner tasks;
     for (InstructionSet set :
          {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
         if (!polymass::core::runs_instruction_set(set)) continue;
         std::pmr::vector<std::uint32_t> sets(std::pmr::new_delete_resource());
-        const TopologyReport report = analyse_topology(mesh.view(), nullptr, tasks,
+        const TopologyReport report = analyse_topology(mesh.view(), identities, tasks,
                                                        std::pmr::new_delete_resource(), sets, set);
         CHECK(same_report(report, expected));
-        CHECK(roots_of({sets.begin(), sets.end()}) == expected_roots);
+        CHECK(root_vertex(roots_of({sets.begin(), sets.end()})));
     }
+}
+
+void check_mesh(const TestMesh& mesh) {
+    const std::vector<std::uint32_t> expected_roots = reference_roots(mesh);
+    check_analysis(mesh, {}, reference_report(mesh), [&](const std::vector<std::uint32_t>& roots) {
+        return roots == expected_roots;
+    });
+}
+
+// `mesh` as a welded soup (above).
+void check_welded_soup(const TestMesh& mesh, std::mt19937& random) {
+    std::vector<std::uint32_t> copy(mesh.indices.size() + mesh.indices.size() / 2);
+    std::iota(copy.begin(), copy.end(), 0u);
+    std::shuffle(copy.begin(), copy.end(), random);
+    TestMesh soup = mesh;
+    soup.coordinates.assign(3 * copy.size(), 0.0);
+    // Each copy's lowest copy (of one vertex), or itself when unused.
+    std::pmr::vector<std::uint32_t> welded(copy.size(), std::pmr::new_delete_resource());
+    std::iota(welded.begin(), welded.end(), 0u);
+    std::map<std::uint32_t, std::uint32_t> lowest_copy;
+    for (std::size_t at = 0; at < mesh.indices.size(); ++at) {
+        soup.indices[at] = copy[at];
+        auto [lowest, first] = lowest_copy.insert({mesh.indices[at], copy[at]});
+        if (!first) lowest->second = std::min(lowest->second, copy[at]);
+    }
+    polymass::core::MeshScan scan(std::pmr::new_delete_resource());
+    scan.used.assign((copy.size() + 63) / 64, 0);
+    for (std::size_t at = 0; at < mesh.indices.size(); ++at) {
+        welded[copy[at]] = lowest_copy[mesh.indices[at]];
+        scan.used[copy[at] / 64] |= std::uint64_t{1} << (copy[at] % 64);
+    }
+    const polymass::core::NumberedVertices numbered = polymass::core::number_welded_vertices(
+        welded, scan, lowest_copy.size(), std::pmr::new_delete_resource());
+    // Every identity named, in the order of the lowest copies.
+    CHECK(std::adjacent_find(numbered.lowest_vertex.begin(), numbered.lowest_vertex.end(),
+                             std::greater_equal<>()) == numbered.lowest_vertex.end());
+    TestMesh lowest = soup;
+    for (std::uint32_t& vertex : lowest.indices) vertex = welded[vertex];
+    const std::vector<std::uint32_t> expected_roots = reference_roots(lowest);
+    check_analysis(
+        soup, numbered.identities(), reference_report(lowest),
+        [&](const std::vector<std::uint32_t>& roots) {
+            if (roots.size() != numbered.lowest_vertex.size()) return false;
+            for (const std::uint32_t vertex : soup.indices) {
+                const std::uint32_t identity = numbered.of_vertex[vertex];
+                if (numbered.lowest_vertex[identity] != welded[vertex] ||
+                    numbered.lowest_vertex[roots[identity]] != expected_roots[welded[vertex]])
+                    return false;
+            }
+            return true;
+        });
 }
 
 }  // namespace
@@ -188,12 +250,16 @@ int main() {
         const auto rows = std::uint32_t(3 + round % 7), columns = std::uint32_t(4 + round % 11);
         TestMesh mesh = torus_grid(rows, columns, random);
         check_mesh(mesh);  // every edge common
+        check_welded_soup(mesh, random);
         break_faces(mesh, 1 + round % 9, random);
         check_mesh(mesh);
+        check_welded_soup(mesh, random);
         TestMesh pieces = separate_pieces(std::uint32_t(5 + round % 23), random);
         check_mesh(pieces);
+        check_welded_soup(pieces, random);
         break_faces(pieces, 1 + round % 5, random);
         check_mesh(pieces);
+        check_welded_soup(pieces, random);
     }
     return polymass_test::finish("test_topology");
 }
