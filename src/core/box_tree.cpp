@@ -16,12 +16,6 @@ std::uint32_t spread_bits(std::uint32_t v) {
     return v;
 }
 
-// The runner of a tree built without one: stateless, so one serves all.
-TaskRunner& serial_tasks() {
-    static SerialTaskRunner serial;
-    return serial;
-}
-
 }  // namespace
 
 SegmentSlabs::SegmentSlabs(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double pad)
@@ -47,9 +41,6 @@ bool SegmentSlabs::may_meet(const FloatBox& box) const {
     }
     return true;
 }
-
-BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory)
-    : BoxTree(std::move(boxes), memory, serial_tasks()) {}
 
 BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory,
                  TaskRunner& tasks)

@@ -99,9 +99,8 @@ public:
     // its nodes are built: the boxes, their leaves and the nodes together
     // were the intersection check's peak of memory. Its passes over the
     // items run in fixed blocks on `tasks` (the same tree for every
-    // runner); without them, on the calling thread.
+    // runner).
     BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory, TaskRunner& tasks);
-    BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* memory);
 
     // The box of every item (empty when there are none).
     FloatBox bounds() const { return order_.empty() ? FloatBox() : box(root()); }

@@ -125,7 +125,7 @@ std::pmr::vector<int> count_windings(
         rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].lo));
         rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].hi));
     }
-    const BoxTree shell_tree(rounded_boxes, memory);
+    const BoxTree shell_tree(rounded_boxes, memory, tasks);
 
     // Where the other shells can wind around a start: the box around those
     // whose boxes hold it (each winds 0 around points outside its box), and

@@ -8,6 +8,8 @@
    one processor. The meshes:
    - closed tori far from the origin, 1e5, 1e6 (and 1e7) triangles: valid
      solids, every triangle near others and none crossing;
+   - the 1e5 torus flattened to a hundredth of its height (300 times as
+     wide as it is high: a plate's proportions, for the tree's cells);
    - the 1e5 torus and a copy shifted by a tenth of its tube: crossing along
      two loops (the report stops at its limit);
    - 1,000 and 8,000 cubes stacked in a cube, each resting against its
@@ -209,7 +211,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     printf("libpolymass %s, median of %d interleaved rounds\n", polymass_version_string(), rounds);
-    /* kind: 0 torus, 1 torus and its shifted copy, 2 separate cubes, 3 welded cubes, 4 pile. */
+    /* kind: 0 torus, 1 torus and its shifted copy, 2 separate cubes, 3 welded cubes, 4 pile,
+       5 flattened torus. */
     static const struct {
         const char* name;
         int kind;
@@ -217,6 +220,7 @@ int main(int argc, char** argv) {
     } cases[] = {{"torus 1e5", 0, 1e5},
                  {"torus 1e6", 0, 1e6},
                  {"torus 1e7", 0, 1e7},
+                 {"torus 1e5 flattened to a hundredth of its height", 5, 1e5},
                  {"torus 1e5 and a copy shifted by a tenth of its tube", 1, 1e5},
                  {"1000 separate cubes resting on each other", 2, 1000},
                  {"8000 separate cubes resting on each other", 2, 8000},
@@ -228,11 +232,16 @@ int main(int argc, char** argv) {
         const double size = cases[c].size;
         if (!strstr(cases[c].name, only) || (cases[c].kind == 0 && size > largest)) continue;
         const uint32_t side = (uint32_t)(cbrt(size) + 0.5);
-        bench_mesh mesh = cases[c].kind == 0 ? make_tori(cases[c].name, (size_t)size, 1, 0)
-                          : cases[c].kind == 1
-                              ? make_tori(cases[c].name, (size_t)size, 2, 0.1)
-                              : make_cubes(cases[c].name, (uint32_t)size,
-                                           cases[c].kind == 4 ? 0 : side, cases[c].kind == 3);
+        bench_mesh mesh =
+            cases[c].kind == 0 || cases[c].kind == 5 ? make_tori(cases[c].name, (size_t)size, 1, 0)
+            : cases[c].kind == 1 ? make_tori(cases[c].name, (size_t)size, 2, 0.1)
+                                 : make_cubes(cases[c].name, (uint32_t)size,
+                                              cases[c].kind == 4 ? 0 : side, cases[c].kind == 3);
+        if (cases[c].kind == 5) { /* an affine map: still closed, still crossing nowhere */
+            double* positions = (double*)mesh.desc.positions;
+            for (size_t v = 0; v < mesh.desc.vertex_count; ++v)
+                positions[3 * v + 2] = 1e6 + 0.01 * (positions[3 * v + 2] - 1e6);
+        }
         run(&mesh, rounds, !(cases[c].kind == 4 && size > 1000), context);
         free((void*)mesh.desc.positions);
         free((void*)mesh.desc.indices);

@@ -22,11 +22,13 @@ using polymass::core::BoxTree;
 using polymass::core::FloatBox;
 using Pair = std::array<std::uint32_t, 2>;
 
-// Boxes along a slab, long enough that a sweep along it tests few pairs;
-// every 97th empty (it meets nothing), and some repeated.
-std::vector<FloatBox> random_boxes(std::size_t count) {
+// Boxes along a slab `width` wide and high, long enough that a sweep along
+// it tests few pairs; every 97th empty (it meets nothing), and some repeated.
+// (A flat slab, or a line, has an axis of no extent: its cells are one.)
+std::vector<FloatBox> random_boxes(std::size_t count, double width = 1.0, double high = 1.0) {
     std::mt19937 random(31);
-    std::uniform_real_distribution<double> along(0.0, 300.0), across(0.0, 1.0), size(0.0, 0.1);
+    std::uniform_real_distribution<double> along(0.0, 300.0), across(0.0, width), up(0.0, high),
+        size(0.0, 0.1);
     std::vector<FloatBox> boxes(count);
     for (std::size_t i = 0; i < count; ++i) {
         if (i % 97 == 0) continue;
@@ -34,9 +36,10 @@ std::vector<FloatBox> random_boxes(std::size_t count) {
             boxes[i] = boxes[i - 1];
             continue;
         }
-        const Eigen::Vector3d lo(along(random), across(random), across(random));
-        boxes[i] =
-            FloatBox::spanning(lo, lo + Eigen::Vector3d(size(random), size(random), size(random)));
+        const Eigen::Vector3d lo(along(random), across(random), up(random));
+        const Eigen::Vector3d step(size(random), width > 0 ? size(random) : 0,
+                                   high > 0 ? size(random) : 0);
+        boxes[i] = FloatBox::spanning(lo, lo + step);
     }
     return boxes;
 }
@@ -77,7 +80,9 @@ void check_pairs_across_blocks() {
     const std::vector<FloatBox> boxes = random_boxes(270000);
     const std::vector<Pair> expected = sweep(boxes);
     std::pmr::memory_resource* memory = std::pmr::get_default_resource();
-    const BoxTree serial(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory);
+    polymass::core::SerialTaskRunner one_thread;
+    const BoxTree serial(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory,
+                         one_thread);
     polymass_test::ReversedTaskRunner reversed;
     const BoxTree blocks_reversed(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory),
                                   memory, reversed);
@@ -90,9 +95,31 @@ void check_pairs_across_blocks() {
     CHECK(same_box(blocks_reversed.bounds(), all));
 }
 
+// The tree's Morton grid on boxes of every shape, against the sweep: a slab
+// far thinner than long (cells far from cubic), a flat one and a line (an
+// axis of no extent, whose places are NaN: cell 0), and boxes at one point
+// (every code 0).
+void check_pairs_of_shapes() {
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource();
+    polymass::core::SerialTaskRunner one_thread;
+    const std::vector<FloatBox> shapes[] = {
+        random_boxes(20000, 0.01, 0.001), random_boxes(20000, 1.0, 0.0),
+        random_boxes(20000, 0.0, 0.0),
+        std::vector<FloatBox>(
+            1000, FloatBox::spanning(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(1, 2, 3)))};
+    for (const std::vector<FloatBox>& boxes : shapes) {
+        const BoxTree tree(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory,
+                           one_thread);
+        const std::vector<Pair> expected = sweep(boxes);
+        CHECK(!expected.empty());
+        CHECK(pairs_of(tree) == expected);
+    }
+}
+
 }  // namespace
 
 int main() {
     check_pairs_across_blocks();
+    check_pairs_of_shapes();
     return polymass_test::finish("test_box_tree");
 }
