@@ -46,33 +46,20 @@ bool lies_on(const Triangle& t, const ProbeStart& start) {
     return true;
 }
 
-// A shell's box, exact: the least and greatest coordinates of its corners.
-struct ShellBox {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-
-    void extend(const Eigen::Vector3d& p) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
+// Whether the start lies in the closed box of a shell: compared coordinate
+// by coordinate, exactly, the start inside a triangle as its limit.
+bool holds(const ShellBox& box, const ProbeStart& start) {
+    for (int k = 0; k < 3; ++k) {
+        const auto above_lo = [&](const Eigen::Vector3d& x) {
+            return (x[k] > box.lo[k]) - (x[k] < box.lo[k]);
+        };
+        const auto below_hi = [&](const Eigen::Vector3d& x) {
+            return (x[k] < box.hi[k]) - (x[k] > box.hi[k]);
+        };
+        if (sign_at(start, above_lo) < 0 || sign_at(start, below_hi) < 0) return false;
     }
-    void extend(const ShellBox& box) {
-        lo = lo.cwiseMin(box.lo);
-        hi = hi.cwiseMax(box.hi);
-    }
-    // Whether the start lies in the closed box: compared coordinate by
-    // coordinate, exactly, the start inside a triangle as its limit.
-    bool holds(const ProbeStart& start) const {
-        for (int k = 0; k < 3; ++k) {
-            const auto above_lo = [&](const Eigen::Vector3d& x) {
-                return (x[k] > lo[k]) - (x[k] < lo[k]);
-            };
-            const auto below_hi = [&](const Eigen::Vector3d& x) {
-                return (x[k] < hi[k]) - (x[k] > hi[k]);
-            };
-            if (sign_at(start, above_lo) < 0 || sign_at(start, below_hi) < 0) return false;
-        }
-        return true;
-    }
-};
+    return true;
+}
 
 // Directions of the probing segments: far from every coordinate plane and
 // from each other, so that the next one avoids what grazed the last.
@@ -98,10 +85,10 @@ int join_windings(int first, int second) {
 }  // namespace
 
 template <class Scalar, class Index>
-std::pmr::vector<int> count_windings(
-    const IndexedSurface<Scalar, Index>& surface, const Shells& shells,
-    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell, TaskRunner& tasks,
-    std::pmr::memory_resource* memory) {
+std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surface,
+                                     const Shells& shells, const SurfaceContacts& contacts,
+                                     TaskRunner& tasks, std::pmr::memory_resource* memory) {
+    const auto& touches_other_shell = contacts.touches_other_shell;
     const auto shell_of = [&](std::size_t t) { return shells.of_face[surface.face(t)]; };
     // The probes' far ends lie outside every box.
     const double span = surface.span();
@@ -109,13 +96,12 @@ std::pmr::vector<int> count_windings(
     if (!(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
 
     // A few triangles of each shell, in order, whose first corners are the
-    // probes; and each shell's box, with a tree over them.
+    // probes; and a tree over the shells' boxes.
     std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
     std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
-    std::pmr::vector<ShellBox> shell_boxes(shells.count, memory);
+    const std::pmr::vector<ShellBox>& shell_boxes = contacts.shell_boxes;
     for (std::size_t t = 0; t < surface.size(); ++t) {
         const std::uint32_t shell = shell_of(t);
-        for (const Eigen::Vector3d& corner : surface.triangle(t)) shell_boxes[shell].extend(corner);
         if (!surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
             probes[shell][probe_count[shell]++] = std::uint32_t(t);
     }
@@ -139,7 +125,7 @@ std::pmr::vector<int> count_windings(
         Near near;
         const Eigen::Vector3d p = surface.in_units(start.p);
         shell_tree.for_each_item_near_segment(p, p, [&](std::uint32_t other) {
-            if (other == shell || !shell_boxes[other].holds(start)) return true;
+            if (other == shell || !holds(shell_boxes[other], start)) return true;
             near.box.extend(shell_boxes[other]);
             return ++near.count <= kNearShells;
         });
@@ -180,7 +166,7 @@ std::pmr::vector<int> count_windings(
                 int others = 0;
                 for (std::uint32_t copy = t; copy != kNoCopy; copy = surface.next_copy(copy)) {
                     const std::uint32_t other = shell_of(copy);
-                    others += other != shell && shell_boxes[other].holds(start);
+                    others += other != shell && holds(shell_boxes[other], start);
                 }
                 if (others == 0) return true;
                 const Triangle c = surface.triangle(t);
@@ -256,13 +242,24 @@ std::pmr::vector<int> count_windings(
             return bits;
         }
     };
-    // Whether the start lies on triangle t, whose box holds it.
+    // Whether the start lies on triangle t, whose box holds it. A triangle
+    // lying flat on an axis (most of those where parts rest flush on each
+    // other) has the plane x = c of its corners' coordinate there: the start
+    // lies in it when its points do, compared exactly, without three orient3d.
+    auto in_plane_of = [&](const Triangle& c, std::uint32_t t, const ProbeStart& start) {
+        const std::uint32_t flat = flat_axes(surface.corner_extremes(t));
+        if (flat != 0 && !surface.meets_nothing(t)) {
+            const int axis = flat & 1 ? 0 : flat & 2 ? 1 : 2;
+            const auto on = [&](const Eigen::Vector3d& x) { return x[axis] == c[0][axis]; };
+            return on(start.p) && (!start.inside || (on(start.a) && on(start.b)));
+        }
+        return sign_at(start, [&](const Eigen::Vector3d& x) {
+                   return orient3d(c[0], c[1], c[2], x);
+               }) == 0;
+    };
     auto lies_on_triangle = [&](const ProbeStart& start, std::uint32_t t) {
         const Triangle c = surface.triangle(t);
-        return sign_at(start,
-                       [&](const Eigen::Vector3d& x) { return orient3d(c[0], c[1], c[2], x); }) ==
-                   0 &&
-               lies_on(c, start);
+        return in_plane_of(c, t, start) && lies_on(c, start);
     };
     // The vertices where probes start, numbered in the order of their ids:
     // the probe vertices, and the corners of triangles touching another shell.
@@ -330,7 +327,7 @@ std::pmr::vector<int> count_windings(
             surface.tree().for_each_item_near_segment(
                 surface.in_units(p), surface.in_units(p), [&](std::uint32_t other) {
                     const ShellBox box = triangle_box(other);
-                    if (box.holds(start)) {
+                    if (holds(box, start)) {
                         block_near[block].push_back({other, SideBits::of_box(box, p)});
                         ++near_count[i];
                     }
@@ -419,10 +416,9 @@ std::pmr::vector<int> count_windings(
     return winding_of_shell;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                              \
-    template std::pmr::vector<int> count_windings<Scalar, Index>(        \
-        const IndexedSurface<Scalar, Index>&, const Shells&,             \
-        const std::pmr::vector<std::atomic<std::uint8_t>>&, TaskRunner&, \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                       \
+    template std::pmr::vector<int> count_windings<Scalar, Index>(                                 \
+        const IndexedSurface<Scalar, Index>&, const Shells&, const SurfaceContacts&, TaskRunner&, \
         std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

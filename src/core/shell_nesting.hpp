@@ -23,6 +23,7 @@
 
 #include "indexed_surface.hpp"
 #include "shells.hpp"
+#include "surface_contacts.hpp"
 #include "task_runner.hpp"
 
 namespace polymass::core {
@@ -37,13 +38,12 @@ inline constexpr int kMixedWinding = INT_MAX;
 // For each shell, the winding number of every other shell at a point of it
 // (kUnknownWinding where it could not be counted, kMixedWinding where it
 // differs between points). The surface must have at least two shells, none
-// crossing another; touches_other_shell is per shape (its lowest copy), as
-// find_contacts marks it (surface_contacts.hpp). The probes run as tasks of
+// crossing another; contacts are find_contacts' (surface_contacts.hpp): which
+// shapes touch another shell, and the shells' boxes. The probes run as tasks of
 // `tasks`; the result is the same for every runner.
 template <class Scalar, class Index>
-std::pmr::vector<int> count_windings(
-    const IndexedSurface<Scalar, Index>& surface, const Shells& shells,
-    const std::pmr::vector<std::atomic<std::uint8_t>>& touches_other_shell, TaskRunner& tasks,
-    std::pmr::memory_resource* memory);
+std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surface,
+                                     const Shells& shells, const SurfaceContacts& contacts,
+                                     TaskRunner& tasks, std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

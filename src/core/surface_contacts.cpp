@@ -140,6 +140,22 @@ bool apart_at_shared_corner(std::uint32_t first, int k, std::uint32_t second, in
     return ((a & b >> 3) | (a >> 3 & b)) & 7u;
 }
 
+// Whether two triangles, of shells boxed `first` and `second`, neither cross
+// nor coincide, as the boxes say: on an axis where one box ends at or below
+// where the other begins, the triangles lie on either side of a plane x = c
+// (or apart), so that they do not cross, and coincide only when both lie
+// flat in it (`both_flat`, bit per axis). Parts resting on each other meet
+// so in most pairs, which then need neither triangle's positions.
+bool apart_but_in_a_plane(const ShellBox& first, const ShellBox& second, std::uint32_t both_flat) {
+    for (int axis = 0; axis < 3; ++axis) {
+        const double low_end = std::min(first.hi[axis], second.hi[axis]);
+        const double high_start = std::max(first.lo[axis], second.lo[axis]);
+        if (low_end < high_start || (low_end == high_start && !(both_flat >> axis & 1)))
+            return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
@@ -152,8 +168,13 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     // shell otherwise than at its probe vertex (the nesting, below). Copies
     // on two shells coincide, which is crossing and ends the check before the
     // nesting, so the copies of a shape that matters lie on one shell.
-    SurfaceContacts contacts(nesting ? surface.size() : 0, memory);
+    SurfaceContacts contacts(nesting ? surface.size() : 0, nesting ? shells->count : 0, memory);
     auto& touches_other_shell = contacts.touches_other_shell;
+    std::pmr::vector<ShellBox>& shell_boxes = contacts.shell_boxes;
+    if (nesting)
+        for (std::size_t t = 0; t < surface.size(); ++t)
+            for (const Eigen::Vector3d& corner : surface.triangle(t))
+                shell_boxes[shell_of(t)].extend(corner);
     auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
         if (contact == Contact::touching && nesting && shell_of(i) != shell_of(j)) {
             touches_other_shell[surface.lowest_copy(i)].store(1, std::memory_order_relaxed);
@@ -231,6 +252,21 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     auto decide_pair = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared,
                            PairCollector& crossing, PairCollector& touching)
         __attribute__((noinline)) {
+        // Triangles of two shells that only rest on each other (most pairs
+        // of a touching assembly), both already marked: they could only add
+        // a touching pair, asked first and alone.
+        if (shared.count == 0 && nesting) {
+            const std::uint32_t shell_i = shell_of(i), shell_j = shell_of(j);
+            if (shell_i != shell_j &&
+                touches_other_shell[surface.lowest_copy(i)].load(std::memory_order_relaxed) &&
+                touches_other_shell[surface.lowest_copy(j)].load(std::memory_order_relaxed) &&
+                apart_but_in_a_plane(shell_boxes[shell_i], shell_boxes[shell_j],
+                                     flat_axes(surface.corner_extremes(i)) &
+                                         flat_axes(surface.corner_extremes(j)))) {
+                const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
+                if (!touching.wants({std::min(face_i, face_j), std::max(face_i, face_j)})) return;
+            }
+        }
         const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};

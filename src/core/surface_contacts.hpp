@@ -9,10 +9,14 @@
 // compared for crossing only. Past the stop of the touching count, a pair
 // whose touching would neither be kept nor mark a triangle (touches_other_shell
 // already set for both, or one shell) is asked only whether it crosses or
-// coincides, which faces resting on each other answer from their extents.
+// coincides, which faces resting on each other answer from their extents,
+// and faces of two shells whose boxes meet only in a plane (parts resting on
+// each other) from those boxes and whether the faces lie flat in it.
 #pragma once
 
+#include <Eigen/Core>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <memory_resource>
 #include <vector>
@@ -24,6 +28,27 @@
 
 namespace polymass::core {
 
+// A shell's box, exact: the least and greatest coordinates of its corners.
+struct ShellBox {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+
+    void extend(const Eigen::Vector3d& p) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    void extend(const ShellBox& box) {
+        lo = lo.cwiseMin(box.lo);
+        hi = hi.cwiseMax(box.hi);
+    }
+};
+
+// The axes on which a triangle lies flat, from its corner extremes
+// (IndexedSurface::corner_extremes): its first corner is both its highest
+// and its lowest there. Bit `axis`.
+inline std::uint32_t flat_axes(std::uint32_t corner_extremes) {
+    return corner_extremes & corner_extremes >> 3 & 7u;
+}
+
 struct SurfaceContacts {
     PairFinding crossing;  // face pairs (low, high) that cross
     PairFinding touching;  // face pairs that meet without crossing (and share no vertex)
@@ -32,9 +57,12 @@ struct SurfaceContacts {
     // surface wind around a shell otherwise than at one vertex of it
     // (shell_nesting.hpp). Empty otherwise.
     std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell;
+    // With two shells or more, each shell's box (by Shells' numbering), which
+    // the nesting uses too. Empty otherwise.
+    std::pmr::vector<ShellBox> shell_boxes;
 
-    SurfaceContacts(std::size_t triangles, std::pmr::memory_resource* memory)
-        : touches_other_shell(triangles, memory) {}
+    SurfaceContacts(std::size_t triangles, std::size_t shells, std::pmr::memory_resource* memory)
+        : touches_other_shell(triangles, memory), shell_boxes(shells, memory) {}
 };
 
 // shells: null, or the surface's shells (coinciding faces of two shells

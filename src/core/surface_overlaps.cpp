@@ -16,8 +16,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
     result.touching = contacts.touching;
     // Crossing faces already bound some region twice: nesting says no more.
     if (shells && shells->count >= 2 && result.crossing.count == 0)
-        result.winding_of_shell =
-            count_windings(surface, *shells, contacts.touches_other_shell, tasks, memory);
+        result.winding_of_shell = count_windings(surface, *shells, contacts, tasks, memory);
     return result;
 }
 

@@ -45,10 +45,12 @@ void add_box(TestMesh& mesh, const Eigen::Vector3d& lo, const Eigen::Vector3d& h
 }
 
 // A double pyramid whose square waist [0.25, 0.75]^2 lies at height 1 (on a
-// unit cube's top face), apexes at heights 2 and 0.5 (inside the cube).
-void add_double_pyramid(TestMesh& mesh) {
+// unit cube's top face), apexes at heights 2 and `bottom_height` (0.5: inside
+// the cube; 0: on its bottom face, so that every corner of its lower half
+// lies on the cube's faces, and only starts inside its triangles see it).
+void add_double_pyramid(TestMesh& mesh, double bottom_height = 0.5) {
     const std::uint32_t top = mesh.add_vertex({0.5, 0.5, 2}),
-                        bottom = mesh.add_vertex({0.5, 0.5, 0.5});
+                        bottom = mesh.add_vertex({0.5, 0.5, bottom_height});
     std::uint32_t waist[4];
     const double corners[4][2] = {{0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}};
     for (int k = 0; k < 4; ++k) waist[k] = mesh.add_vertex({corners[k][0], corners[k][1], 1});
@@ -139,12 +141,11 @@ std::vector<int> windings_of(TestMesh mesh, const Eigen::Vector3d& offset) {
     const polymass::core::SurfaceContacts contacts =
         polymass::core::find_contacts(surface, &shells, serial, memory);
     CHECK(contacts.crossing.count == 0);
-    const std::pmr::vector<int> windings = polymass::core::count_windings(
-        surface, shells, contacts.touches_other_shell, serial, memory);
+    const std::pmr::vector<int> windings =
+        polymass::core::count_windings(surface, shells, contacts, serial, memory);
     // Tasks finishing in any order give the same windings.
     polymass_test::ReversedTaskRunner reversed;
-    CHECK(polymass::core::count_windings(surface, shells, contacts.touches_other_shell, reversed,
-                                         memory) == windings);
+    CHECK(polymass::core::count_windings(surface, shells, contacts, reversed, memory) == windings);
     return std::vector<int>(windings.begin(), windings.end());
 }
 
@@ -270,6 +271,11 @@ int main() {
     add_box(through, {0, 0, 0}, {1, 1, 1}, false);
     add_double_pyramid(through);
     expect("a double pyramid through a cube's face along its edges", through, {0, kMixedWinding});
+    TestMesh on_floor;
+    add_box(on_floor, {0, 0, 0}, {1, 1, 1}, false);
+    add_double_pyramid(on_floor, 0);
+    expect("a double pyramid through a cube's face, its apex on the cube's floor", on_floor,
+           {0, kMixedWinding});
 
     // Enough shells and triangles for the probes to run as several tasks,
     // the mixed shell in the last: a layer of cubes resting side by side.

@@ -271,11 +271,15 @@ void check_folds_at_a_shared_corner() {
 // more touching pairs than the count keeps, so that past its stop a pair
 // between two triangles already marked as touching another shell is asked
 // only whether it crosses or coincides (crossing_or_coinciding). Among them,
-// late in face order, a small cube crossing the top of the last one and a
+// late in face order, a small cube crossing the top of the last one, a
 // box around the first, twice its height, whose faces coincide with its
-// faces in part (on two shells: crossing). The findings must be those of a
-// test of every pair, and the marks of triangles touching another shell
-// those its touching pairs give.
+// faces in part (on two shells: crossing), and an inside-out cube resting
+// against the last one, half beside it, their faces in the plane where their
+// boxes meet coinciding in part in the same turn (crossing; most pairs of
+// shells whose boxes meet in a plane are decided from those boxes, but not
+// two faces flat in it). The findings must be those of a test of every
+// pair, and the marks of triangles touching another shell those its
+// touching pairs give.
 void check_touching_assembly() {
     constexpr int side = 5;
     TestMesh mesh;
@@ -288,6 +292,8 @@ void check_touching_assembly() {
     polymass_test::append(mesh, polymass_test::box_mesh(top + Eigen::Vector3d(0.25, 0.25, 0.5),
                                                         0.5 * x, 0.5 * y, 0.5 * z, true));
     polymass_test::append(mesh, polymass_test::box_mesh(far, x, 2 * y, 2 * z, true));
+    polymass_test::append(mesh,
+                          polymass_test::box_mesh(top + Eigen::Vector3d(1, 0.5, 0), y, x, z, true));
     const polymass::core::Shells shells = polymass_test::shells_of(mesh);
     const Reference expected = test_every_pair(mesh, &shells);
     std::vector<bool> marked(mesh.indices.size() / 3, false);
@@ -306,8 +312,8 @@ void check_touching_assembly() {
             std::fprintf(stderr, "touching assembly: %zu triangles marked wrongly\n", wrong_marks);
     });
     std::printf(
-        "  %d touching cubes, a crossing cube and a coinciding box: %zu pairs crossing, "
-        "%zu touching\n",
+        "  %d touching cubes, a crossing cube, a coinciding box and an inside-out cube: %zu pairs "
+        "crossing, %zu touching\n",
         side * side * side, expected.crossing.size(), expected.touching.size());
 }
 
