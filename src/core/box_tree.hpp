@@ -137,8 +137,6 @@ private:
     // a million triangles give a few hundred pieces, enough to share among
     // threads; the pieces of a small surface are one.
     static constexpr std::uint32_t kPieceLevel = 10;
-    // Items (and nodes) a task of the construction's passes takes.
-    static constexpr std::size_t kItemsPerBlock = std::size_t{1} << 16;
 
     // The boxes of a leaf, one lane each, so that one box is tested against
     // the four of another leaf at once (overlap_masks): tested one pair at

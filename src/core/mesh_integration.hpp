@@ -27,7 +27,7 @@ struct IntegrationSettings {
     // Tests force each set the processor runs, to compare their bits.
     InstructionSet instruction_set = widest_instruction_set();
     // When set (all-triangle meshes only): the pass marks the vertices the
-    // faces use here, as mark_used_vertices (mesh_scan.hpp) does, and checks
+    // faces use here, as scan_mesh (mesh_scan.hpp) marks them, and checks
     // the indices of each batch of faces before it reads their vertices - the
     // scan's own pass over the index array, made by the gather that reads the
     // indices anyway (triangle_gather.hpp). addressable_vertices(mesh) bytes,

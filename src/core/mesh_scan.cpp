@@ -330,12 +330,6 @@ std::size_t addressable_vertices(const MeshView<Scalar, Index>& mesh) {
 }
 
 template <class Scalar, class Index>
-bool mark_used_vertices(const MeshView<Scalar, Index>& mesh, std::size_t begin, std::size_t end,
-                        unsigned char* seen, InstructionSet set) {
-    return scan_kernels<Scalar, Index>(set).mark_indices(mesh, begin, end, seen).all_in_range;
-}
-
-template <class Scalar, class Index>
 std::optional<Eigen::AlignedBox3d> bound_every_vertex(const MeshView<Scalar, Index>& mesh,
                                                       std::pmr::memory_resource* memory,
                                                       TaskRunner& tasks, InstructionSet set) {
@@ -412,8 +406,6 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     template MeshScan scan_mesh<Scalar, Index>(                                                   \
         const MeshView<Scalar, Index>&, std::pmr::memory_resource*, TaskRunner&, InstructionSet); \
     template std::size_t addressable_vertices<Scalar, Index>(const MeshView<Scalar, Index>&);     \
-    template bool mark_used_vertices<Scalar, Index>(const MeshView<Scalar, Index>&, std::size_t,  \
-                                                    std::size_t, unsigned char*, InstructionSet); \
     template std::optional<Eigen::AlignedBox3d> bound_every_vertex<Scalar, Index>(                \
         const MeshView<Scalar, Index>&, std::pmr::memory_resource*, TaskRunner&, InstructionSet); \
     template MeshScan scan_from_marks<Scalar, Index>(                                             \

@@ -79,13 +79,6 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
 template <class Scalar, class Index>
 std::size_t addressable_vertices(const MeshView<Scalar, Index>& mesh);
 
-// Marks seen[v] for the vertices of positions [begin, end) of the index array
-// (as scan_mesh does: a relaxed byte store, safe on several threads at once);
-// false when an index there is out of range (the others are marked).
-template <class Scalar, class Index>
-bool mark_used_vertices(const MeshView<Scalar, Index>& mesh, std::size_t begin, std::size_t end,
-                        unsigned char* seen, InstructionSet set = widest_instruction_set());
-
 // The bounds of every vertex, used or not, in fixed parts on `tasks`, with
 // a zero's sign taken as scan_mesh takes it: when every index can reach every
 // vertex, the positions are packed and every coordinate is finite; nullopt
