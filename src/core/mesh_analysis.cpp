@@ -114,7 +114,13 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     if (settings.weld && (settings.check_topology || settings.list_shells)) {
         welded = weld_vertices(mesh, scan, settings.weld_tolerance, tasks, memory);
         analysis.used_vertex_count = distinct_vertices(welded, scan);
-        numbered = number_welded_vertices(welded, scan, analysis.used_vertex_count, memory);
+        // Every vertex used and no two at one position (an indexed mesh, as
+        // most are): the weld maps each vertex to itself, so each vertex is
+        // its own identity, and neither the map nor a numbering of it is kept.
+        if (analysis.used_vertex_count == mesh.vertex_count)
+            welded = std::pmr::vector<std::uint32_t>(memory);
+        else
+            numbered = number_welded_vertices(welded, scan, analysis.used_vertex_count, memory);
     }
     const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
     const VertexIdentities identities = welded.empty() ? VertexIdentities{} : numbered.identities();
