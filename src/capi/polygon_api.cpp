@@ -2,7 +2,6 @@
 #include <polymass/polymass.h>
 
 #include <Eigen/Core>
-#include <cfloat>
 #include <cstring>
 
 #include "api_guard.hpp"
@@ -23,14 +22,6 @@ bool span_fits(const double* points, uint64_t count, uint64_t stride) {
     if (__builtin_mul_overflow(count - 1, stride, &last)) return false;
     return last <= uint64_t(PTRDIFF_MAX) - 16 &&
            last + 16 <= UINTPTR_MAX - reinterpret_cast<std::uintptr_t>(points);
-}
-
-bool in_range(const polymass_polygon_properties& p) {
-    const double scalars[] = {p.area, p.polar_moment, p.principal_angle};
-    // Subnormal or zero area and moments keep too few digits to be reported.
-    return all_finite(scalars) && p.area >= DBL_MIN && p.polar_moment >= DBL_MIN &&
-           all_finite(p.centroid) && all_finite(p.second_moments) &&
-           all_finite(p.second_moments_origin) && all_finite(p.principal_moments);
 }
 
 }  // namespace
@@ -91,10 +82,10 @@ POLYMASS_API int32_t polymass_polygon_compute(polymass_polygon_properties* out_p
         Eigen::Vector2d::Map(result.centroid) = polygon.centroid;
         Eigen::Vector3d::Map(result.second_moments) = polygon.moments;
         Eigen::Vector3d::Map(result.second_moments_origin) = polygon.moments_origin;
-        result.polar_moment = polygon.moments.x() + polygon.moments.y();
+        result.polar_moment = polygon.polar_moment;
         Eigen::Vector2d::Map(result.principal_moments) = polygon.principal_moments;
         result.principal_angle = polygon.principal_angle;
-        if (!in_range(result))
+        if (!core::fits_in_doubles(polygon))
             return context->fail(POLYMASS_ERROR_OVERFLOW,
                                  "the polygon's area and second moments do not fit in a double "
                                  "(area %g): its coordinates are too large or too small; scale "

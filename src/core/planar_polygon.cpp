@@ -1,5 +1,6 @@
 #include "planar_polygon.hpp"
 
+#include <cfloat>
 #include <cmath>
 
 namespace polymass::core {
@@ -27,6 +28,7 @@ PlanarPolygon planar_polygon_from(const ProjectionIntegrals& in_units,
     const Eigen::Vector2d& c = polygon.centroid;
     polygon.moments_origin = {ixx + area * c.y() * c.y(), iyy + area * c.x() * c.x(),
                               ixy + area * c.x() * c.y()};
+    polygon.polar_moment = ixx + iyy;
 
     // About an axis at angle θ: I(θ) = mean + half_difference cos 2θ − ixy sin 2θ,
     // smallest at 2θ = π − atan2(ixy, half_difference).
@@ -40,6 +42,14 @@ PlanarPolygon planar_polygon_from(const ProjectionIntegrals& in_units,
     if (angle > pi / 2) angle -= pi;
     polygon.principal_angle = angle;
     return polygon;
+}
+
+bool fits_in_doubles(const PlanarPolygon& polygon) {
+    return std::isfinite(polygon.area) && std::isfinite(polygon.polar_moment) &&
+           std::isfinite(polygon.principal_angle) && polygon.area >= DBL_MIN &&
+           polygon.polar_moment >= DBL_MIN && polygon.centroid.allFinite() &&
+           polygon.moments.allFinite() && polygon.moments_origin.allFinite() &&
+           polygon.principal_moments.allFinite();
 }
 
 }  // namespace polymass::core

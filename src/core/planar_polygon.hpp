@@ -16,6 +16,7 @@ struct PlanarPolygon {
     // Second moments of area (Ixx = ∫y², Iyy = ∫x², Ixy = +∫xy).
     Eigen::Vector3d moments = Eigen::Vector3d::Zero();            // about the centroid
     Eigen::Vector3d moments_origin = Eigen::Vector3d::Zero();     // about (0, 0)
+    double polar_moment = 0.0;                                    // about the centroid: Ixx + Iyy
     Eigen::Vector2d principal_moments = Eigen::Vector2d::Zero();  // ascending
     double principal_angle = 0.0;  // of the axis of principal_moments[0], in (−π/2, π/2]
     bool zero_area = false;        // area at rounding level: nothing else is meaningful
@@ -46,6 +47,11 @@ PolygonCheck check_polygon(std::size_t count, PointAt&& point_at) {
 PlanarPolygon planar_polygon_from(const ProjectionIntegrals& in_units,
                                   const Eigen::Vector2d& reference, double unit_length,
                                   double extent_squared);
+
+// Whether the properties can be answered in doubles: every value finite, and
+// the area and the polar moment normal numbers (zero or subnormal ones keep
+// too few digits) - the polygon's form of fits_in_doubles (mass_properties.hpp).
+bool fits_in_doubles(const PlanarPolygon& polygon);
 
 // point_at(i) returns point i as a 2-vector; the points pass check_polygon.
 template <class PointAt>

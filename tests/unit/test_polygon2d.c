@@ -370,6 +370,27 @@ static void test_polygon_errors(void** state) {
         bad[3] = INFINITY;
         PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_NON_FINITE, polygon(&p, ctx, bad, 3));
     }
+    /* a right triangle with legs L: area L^2/2 and polar moment L^4/18 must
+       both be normal doubles - at L = 1e+-70 they are, at L = 1e80 the polar
+       moment overflows, at L = 1e-80 it is subnormal */
+    {
+        static const double legs[] = {1e70, 1e-70, 1e80, 1e-80};
+        size_t i;
+        for (i = 0; i < 4; ++i) {
+            const double l = legs[i];
+            double tri[6] = {0, 0, 0, 0, 0, 0};
+            tri[2] = l;
+            tri[5] = l;
+            if (i < 2) {
+                PM_ASSERT_OK(ctx, polygon(&p, ctx, tri, 3));
+                PM_ASSERT_REL("area", l * l / 2, p.area, PM_TOL);
+                PM_ASSERT_REL("polar moment", l * l * l * l / 18, p.polar_moment, PM_TOL);
+            } else {
+                PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_OVERFLOW, polygon(&p, ctx, tri, 3));
+                assert_non_null(strstr(polymass_context_message(ctx), "do not fit in a double"));
+            }
+        }
+    }
     /* stride smaller than a point; counts whose size overflows */
     {
         double tri[6] = {0, 0, 1, 0, 0, 1};
