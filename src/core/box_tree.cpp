@@ -53,9 +53,10 @@ BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* me
         for_each_in_blocks(count, kItemsPerBlock, tasks, visit);
     };
     // The box of all: each block's, then theirs in block order.
-    std::pmr::vector<FloatBox> block_bounds((items + kItemsPerBlock - 1) / kItemsPerBlock, memory);
-    in_blocks(items,
-              [&](std::size_t item) { block_bounds[item / kItemsPerBlock].extend(boxes[item]); });
+    std::pmr::vector<FloatBox> block_bounds(block_count(items, kItemsPerBlock), memory);
+    for_each_in_numbered_blocks(
+        items, kItemsPerBlock, tasks,
+        [&](std::size_t block, std::size_t item) { block_bounds[block].extend(boxes[item]); });
     FloatBox all;
     for (const FloatBox& box : block_bounds) all.extend(box);
     // Morton codes of the centres on a 1024^3 grid over all boxes, each with

@@ -19,7 +19,7 @@ inline constexpr std::size_t kFacesPerBlock = kItemsPerBlock;
 template <class Scalar, class Index>
 std::pmr::vector<std::size_t> face_block_starts(const MeshView<Scalar, Index>& mesh,
                                                 std::pmr::memory_resource* memory) {
-    const std::size_t blocks = (mesh.face_count + kFacesPerBlock - 1) / kFacesPerBlock;
+    const std::size_t blocks = block_count(mesh.face_count, kFacesPerBlock);
     std::pmr::vector<std::size_t> starts(blocks, memory);
     if (mesh.all_triangles()) {
         for (std::size_t block = 0; block < blocks; ++block)
