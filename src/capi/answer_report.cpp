@@ -126,7 +126,7 @@ void record_repairs(const core::RepairReport& report, double surface_area,
     copy_finding(report.holes, provenance.holes, provenance.first_holes);
     provenance.cap_triangles = report.cap_triangles;
     provenance.cap_area = report.cap_area;
-    provenance.cap_area_fraction = surface_area > 0.0 ? report.cap_area / surface_area : 0.0;
+    provenance.cap_area_fraction = report.cap_area_fraction(surface_area);
 }
 
 }  // namespace

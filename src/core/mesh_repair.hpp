@@ -55,6 +55,12 @@ struct RepairReport {
     std::size_t cap_triangles = 0;
     double cap_area = 0.0;
 
+    // The caps' share of the answered surface (of area surface_area, caps
+    // included): 0 for a surface without area, which has no caps to weigh.
+    double cap_area_fraction(double surface_area) const {
+        return surface_area > 0.0 ? cap_area / surface_area : 0.0;
+    }
+
     RepairFailure failure = RepairFailure::none;
     std::array<std::uint32_t, 2> failed_edge{};  // unbalanced_non_manifold
     std::size_t failed_forward = 0, failed_backward = 0;

@@ -286,8 +286,8 @@ VertexPart bound_in_parts(const MeshView<Scalar, Index>& mesh,
                           const unsigned char* seen_vertex, std::size_t addressable,
                           std::uint64_t* used_words, std::pmr::memory_resource* memory,
                           TaskRunner& tasks) {
-    const std::size_t blocks = (addressable + 63) / 64;
-    const std::size_t vertex_parts = (blocks + kBlocksPerPart - 1) / kBlocksPerPart;
+    const std::size_t blocks = block_count(addressable, 64);
+    const std::size_t vertex_parts = block_count(blocks, kBlocksPerPart);
     std::pmr::vector<VertexPart> bounded(vertex_parts, memory);
     tasks.run(vertex_parts, [&](std::size_t part) {
         const std::size_t first = part * kBlocksPerPart;
@@ -375,7 +375,7 @@ MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resourc
     // place would chain each face's read-modify-write of a word to the last
     // one's (neighbouring faces share vertices), a byte store waits for nothing.
     std::pmr::vector<unsigned char> seen(addressable_vertices(mesh), 0, memory);
-    const std::size_t index_parts = (mesh.index_count + kIndicesPerPart - 1) / kIndicesPerPart;
+    const std::size_t index_parts = block_count(mesh.index_count, kIndicesPerPart);
     std::pmr::vector<IndexPart> marked(index_parts, memory);
     tasks.run(index_parts, [&](std::size_t part) {
         const std::size_t begin = part * kIndicesPerPart;
