@@ -104,9 +104,12 @@ BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* me
     let_go(boxes);
     // Exactly the nodes of every level: 2 count + 1 falls short when levels
     // of odd size round up, and the vector then doubled (12 MB more at the
-    // check's peak for a million triangles).
+    // check's peak for a million triangles). A level of odd size below the
+    // root ends in an empty node (meeting nothing), so that every node above
+    // the leaves has two children.
     level_begin_.push_back(0);
-    for (std::size_t level = count;; level = (level + 1) / 2) {
+    for (std::size_t level = count;; level /= 2) {
+        if (level > 1) level += level % 2;
         level_begin_.push_back(level_begin_.back() + level);
         if (level <= 1) break;
     }
@@ -118,10 +121,10 @@ BoxTree::BoxTree(std::pmr::vector<FloatBox> boxes, std::pmr::memory_resource* me
     });
     for (std::size_t level = 1; level + 1 < level_begin_.size(); ++level) {
         const std::size_t below = level_begin_[level - 1], at = level_begin_[level];
-        in_blocks(level_size(std::uint32_t(level)), [&](std::size_t i) {
+        in_blocks((at - below) / 2, [&](std::size_t i) {
             FloatBox& box = nodes_[at + i];
             box = nodes_[below + 2 * i];
-            if (below + 2 * i + 1 < at) box.extend(nodes_[below + 2 * i + 1]);
+            box.extend(nodes_[below + 2 * i + 1]);
         });
     }
     // Segment tests in double against float boxes: a margin far above the

@@ -2,7 +2,8 @@
 // boxes than one block of its construction takes (so that the blocks' box
 // of all, leaves and levels are joined across blocks), built on the calling
 // thread and on a runner that runs its blocks last first: every overlapping
-// pair once, none else, and the same tree for both.
+// pair once, none else, and the same tree for both; and on trees of every
+// small size, the items near segments too.
 #include "core/box_tree.hpp"
 
 #include <Eigen/Core>
@@ -116,10 +117,58 @@ void check_pairs_of_shapes() {
     }
 }
 
+// Trees of every size up to 100 items, so that levels of odd and even size
+// come at every height (a level of odd size ends in an empty node): boxes
+// crowded in a unit cube, every 7th empty and, for even sizes, the last five
+// too (a leaf, or a node, of empty boxes only). Every overlapping pair
+// against all pairs, and the items near segments against every item's test.
+void check_every_small_size() {
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource();
+    polymass::core::SerialTaskRunner one_thread;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> place(0.0, 1.0), size(0.0, 0.3);
+    for (std::size_t count = 0; count <= 100; ++count) {
+        std::vector<FloatBox> boxes(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            if (i % 7 == 3 || (count % 2 == 0 && i + 5 >= count)) continue;
+            const Eigen::Vector3d lo(place(random), place(random), place(random));
+            boxes[i] = FloatBox::spanning(
+                lo, lo + Eigen::Vector3d(size(random), size(random), size(random)));
+        }
+        const BoxTree tree(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory,
+                           one_thread);
+        std::vector<Pair> expected;
+        for (std::uint32_t i = 0; i < count; ++i)
+            for (std::uint32_t j = i + 1; j < count; ++j)
+                if (boxes[i].overlaps(boxes[j])) expected.push_back({i, j});
+        CHECK(pairs_of(tree) == expected);
+        for (int segment = 0; segment < 10; ++segment) {
+            const Eigen::Vector3d a(place(random), place(random), place(random)),
+                b(place(random), place(random), place(random));
+            // The tree pads its boxes by a millionth of their extent (at
+            // most 1.3 here): no more than a hundredth.
+            const polymass::core::SegmentSlabs exact(a, b, 0.0), padded(a, b, 0.01);
+            std::vector<std::uint32_t> near;
+            tree.for_each_item_near_segment(a, b, [&](std::uint32_t i) {
+                near.push_back(i);
+                return true;
+            });
+            std::sort(near.begin(), near.end());
+            CHECK(std::adjacent_find(near.begin(), near.end()) == near.end());
+            for (std::uint32_t i = 0; i < count; ++i) {
+                const bool found = std::binary_search(near.begin(), near.end(), i);
+                CHECK(found || !exact.may_meet(boxes[i]));
+                CHECK(!found || padded.may_meet(boxes[i]));
+            }
+        }
+    }
+}
+
 }  // namespace
 
 int main() {
     check_pairs_across_blocks();
     check_pairs_of_shapes();
+    check_every_small_size();
     return polymass_test::finish("test_box_tree");
 }
