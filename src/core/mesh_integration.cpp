@@ -53,9 +53,10 @@ __attribute__((always_inline)) inline bool integrate_gathered(
     // degeneracy threshold (1 is above the thresholds of both).
     Wide smallest_norm = Wide{} + 1.0, smallest_margin = Wide{} + 1.0;
     // The reference point in units, exact where the move is fused.
-    const double reference_in_units[3] = {batch.reference[0] * batch.inverse_unit,
-                                          batch.reference[1] * batch.inverse_unit,
-                                          batch.reference[2] * batch.inverse_unit};
+    double reference_in_units[3] = {};
+    if constexpr (fused)
+        for (int axis = 0; axis < 3; ++axis)
+            reference_in_units[axis] = batch.reference[axis] * batch.inverse_unit;
     for (std::size_t eight = 0; eight < batch.count; eight += width_of<WideLanes>) {
 #pragma GCC unroll 2
         for (int step = 0; step < steps; ++step) {
