@@ -33,7 +33,7 @@ struct BatchResult {
 // the batch holds one, with no branch per lane group, and then returns false
 // without touching `result`: the batch is run again carefully. Both passes
 // give the same bits for every triangle that is neither.
-template <TriangleForm form, class Wide, bool careful, class Scalar, class Index>
+template <TriangleForm form, class Wide, bool fused, bool careful, class Scalar, class Index>
 __attribute__((always_inline)) inline bool integrate_gathered(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
@@ -52,6 +52,11 @@ __attribute__((always_inline)) inline bool integrate_gathered(
     // Over the fast pass: the smallest squared |δ| and twice area less the
     // degeneracy threshold (1 is above the thresholds of both).
     Wide smallest_norm = Wide{} + 1.0, smallest_margin = Wide{} + 1.0;
+    // The reference point in units, exact where the move is fused.
+    double reference_in_units[3] = {};
+    if constexpr (fused)
+        for (int axis = 0; axis < 3; ++axis)
+            reference_in_units[axis] = batch.reference[axis] * batch.inverse_unit;
     for (std::size_t eight = 0; eight < batch.count; eight += width_of<WideLanes>) {
 #pragma GCC unroll 2
         for (int step = 0; step < steps; ++step) {
@@ -66,7 +71,16 @@ __attribute__((always_inline)) inline bool integrate_gathered(
                     Wide coordinate;
                     std::memcpy(&coordinate, &gathered.coordinates[axis][vertex][first],
                                 sizeof coordinate);
-                    p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
+                    if constexpr (fused) {
+                        // coordinate · unit⁻¹ − reference · unit⁻¹, rounded once: the
+                        // same bits as below (fused_move_is_exact); one instruction
+                        // for each lane group with FMA.
+                        for (int lane = 0; lane < width; ++lane)
+                            p[axis][vertex][lane] = std::fma(coordinate[lane], batch.inverse_unit,
+                                                             -reference_in_units[axis]);
+                    } else {
+                        p[axis][vertex] = (coordinate - batch.reference[axis]) * batch.inverse_unit;
+                    }
                 }
             const TriangleEdges<Wide> edges(p);
             // Lane groups past the batch's end add nothing; padding lanes add zeros.
@@ -136,23 +150,40 @@ __attribute__((always_inline)) inline bool integrate_gathered(
     return true;
 }
 
-template <TriangleForm form, class Wide, class Scalar, class Index>
+template <TriangleForm form, class Wide, bool fused, class Scalar, class Index>
 __attribute__((always_inline)) inline void integrate_batch(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
     if (batch.count == batch_capacity &&
-        integrate_gathered<form, Wide, false>(batch, gathered, result))
+        integrate_gathered<form, Wide, fused, false>(batch, gathered, result))
         return;
-    integrate_gathered<form, Wide, true>(batch, gathered, result);
+    integrate_gathered<form, Wide, fused, true>(batch, gathered, result);
 }
 
-// The kernel built for each instruction set. No FMA: a fused multiply-add
-// rounds once where the baseline rounds twice (and the file is compiled with
-// -ffp-contract=off, so that no other target fuses either).
+// Whether the move into the integration frame, (c − r)·u⁻¹ (c a coordinate, r
+// the reference point's, u⁻¹ the inverse unit, a power of two), gives the
+// same bits fused as c·u⁻¹ − r·u⁻¹ rounded once, for every coordinate within
+// `size` of the reference (IntegrationSettings), on every axis
+// (docs/integrals.md, section 5): r is zero (c − r is then exact), or r·u⁻¹ is
+// a normal double (so exact) at least 2^-1021 and below 2^1000 (then a c − r
+// that rounds is at least |r|/2, so its move stays normal, where scaling by a
+// power of two commutes with rounding). Any other frame is integrated unfused.
+bool fused_move_is_exact(const double (&reference)[3], double inverse_unit) {
+    for (double r : reference) {
+        const double in_units = std::abs(r) * inverse_unit;
+        if (r != 0.0 && !(in_units >= 0x1p-1021 && in_units < 0x1p1000)) return false;
+    }
+    return true;
+}
+
+// The kernel built for each instruction set. The baseline does not fuse a
+// multiply and an add (x86-64 without FMA would do it in software): the file
+// is compiled with -ffp-contract=off, and the AVX-512 kernel fuses the move
+// into the frame alone, only where that gives the baseline's bits.
 template <TriangleForm form, class Scalar, class Index>
 void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch,
                               const GatheredTriangles& gathered, BatchResult& result) {
-    integrate_batch<form, Lanes>(batch, gathered, result);
+    integrate_batch<form, Lanes, false>(batch, gathered, result);
 }
 
 #if defined(__x86_64__)
@@ -160,14 +191,14 @@ template <TriangleForm form, class Scalar, class Index>
 __attribute__((target("avx2"))) void integrate_batch_avx2(const TriangleBatch<Scalar, Index>& batch,
                                                           const GatheredTriangles& gathered,
                                                           BatchResult& result) {
-    integrate_batch<form, Lanes>(batch, gathered, result);
+    integrate_batch<form, Lanes, false>(batch, gathered, result);
 }
 
 template <TriangleForm form, class Scalar, class Index>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw"))) void integrate_batch_avx512(
     const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
     BatchResult& result) {
-    integrate_batch<form, WideLanes>(batch, gathered, result);
+    integrate_batch<form, WideLanes, true>(batch, gathered, result);
 }
 #endif
 
@@ -175,13 +206,19 @@ template <class Scalar, class Index>
 using BatchKernel = void (*)(const TriangleBatch<Scalar, Index>&, const GatheredTriangles&,
                              BatchResult&);
 
+// The kernel of `set`; where the fused move would not give the baseline's
+// bits (fused_move_is_exact), AVX2's instead of AVX-512's (a processor with
+// AVX-512 runs AVX2).
 template <TriangleForm form, class Scalar, class Index>
-BatchKernel<Scalar, Index> batch_kernel(InstructionSet set) {
+BatchKernel<Scalar, Index> batch_kernel(InstructionSet set, bool fused_move_exact) {
 #if defined(__x86_64__)
-    if (set == InstructionSet::avx512) return integrate_batch_avx512<form, Scalar, Index>;
+    if (set == InstructionSet::avx512 && fused_move_exact)
+        return integrate_batch_avx512<form, Scalar, Index>;
+    if (set == InstructionSet::avx512) return integrate_batch_avx2<form, Scalar, Index>;
     if (set == InstructionSet::avx2) return integrate_batch_avx2<form, Scalar, Index>;
 #endif
     (void)set;
+    (void)fused_move_exact;
     return integrate_batch_baseline<form, Scalar, Index>;
 }
 
@@ -189,9 +226,10 @@ BatchKernel<Scalar, Index> batch_kernel(InstructionSet set) {
 // polygons the flux form, whose face sums add up with the polygons' (the two
 // forms agree on a closed surface's totals, not face by face).
 template <class Scalar, class Index>
-BatchKernel<Scalar, Index> batch_kernel(InstructionSet set, bool all_triangles) {
-    return all_triangles ? batch_kernel<TriangleForm::cone, Scalar, Index>(set)
-                         : batch_kernel<TriangleForm::flux, Scalar, Index>(set);
+BatchKernel<Scalar, Index> batch_kernel(InstructionSet set, bool all_triangles,
+                                        bool fused_move_exact) {
+    return all_triangles ? batch_kernel<TriangleForm::cone, Scalar, Index>(set, fused_move_exact)
+                         : batch_kernel<TriangleForm::flux, Scalar, Index>(set, fused_move_exact);
 }
 
 // What one block of faces adds up, in integration units.
@@ -229,7 +267,11 @@ public:
                     double unit)
         : settings_(settings),
           gatherer_(triangle_gatherer<Scalar, Index>(settings.instruction_set)),
-          kernel_(batch_kernel<Scalar, Index>(settings.instruction_set, mesh.all_triangles())) {
+          kernel_(batch_kernel<Scalar, Index>(
+              settings.instruction_set, mesh.all_triangles(),
+              fused_move_is_exact(
+                  {settings.reference[0], settings.reference[1], settings.reference[2]},
+                  1.0 / unit))) {
         batch_.positions = mesh.positions;
         batch_.indices = mesh.indices;
         for (int axis = 0; axis < 3; ++axis) batch_.reference[axis] = settings.reference[axis];

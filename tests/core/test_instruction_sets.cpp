@@ -3,7 +3,8 @@
 // alone) and whatever order its blocks of faces run in: random triangle
 // soups with partial batches, degenerate triangles and slivers, far from the
 // origin; polygon meshes with planar and non-planar faces; float positions
-// and 16-bit indices; a mesh of more than one block of faces; and a vertex
+// and 16-bit indices; a reference point a subnormal step off the origin; a
+// mesh of more than one block of faces; and a vertex
 // array that ends where an unreadable page begins. With used marks (the
 // trusted path's), the same bits, the same marks, and a pass that stops at
 // an index out of range wherever it is.
@@ -279,6 +280,12 @@ int main() {
         check_all_sets<float, std::uint16_t>("triangles, float, 16-bit indices", near,
                                              Eigen::Vector3d::Zero(), 4.0);
     }
+    // A reference point off the origin by less than 2^-1021 units: the
+    // AVX-512 kernel's fused move into the frame could round otherwise than
+    // the baseline's there, so the frame is integrated unfused.
+    check_all_sets<double, std::uint32_t>("triangles about a subnormal reference",
+                                          triangle_soup(100, Eigen::Vector3d::Zero(), random),
+                                          Eigen::Vector3d(1e-310, -3e-320, 0.0), 4.0);
     for (std::size_t faces : {5, 70, 700}) {
         const TestMesh polygons = polygon_soup(faces, random);
         check_all_sets<double, std::uint32_t>("polygons", polygons, Eigen::Vector3d::Zero(), 6.0);
