@@ -126,7 +126,8 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
 // shares). Every used vertex is hashed once, in blocks of kItemsPerBlock, and
 // dealt to its share, in index order (the order a share's pass reads them in:
 // with a few shares, almost every position in turn). Each share allocates its
-// own table, taken from `memory` one thread at a time. The shares' numbers are
+// own table and list of lowest vertices, taken from `memory` one thread at a
+// time. The shares' numbers are
 // then merged into one numbering in the order of the lowest vertices (each
 // share's are ascending), and every vertex renumbered, in blocks.
 template <class Scalar, class Index>
@@ -180,7 +181,7 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
         in_shares[ends[block * shares + share_of(high_halves[vertex])]++] = vertex;
     });
     std::pmr::synchronized_pool_resource one_at_a_time(memory);
-    std::pmr::vector<std::pmr::vector<std::uint32_t>> lowest_of_share(shares, memory);
+    std::pmr::vector<std::pmr::vector<std::uint32_t>> lowest_of_share(shares, &one_at_a_time);
     tasks.run(shares, [&](std::size_t share) {
         const std::uint32_t* const own = in_shares.data() + share_starts[share];
         lowest_of_share[share] = weld_share(
@@ -208,7 +209,6 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
         numbered.lowest_vertex[number] = lowest_of_share[least][next[least]];
         renumbered[first_of_share[least] + next[least]++] = std::uint32_t(number);
     }
-    for (std::size_t share = 0; share < shares; ++share) let_go(lowest_of_share[share]);
     each_used([&](std::size_t, std::uint32_t vertex) {
         number_of[vertex] =
             renumbered[first_of_share[share_of(high_halves[vertex])] + number_of[vertex]];
