@@ -107,23 +107,17 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         return analysis;
     }
 
-    // The intersection check takes each vertex's lowest welded vertex; the
-    // topology and the shells, the welded positions numbered densely.
-    std::pmr::vector<std::uint32_t> welded(memory);
+    // The topology and the shells take the welded positions numbered densely.
     NumberedVertices numbered(memory);
     if (settings.weld && (settings.check_topology || settings.list_shells)) {
-        welded = weld_vertices(mesh, scan, settings.weld_tolerance, tasks, memory);
-        analysis.used_vertex_count = distinct_vertices(welded, scan);
+        numbered = weld_and_number(mesh, scan, settings.weld_tolerance, tasks, memory);
+        analysis.used_vertex_count = numbered.lowest_vertex.size();
         // Every vertex used and no two at one position (an indexed mesh, as
-        // most are): the weld maps each vertex to itself, so each vertex is
-        // its own identity, and neither the map nor a numbering of it is kept.
-        if (analysis.used_vertex_count == mesh.vertex_count)
-            welded = std::pmr::vector<std::uint32_t>(memory);
-        else
-            numbered = number_welded_vertices(welded, scan, analysis.used_vertex_count, memory);
+        // most are): each vertex is its own identity, and no numbering is kept.
+        if (analysis.used_vertex_count == mesh.vertex_count) numbered = NumberedVertices(memory);
     }
-    const std::uint32_t* vertex_ids = welded.empty() ? nullptr : welded.data();
-    const VertexIdentities identities = welded.empty() ? VertexIdentities{} : numbered.identities();
+    const bool welded = !numbered.lowest_vertex.empty();
+    const VertexIdentities identities = welded ? numbered.identities() : VertexIdentities{};
     // The vertices joined along the edges by the topology check: the shells' sets.
     std::pmr::vector<std::uint32_t> vertex_sets(memory);
     // The shells as connected pieces, when they were not judged.
@@ -157,8 +151,13 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     }
     if (settings.check_topology && settings.check_intersections && std::isfinite(scan.diagonal())) {
         const Shells* shells = analysis.shells ? &analysis.shells->shells : nullptr;
-        analysis.overlaps = find_overlaps(mesh, vertex_ids, integration.reference, integration.size,
-                                          shells, tasks, memory);
+        // The check takes each vertex's lowest welded vertex.
+        const std::pmr::vector<std::uint32_t> lowest =
+            welded ? lowest_welded_vertices(numbered, scan, memory)
+                   : std::pmr::vector<std::uint32_t>(memory);
+        analysis.overlaps =
+            find_overlaps(mesh, welded ? lowest.data() : nullptr, integration.reference,
+                          integration.size, shells, tasks, memory);
         if (!analysis.overlaps->winding_of_shell.empty())
             classify_by_winding(*analysis.shells, analysis.overlaps->winding_of_shell,
                                 analysis.verdict.outward);

@@ -1,8 +1,7 @@
 // The identities the topology checks and the shells count vertices by. Without
-// welding, a vertex index is its own identity. After welding (weld_vertices:
-// each used vertex mapped to the lowest used vertex at its position), each
-// position is numbered densely, 0 .. count - 1 in the order of its lowest
-// vertex: the checks' per-identity arrays are then sized by the distinct
+// welding, a vertex index is its own identity. After welding (weld_and_number,
+// welding.hpp), each position is numbered densely, 0 .. count - 1 in the
+// order of its lowest vertex: the checks' per-identity arrays are then sized by the distinct
 // positions, not by a soup's copies of them (a welded STL has six copies of
 // each), and stay in cache as the soup grows. The numbering keeps the order
 // of the lowest vertices, so ordered findings ("lowest first") and
@@ -47,11 +46,13 @@ struct NumberedVertices {
     }
 };
 
-// welded: weld_vertices' answer for the mesh `scan` scanned; distinct: how
-// many positions it leaves (distinct_vertices: the one block of identities is
-// taken at its size, not grown - a context keeps a handful of freed blocks
-// for its next call, capi/scratch_memory.hpp). One pass in vertex order: a
-// vertex's lowest welded vertex is never above it, so it is numbered first.
+// The numbering of a weld given as each vertex's lowest welded vertex (the
+// weld within a tolerance; the exact weld numbers as it hashes). welded:
+// weld_vertices' answer for the mesh `scan` scanned; distinct: how many
+// positions it leaves (the one block of identities is taken at its size, not
+// grown - a context keeps a handful of freed blocks for its next call,
+// capi/scratch_memory.hpp). One pass in vertex order: a vertex's lowest welded
+// vertex is never above it, so it is numbered first.
 inline NumberedVertices number_welded_vertices(const std::pmr::vector<std::uint32_t>& welded,
                                                const MeshScan& scan, std::size_t distinct,
                                                std::pmr::memory_resource* memory) {

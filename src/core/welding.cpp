@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory_resource>
+#include <numeric>
 #include <utility>
 
 #include "position_hash.hpp"
@@ -14,17 +15,10 @@
 namespace polymass::core {
 namespace {
 
-// Identity for every vertex up to the last one a face may use.
+// How many vertices a weld maps: every one up to the last a face may use.
 template <class Scalar, class Index>
-std::pmr::vector<std::uint32_t> identity_map(const MeshView<Scalar, Index>& mesh,
-                                             const MeshScan& scan,
-                                             std::pmr::memory_resource* memory) {
-    const std::size_t addressable = scan.used.size() * 64;
-    std::pmr::vector<std::uint32_t> representative(std::min(mesh.vertex_count, addressable),
-                                                   memory);
-    for (std::size_t vertex = 0; vertex < representative.size(); ++vertex)
-        representative[vertex] = std::uint32_t(vertex);
-    return representative;
+std::size_t welded_count(const MeshView<Scalar, Index>& mesh, const MeshScan& scan) {
+    return std::min(mesh.vertex_count, scan.used.size() * 64);
 }
 
 // The used vertices among the first `count`, in index order.
@@ -38,42 +32,46 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
 }
 
 // One hashing pass over the used vertices in index order (no list of them): the
-// first vertex met at a position (the lowest index) enters the table and names
-// every later one with the same bits. On several threads, each runs the pass
-// over a share of the positions, chosen by hash, with a table of its own: every
-// copy of a position is in one share, so each vertex gets the same answer from
-// its share as from one pass over all. The table holds only
-// distinct positions (a triangle soup asks about each corner, but has a sixth
-// as many vertices), in open addressing with linear probing, at most half full.
-// Each slot keeps the vertex with the high half of its hash, so that a probe
-// reads another vertex's coordinates only when the halves agree (almost only
-// for a copy), and the slot of a vertex a few ahead is prefetched: the table
-// outgrows the caches, and waiting on it was the pass's cost. A vertex's first
-// slot is taken from that high half too, so that the table grows by moving its
-// slots alone: rehashing read every held vertex's coordinates in random order,
-// a third of the weld of a million-triangle STL. Comparing bits rather than
-// values is exact welding for finite coordinates and still defined for NaN
-// (copies of one NaN are one vertex), which sorting is not.
+// first vertex met at a position (the lowest index) enters the table, and the
+// position is numbered in the order met; every later vertex with the same bits
+// gets that number. Returns each number's lowest vertex, ascending. On several
+// threads, each runs the pass over a share of the positions, chosen by hash,
+// with a table of its own: every copy of a position is in one share, so each
+// vertex meets in its share the same lowest vertex as in one pass over all
+// (the numbers, the share's own, are then merged: weld_exact). The table holds
+// only distinct positions (a triangle soup asks about each corner, but has a
+// sixth as many vertices), in open addressing with linear probing, at most half
+// full. Each slot keeps the position's number with the high half of its hash,
+// so that a probe reads a held position's coordinates only when the halves
+// agree (almost only for a copy), and the slot of a vertex a few ahead is
+// prefetched: the table outgrows the caches, and waiting on it was the pass's
+// cost. A vertex's first slot is taken from that high half too, so that the
+// table grows by moving its slots alone: rehashing read every held vertex's
+// coordinates in random order, a third of the weld of a million-triangle STL.
+// Comparing bits rather than values is exact welding for finite coordinates
+// and still defined for NaN (copies of one NaN are one vertex), which sorting
+// is not.
 template <class Scalar, class Index, class VertexAt, class HashOf>
-void weld_share(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, std::size_t items,
-                VertexAt&& vertex_at, HashOf&& hash_of,
-                std::pmr::vector<std::uint32_t>& representative,
-                std::pmr::memory_resource* memory) {
+std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
+                                           const MeshScan& scan, std::size_t items,
+                                           VertexAt&& vertex_at, HashOf&& hash_of,
+                                           std::uint32_t* number_of,
+                                           std::pmr::memory_resource* memory) {
     using Bits = std::array<std::uint64_t, 3>;
     const auto bits_of = [&](std::uint32_t vertex) {
         const Eigen::Vector3d p = mesh.positions[vertex];
         return Bits{position_bits(p.x()), position_bits(p.y()), position_bits(p.z())};
     };
-    // A slot: the hash's high half, then the vertex index + 1 (0: empty).
-    const auto slot_of = [](std::uint64_t hash, std::uint32_t vertex) {
-        return (hash & 0xFFFFFFFF00000000ull) | (std::uint64_t(vertex) + 1);
+    // A slot: the hash's high half, then the position's number + 1 (0: empty).
+    const auto slot_of = [](std::uint64_t hash, std::size_t number) {
+        return (hash & 0xFFFFFFFF00000000ull) | (std::uint64_t(number) + 1);
     };
     std::pmr::vector<std::uint64_t> slots(std::size_t(1) << 12, 0, memory);
+    std::pmr::vector<std::uint32_t> lowest(memory);  // of each number
     // The first slot to probe for a hash, or for a slot holding it.
     const auto home = [&](std::uint64_t hash_or_slot) {
         return std::size_t(hash_or_slot >> 32) & (slots.size() - 1);
     };
-    std::size_t distinct = 0;
     const auto place = [&](std::uint64_t entry) {
         const std::size_t mask = slots.size() - 1;
         std::size_t slot = home(entry);
@@ -103,45 +101,53 @@ void weld_share(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, std::
         for (; slots[slot] != 0; slot = (slot + 1) & mask) {
             const std::uint64_t entry = slots[slot];
             if ((entry & 0xFFFFFFFF00000000ull) != tag) continue;
-            const Bits held = bits_of(std::uint32_t(entry) - 1);
+            const Bits held = bits_of(lowest[std::uint32_t(entry) - 1]);
             if (held[0] == bits[0] && held[1] == bits[1] && held[2] == bits[2]) break;
         }
         if (slots[slot] != 0) {
-            representative[vertex] = std::uint32_t(slots[slot]) - 1;
+            number_of[vertex] = std::uint32_t(slots[slot]) - 1;
             continue;
         }
-        slots[slot] = slot_of(hash, vertex);
-        if (2 * ++distinct > slots.size()) {
+        number_of[vertex] = std::uint32_t(lowest.size());
+        slots[slot] = slot_of(hash, lowest.size());
+        lowest.push_back(vertex);
+        if (2 * lowest.size() > slots.size()) {
             std::pmr::vector<std::uint64_t> held(std::move(slots));
             slots = std::pmr::vector<std::uint64_t>(2 * held.size(), 0, memory);
             for (const std::uint64_t entry : held)
                 if (entry != 0) place(entry);
         }
     }
+    return lowest;
 }
 
-// The exact weld in shares on `tasks` (a share a thread, each of at least a
-// block of used vertices; the answer is the same for any number of shares).
-// Every used vertex is hashed once, in blocks of kItemsPerBlock, and dealt to
-// its share, in index order (the order a share's pass reads them in: with a
-// few shares, almost every position in turn). Each share allocates its own
-// table, taken from `memory` one thread at a time.
+// The exact weld, numbered, in shares on `tasks` (a share a thread, each of at
+// least a block of used vertices; the answer is the same for any number of
+// shares). Every used vertex is hashed once, in blocks of kItemsPerBlock, and
+// dealt to its share, in index order (the order a share's pass reads them in:
+// with a few shares, almost every position in turn). Each share allocates its
+// own table and list of lowest vertices, taken from `memory` one thread at a
+// time. The shares' numbers are
+// then merged into one numbering in the order of the lowest vertices (each
+// share's are ascending), and every vertex renumbered, in blocks.
 template <class Scalar, class Index>
-void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
-                std::pmr::vector<std::uint32_t>& representative, TaskRunner& tasks,
-                std::pmr::memory_resource* memory) {
+NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                            TaskRunner& tasks, std::pmr::memory_resource* memory) {
     const auto hash_of = [&](std::uint32_t vertex) {
         const Eigen::Vector3d p = mesh.positions[vertex];
         return position_hash({position_bits(p.x()), position_bits(p.y()), position_bits(p.z())});
     };
-    const std::size_t count = representative.size();
+    NumberedVertices numbered(memory);
+    const std::size_t count = welded_count(mesh, scan);
+    numbered.of_vertex.resize(count);
+    std::uint32_t* const number_of = numbered.of_vertex.data();
     const std::size_t shares = std::max<std::size_t>(
         1, std::min(tasks.concurrency(), scan.used_vertex_count / kItemsPerBlock));
     if (shares == 1) {
-        weld_share(
+        numbered.lowest_vertex = weld_share(
             mesh, scan, count, [](std::size_t item) { return std::uint32_t(item); }, hash_of,
-            representative, memory);
-        return;
+            number_of, memory);
+        return numbered;
     }
     // A share from the hash's high half's highest bits (its lowest pick the slot).
     const auto share_of = [shares](std::uint32_t high_half) {
@@ -175,14 +181,39 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
         in_shares[ends[block * shares + share_of(high_halves[vertex])]++] = vertex;
     });
     std::pmr::synchronized_pool_resource one_at_a_time(memory);
+    std::pmr::vector<std::pmr::vector<std::uint32_t>> lowest_of_share(shares, &one_at_a_time);
     tasks.run(shares, [&](std::size_t share) {
         const std::uint32_t* const own = in_shares.data() + share_starts[share];
-        weld_share(
+        lowest_of_share[share] = weld_share(
             mesh, scan, share_starts[share + 1] - share_starts[share],
             [own](std::size_t item) { return own[item]; },
             [&](std::uint32_t vertex) { return std::uint64_t(high_halves[vertex]) << 32; },
-            representative, &one_at_a_time);
+            number_of, &one_at_a_time);
     });
+    // first_of_share[share]: where the share's numbers start in `renumbered`,
+    // which gives each the number it has among all shares'.
+    std::pmr::vector<std::size_t> first_of_share(shares + 1, 0, memory);
+    for (std::size_t share = 0; share < shares; ++share)
+        first_of_share[share + 1] = first_of_share[share] + lowest_of_share[share].size();
+    const std::size_t distinct = first_of_share[shares];
+    std::pmr::vector<std::uint32_t> renumbered(distinct, memory);
+    numbered.lowest_vertex.resize(distinct);
+    std::pmr::vector<std::size_t> next(shares, 0, memory);  // of each share's, the next to merge
+    for (std::size_t number = 0; number < distinct; ++number) {
+        std::size_t least = shares;
+        for (std::size_t share = 0; share < shares; ++share)
+            if (next[share] < lowest_of_share[share].size() &&
+                (least == shares ||
+                 lowest_of_share[share][next[share]] < lowest_of_share[least][next[least]]))
+                least = share;
+        numbered.lowest_vertex[number] = lowest_of_share[least][next[least]];
+        renumbered[first_of_share[least] + next[least]++] = std::uint32_t(number);
+    }
+    each_used([&](std::size_t, std::uint32_t vertex) {
+        number_of[vertex] =
+            renumbered[first_of_share[share_of(high_halves[vertex])] + number_of[vertex]];
+    });
+    return numbered;
 }
 
 // A grid of cells `distance` wide: vertices in one cell are within `distance`
@@ -191,11 +222,14 @@ void weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
 // the vertices by cell groups each cell's and lets a merge-like walk meet each
 // cell's 26 neighbours. The cost is O(n log n) unless many distinct vertices
 // crowd two adjacent cells without touching (then it is their product).
+// Returns each used vertex's lowest welded vertex, unused vertices their own.
 template <class Scalar, class Index>
-void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, double distance,
-                 const std::pmr::vector<std::uint32_t>& used,
-                 std::pmr::vector<std::uint32_t>& representative,
-                 std::pmr::memory_resource* memory) {
+std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
+                                            const MeshScan& scan, double distance,
+                                            std::pmr::memory_resource* memory) {
+    std::pmr::vector<std::uint32_t> representative(welded_count(mesh, scan), memory);
+    std::iota(representative.begin(), representative.end(), 0u);
+    const std::pmr::vector<std::uint32_t> used = used_vertices(scan, representative.size(), memory);
     using Cell = std::array<std::int64_t, 3>;
     // Cells compared coordinate by coordinate in line: std::array's own
     // operators call memcmp and a generic lexicographic loop, which were half
@@ -273,6 +307,17 @@ void weld_within(const MeshView<Scalar, Index>& mesh, const MeshScan& scan, doub
         }
     }
     for (const std::uint32_t vertex : used) representative[vertex] = sets.find(vertex);
+    return representative;
+}
+
+// How close two vertices must be to be one: at least 2^-50 of the extent (a
+// few of its ulps), so that every cell coordinate fits in an int64; 0 for an
+// exact weld, and for a mesh that is one point or whose extent is past the
+// largest double (they weld exact copies only).
+double weld_distance(const MeshScan& scan, double tolerance) {
+    const double extent = scan.bounds.isEmpty() ? 0.0 : scan.bounds.sizes().maxCoeff();
+    const double distance = std::max(tolerance, 0x1p-50) * extent;
+    return tolerance > 0.0 && std::isfinite(distance) ? distance : 0.0;
 }
 
 }  // namespace
@@ -282,18 +327,31 @@ std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mes
                                               const MeshScan& scan, double tolerance,
                                               TaskRunner& tasks,
                                               std::pmr::memory_resource* memory) {
-    std::pmr::vector<std::uint32_t> representative = identity_map(mesh, scan, memory);
-    // At least 2^-50 of the extent (a few of its ulps), so that every cell
-    // coordinate fits in an int64. Zero (an exact weld, or a mesh that is one
-    // point) and an extent past the largest double weld exact copies only.
-    const double extent = scan.bounds.isEmpty() ? 0.0 : scan.bounds.sizes().maxCoeff();
-    const double distance = std::max(tolerance, 0x1p-50) * extent;
-    if (tolerance > 0.0 && distance > 0.0 && std::isfinite(distance))
-        weld_within(mesh, scan, distance, used_vertices(scan, representative.size(), memory),
-                    representative, memory);
-    else
-        weld_exact(mesh, scan, representative, tasks, memory);
-    return representative;
+    const double distance = weld_distance(scan, tolerance);
+    if (distance > 0.0) return weld_within(mesh, scan, distance, memory);
+    return lowest_welded_vertices(weld_exact(mesh, scan, tasks, memory), scan, memory);
+}
+
+template <class Scalar, class Index>
+NumberedVertices weld_and_number(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                                 double tolerance, TaskRunner& tasks,
+                                 std::pmr::memory_resource* memory) {
+    const double distance = weld_distance(scan, tolerance);
+    if (distance == 0.0) return weld_exact(mesh, scan, tasks, memory);
+    const std::pmr::vector<std::uint32_t> lowest = weld_within(mesh, scan, distance, memory);
+    const std::size_t distinct = count_used_with(
+        scan, lowest.size(), [&](std::uint32_t vertex) { return lowest[vertex] == vertex; });
+    return number_welded_vertices(lowest, scan, distinct, memory);
+}
+
+std::pmr::vector<std::uint32_t> lowest_welded_vertices(const NumberedVertices& numbered,
+                                                       const MeshScan& scan,
+                                                       std::pmr::memory_resource* memory) {
+    std::pmr::vector<std::uint32_t> lowest(numbered.of_vertex.size(), memory);
+    for (std::size_t vertex = 0; vertex < lowest.size(); ++vertex)
+        lowest[vertex] = scan.is_used(vertex) ? numbered.lowest_vertex[numbered.of_vertex[vertex]]
+                                              : std::uint32_t(vertex);
+    return lowest;
 }
 
 template <class Scalar>
@@ -331,10 +389,13 @@ template WeldedPositions weld_positions<double>(const PositionArray<double>&, st
 template WeldedPositions weld_positions<float>(const PositionArray<float>&, std::size_t, double,
                                                TaskRunner&, std::pmr::memory_resource*);
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                   \
-    template std::pmr::vector<std::uint32_t> weld_vertices<Scalar, Index>(    \
-        const MeshView<Scalar, Index>&, const MeshScan&, double, TaskRunner&, \
-        std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                                        \
+    template std::pmr::vector<std::uint32_t> weld_vertices<Scalar, Index>(                         \
+        const MeshView<Scalar, Index>&, const MeshScan&, double, TaskRunner&,                      \
+        std::pmr::memory_resource*);                                                               \
+    template NumberedVertices weld_and_number<Scalar, Index>(const MeshView<Scalar, Index>&,       \
+                                                             const MeshScan&, double, TaskRunner&, \
+                                                             std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -17,6 +17,7 @@
 #include "mesh_scan.hpp"
 #include "mesh_view.hpp"
 #include "task_runner.hpp"
+#include "vertex_identities.hpp"
 
 namespace polymass::core {
 
@@ -32,6 +33,21 @@ template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_vertices(const MeshView<Scalar, Index>& mesh,
                                               const MeshScan& scan, double tolerance,
                                               TaskRunner& tasks, std::pmr::memory_resource* memory);
+
+// The same weld, numbered (vertex_identities.hpp): each used vertex's
+// position numbered 0 .. n - 1 in the order of its lowest vertex, and each
+// number's lowest vertex. The exact weld numbers as it hashes (a pass fewer
+// than numbering weld_vertices' answer); the same numbers whatever runs the
+// tasks.
+template <class Scalar, class Index>
+NumberedVertices weld_and_number(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
+                                 double tolerance, TaskRunner& tasks,
+                                 std::pmr::memory_resource* memory);
+
+// weld_vertices' answer from weld_and_number's (the mesh `scan` scanned).
+std::pmr::vector<std::uint32_t> lowest_welded_vertices(const NumberedVertices& numbered,
+                                                       const MeshScan& scan,
+                                                       std::pmr::memory_resource* memory);
 
 // Welding a caller's positions alone, with no faces (polymass_weld_positions):
 // every position is a vertex.
@@ -52,13 +68,5 @@ template <class Scalar>
 WeldedPositions weld_positions(const PositionArray<Scalar>& positions, std::size_t count,
                                double tolerance, TaskRunner& tasks,
                                std::pmr::memory_resource* memory);
-
-// How many vertices are left once `welded` (weld_vertices' answer) is applied:
-// the used vertices that are their own smallest welded index.
-inline std::size_t distinct_vertices(const std::pmr::vector<std::uint32_t>& welded,
-                                     const MeshScan& scan) {
-    return count_used_with(scan, welded.size(),
-                           [&](std::uint32_t vertex) { return welded[vertex] == vertex; });
-}
 
 }  // namespace polymass::core

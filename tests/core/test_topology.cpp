@@ -8,7 +8,11 @@
 // mesh is also checked as a welded soup (every corner its own copy of its
 // vertex, the copies numbered at random among more, with unused ones between):
 // its welded positions numbered densely (vertex_identities.hpp) give the report
-// and the sets of the soup with each copy replaced by its lowest one.
+// and the sets of the soup with each copy replaced by its lowest one; with each
+// copy at its vertex's position (the unused ones apart), the exact weld's own
+// numbering (weld_and_number) is that one, on one share and on several (a
+// soup of 204,000 corners: shares of at least 65,536 used vertices), in any
+// order of the tasks.
 #include <algorithm>
 #include <cstdint>
 #include <functional>
@@ -25,6 +29,8 @@
 #include "core/task_runner.hpp"
 #include "core/topology.hpp"
 #include "core/vertex_identities.hpp"
+#include "core/welding.hpp"
+#include "core/worker_pool.hpp"
 #include "reversed_task_runner.hpp"
 #include "test_mesh.hpp"
 
@@ -36,6 +42,19 @@ using polymass::core::InstructionSet;
 using polymass::core::TopologyReport;
 using polymass::core::VertexIdentities;
 using polymass_test::TestMesh;
+
+// Runs the tasks last first, as a runner of `concurrency` threads might.
+class ReversedRunner final : public polymass::core::TaskRunner {
+public:
+    explicit ReversedRunner(std::size_t concurrency) : concurrency_(concurrency) {}
+    void run(std::size_t count, const std::function<void(std::size_t)>& task) override {
+        for (std::size_t i = count; i-- > 0;) task(i);
+    }
+    std::size_t concurrency() const override { return concurrency_; }
+
+private:
+    std::size_t concurrency_;
+};
 
 // A closed torus of rows x columns quads, two triangles each, its vertices
 // numbered at random.
@@ -198,13 +217,40 @@ void check_mesh(const TestMesh& mesh) {
     });
 }
 
+// The exact weld of `soup` numbers its used vertices as `expected` does, on
+// one thread, reversed as on three and on two threads.
+void check_weld(const TestMesh& soup, const polymass::core::NumberedVertices& expected) {
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    polymass::core::SerialTaskRunner serial;
+    ReversedRunner reversed(3);
+    polymass::core::WorkerPool pool(2, memory);
+    for (polymass::core::TaskRunner* tasks :
+         std::initializer_list<polymass::core::TaskRunner*>{&serial, &reversed, &pool}) {
+        const polymass::core::MeshScan scan =
+            polymass::core::scan_mesh(soup.view(), memory, *tasks);
+        const polymass::core::NumberedVertices numbered =
+            polymass::core::weld_and_number(soup.view(), scan, 0.0, *tasks, memory);
+        CHECK(numbered.lowest_vertex == expected.lowest_vertex);
+        bool same = true;
+        for (const std::uint32_t vertex : soup.indices)
+            same &= numbered.of_vertex[vertex] == expected.of_vertex[vertex];
+        CHECK(same);
+    }
+}
+
 // `mesh` as a welded soup (above).
 void check_welded_soup(const TestMesh& mesh, std::mt19937& random) {
     std::vector<std::uint32_t> copy(mesh.indices.size() + mesh.indices.size() / 2);
     std::iota(copy.begin(), copy.end(), 0u);
     std::shuffle(copy.begin(), copy.end(), random);
     TestMesh soup = mesh;
+    // Copies of a vertex at one position, each unused copy at one of its own.
     soup.coordinates.assign(3 * copy.size(), 0.0);
+    for (std::size_t c = 0; c < copy.size(); ++c) soup.coordinates[3 * c] = -1.0 - double(c);
+    for (std::size_t at = 0; at < mesh.indices.size(); ++at) {
+        soup.coordinates[3 * copy[at]] = mesh.indices[at];
+        soup.coordinates[3 * copy[at] + 1] = 0.5;
+    }
     // Each copy's lowest copy (of one vertex), or itself when unused.
     std::pmr::vector<std::uint32_t> welded(copy.size(), std::pmr::new_delete_resource());
     std::iota(welded.begin(), welded.end(), 0u);
@@ -225,6 +271,7 @@ void check_welded_soup(const TestMesh& mesh, std::mt19937& random) {
     // Every identity named, in the order of the lowest copies.
     CHECK(std::adjacent_find(numbered.lowest_vertex.begin(), numbered.lowest_vertex.end(),
                              std::greater_equal<>()) == numbered.lowest_vertex.end());
+    check_weld(soup, numbered);
     TestMesh lowest = soup;
     for (std::uint32_t& vertex : lowest.indices) vertex = welded[vertex];
     const std::vector<std::uint32_t> expected_roots = reference_roots(lowest);
@@ -261,5 +308,9 @@ int main() {
         check_mesh(pieces);
         check_welded_soup(pieces, random);
     }
+    // Large enough for the weld's shares.
+    TestMesh large = torus_grid(170, 200, random);
+    break_faces(large, 30, random);
+    check_welded_soup(large, random);
     return polymass_test::finish("test_topology");
 }
