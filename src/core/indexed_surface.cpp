@@ -55,11 +55,14 @@ template <class Scalar, class Index>
 IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mesh,
                                               const std::uint32_t* vertex_ids,
                                               const Eigen::Vector3d& reference, double size,
-                                              TaskRunner& tasks, std::pmr::memory_resource* memory)
+                                              const Shells* shells, TaskRunner& tasks,
+                                              std::pmr::memory_resource* memory)
     : mesh_(mesh),
       triangles_(triangulate_faces(mesh, memory)),
       reference_(reference),
       per_unit_(1.0 / unit_length_near(size)),
+      shells_(shells),
+      shell_boxes_(memory),
       corner_bits_(memory),
       with_copies_(memory),
       copies_before_(memory),
@@ -85,7 +88,7 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
                                  [&](std::uint32_t face) { return face == next++; });
     if (one_face_each_) let_go(triangles_.face);
     // One pass over the triangles' positions for all that needs them: their
-    // copies' hash, corner extremes, degeneracy and boxes. Degenerate
+    // copies' hash, corner extremes, degeneracy, boxes and shells' boxes. Degenerate
     // triangles keep an empty box. (The boxes are allocated first: with the
     // hash keys first, the tool's peak memory on a million triangles was
     // 8 MB higher. A call's freed blocks are kept for its later requests,
@@ -94,17 +97,52 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     std::pmr::vector<FloatBox> boxes(size(), memory);
     corner_bits_.resize(size());
     std::pmr::vector<std::uint64_t> shape_keys(size(), memory);
-    for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
-        const Triangle corners = triangle(t);
-        shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
-        const bool degenerate = is_degenerate(corners);
-        const CornerOrder order = order_corners(corners);
-        corner_bits_[t] = order.extremes | std::uint32_t(degenerate) << kDegenerateBit;
-        // in_units is monotone (a positive scale), so it keeps the lowest
-        // and the highest: rounded outward, they bound the three corners.
-        if (!degenerate)
-            boxes[t] = FloatBox::spanning(in_units(order.lowest), in_units(order.highest));
-    });
+    // Each block's shells' boxes, per run of its triangles on one shell
+    // (numbered in the order of their first faces, a shell's faces mostly
+    // come together), joined in block order: the same boxes whatever the
+    // runner; at worst (shells' faces interleaved one by one) a run a
+    // triangle, 56 bytes, let go before the tree is built. The run being
+    // extended is the block's own, kept out of the list until it ends:
+    // extended in place in the list, it cost as much as the serial pass it
+    // replaced.
+    struct ShellRun {
+        std::uint32_t shell;
+        ShellBox box;
+    };
+    constexpr std::uint32_t kNoShell = UINT32_MAX;  // shells are fewer than faces
+    const bool boxes_shells = shells_ && shells_->count >= 2;
+    std::pmr::vector<std::pmr::vector<ShellRun>> runs_of_block(
+        boxes_shells ? block_count(size(), kFacesPerBlock) : 0, memory);
+    for_each_block(
+        size(), kFacesPerBlock, tasks, [&](std::size_t block, std::size_t begin, std::size_t end) {
+            ShellRun run{kNoShell, ShellBox()};
+            for (std::size_t t = begin; t < end; ++t) {
+                const Triangle corners = triangle(t);
+                shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
+                const bool degenerate = is_degenerate(corners);
+                const CornerOrder order = order_corners(corners);
+                corner_bits_[t] = order.extremes | std::uint32_t(degenerate) << kDegenerateBit;
+                // in_units is monotone (a positive scale), so it keeps the lowest
+                // and the highest: rounded outward, they bound the three corners.
+                if (!degenerate)
+                    boxes[t] = FloatBox::spanning(in_units(order.lowest), in_units(order.highest));
+                if (!boxes_shells) continue;
+                const std::uint32_t shell = shells_->of_face[face(t)];
+                if (shell != run.shell) {
+                    if (run.shell != kNoShell) runs_of_block[block].push_back(run);
+                    run = {shell, ShellBox()};
+                }
+                run.box.extend(order.lowest);
+                run.box.extend(order.highest);
+            }
+            if (run.shell != kNoShell) runs_of_block[block].push_back(run);
+        });
+    if (boxes_shells) {
+        shell_boxes_.resize(shells_->count);
+        for (const std::pmr::vector<ShellRun>& runs : runs_of_block)
+            for (const ShellRun& run : runs) shell_boxes_[run.shell].extend(run.box);
+        let_go(runs_of_block);
+    }
     find_copies(std::move(shape_keys), memory);
     for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
         if (lowest_copy(t) != t) boxes[t] = FloatBox();

@@ -3,7 +3,9 @@
 // positions in the same order) linked together, and a box tree over one
 // triangle of each shape. The search for meeting faces (surface_contacts.hpp)
 // walks the tree's overlapping pairs; the count of how shells nest
-// (shell_nesting.hpp) walks the triangles near its probing segments.
+// (shell_nesting.hpp) walks the triangles near its probing segments. With
+// two shells or more, each shell's exact box, which both use, is taken in
+// the same pass that boxes the triangles.
 //
 // Copies meet every other triangle alike, so the tree holds one triangle of
 // each shape, and the copies of the two shapes of a pair it finds are paired
@@ -19,6 +21,7 @@
 
 #include "box_tree.hpp"
 #include "mesh_view.hpp"
+#include "shells.hpp"
 #include "surface_triangles.hpp"
 #include "task_runner.hpp"
 #include "triangle_contact.hpp"
@@ -28,17 +31,32 @@ namespace polymass::core {
 // The end of a list of copies.
 inline constexpr std::uint32_t kNoCopy = UINT32_MAX;
 
+// A shell's box, exact: the least and greatest coordinates of its corners.
+struct ShellBox {
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+
+    void extend(const Eigen::Vector3d& p) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    void extend(const ShellBox& box) {
+        lo = lo.cwiseMin(box.lo);
+        hi = hi.cwiseMax(box.hi);
+    }
+};
+
 template <class Scalar, class Index>
 class IndexedSurface {
 public:
     // vertex_ids: welding (see weld_vertices), null meaning the index itself.
     // reference, size: a point near the surface and its size (the scan's
-    // bounding box centre and diagonal). Indices must be in range,
-    // coordinates finite, faces fewer than 2^32. Built in blocks on `tasks`;
-    // the same for every runner.
+    // bounding box centre and diagonal). shells: null, or the surface's
+    // shells, kept by pointer. Indices must be in range, coordinates finite,
+    // faces fewer than 2^32. Built in blocks on `tasks`; the same for every
+    // runner.
     IndexedSurface(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
-                   const Eigen::Vector3d& reference, double size, TaskRunner& tasks,
-                   std::pmr::memory_resource* memory);
+                   const Eigen::Vector3d& reference, double size, const Shells* shells,
+                   TaskRunner& tasks, std::pmr::memory_resource* memory);
 
     std::size_t size() const { return triangles_.corners.size(); }
     // Triangle t's corners as welded vertices, in the face's turn.
@@ -87,6 +105,12 @@ public:
     // The largest extent of the boxes, in the mesh's units.
     double span() const;
 
+    // The shells given, or null.
+    const Shells* shells() const { return shells_; }
+    // With two shells or more, each shell's box (by Shells' numbering);
+    // empty otherwise.
+    const std::pmr::vector<ShellBox>& shell_boxes() const { return shell_boxes_; }
+
 private:
     std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids, TaskRunner& tasks,
                                                  std::pmr::memory_resource* memory);
@@ -115,6 +139,8 @@ private:
     bool one_face_each_ = false;
     Eigen::Vector3d reference_;
     double per_unit_;
+    const Shells* shells_;
+    std::pmr::vector<ShellBox> shell_boxes_;
     // Per triangle, its corner extremes (corner_extremes), and above them
     // whether it is degenerate: one word, not a byte more for the flag.
     static constexpr int kDegenerateBit = 31;

@@ -86,8 +86,9 @@ int join_windings(int first, int second) {
 
 template <class Scalar, class Index>
 std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surface,
-                                     const Shells& shells, const SurfaceContacts& contacts,
-                                     TaskRunner& tasks, std::pmr::memory_resource* memory) {
+                                     const SurfaceContacts& contacts, TaskRunner& tasks,
+                                     std::pmr::memory_resource* memory) {
+    const Shells& shells = *surface.shells();
     const auto& touches_other_shell = contacts.touches_other_shell;
     const auto shell_of = [&](std::size_t t) { return shells.of_face[surface.face(t)]; };
     // The probes' far ends lie outside every box.
@@ -99,7 +100,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // probes; and a tree over the shells' boxes.
     std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
     std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
-    const std::pmr::vector<ShellBox>& shell_boxes = contacts.shell_boxes;
+    const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
     for (std::size_t t = 0; t < surface.size(); ++t) {
         const std::uint32_t shell = shell_of(t);
         if (!surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
@@ -416,9 +417,9 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     return winding_of_shell;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                                       \
-    template std::pmr::vector<int> count_windings<Scalar, Index>(                                 \
-        const IndexedSurface<Scalar, Index>&, const Shells&, const SurfaceContacts&, TaskRunner&, \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                        \
+    template std::pmr::vector<int> count_windings<Scalar, Index>(                  \
+        const IndexedSurface<Scalar, Index>&, const SurfaceContacts&, TaskRunner&, \
         std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

@@ -37,13 +37,14 @@ inline constexpr int kMixedWinding = INT_MAX;
 
 // For each shell, the winding number of every other shell at a point of it
 // (kUnknownWinding where it could not be counted, kMixedWinding where it
-// differs between points). The surface must have at least two shells, none
-// crossing another; contacts are find_contacts' (surface_contacts.hpp): which
-// shapes touch another shell, and the shells' boxes. The probes run as tasks of
-// `tasks`; the result is the same for every runner.
+// differs between points). The surface must be indexed with its shells
+// (IndexedSurface::shells, which boxes them), at least two, none crossing
+// another; contacts are find_contacts' (surface_contacts.hpp): which shapes
+// touch another shell. The probes run as tasks of `tasks`; the result is the
+// same for every runner.
 template <class Scalar, class Index>
 std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surface,
-                                     const Shells& shells, const SurfaceContacts& contacts,
-                                     TaskRunner& tasks, std::pmr::memory_resource* memory);
+                                     const SurfaceContacts& contacts, TaskRunner& tasks,
+                                     std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

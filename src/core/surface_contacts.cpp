@@ -159,8 +159,9 @@ bool apart_but_in_a_plane(const ShellBox& first, const ShellBox& second, std::ui
 }  // namespace
 
 template <class Scalar, class Index>
-SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, const Shells* shells,
-                              TaskRunner& tasks, std::pmr::memory_resource* memory) {
+SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, TaskRunner& tasks,
+                              std::pmr::memory_resource* memory) {
+    const Shells* shells = surface.shells();
     const bool nesting = shells && shells->count >= 2;
     const auto shell_of = [&](std::size_t t) { return shells->of_face[surface.face(t)]; };
     // Per shape (its lowest triangle): whether it touches a triangle of
@@ -168,13 +169,9 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     // shell otherwise than at its probe vertex (the nesting, below). Copies
     // on two shells coincide, which is crossing and ends the check before the
     // nesting, so the copies of a shape that matters lie on one shell.
-    SurfaceContacts contacts(nesting ? surface.size() : 0, nesting ? shells->count : 0, memory);
+    SurfaceContacts contacts(nesting ? surface.size() : 0, memory);
     auto& touches_other_shell = contacts.touches_other_shell;
-    std::pmr::vector<ShellBox>& shell_boxes = contacts.shell_boxes;
-    if (nesting)
-        for (std::size_t t = 0; t < surface.size(); ++t)
-            for (const Eigen::Vector3d& corner : surface.triangle(t))
-                shell_boxes[shell_of(t)].extend(corner);
+    const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
     auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
         if (contact == Contact::touching && nesting && shell_of(i) != shell_of(j)) {
             touches_other_shell[surface.lowest_copy(i)].store(1, std::memory_order_relaxed);
@@ -399,10 +396,9 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, cons
     return contacts;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                                                     \
-    template SurfaceContacts find_contacts<Scalar, Index>(const IndexedSurface<Scalar, Index>&, \
-                                                          const Shells*, TaskRunner&,           \
-                                                          std::pmr::memory_resource*);
+#define POLYMASS_INSTANTIATE(Scalar, Index)                \
+    template SurfaceContacts find_contacts<Scalar, Index>( \
+        const IndexedSurface<Scalar, Index>&, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

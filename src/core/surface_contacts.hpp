@@ -28,20 +28,6 @@
 
 namespace polymass::core {
 
-// A shell's box, exact: the least and greatest coordinates of its corners.
-struct ShellBox {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-
-    void extend(const Eigen::Vector3d& p) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    void extend(const ShellBox& box) {
-        lo = lo.cwiseMin(box.lo);
-        hi = hi.cwiseMax(box.hi);
-    }
-};
-
 // The axes on which a triangle lies flat, from its corner extremes
 // (IndexedSurface::corner_extremes): its first corner is both its highest
 // and its lowest there. Bit `axis`.
@@ -57,20 +43,17 @@ struct SurfaceContacts {
     // surface wind around a shell otherwise than at one vertex of it
     // (shell_nesting.hpp). Empty otherwise.
     std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell;
-    // With two shells or more, each shell's box (by Shells' numbering), which
-    // the nesting uses too. Empty otherwise.
-    std::pmr::vector<ShellBox> shell_boxes;
 
-    SurfaceContacts(std::size_t triangles, std::size_t shells, std::pmr::memory_resource* memory)
-        : touches_other_shell(triangles, memory), shell_boxes(shells, memory) {}
+    SurfaceContacts(std::size_t triangles, std::pmr::memory_resource* memory)
+        : touches_other_shell(triangles, memory) {}
 };
 
-// shells: null, or the surface's shells (coinciding faces of two shells
-// cross; touching between shells is marked). The search runs as tasks of
+// With the surface's shells (IndexedSurface::shells), coinciding faces of
+// two shells cross and touching between shells is marked. The search runs as tasks of
 // `tasks`; the result is the same for every runner. Each kind counts its
 // pairs up to a limit and keeps the lowest exactly (PairFinding).
 template <class Scalar, class Index>
-SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, const Shells* shells,
-                              TaskRunner& tasks, std::pmr::memory_resource* memory);
+SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, TaskRunner& tasks,
+                              std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

@@ -9,14 +9,15 @@ template <class Scalar, class Index>
 SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                               const Eigen::Vector3d& reference, double size, const Shells* shells,
                               TaskRunner& tasks, std::pmr::memory_resource* memory) {
-    const IndexedSurface<Scalar, Index> surface(mesh, vertex_ids, reference, size, tasks, memory);
-    const SurfaceContacts contacts = find_contacts(surface, shells, tasks, memory);
+    const IndexedSurface<Scalar, Index> surface(mesh, vertex_ids, reference, size, shells, tasks,
+                                                memory);
+    const SurfaceContacts contacts = find_contacts(surface, tasks, memory);
     SurfaceOverlaps result(memory);
     result.crossing = contacts.crossing;
     result.touching = contacts.touching;
     // Crossing faces already bound some region twice: nesting says no more.
     if (shells && shells->count >= 2 && result.crossing.count == 0)
-        result.winding_of_shell = count_windings(surface, *shells, contacts, tasks, memory);
+        result.winding_of_shell = count_windings(surface, contacts, tasks, memory);
     return result;
 }
 

@@ -45,6 +45,17 @@ inline std::size_t block_count(std::size_t count, std::size_t block_size) {
     return (count + block_size - 1) / block_size;
 }
 
+// Calls visit(block, begin, end) for each block [begin, end) of [0, count),
+// blocks of block_size run as tasks on `tasks`: for passes that carry state
+// from one item of a block to the next.
+template <class Visit>
+void for_each_block(std::size_t count, std::size_t block_size, TaskRunner& tasks,
+                    const Visit& visit) {
+    tasks.run(block_count(count, block_size), [&](std::size_t block) {
+        visit(block, block * block_size, std::min(count, (block + 1) * block_size));
+    });
+}
+
 // Calls visit(block, i) for each i in [0, count), in blocks of block_size
 // (block i / block_size) run as tasks on `tasks`, each block's items in
 // ascending order: for passes that keep results per block and join them in
@@ -52,10 +63,10 @@ inline std::size_t block_count(std::size_t count, std::size_t block_size) {
 template <class Visit>
 void for_each_in_numbered_blocks(std::size_t count, std::size_t block_size, TaskRunner& tasks,
                                  const Visit& visit) {
-    tasks.run(block_count(count, block_size), [&](std::size_t block) {
-        const std::size_t end = std::min(count, (block + 1) * block_size);
-        for (std::size_t i = block * block_size; i < end; ++i) visit(block, i);
-    });
+    for_each_block(count, block_size, tasks,
+                   [&](std::size_t block, std::size_t begin, std::size_t end) {
+                       for (std::size_t i = begin; i < end; ++i) visit(block, i);
+                   });
 }
 
 // Calls visit(i) for each i in [0, count), in blocks of block_size run as

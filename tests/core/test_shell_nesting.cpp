@@ -137,15 +137,15 @@ std::vector<int> windings_of(TestMesh mesh, const Eigen::Vector3d& offset) {
     polymass::core::SerialTaskRunner serial;
     std::pmr::memory_resource* memory = std::pmr::get_default_resource();
     const polymass::core::IndexedSurface surface(view, nullptr, box.center(), box.diagonal().norm(),
-                                                 serial, memory);
+                                                 &shells, serial, memory);
     const polymass::core::SurfaceContacts contacts =
-        polymass::core::find_contacts(surface, &shells, serial, memory);
+        polymass::core::find_contacts(surface, serial, memory);
     CHECK(contacts.crossing.count == 0);
     const std::pmr::vector<int> windings =
-        polymass::core::count_windings(surface, shells, contacts, serial, memory);
+        polymass::core::count_windings(surface, contacts, serial, memory);
     // Tasks finishing in any order give the same windings.
     polymass_test::ReversedTaskRunner reversed;
-    CHECK(polymass::core::count_windings(surface, shells, contacts, reversed, memory) == windings);
+    CHECK(polymass::core::count_windings(surface, contacts, reversed, memory) == windings);
     return std::vector<int>(windings.begin(), windings.end());
 }
 

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "core/triangle_contact.hpp"
+#include "core/worker_pool.hpp"
 
 namespace {
 
@@ -117,10 +118,9 @@ void on_each_runner(const TestMesh& mesh, const polymass::core::Shells* shells,
     for (polymass::core::TaskRunner* runner :
          {static_cast<polymass::core::TaskRunner*>(&serial),
           static_cast<polymass::core::TaskRunner*>(&reversed)}) {
-        const polymass::core::IndexedSurface surface(view, nullptr, reference, size, *runner,
-                                                     std::pmr::get_default_resource());
-        check(polymass::core::find_contacts(surface, shells, *runner,
-                                            std::pmr::get_default_resource()));
+        const polymass::core::IndexedSurface surface(view, nullptr, reference, size, shells,
+                                                     *runner, std::pmr::get_default_resource());
+        check(polymass::core::find_contacts(surface, *runner, std::pmr::get_default_resource()));
     }
 }
 
@@ -254,10 +254,10 @@ void check_folds_at_a_shared_corner() {
                 polymass::core::SerialTaskRunner serial;
                 const auto view = mesh.view();
                 const polymass::core::IndexedSurface surface(view, nullptr, box.center(),
-                                                             box.diagonal().norm(), serial,
+                                                             box.diagonal().norm(), nullptr, serial,
                                                              std::pmr::get_default_resource());
                 const polymass::core::SurfaceContacts found = polymass::core::find_contacts(
-                    surface, nullptr, serial, std::pmr::get_default_resource());
+                    surface, serial, std::pmr::get_default_resource());
                 // Without shells, coinciding faces are taken as touching.
                 CHECK(found.crossing.count == 0);
                 CHECK(found.touching.count == (shared ? 0u : 1u));
@@ -317,9 +317,72 @@ void check_touching_assembly() {
         side * side * side, expected.crossing.size(), expected.touching.size());
 }
 
+// The shells' boxes, taken in the pass that boxes the triangles, in blocks
+// of 2^16 triangles joined in block order: the exact least and greatest
+// coordinates of each shell's corners, degenerate triangles' too, on every
+// runner. Over three blocks of random triangles far from the origin, whose
+// faces go to the shells in runs of random length, so that runs of one
+// shell cross blocks and a shell returns in many; one shell reaches farthest
+// only through a degenerate triangle.
+void check_shell_boxes() {
+    constexpr std::size_t triangles = 3 * (std::size_t{1} << 16) + 123, shells = 41;
+    std::mt19937_64 random(27);
+    std::uniform_int_distribution<int> grid(-4096, 4096);
+    auto random_point = [&] {
+        return Eigen::Vector3d(-1e6 + 0x1p-10 * grid(random), 3e5 + 0x1p-7 * grid(random),
+                               0x1p-12 * grid(random));
+    };
+    TestMesh mesh;
+    polymass::core::Shells shells_of_faces(std::pmr::get_default_resource());
+    shells_of_faces.count = shells;
+    std::uniform_int_distribution<std::uint32_t> run_length(1, 700), shell(0, shells - 1);
+    for (std::uint32_t run = 0, of_run = 0; mesh.face_sizes.size() < triangles; --run) {
+        if (run == 0) {
+            run = run_length(random);
+            of_run = shell(random);
+        }
+        const std::uint32_t a = mesh.add_vertex(random_point());
+        mesh.add_face({a, mesh.add_vertex(random_point()), mesh.add_vertex(random_point())});
+        shells_of_faces.of_face.push_back(of_run);
+    }
+    const std::uint32_t far_out = mesh.add_vertex(Eigen::Vector3d(-2e6, 4e5, -1.5));
+    mesh.add_face({far_out, far_out, 0});
+    shells_of_faces.of_face.push_back(7);
+    std::vector<polymass::core::ShellBox> expected(shells);
+    for (std::size_t f = 0; f < mesh.face_sizes.size(); ++f)
+        for (int k = 0; k < 3; ++k)
+            expected[shells_of_faces.of_face[f]].extend(mesh.vertex(mesh.indices[3 * f + k]));
+    const auto view = mesh.view();
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
+    for (polymass::core::TaskRunner* runner : {static_cast<polymass::core::TaskRunner*>(&serial),
+                                               static_cast<polymass::core::TaskRunner*>(&reversed),
+                                               static_cast<polymass::core::TaskRunner*>(&pool)}) {
+        const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(-1e6, 3e5, 0),
+                                                     1e3, &shells_of_faces, *runner,
+                                                     std::pmr::get_default_resource());
+        const auto& found = surface.shell_boxes();
+        CHECK(found.size() == shells);
+        std::size_t wrong = 0;
+        for (std::size_t k = 0; k < std::min(found.size(), expected.size()); ++k)
+            wrong += found[k].lo != expected[k].lo || found[k].hi != expected[k].hi;
+        CHECK(wrong == 0);
+        if (wrong) std::fprintf(stderr, "shell boxes: %zu of %zu wrong\n", wrong, shells);
+    }
+    // One shell: nothing to nest, no boxes.
+    shells_of_faces.count = 1;
+    std::fill(shells_of_faces.of_face.begin(), shells_of_faces.of_face.end(), 0);
+    CHECK(polymass::core::IndexedSurface(view, nullptr, Eigen::Vector3d(-1e6, 3e5, 0), 1e3,
+                                         &shells_of_faces, serial, std::pmr::get_default_resource())
+              .shell_boxes()
+              .empty());
+}
+
 }  // namespace
 
 int main() {
+    check_shell_boxes();
     check_touching_assembly();
     check_folds_at_a_shared_corner();
     check_many_pieces();
