@@ -1,6 +1,8 @@
 #include "indexed_surface.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "face_blocks.hpp"
@@ -58,7 +60,11 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
                                               const Shells* shells, TaskRunner& tasks,
                                               std::pmr::memory_resource* memory)
     : mesh_(mesh),
-      triangles_(triangulate_faces(mesh, memory)),
+      callers_corners_(uses_callers_corners(mesh, vertex_ids)),
+      triangles_(callers_corners_ ? SurfaceTriangles(memory) : triangulate_faces(mesh, memory)),
+      corners_(callers_corners_ ? reinterpret_cast<const std::uint32_t*>(mesh.indices.base)
+                                : triangles_.corners.data()),
+      size_(callers_corners_ ? mesh.face_count : triangles_.size()),
       reference_(reference),
       per_unit_(1.0 / unit_length_near(size)),
       shells_(shells),
@@ -70,6 +76,13 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       next_(memory),
       tree_(boxes_with_copies(vertex_ids, tasks, memory), memory, tasks) {}
 
+template <class Scalar, class Index>
+bool IndexedSurface<Scalar, Index>::uses_callers_corners(const MeshView<Scalar, Index>& mesh,
+                                                         const std::uint32_t* vertex_ids) {
+    return std::is_same_v<Index, std::uint32_t> && mesh.all_triangles() && !vertex_ids &&
+           reinterpret_cast<std::uintptr_t>(mesh.indices.base) % alignof(std::uint32_t) == 0;
+}
+
 // Welds the corners, boxes the triangles, and links the copies, whose boxes
 // above the lowest are then emptied: met through it. (Copies are found after
 // the boxes, so that the tree's scratch reuses their search's: 8 MB less at
@@ -80,9 +93,9 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     // Each corner as the vertex it is welded to, in place: the test of
     // shared corners reads nothing else for most candidate pairs.
     if (vertex_ids)
-        for (auto& corners : triangles_.corners)
-            for (std::uint32_t& vertex : corners) vertex = vertex_ids[vertex];
-    // Faces of one triangle each need no list of faces.
+        for (std::uint32_t& vertex : triangles_.corners) vertex = vertex_ids[vertex];
+    // Faces of one triangle each need no list of faces (none was made when
+    // the caller's corners serve).
     std::uint32_t next = 0;
     one_face_each_ = std::all_of(triangles_.face.begin(), triangles_.face.end(),
                                  [&](std::uint32_t face) { return face == next++; });

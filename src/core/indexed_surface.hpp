@@ -58,10 +58,10 @@ public:
                    const Eigen::Vector3d& reference, double size, const Shells* shells,
                    TaskRunner& tasks, std::pmr::memory_resource* memory);
 
-    std::size_t size() const { return triangles_.corners.size(); }
+    std::size_t size() const { return size_; }
     // Triangle t's corners as welded vertices, in the face's turn.
-    const std::array<std::uint32_t, 3>& corners(std::size_t t) const {
-        return triangles_.corners[t];
+    std::array<std::uint32_t, 3> corners(std::size_t t) const {
+        return {corners_[3 * t], corners_[3 * t + 1], corners_[3 * t + 2]};
     }
     std::uint32_t face(std::size_t t) const {
         return one_face_each_ ? std::uint32_t(t) : triangles_.face[t];
@@ -71,7 +71,7 @@ public:
     // corners the surface shares are one point, not two points 1e-17 apart
     // whose triangles would seem to cross.
     Triangle triangle(std::size_t t, int first = 0) const {
-        const std::array<std::uint32_t, 3>& ids = triangles_.corners[t];
+        const std::array<std::uint32_t, 3> ids = corners(t);
         return Triangle{mesh_.positions[ids[first]], mesh_.positions[ids[(first + 1) % 3]],
                         mesh_.positions[ids[(first + 2) % 3]]};
     }
@@ -132,7 +132,16 @@ private:
     std::size_t copy_rank(std::size_t t) const;
 
     const MeshView<Scalar, Index>& mesh_;
-    SurfaceTriangles triangles_;  // corners welded; faces dropped when one_face_each_
+    // The caller's indices serve as the triangles' corners when nothing
+    // would change them: every face a triangle, 32-bit indices aligned as
+    // such, no weld. Else they are copied (triangulate_faces), 12 MB a
+    // million triangles at the check's peak of memory.
+    static bool uses_callers_corners(const MeshView<Scalar, Index>& mesh,
+                                     const std::uint32_t* vertex_ids);
+    bool callers_corners_;
+    SurfaceTriangles triangles_;    // empty when the caller's corners serve
+    const std::uint32_t* corners_;  // three a triangle, welded
+    std::size_t size_;
     // Every face is one triangle (triangle t is face t), as in most meshes:
     // the faces' list is let go before the tree is built (4 MB a million
     // triangles at the check's peak).

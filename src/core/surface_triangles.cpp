@@ -88,13 +88,13 @@ SurfaceTriangles triangulate_faces(const MeshView<Scalar, Index>& mesh,
     const std::size_t expected = mesh.index_count >= 2 * mesh.face_count
                                      ? mesh.index_count - 2 * mesh.face_count
                                      : mesh.face_count;
-    triangles.corners.reserve(expected);
+    triangles.corners.reserve(3 * expected);
     triangles.face.reserve(expected);
     EarClipper clipper(memory);
     for_each_face(mesh, [&](std::size_t face, std::size_t first, std::size_t size) {
         auto emit = [&](std::size_t a, std::size_t b, std::size_t c) {
-            triangles.corners.push_back(
-                {mesh.indices[first + a], mesh.indices[first + b], mesh.indices[first + c]});
+            for (const std::size_t corner : {a, b, c})
+                triangles.corners.push_back(mesh.indices[first + corner]);
             triangles.face.push_back(std::uint32_t(face));
         };
         if (size == 3) {

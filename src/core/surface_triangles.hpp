@@ -7,7 +7,6 @@
 // cross that do not.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <memory_resource>
 #include <vector>
@@ -17,8 +16,11 @@
 namespace polymass::core {
 
 struct SurfaceTriangles {
-    std::pmr::vector<std::array<std::uint32_t, 3>> corners;  // vertex indices, the face's turn
-    std::pmr::vector<std::uint32_t> face;                    // the face each one comes from
+    // Three vertex indices a triangle, in the face's turn: laid out as an
+    // index array of triangles is, so that a caller's serves in its place
+    // (IndexedSurface).
+    std::pmr::vector<std::uint32_t> corners;
+    std::pmr::vector<std::uint32_t> face;  // the face each one comes from
 
     explicit SurfaceTriangles(std::pmr::memory_resource* memory) : corners(memory), face(memory) {}
     std::size_t size() const { return face.size(); }

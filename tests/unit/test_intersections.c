@@ -4,6 +4,7 @@
  * must keep their verdicts. How shells nest is test_nesting.c's. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "overlap_cases.h"
@@ -405,6 +406,56 @@ static void test_copies_are_paired_as_triangles_are(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* A surface of triangles given with aligned 32-bit indices is searched
+   through the caller's indices; misaligned or 16-bit ones through a copy
+   (IndexedSurface). Both must find the same pairs: two cubes crossing, a
+   third resting on one of them (touching pairs). */
+static void test_pairs_whatever_the_index_layout(void** state) {
+    polymass_context* ctx = pm_context_new();
+    polymass_diagnostics d[3];
+    char message[512];
+    unsigned char* misaligned;
+    uint16_t* narrow;
+    pm_mesh m;
+    size_t k;
+    int layout;
+    (void)state;
+    pm_mesh_init(&m);
+    box(&m, 0, 0, 0, 1, 1, 1, 1, 0);
+    box(&m, 0.5, 0.5, 0.5, 1.5, 1.5, 1.5, 1, 0);
+    box(&m, 0, 0, 1, 1, 1, 2, 1, 0);
+    misaligned = malloc(m.index_count * sizeof(uint32_t) + 1);
+    narrow = malloc(m.index_count * sizeof *narrow);
+    assert_non_null(misaligned);
+    assert_non_null(narrow);
+    memcpy(misaligned + 1, m.indices, m.index_count * sizeof(uint32_t));
+    for (k = 0; k < m.index_count; ++k) narrow[k] = (uint16_t)m.indices[k];
+    for (layout = 0; layout < 3; ++layout) {
+        polymass_mesh_desc desc = pm_mesh_desc(&m);
+        const polymass_options options = pm_options(0, 0.0);
+        if (layout == 1) desc.indices = misaligned + 1;
+        if (layout == 2) {
+            desc.indices = narrow;
+            desc.index_type = POLYMASS_INDEX_UINT16;
+        }
+        pm_diagnostics_init(&d[layout]);
+        PM_ASSERT_STATUS(ctx, POLYMASS_ERROR_INTERSECTING,
+                         pm_diagnose(&d[layout], ctx, &desc, &options));
+        if (layout == 0) {
+            snprintf(message, sizeof message, "%s", polymass_context_message(ctx));
+        } else {
+            assert_string_equal(message, polymass_context_message(ctx));
+            assert_same_pairs(&d[0], &d[layout]);
+        }
+    }
+    assert_true(d[0].intersecting_face_pairs > 0);
+    assert_true(d[0].touching_face_pairs > 0);
+    free(misaligned);
+    free(narrow);
+    pm_mesh_free(&m);
+    polymass_context_destroy(ctx);
+}
+
 /* Faces of two shells lying in one plane, overlapping over an area and
    facing the same way bound the region behind them twice, as crossing faces
    do: a surface written twice, or parts overlapping flush with each other
@@ -544,6 +595,7 @@ int main(void) {
         cmocka_unit_test(test_report_lists_pairs_and_shells),
         cmocka_unit_test(test_piles_of_copies_stop_counting),
         cmocka_unit_test(test_copies_are_paired_as_triangles_are),
+        cmocka_unit_test(test_pairs_whatever_the_index_layout),
         cmocka_unit_test(test_coinciding_faces_of_two_shells),
         cmocka_unit_test(test_surface_welded_to_its_copy),
         cmocka_unit_test(test_subnormal_surfaces),
