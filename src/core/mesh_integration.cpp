@@ -168,8 +168,8 @@ __attribute__((always_inline)) inline void integrate_batch(
 // a normal double (so exact) at least 2^-1021 and below 2^1000 (then a c − r
 // that rounds is at least |r|/2, so its move stays normal, where scaling by a
 // power of two commutes with rounding). Any other frame is integrated unfused.
-bool fused_move_is_exact(const double (&reference)[3], double inverse_unit) {
-    for (double r : reference) {
+bool fused_move_is_exact(const Eigen::Vector3d& reference, double inverse_unit) {
+    for (const double r : reference) {
         const double in_units = std::abs(r) * inverse_unit;
         if (r != 0.0 && !(in_units >= 0x1p-1021 && in_units < 0x1p1000)) return false;
     }
@@ -267,11 +267,9 @@ public:
                     double unit)
         : settings_(settings),
           gatherer_(triangle_gatherer<Scalar, Index>(settings.instruction_set)),
-          kernel_(batch_kernel<Scalar, Index>(
-              settings.instruction_set, mesh.all_triangles(),
-              fused_move_is_exact(
-                  {settings.reference[0], settings.reference[1], settings.reference[2]},
-                  1.0 / unit))) {
+          kernel_(
+              batch_kernel<Scalar, Index>(settings.instruction_set, mesh.all_triangles(),
+                                          fused_move_is_exact(settings.reference, 1.0 / unit))) {
         batch_.positions = mesh.positions;
         batch_.indices = mesh.indices;
         for (int axis = 0; axis < 3; ++axis) batch_.reference[axis] = settings.reference[axis];

@@ -249,6 +249,9 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     auto decide_pair = [&](std::uint32_t i, std::uint32_t j, const SharedCorners& shared,
                            PairCollector& crossing, PairCollector& touching)
         __attribute__((noinline)) {
+        const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
+        if (face_i == face_j) return;  // pieces of one polygon
+        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
         // Triangles of two shells that only rest on each other (most pairs
         // of a touching assembly), both already marked: they could only add
         // a touching pair, asked first and alone.
@@ -259,14 +262,10 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                 touches_other_shell[surface.lowest_copy(j)].load(std::memory_order_relaxed) &&
                 apart_but_in_a_plane(shell_boxes[shell_i], shell_boxes[shell_j],
                                      flat_axes(surface.corner_extremes(i)) &
-                                         flat_axes(surface.corner_extremes(j)))) {
-                const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
-                if (!touching.wants({std::min(face_i, face_j), std::max(face_i, face_j)})) return;
-            }
+                                         flat_axes(surface.corner_extremes(j))) &&
+                !touching.wants(pair))
+                return;
         }
-        const std::uint32_t face_i = surface.face(i), face_j = surface.face(j);
-        if (face_i == face_j) return;  // pieces of one polygon
-        const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
         // Past the stop of touching pairs a pair is still tested while the
         // count of crossing ones wants it, which it does until 2048 cross:
         // every touching pair that the nesting needs is marked.

@@ -14,9 +14,7 @@
 // each other) from those boxes and whether the faces lie flat in it.
 #pragma once
 
-#include <Eigen/Core>
 #include <atomic>
-#include <cmath>
 #include <cstdint>
 #include <memory_resource>
 #include <vector>
