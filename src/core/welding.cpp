@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory_resource>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 
 #include "position_hash.hpp"
@@ -34,33 +35,42 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
 // One hashing pass over the used vertices in index order (no list of them): the
 // first vertex met at a position (the lowest index) enters the table, and the
 // position is numbered in the order met; every later vertex with the same bits
-// gets that number. Returns each number's lowest vertex, ascending. On several
-// threads, each runs the pass over a share of the positions, chosen by hash,
-// with a table of its own: every copy of a position is in one share, so each
-// vertex meets in its share the same lowest vertex as in one pass over all
-// (the numbers, the share's own, are then merged: weld_exact). The table holds
-// only distinct positions (a triangle soup asks about each corner, but has a
-// sixth as many vertices), in open addressing with linear probing, at most half
-// full. Each slot keeps the position's number with the high half of its hash,
-// so that a probe reads a held position's coordinates only when the halves
-// agree (almost only for a copy), and the slot of a vertex a few ahead is
-// prefetched: the table outgrows the caches, and waiting on it was the pass's
-// cost. A vertex's first slot is taken from that high half too, so that the
-// table grows by moving its slots alone: rehashing read every held vertex's
-// coordinates in random order, a third of the weld of a million-triangle STL.
-// Comparing bits rather than values is exact welding for finite coordinates
-// and still defined for NaN (copies of one NaN are one vertex), which sorting
-// is not.
+// gets that number. Returns each number's lowest vertex, ascending. In shares
+// (weld_exact), the pass runs over each share of the positions, chosen by
+// hash, with a table of its own: every copy of a position is in one share, so
+// each vertex meets in its share the same lowest vertex as in one pass over
+// all (the numbers, the share's own, are then merged). The table holds only
+// distinct positions (a triangle soup asks about each corner, but has a sixth
+// as many vertices), in open addressing with linear probing, at most half
+// full, and beside it a copy of each distinct position, so that a probe
+// compares with the copy rather than with the held vertex in the soup, where
+// it may be far back. Each slot keeps the position's number with the high half
+// of its hash, so that a probe reads a held position's bits only when the
+// halves agree (almost only for a copy), and the slot of a vertex a few ahead
+// is prefetched. A vertex's first slot is taken from that high half too, so
+// that the table grows by moving its slots alone. Comparing bits rather than
+// values is exact welding for finite coordinates and still defined for NaN
+// (copies of one NaN are one vertex), which sorting is not.
 template <class Scalar, class Index, class VertexAt, class HashOf>
 std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
                                            const MeshScan& scan, std::size_t items,
                                            VertexAt&& vertex_at, HashOf&& hash_of,
                                            std::uint32_t* number_of,
                                            std::pmr::memory_resource* memory) {
-    using Bits = std::array<std::uint64_t, 3>;
-    const auto bits_of = [&](std::uint32_t vertex) {
-        const Eigen::Vector3d p = mesh.positions[vertex];
-        return Bits{position_bits(p.x()), position_bits(p.y()), position_bits(p.z())};
+    // A position's bits as the weld compares them, in a Scalar's room (a
+    // float32 one in half a double's): for double, position_bits; for float,
+    // the bits of the float read, +0 for -0 and NaN quieted as on its way to a
+    // double, which are equal exactly when its double's position_bits are.
+    using Bits =
+        std::array<std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t>,
+                   3>;
+    const auto bits_of = [](const Eigen::Vector3d& p) {
+        Bits bits;
+        for (int axis = 0; axis < 3; ++axis) {
+            const Scalar value = Scalar(p[axis]) + Scalar(0);
+            std::memcpy(&bits[std::size_t(axis)], &value, sizeof value);
+        }
+        return bits;
     };
     // A slot: the hash's high half, then the position's number + 1 (0: empty).
     const auto slot_of = [](std::uint64_t hash, std::size_t number) {
@@ -68,6 +78,7 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
     };
     std::pmr::vector<std::uint64_t> slots(std::size_t(1) << 12, 0, memory);
     std::pmr::vector<std::uint32_t> lowest(memory);  // of each number
+    std::pmr::vector<Bits> held(memory);             // of each number, its position's bits
     // The first slot to probe for a hash, or for a slot holding it.
     const auto home = [&](std::uint64_t hash_or_slot) {
         return std::size_t(hash_or_slot >> 32) & (slots.size() - 1);
@@ -94,15 +105,15 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
         hash_ahead(item + kAhead);
         const std::uint32_t vertex = vertex_at(item);
         if (!scan.is_used(vertex)) continue;
-        const Bits bits = bits_of(vertex);
+        const Bits bits = bits_of(mesh.positions[vertex]);
         const std::uint64_t tag = hash & 0xFFFFFFFF00000000ull;
         const std::size_t mask = slots.size() - 1;
         std::size_t slot = home(hash);
         for (; slots[slot] != 0; slot = (slot + 1) & mask) {
             const std::uint64_t entry = slots[slot];
             if ((entry & 0xFFFFFFFF00000000ull) != tag) continue;
-            const Bits held = bits_of(lowest[std::uint32_t(entry) - 1]);
-            if (held[0] == bits[0] && held[1] == bits[1] && held[2] == bits[2]) break;
+            const Bits& copy = held[std::uint32_t(entry) - 1];
+            if (copy[0] == bits[0] && copy[1] == bits[1] && copy[2] == bits[2]) break;
         }
         if (slots[slot] != 0) {
             number_of[vertex] = std::uint32_t(slots[slot]) - 1;
@@ -111,10 +122,11 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
         number_of[vertex] = std::uint32_t(lowest.size());
         slots[slot] = slot_of(hash, lowest.size());
         lowest.push_back(vertex);
+        held.push_back(bits);
         if (2 * lowest.size() > slots.size()) {
-            std::pmr::vector<std::uint64_t> held(std::move(slots));
-            slots = std::pmr::vector<std::uint64_t>(2 * held.size(), 0, memory);
-            for (const std::uint64_t entry : held)
+            std::pmr::vector<std::uint64_t> moved(std::move(slots));
+            slots = std::pmr::vector<std::uint64_t>(2 * moved.size(), 0, memory);
+            for (const std::uint64_t entry : moved)
                 if (entry != 0) place(entry);
         }
     }
@@ -127,9 +139,11 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
 // dealt to its share, in index order (the order a share's pass reads them in:
 // with a few shares, almost every position in turn). Each share allocates its
 // own table and list of lowest vertices, taken from `memory` one thread at a
-// time. The shares' numbers are
-// then merged into one numbering in the order of the lowest vertices (each
-// share's are ascending), and every vertex renumbered, in blocks.
+// time. The shares' numbers are then merged into one numbering in the order of
+// the lowest vertices: each share's are marked in a bit set over the vertices,
+// whose walk in index order takes them lowest first, whatever the number of
+// shares (rather than comparing every share's next one for each position).
+// Then every vertex is renumbered, in blocks.
 template <class Scalar, class Index>
 NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                             TaskRunner& tasks, std::pmr::memory_resource* memory) {
@@ -193,22 +207,23 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
     // first_of_share[share]: where the share's numbers start in `renumbered`,
     // which gives each the number it has among all shares'.
     std::pmr::vector<std::size_t> first_of_share(shares + 1, 0, memory);
-    for (std::size_t share = 0; share < shares; ++share)
+    std::pmr::vector<std::uint64_t> is_lowest((count + 63) / 64, 0, memory);
+    for (std::size_t share = 0; share < shares; ++share) {
         first_of_share[share + 1] = first_of_share[share] + lowest_of_share[share].size();
+        for (const std::uint32_t vertex : lowest_of_share[share])
+            is_lowest[vertex / 64] |= std::uint64_t{1} << (vertex % 64);
+    }
     const std::size_t distinct = first_of_share[shares];
     std::pmr::vector<std::uint32_t> renumbered(distinct, memory);
     numbered.lowest_vertex.resize(distinct);
-    std::pmr::vector<std::size_t> next(shares, 0, memory);  // of each share's, the next to merge
-    for (std::size_t number = 0; number < distinct; ++number) {
-        std::size_t least = shares;
-        for (std::size_t share = 0; share < shares; ++share)
-            if (next[share] < lowest_of_share[share].size() &&
-                (least == shares ||
-                 lowest_of_share[share][next[share]] < lowest_of_share[least][next[least]]))
-                least = share;
-        numbered.lowest_vertex[number] = lowest_of_share[least][next[least]];
-        renumbered[first_of_share[least] + next[least]++] = std::uint32_t(number);
-    }
+    std::uint32_t number = 0;
+    for (std::size_t word = 0; word < is_lowest.size(); ++word)
+        for (std::uint64_t bits = is_lowest[word]; bits != 0; bits &= bits - 1) {
+            const auto vertex = std::uint32_t(64 * word + std::size_t(__builtin_ctzll(bits)));
+            // A lowest vertex's number in its share is its position's.
+            renumbered[first_of_share[share_of(high_halves[vertex])] + number_of[vertex]] = number;
+            numbered.lowest_vertex[number++] = vertex;
+        }
     each_used([&](std::size_t, std::uint32_t vertex) {
         number_of[vertex] =
             renumbered[first_of_share[share_of(high_halves[vertex])] + number_of[vertex]];

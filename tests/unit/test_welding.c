@@ -608,18 +608,31 @@ static void test_weld_on_its_own(void** state) {
                      polymass_weld_positions(of_vertex, &distinct, ctx, m.positions,
                                              POLYMASS_POSITION_FLOAT64, 36, 16, 0.0));
     /* A NaN counts quiet: a signalling NaN is its quiet twin (the same
-       payload), another payload another position. */
+       payload), another payload another position; in float64 and in float32
+       (whose weld compares the floats' own bits). */
     {
         static const uint64_t nan_bits[3] = {0x7FF4000000000001u, 0x7FFC000000000001u,
                                              0x7FFC000000000002u};
+        static const uint32_t nan_bits32[3] = {0x7F800001u, 0x7FC00001u, 0x7FC00002u};
         double nans[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+        float nans32[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
         uint32_t of_nan[3];
-        for (v = 0; v < 3; ++v) memcpy(&nans[v][0], &nan_bits[v], sizeof nan_bits[v]);
-        PM_ASSERT_OK(ctx, polymass_weld_positions(of_nan, &distinct, ctx, nans,
-                                                  POLYMASS_POSITION_FLOAT64, 3, 0, 0.0));
-        assert_int_equal(distinct, 2);
-        assert_int_equal(of_nan[1], 0);
-        assert_int_equal(of_nan[2], 2);
+        int precision;
+        for (v = 0; v < 3; ++v) {
+            memcpy(&nans[v][0], &nan_bits[v], sizeof nan_bits[v]);
+            memcpy(&nans32[v][0], &nan_bits32[v], sizeof nan_bits32[v]);
+        }
+        for (precision = 0; precision < 2; ++precision) {
+            PM_ASSERT_OK(
+                ctx, polymass_weld_positions(
+                         of_nan, &distinct, ctx,
+                         precision == 0 ? (const void*)nans : (const void*)nans32,
+                         precision == 0 ? POLYMASS_POSITION_FLOAT64 : POLYMASS_POSITION_FLOAT32, 3,
+                         0, 0.0));
+            assert_int_equal(distinct, 2);
+            assert_int_equal(of_nan[1], 0);
+            assert_int_equal(of_nan[2], 2);
+        }
     }
     /* No positions: nothing to weld. */
     PM_ASSERT_OK(ctx, polymass_weld_positions(NULL, &distinct, ctx, NULL, POLYMASS_POSITION_FLOAT64,
