@@ -125,16 +125,6 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         std::size_t count = 0;
         ShellBox box;
     };
-    auto shells_near = [&](const ProbeStart& start, std::uint32_t shell) {
-        Near near;
-        const Eigen::Vector3d p = surface.in_units(start.p);
-        shell_tree.for_each_item_near_segment(p, p, [&](std::uint32_t other) {
-            if (other == shell || !holds(shell_boxes[other], start)) return true;
-            near.box.extend(shell_boxes[other]);
-            return ++near.count <= kNearShells;
-        });
-        return near;
-    };
 
     // The winding number of every shell but `shell` at a start that lies on
     // no other shell, or kUnknownWinding when the segment from it to
@@ -345,16 +335,24 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // touch the point; otherwise the tree is asked. The same triangles
     // either way (the tree holds the lowest copies of shapes not
     // degenerate), in another order, which on_another_shell does not use.
+    // With them, the shells whose boxes hold each point, kNearShells + 1 at
+    // most (more: the list is left empty and marked kManyShells), for the
+    // starts' shells_near: a start next to p lies in a box only if p does,
+    // and the shells' tree, whose boxes all touch such a point, was looked
+    // along again at each start there (five or so a cube of a stack).
     struct NearTriangle {
         std::uint32_t triangle;
         std::uint8_t box_sides;
     };
+    constexpr std::uint32_t kManyShells = UINT32_MAX;
     const std::size_t point_blocks = (point_count + kTrianglesPerTask - 1) / kTrianglesPerTask;
     std::pmr::vector<std::pmr::vector<NearTriangle>> block_near(point_blocks, memory);
+    std::pmr::vector<std::pmr::vector<std::uint32_t>> block_shells(point_blocks, memory);
     std::pmr::vector<std::uint32_t> near_count(point_count, 0, memory);
+    std::pmr::vector<std::uint32_t> shell_count(point_count, 0, memory);
     tasks.run(point_blocks, [&](std::size_t block) {
         const std::size_t end = std::min<std::size_t>(point_count, (block + 1) * kTrianglesPerTask);
-        std::array<std::uint32_t, kNearShells> holding;
+        std::array<std::uint32_t, kNearShells + 1> holding;
         for (std::size_t i = block * kTrianglesPerTask; i < end; ++i) {
             const Eigen::Vector3d p = position_of_start(start_of_point[i]);
             const ProbeStart start{p, p, p, false};
@@ -366,23 +364,30 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
                 }
                 return true;
             };
-            std::size_t shell_count = 0, triangle_count = 0;
+            std::size_t holding_count = 0, triangle_count = 0;
             const Eigen::Vector3d p_in_units = surface.in_units(p);
             shell_tree.for_each_item_near_segment(p_in_units, p_in_units, [&](std::uint32_t shell) {
                 if (!holds(shell_boxes[shell], start)) return true;
-                triangle_count += shell_begin[shell + 1] - shell_begin[shell];
-                if (shell_count == kNearShells || triangle_count > kScannedTriangles) {
-                    shell_count = kNearShells + 1;
+                if (holding_count == holding.size()) {
+                    holding_count = kManyShells;
                     return false;
                 }
-                holding[shell_count++] = shell;
+                triangle_count += shell_begin[shell + 1] - shell_begin[shell];
+                holding[holding_count++] = shell;
                 return true;
             });
-            if (shell_count > kNearShells) {
+            shell_count[i] = std::uint32_t(holding_count);
+            if (holding_count == kManyShells) {
                 surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
                 continue;
             }
-            for (std::size_t k = 0; k < shell_count; ++k)
+            block_shells[block].insert(block_shells[block].end(), holding.begin(),
+                                       holding.begin() + holding_count);
+            if (triangle_count > kScannedTriangles) {
+                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                continue;
+            }
+            for (std::size_t k = 0; k < holding_count; ++k)
                 for (std::uint32_t n = shell_begin[holding[k]]; n < shell_begin[holding[k] + 1];
                      ++n)
                     list_if_near(shell_triangles[n]);
@@ -395,6 +400,34 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     for (const auto& found : block_near)
         near_triangles.insert(near_triangles.end(), found.begin(), found.end());
     let_go(block_near);
+    std::pmr::vector<std::size_t> shells_begin(point_count + 1, 0, memory);
+    for (std::size_t i = 0; i < point_count; ++i)
+        shells_begin[i + 1] =
+            shells_begin[i] + (shell_count[i] == kManyShells ? 0 : shell_count[i]);
+    std::pmr::vector<std::uint32_t> near_shells(memory);
+    near_shells.reserve(shells_begin.back());
+    for (const auto& found : block_shells)
+        near_shells.insert(near_shells.end(), found.begin(), found.end());
+    let_go(block_shells);
+    // The other shells whose boxes hold a start at vertex `vertex` of `shell`:
+    // from its point's list, or, past kNearShells + 1 there, along the tree.
+    auto shells_near = [&](const ProbeStart& start, std::uint32_t shell, std::uint32_t vertex) {
+        Near near;
+        const auto count_if_holding = [&](std::uint32_t other) {
+            if (other == shell || !holds(shell_boxes[other], start)) return true;
+            near.box.extend(shell_boxes[other]);
+            return ++near.count <= kNearShells;
+        };
+        const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
+        if (shell_count[point] != kManyShells) {
+            for (std::size_t k = shells_begin[point]; k < shells_begin[point + 1]; ++k)
+                if (!count_if_holding(near_shells[k])) break;
+            return near;
+        }
+        const Eigen::Vector3d p = surface.in_units(start.p);
+        shell_tree.for_each_item_near_segment(p, p, count_if_holding);
+        return near;
+    };
     auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell,
                                 std::uint32_t vertex) {
         const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
@@ -418,7 +451,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     auto probe = [&](const ProbeStart& start, std::uint32_t shell, std::uint32_t vertex) {
         int winding = kUnknownWinding;
         if (on_another_shell(start, shell, vertex)) return winding;
-        const Near near = shells_near(start, shell);
+        const Near near = shells_near(start, shell, vertex);
         if (near.count == 0) return 0;
         for (const Eigen::Vector3d& direction : kProbeDirections) {
             winding = winding_at(start, direction, shell, near);
