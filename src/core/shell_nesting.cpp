@@ -331,7 +331,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // holds the point only if its shell's does: where those shells are
     // small (parts of an assembly: a corner where eight cubes meet has 96
     // triangles) their triangles are tested one by one, which costs a
-    // fifth of a look along the triangles' tree, whose boxes there all
+    // third of a look along the triangles' tree, whose boxes there all
     // touch the point; otherwise the tree is asked. The same triangles
     // either way (the tree holds the lowest copies of shapes not
     // degenerate), in another order, which on_another_shell does not use.
