@@ -70,6 +70,9 @@ constexpr std::size_t kProbeVertices = 4;
 // Other shells whose boxes may hold a start before its probes stop looking
 // for more and walk their whole segments (a start deep in many boxes).
 constexpr std::size_t kNearShells = 32;
+// Triangles of the shells whose boxes hold a point tested one by one before
+// the point is looked up along the triangles' tree instead.
+constexpr std::size_t kScannedTriangles = 256;
 // Shells, and triangles, probed by one task.
 constexpr std::size_t kShellsPerTask = 64;
 constexpr std::size_t kTrianglesPerTask = 256;
@@ -121,16 +124,6 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     struct Near {
         std::size_t count = 0;
         ShellBox box;
-    };
-    auto shells_near = [&](const ProbeStart& start, std::uint32_t shell) {
-        Near near;
-        const Eigen::Vector3d p = surface.in_units(start.p);
-        shell_tree.for_each_item_near_segment(p, p, [&](std::uint32_t other) {
-            if (other == shell || !holds(shell_boxes[other], start)) return true;
-            near.box.extend(shell_boxes[other]);
-            return ++near.count <= kNearShells;
-        });
-        return near;
     };
 
     // The winding number of every shell but `shell` at a start that lies on
@@ -292,48 +285,112 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // Start vertices at one point (separate parts touching there, each with
     // its own vertex) share one list: k parts meeting at a point would
     // otherwise list each other's triangles k times over, k^2 in all. The
-    // starts sorted by position, the points numbered in that order.
-    std::pmr::vector<std::uint32_t> by_position(start_count, memory);
-    for (std::uint32_t s = 0; s < start_count; ++s) by_position[s] = s;
-    std::sort(by_position.begin(), by_position.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const Eigen::Vector3d pa = position_of_start(a), pb = position_of_start(b);
-        return std::lexicographical_compare(pa.begin(), pa.end(), pb.begin(), pb.end());
-    });
+    // starts sorted by position, the points numbered in that order. Each
+    // start's position is fetched once, beside it: fetched at each
+    // comparison, the sort cost more than all the rest of the numbering.
+    struct PlacedStart {
+        std::array<double, 3> at;
+        std::uint32_t start;
+    };
+    std::pmr::vector<PlacedStart> by_position(start_count, memory);
+    for (std::uint32_t s = 0; s < start_count; ++s) {
+        const Eigen::Vector3d p = position_of_start(s);
+        by_position[s] = {{p[0], p[1], p[2]}, s};
+    }
+    std::sort(by_position.begin(), by_position.end(),
+              [](const PlacedStart& a, const PlacedStart& b) { return a.at < b.at; });
     std::pmr::vector<std::uint32_t> point_of_start(start_count, 0, memory);
     std::pmr::vector<std::uint32_t> start_of_point(memory);  // one start at each point
     for (std::uint32_t k = 0; k < start_count; ++k) {
-        const std::uint32_t s = by_position[k];
-        if (k == 0 || position_of_start(by_position[k - 1]) != position_of_start(s))
-            start_of_point.push_back(s);
+        const std::uint32_t s = by_position[k].start;
+        if (k == 0 || by_position[k - 1].at != by_position[k].at) start_of_point.push_back(s);
         point_of_start[s] = std::uint32_t(start_of_point.size() - 1);
     }
     let_go(by_position);
     const std::size_t point_count = start_of_point.size();
+    // The tree's triangles of each shell (lowest copies, not degenerate), in
+    // order: those of shell s are shell_triangles[shell_begin[s], shell_begin[s + 1]).
+    std::pmr::vector<std::uint32_t> shell_begin(shells.count + 1, 0, memory);
+    const auto in_tree = [&](std::uint32_t t) {
+        return surface.lowest_copy(t) == t && !surface.meets_nothing(t);
+    };
+    for (std::uint32_t t = 0; t < surface.size(); ++t)
+        if (in_tree(t)) ++shell_begin[shell_of(t) + 1];
+    for (std::size_t shell = 0; shell < shells.count; ++shell)
+        shell_begin[shell + 1] += shell_begin[shell];
+    std::pmr::vector<std::uint32_t> shell_triangles(shell_begin.back(), memory);
+    {
+        std::pmr::vector<std::uint32_t> next(shell_begin.begin(), shell_begin.end() - 1, memory);
+        for (std::uint32_t t = 0; t < surface.size(); ++t)
+            if (in_tree(t)) shell_triangles[next[shell_of(t)]++] = t;
+    }
     // The triangles whose boxes hold each point, of every shell (a start
     // skips its own shell's), with their boxes' side bits, looked up in
     // blocks as tasks, then gathered in order: those of point i are
-    // near_triangles[near_begin[i], near_begin[i + 1]).
+    // near_triangles[near_begin[i], near_begin[i + 1]). A triangle's box
+    // holds the point only if its shell's does: where those shells are
+    // small (parts of an assembly: a corner where eight cubes meet has 96
+    // triangles) their triangles are tested one by one, which costs a
+    // third of a look along the triangles' tree, whose boxes there all
+    // touch the point; otherwise the tree is asked. The same triangles
+    // either way (the tree holds the lowest copies of shapes not
+    // degenerate), in another order, which on_another_shell does not use.
+    // With them, the shells whose boxes hold each point, kNearShells + 1 at
+    // most (more: the list is left empty and marked kManyShells), for the
+    // starts' shells_near: a start next to p lies in a box only if p does,
+    // and the shells' tree, whose boxes all touch such a point, was looked
+    // along again at each start there (five or so a cube of a stack).
     struct NearTriangle {
         std::uint32_t triangle;
         std::uint8_t box_sides;
     };
+    constexpr std::uint32_t kManyShells = UINT32_MAX;
     const std::size_t point_blocks = (point_count + kTrianglesPerTask - 1) / kTrianglesPerTask;
     std::pmr::vector<std::pmr::vector<NearTriangle>> block_near(point_blocks, memory);
+    std::pmr::vector<std::pmr::vector<std::uint32_t>> block_shells(point_blocks, memory);
     std::pmr::vector<std::uint32_t> near_count(point_count, 0, memory);
+    std::pmr::vector<std::uint32_t> shell_count(point_count, 0, memory);
     tasks.run(point_blocks, [&](std::size_t block) {
         const std::size_t end = std::min<std::size_t>(point_count, (block + 1) * kTrianglesPerTask);
+        std::array<std::uint32_t, kNearShells + 1> holding;
         for (std::size_t i = block * kTrianglesPerTask; i < end; ++i) {
             const Eigen::Vector3d p = position_of_start(start_of_point[i]);
             const ProbeStart start{p, p, p, false};
-            surface.tree().for_each_item_near_segment(
-                surface.in_units(p), surface.in_units(p), [&](std::uint32_t other) {
-                    const ShellBox box = triangle_box(other);
-                    if (holds(box, start)) {
-                        block_near[block].push_back({other, SideBits::of_box(box, p)});
-                        ++near_count[i];
-                    }
-                    return true;
-                });
+            const auto list_if_near = [&](std::uint32_t t) {
+                const ShellBox box = triangle_box(t);
+                if ((box.lo.array() <= p.array()).all() && (p.array() <= box.hi.array()).all()) {
+                    block_near[block].push_back({t, SideBits::of_box(box, p)});
+                    ++near_count[i];
+                }
+                return true;
+            };
+            std::size_t holding_count = 0, triangle_count = 0;
+            const Eigen::Vector3d p_in_units = surface.in_units(p);
+            shell_tree.for_each_item_near_segment(p_in_units, p_in_units, [&](std::uint32_t shell) {
+                if (!holds(shell_boxes[shell], start)) return true;
+                if (holding_count == holding.size()) {
+                    holding_count = kManyShells;
+                    return false;
+                }
+                triangle_count += shell_begin[shell + 1] - shell_begin[shell];
+                holding[holding_count++] = shell;
+                return true;
+            });
+            shell_count[i] = std::uint32_t(holding_count);
+            if (holding_count == kManyShells) {
+                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                continue;
+            }
+            block_shells[block].insert(block_shells[block].end(), holding.begin(),
+                                       holding.begin() + holding_count);
+            if (triangle_count > kScannedTriangles) {
+                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                continue;
+            }
+            for (std::size_t k = 0; k < holding_count; ++k)
+                for (std::uint32_t n = shell_begin[holding[k]]; n < shell_begin[holding[k] + 1];
+                     ++n)
+                    list_if_near(shell_triangles[n]);
         }
     });
     std::pmr::vector<std::size_t> near_begin(point_count + 1, 0, memory);
@@ -343,6 +400,34 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     for (const auto& found : block_near)
         near_triangles.insert(near_triangles.end(), found.begin(), found.end());
     let_go(block_near);
+    std::pmr::vector<std::size_t> shells_begin(point_count + 1, 0, memory);
+    for (std::size_t i = 0; i < point_count; ++i)
+        shells_begin[i + 1] =
+            shells_begin[i] + (shell_count[i] == kManyShells ? 0 : shell_count[i]);
+    std::pmr::vector<std::uint32_t> near_shells(memory);
+    near_shells.reserve(shells_begin.back());
+    for (const auto& found : block_shells)
+        near_shells.insert(near_shells.end(), found.begin(), found.end());
+    let_go(block_shells);
+    // The other shells whose boxes hold a start at vertex `vertex` of `shell`:
+    // from its point's list, or, past kNearShells + 1 there, along the tree.
+    auto shells_near = [&](const ProbeStart& start, std::uint32_t shell, std::uint32_t vertex) {
+        Near near;
+        const auto count_if_holding = [&](std::uint32_t other) {
+            if (other == shell || !holds(shell_boxes[other], start)) return true;
+            near.box.extend(shell_boxes[other]);
+            return ++near.count <= kNearShells;
+        };
+        const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
+        if (shell_count[point] != kManyShells) {
+            for (std::size_t k = shells_begin[point]; k < shells_begin[point + 1]; ++k)
+                if (!count_if_holding(near_shells[k])) break;
+            return near;
+        }
+        const Eigen::Vector3d p = surface.in_units(start.p);
+        shell_tree.for_each_item_near_segment(p, p, count_if_holding);
+        return near;
+    };
     auto on_another_shell = [&](const ProbeStart& start, std::uint32_t shell,
                                 std::uint32_t vertex) {
         const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
@@ -366,7 +451,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     auto probe = [&](const ProbeStart& start, std::uint32_t shell, std::uint32_t vertex) {
         int winding = kUnknownWinding;
         if (on_another_shell(start, shell, vertex)) return winding;
-        const Near near = shells_near(start, shell);
+        const Near near = shells_near(start, shell, vertex);
         if (near.count == 0) return 0;
         for (const Eigen::Vector3d& direction : kProbeDirections) {
             winding = winding_at(start, direction, shell, near);

@@ -145,8 +145,11 @@ bool apart_at_shared_corner(std::uint32_t first, int k, std::uint32_t second, in
 // where the other begins, the triangles lie on either side of a plane x = c
 // (or apart), so that they do not cross, and coincide only when both lie
 // flat in it (`both_flat`, bit per axis). Parts resting on each other meet
-// so in most pairs, which then need neither triangle's positions.
-bool apart_but_in_a_plane(const ShellBox& first, const ShellBox& second, std::uint32_t both_flat) {
+// so in most pairs, which then need neither triangle's positions. Inlined:
+// GCC left it out of line, a call for each such pair.
+__attribute__((always_inline)) inline bool apart_but_in_a_plane(const ShellBox& first,
+                                                                const ShellBox& second,
+                                                                std::uint32_t both_flat) {
     for (int axis = 0; axis < 3; ++axis) {
         const double low_end = std::min(first.hi[axis], second.hi[axis]);
         const double high_start = std::max(first.lo[axis], second.lo[axis]);

@@ -127,6 +127,41 @@ void add_pages(TestMesh& mesh, const Eigen::Vector3d& foot, int k) {
     }
 }
 
+// The unit cube with each face cut into n x n squares of two triangles: one
+// shell of 12 n^2 triangles, more than the nesting tests one by one at a
+// point (kScannedTriangles) for n = 5 and more.
+void add_fine_cube(TestMesh& mesh, int n) {
+    const std::uint32_t base = std::uint32_t(mesh.vertex_count());
+    auto at = [&](int i, int j, int k) {
+        return base + std::uint32_t((i * (n + 1) + j) * (n + 1) + k);
+    };
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j)
+            for (int k = 0; k <= n; ++k)
+                mesh.add_vertex(Eigen::Vector3d(i, j, k) / n);  // inner ones unused
+    // Each face as a grid over (u, v), from the corner `origin`, turned outward.
+    auto face = [&](auto vertex, bool outward) {
+        for (int u = 0; u < n; ++u)
+            for (int v = 0; v < n; ++v) {
+                const std::uint32_t a = vertex(u, v), b = vertex(u + 1, v),
+                                    c = vertex(u + 1, v + 1), d = vertex(u, v + 1);
+                if (outward) {
+                    mesh.add_face({a, b, c});
+                    mesh.add_face({a, c, d});
+                } else {
+                    mesh.add_face({a, c, b});
+                    mesh.add_face({a, d, c});
+                }
+            }
+    };
+    face([&](int u, int v) { return at(u, v, 0); }, false);
+    face([&](int u, int v) { return at(u, v, n); }, true);
+    face([&](int u, int v) { return at(0, u, v); }, false);
+    face([&](int u, int v) { return at(n, u, v); }, true);
+    face([&](int u, int v) { return at(v, 0, u); }, false);
+    face([&](int u, int v) { return at(v, n, u); }, true);
+}
+
 // The windings of the mesh's shells moved by `offset`.
 std::vector<int> windings_of(TestMesh mesh, const Eigen::Vector3d& offset) {
     for (std::size_t i = 0; i < mesh.coordinates.size(); ++i) mesh.coordinates[i] += offset[i % 3];
@@ -276,6 +311,20 @@ int main() {
     add_double_pyramid(on_floor, 0);
     expect("a double pyramid through a cube's face, its apex on the cube's floor", on_floor,
            {0, kMixedWinding});
+
+    // The same through, and on, a cube cut into 768 triangles: its
+    // triangles at a point are looked up along the tree, not one by one.
+    // Cut finely, the cube's top face has triangles inside the pyramid's
+    // waist, whose probes see the pyramid around them: the cube is mixed too.
+    TestMesh fine_through, fine_resting;
+    add_fine_cube(fine_through, 8);
+    add_double_pyramid(fine_through);
+    expect("a double pyramid through a finely cut cube's face along its edges", fine_through,
+           {kMixedWinding, kMixedWinding});
+    add_fine_cube(fine_resting, 8);
+    add_box(fine_resting, {0.25, 0.25, 1}, {0.75, 0.75, 1.5}, false);
+    add_box(fine_resting, {1, 0, 0}, {2, 1, 1}, false);
+    expect("cubes resting on a finely cut cube", fine_resting, {0, 0, 0});
 
     // Enough shells and triangles for the probes to run as several tasks,
     // the mixed shell in the last: a layer of cubes resting side by side.
