@@ -101,15 +101,17 @@ bool gather_baseline(const TriangleBatch<Scalar, Index>& batch, GatheredTriangle
 
 #if defined(__x86_64__)
 // A vertex as x, y, z and a zero, in one register. The AVX-512 gatherer
-// keeps a float row as floats, transposes it as floats and widens
-// afterwards: three conversions a lane group and corner rather than four, and
-// shuffles of 128-bit registers rather than 256-bit ones (trusted path,
-// float32 torus of 1e5 triangles, AVX-512 (Zen 4), thread CPU time: 0.72-0.74
-// ms widened first, 0.68-0.69 so; float64: 0.67-0.69). The AVX2 gatherer
-// widens each row as it loads it: there the float transpose's shuffles
-// outnumber the conversion saved (the gather 27.7 -> 25.4 instructions a
-// triangle, callgrind). (GCC takes no vector attribute on a template
-// parameter: a trait.)
+// keeps a float row as floats and transposes four of them as floats, with one
+// two-register permute into a 512-bit register (store_transposed_avx512), and
+// widens afterwards: two conversions a lane group and corner rather than four.
+// (Trusted path, float32 torus of 1e6 triangles, Intel Xeon with AVX-512,
+// fastest of 30 calls, three interleaved runs: 197-202 M triangles/s with the
+// 128-bit transpose and three conversions of stop 39, 224-227 so; float64
+// 200-213 in the same runs. That 128-bit transpose had itself beaten widening
+// first on Zen 4.) The AVX2 gatherer widens each row as it loads it: there
+// the float transpose's shuffles outnumber the conversion saved (the gather
+// 27.7 -> 25.4 instructions a triangle, callgrind). (GCC takes no vector
+// attribute on a template parameter: a trait.)
 template <class Scalar>
 struct RowOf;
 template <>
@@ -224,10 +226,10 @@ __attribute__((target("avx"), always_inline)) inline void store_transposed(
 // last vertex of the array is read like any other. The AVX-512 gatherer
 // differs from the AVX2 one in its masked load, which Zen 4 runs much faster
 // than AVX2's vmaskmovpd (the whole trusted path at 1e6 triangles, 6.6
-// against 7.7 ns per triangle), and in when it widens floats (above). Each has its own loop: a loop
-// shared as a template would have to inline code built for a wider set into code that is not. Four
-// rows at a time for both: a transpose of four 256-bit rows takes fewer shuffle slots than one of
-// eight in 512-bit registers, which Zen 4 runs as two halves.
+// against 7.7 ns per triangle), and in how it transposes and widens floats (above). Each has its
+// own loop: a loop shared as a template would have to inline code built for a wider set into code
+// that is not. Four rows at a time for both: a transpose of four 256-bit rows takes fewer shuffle
+// slots than one of eight in 512-bit registers, which Zen 4 runs as two halves.
 template <class Scalar>
 __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const unsigned char* xyz,
                                                                            Row<double>& row) {
@@ -242,7 +244,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
 // The gathering loop for one instruction set: four vertex rows at a time,
 // loaded by vertex_row_<name> as rows of RowScalar, transposed into the
 // batch's lanes.
-#define POLYMASS_GATHER(name, target, RowScalar)                                                   \
+#define POLYMASS_GATHER(name, target, RowScalar, store)                                            \
     template <bool listed, bool marking>                                                           \
     struct Gather_##name {                                                                         \
         template <class Scalar, class Index>                                                       \
@@ -258,7 +260,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
                     Row<RowScalar> rows[lane_count];                                               \
                     _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
                         vertex_row_##name<Scalar>(source.vertex(slot + lane, corner), rows[lane]); \
-                    store_transposed<RowScalar>(rows, gathered, corner, slot);                     \
+                    store<RowScalar>(rows, gathered, corner, slot);                                \
                 }                                                                                  \
             }                                                                                      \
             gather_one_by_one<listed, marking>(batch, slot, gathered);                             \
@@ -270,7 +272,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
         return gather_batch<Gather_##name>(batch, gathered);                                       \
     }
 
-POLYMASS_GATHER(avx2, __attribute__((target("avx2"))), double)
+POLYMASS_GATHER(avx2, __attribute__((target("avx2"))), double, store_transposed)
 
 #define POLYMASS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw"
 
@@ -283,7 +285,39 @@ __attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_a
         row = Row<double>(_mm256_maskz_loadu_pd(0x7, xyz));
 }
 
-POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))), Scalar)
+// store_transposed for the AVX-512 gatherer: float rows go into one 512-bit
+// register, permuted into x0..x3 y0..y3 z0..z3 and the zeros, and widened
+// exactly, x and y with one conversion. (GCC 12's headers fill the unused
+// lanes of these intrinsics with an "undefined" vector it then warns about:
+// the warning is silenced here, for this function alone.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+template <class Scalar>
+__attribute__((target(POLYMASS_AVX512), always_inline)) inline void store_transposed_avx512(
+    const Row<Scalar> (&rows)[lane_count], GatheredTriangles& gathered, int corner,
+    std::size_t slot) {
+    if constexpr (sizeof(Scalar) == sizeof(float)) {
+        const __m256 rows01 =
+            _mm256_insertf128_ps(_mm256_castps128_ps256(__m128(rows[0])), __m128(rows[1]), 1);
+        const __m256 rows23 =
+            _mm256_insertf128_ps(_mm256_castps128_ps256(__m128(rows[2])), __m128(rows[3]), 1);
+        const __m512 axes = _mm512_permutex2var_ps(
+            _mm512_castps256_ps512(rows01),
+            _mm512_setr_epi32(0, 4, 16, 20, 1, 5, 17, 21, 2, 6, 18, 22, 3, 7, 19, 23),
+            _mm512_castps256_ps512(rows23));
+        const __m512d xy = _mm512_cvtps_pd(_mm512_castps512_ps256(axes));
+        _mm256_storeu_pd(&gathered.coordinates[0][corner][slot], _mm512_castpd512_pd256(xy));
+        _mm256_storeu_pd(&gathered.coordinates[1][corner][slot], _mm512_extractf64x4_pd(xy, 1));
+        _mm256_storeu_pd(&gathered.coordinates[2][corner][slot],
+                         _mm256_cvtps_pd(_mm512_extractf32x4_ps(axes, 2)));
+    } else {
+        store_transposed<Scalar>(rows, gathered, corner, slot);
+    }
+}
+
+#pragma GCC diagnostic pop
+
+POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))), Scalar, store_transposed_avx512)
 #undef POLYMASS_GATHER
 #undef POLYMASS_AVX512
 #endif
