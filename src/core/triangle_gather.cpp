@@ -126,15 +126,14 @@ template <class Scalar>
 using Row = typename RowOf<Scalar>::type;
 
 // Rows x, y, z, 0 of lane_count triangles, transposed into x, y and z of
-// the triangles. Plain vector shuffles: each instruction set's compiler
-// turns them into its unpacks and permutes.
-template <class Scalar>
-__attribute__((always_inline)) inline void transpose_rows(const Row<Scalar> (&rows)[lane_count],
-                                                          Row<Scalar> (&axes)[3]) {
-    const Row<Scalar> xz01 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);  // x0 x1 z0 z1
-    const Row<Scalar> y01 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);   // y0 y1 0 0
-    const Row<Scalar> xz23 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
-    const Row<Scalar> y23 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
+// the triangles. Plain vector shuffles: the compiler turns them into its
+// unpacks and permutes.
+__attribute__((always_inline)) inline void transpose_rows(const Lanes (&rows)[lane_count],
+                                                          Lanes (&axes)[3]) {
+    const Lanes xz01 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);  // x0 x1 z0 z1
+    const Lanes y01 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);   // y0 y1 0 0
+    const Lanes xz23 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
+    const Lanes y23 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
     axes[0] = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
     axes[1] = __builtin_shufflevector(y01, y23, 0, 1, 4, 5);
     axes[2] = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
@@ -195,30 +194,18 @@ struct CornerSource {
     }
 };
 
-// Lanes of a row type, exactly. (An intrinsic: GCC's generic conversion of
-// four floats took two 128-bit conversions and an insert.)
-__attribute__((always_inline)) inline void widen(const Lanes& axis, Lanes& wide) { wide = axis; }
-
-__attribute__((target("avx"), always_inline)) inline void widen(const Row<float>& axis,
-                                                                Lanes& wide) {
-    wide = Lanes(_mm256_cvtps_pd(__m128(axis)));
-}
-
-// The rows of a lane group's corners `corner`, stored transposed (and
-// widened, exactly, from float) at `slot`. (For AVX and wider: the
-// gatherers of the wider sets inline it.)
+// The rows of a lane group's corners `corner`, double rows (the AVX2
+// gatherer widens float rows as it loads them), stored transposed at `slot`.
 template <class Scalar>
-__attribute__((target("avx"), always_inline)) inline void store_transposed(
+__attribute__((target("avx2"), always_inline)) inline void store_transposed(
     const Row<Scalar> (&rows)[lane_count], GatheredTriangles& gathered, int corner,
     std::size_t slot) {
-    Row<Scalar> axes[3];
-    transpose_rows<Scalar>(rows, axes);
+    static_assert(sizeof(Scalar) == sizeof(double), "rows of doubles");
+    Lanes axes[3];
+    transpose_rows(rows, axes);
 #pragma GCC unroll 3
-    for (int axis = 0; axis < 3; ++axis) {
-        Lanes wide;
-        widen(axes[axis], wide);
-        std::memcpy(&gathered.coordinates[axis][corner][slot], &wide, sizeof(Lanes));
-    }
+    for (int axis = 0; axis < 3; ++axis)
+        std::memcpy(&gathered.coordinates[axis][corner][slot], &axes[axis], sizeof(Lanes));
 }
 
 // A vertex as x, y, z and a zero, in one register, for each wider set.
