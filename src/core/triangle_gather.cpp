@@ -278,9 +278,9 @@ __attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_a
 // into x0..x3 y0..y3 and z0..z3 (two inserts and two permutes rather than six
 // 256-bit shuffles: float64 trusted path at 1e6 triangles, fastest of 30
 // calls, three interleaved runs, 216.7-217.5 -> 219.2-219.6 M triangles/s).
-// (GCC 12's headers fill the unused
-// lanes of these intrinsics with an "undefined" vector it then warns about:
-// the warning is silenced here, for this function alone.)
+// (GCC 12's headers fill the unused lanes of these intrinsics with an
+// "undefined" vector it then warns about: the warning is silenced here, for
+// this function alone.)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 template <class Scalar>
