@@ -101,15 +101,17 @@ bool gather_baseline(const TriangleBatch<Scalar, Index>& batch, GatheredTriangle
 
 #if defined(__x86_64__)
 // A vertex as x, y, z and a zero, in one register. The AVX-512 gatherer
-// keeps a float row as floats, transposes it as floats and widens
-// afterwards: three conversions a lane group and corner rather than four, and
-// shuffles of 128-bit registers rather than 256-bit ones (trusted path,
-// float32 torus of 1e5 triangles, AVX-512 (Zen 4), thread CPU time: 0.72-0.74
-// ms widened first, 0.68-0.69 so; float64: 0.67-0.69). The AVX2 gatherer
-// widens each row as it loads it: there the float transpose's shuffles
-// outnumber the conversion saved (the gather 27.7 -> 25.4 instructions a
-// triangle, callgrind). (GCC takes no vector attribute on a template
-// parameter: a trait.)
+// keeps a float row as floats and transposes four of them as floats, with one
+// two-register permute into a 512-bit register (store_transposed_avx512), and
+// widens afterwards: two conversions a lane group and corner rather than four.
+// (Trusted path, float32 torus of 1e6 triangles, Intel Xeon with AVX-512,
+// fastest of 30 calls, three interleaved runs: 197-202 M triangles/s with the
+// 128-bit transpose and three conversions of stop 39, 224-227 so; float64
+// 200-213 in the same runs. That 128-bit transpose had itself beaten widening
+// first on Zen 4.) The AVX2 gatherer widens each row as it loads it: there
+// the float transpose's shuffles outnumber the conversion saved (the gather
+// 27.7 -> 25.4 instructions a triangle, callgrind). (GCC takes no vector
+// attribute on a template parameter: a trait.)
 template <class Scalar>
 struct RowOf;
 template <>
@@ -124,15 +126,14 @@ template <class Scalar>
 using Row = typename RowOf<Scalar>::type;
 
 // Rows x, y, z, 0 of lane_count triangles, transposed into x, y and z of
-// the triangles. Plain vector shuffles: each instruction set's compiler
-// turns them into its unpacks and permutes.
-template <class Scalar>
-__attribute__((always_inline)) inline void transpose_rows(const Row<Scalar> (&rows)[lane_count],
-                                                          Row<Scalar> (&axes)[3]) {
-    const Row<Scalar> xz01 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);  // x0 x1 z0 z1
-    const Row<Scalar> y01 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);   // y0 y1 0 0
-    const Row<Scalar> xz23 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
-    const Row<Scalar> y23 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
+// the triangles. Plain vector shuffles: the compiler turns them into its
+// unpacks and permutes.
+__attribute__((always_inline)) inline void transpose_rows(const Lanes (&rows)[lane_count],
+                                                          Lanes (&axes)[3]) {
+    const Lanes xz01 = __builtin_shufflevector(rows[0], rows[1], 0, 4, 2, 6);  // x0 x1 z0 z1
+    const Lanes y01 = __builtin_shufflevector(rows[0], rows[1], 1, 5, 3, 7);   // y0 y1 0 0
+    const Lanes xz23 = __builtin_shufflevector(rows[2], rows[3], 0, 4, 2, 6);
+    const Lanes y23 = __builtin_shufflevector(rows[2], rows[3], 1, 5, 3, 7);
     axes[0] = __builtin_shufflevector(xz01, xz23, 0, 1, 4, 5);
     axes[1] = __builtin_shufflevector(y01, y23, 0, 1, 4, 5);
     axes[2] = __builtin_shufflevector(xz01, xz23, 2, 3, 6, 7);
@@ -193,30 +194,18 @@ struct CornerSource {
     }
 };
 
-// Lanes of a row type, exactly. (An intrinsic: GCC's generic conversion of
-// four floats took two 128-bit conversions and an insert.)
-__attribute__((always_inline)) inline void widen(const Lanes& axis, Lanes& wide) { wide = axis; }
-
-__attribute__((target("avx"), always_inline)) inline void widen(const Row<float>& axis,
-                                                                Lanes& wide) {
-    wide = Lanes(_mm256_cvtps_pd(__m128(axis)));
-}
-
-// The rows of a lane group's corners `corner`, stored transposed (and
-// widened, exactly, from float) at `slot`. (For AVX and wider: the
-// gatherers of the wider sets inline it.)
+// The rows of a lane group's corners `corner`, double rows (the AVX2
+// gatherer widens float rows as it loads them), stored transposed at `slot`.
 template <class Scalar>
-__attribute__((target("avx"), always_inline)) inline void store_transposed(
+__attribute__((target("avx2"), always_inline)) inline void store_transposed(
     const Row<Scalar> (&rows)[lane_count], GatheredTriangles& gathered, int corner,
     std::size_t slot) {
-    Row<Scalar> axes[3];
-    transpose_rows<Scalar>(rows, axes);
+    static_assert(sizeof(Scalar) == sizeof(double), "rows of doubles");
+    Lanes axes[3];
+    transpose_rows(rows, axes);
 #pragma GCC unroll 3
-    for (int axis = 0; axis < 3; ++axis) {
-        Lanes wide;
-        widen(axes[axis], wide);
-        std::memcpy(&gathered.coordinates[axis][corner][slot], &wide, sizeof(Lanes));
-    }
+    for (int axis = 0; axis < 3; ++axis)
+        std::memcpy(&gathered.coordinates[axis][corner][slot], &axes[axis], sizeof(Lanes));
 }
 
 // A vertex as x, y, z and a zero, in one register, for each wider set.
@@ -224,10 +213,10 @@ __attribute__((target("avx"), always_inline)) inline void store_transposed(
 // last vertex of the array is read like any other. The AVX-512 gatherer
 // differs from the AVX2 one in its masked load, which Zen 4 runs much faster
 // than AVX2's vmaskmovpd (the whole trusted path at 1e6 triangles, 6.6
-// against 7.7 ns per triangle), and in when it widens floats (above). Each has its own loop: a loop
-// shared as a template would have to inline code built for a wider set into code that is not. Four
-// rows at a time for both: a transpose of four 256-bit rows takes fewer shuffle slots than one of
-// eight in 512-bit registers, which Zen 4 runs as two halves.
+// against 7.7 ns per triangle), and in how it transposes and widens floats (above). Each has its
+// own loop: a loop shared as a template would have to inline code built for a wider set into code
+// that is not. Four rows at a time for both: a transpose of four 256-bit rows takes fewer shuffle
+// slots than one of eight in 512-bit registers, which Zen 4 runs as two halves.
 template <class Scalar>
 __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const unsigned char* xyz,
                                                                            Row<double>& row) {
@@ -242,7 +231,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
 // The gathering loop for one instruction set: four vertex rows at a time,
 // loaded by vertex_row_<name> as rows of RowScalar, transposed into the
 // batch's lanes.
-#define POLYMASS_GATHER(name, target, RowScalar)                                                   \
+#define POLYMASS_GATHER(name, target, RowScalar, store)                                            \
     template <bool listed, bool marking>                                                           \
     struct Gather_##name {                                                                         \
         template <class Scalar, class Index>                                                       \
@@ -258,7 +247,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
                     Row<RowScalar> rows[lane_count];                                               \
                     _Pragma("GCC unroll 4") for (int lane = 0; lane < lane_count; ++lane)          \
                         vertex_row_##name<Scalar>(source.vertex(slot + lane, corner), rows[lane]); \
-                    store_transposed<RowScalar>(rows, gathered, corner, slot);                     \
+                    store<RowScalar>(rows, gathered, corner, slot);                                \
                 }                                                                                  \
             }                                                                                      \
             gather_one_by_one<listed, marking>(batch, slot, gathered);                             \
@@ -270,7 +259,7 @@ __attribute__((target("avx2"), always_inline)) inline void vertex_row_avx2(const
         return gather_batch<Gather_##name>(batch, gathered);                                       \
     }
 
-POLYMASS_GATHER(avx2, __attribute__((target("avx2"))), double)
+POLYMASS_GATHER(avx2, __attribute__((target("avx2"))), double, store_transposed)
 
 #define POLYMASS_AVX512 "avx512f,avx512vl,avx512dq,avx512bw"
 
@@ -283,7 +272,54 @@ __attribute__((target(POLYMASS_AVX512), always_inline)) inline void vertex_row_a
         row = Row<double>(_mm256_maskz_loadu_pd(0x7, xyz));
 }
 
-POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))), Scalar)
+// store_transposed for the AVX-512 gatherer: float rows go into one 512-bit
+// register, permuted into x0..x3 y0..y3 z0..z3 and the zeros, and widened
+// exactly, x and y with one conversion; double rows go into two, permuted
+// into x0..x3 y0..y3 and z0..z3 (two inserts and two permutes rather than six
+// 256-bit shuffles: float64 trusted path at 1e6 triangles, fastest of 30
+// calls, three interleaved runs, 216.7-217.5 -> 219.2-219.6 M triangles/s).
+// (GCC 12's headers fill the unused lanes of these intrinsics with an
+// "undefined" vector it then warns about: the warning is silenced here, for
+// this function alone.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+template <class Scalar>
+__attribute__((target(POLYMASS_AVX512), always_inline)) inline void store_transposed_avx512(
+    const Row<Scalar> (&rows)[lane_count], GatheredTriangles& gathered, int corner,
+    std::size_t slot) {
+    if constexpr (sizeof(Scalar) == sizeof(float)) {
+        const __m256 rows01 =
+            _mm256_insertf128_ps(_mm256_castps128_ps256(__m128(rows[0])), __m128(rows[1]), 1);
+        const __m256 rows23 =
+            _mm256_insertf128_ps(_mm256_castps128_ps256(__m128(rows[2])), __m128(rows[3]), 1);
+        const __m512 axes = _mm512_permutex2var_ps(
+            _mm512_castps256_ps512(rows01),
+            _mm512_setr_epi32(0, 4, 16, 20, 1, 5, 17, 21, 2, 6, 18, 22, 3, 7, 19, 23),
+            _mm512_castps256_ps512(rows23));
+        const __m512d xy = _mm512_cvtps_pd(_mm512_castps512_ps256(axes));
+        _mm256_storeu_pd(&gathered.coordinates[0][corner][slot], _mm512_castpd512_pd256(xy));
+        _mm256_storeu_pd(&gathered.coordinates[1][corner][slot], _mm512_extractf64x4_pd(xy, 1));
+        _mm256_storeu_pd(&gathered.coordinates[2][corner][slot],
+                         _mm256_cvtps_pd(_mm512_extractf32x4_ps(axes, 2)));
+    } else {
+        const __m512d rows01 =
+            _mm512_insertf64x4(_mm512_castpd256_pd512(__m256d(rows[0])), __m256d(rows[1]), 1);
+        const __m512d rows23 =
+            _mm512_insertf64x4(_mm512_castpd256_pd512(__m256d(rows[2])), __m256d(rows[3]), 1);
+        const __m512d xy =
+            _mm512_permutex2var_pd(rows01, _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13), rows23);
+        const __m512d z_and_zeros =
+            _mm512_permutex2var_pd(rows01, _mm512_setr_epi64(2, 6, 10, 14, 3, 7, 11, 15), rows23);
+        _mm256_storeu_pd(&gathered.coordinates[0][corner][slot], _mm512_castpd512_pd256(xy));
+        _mm256_storeu_pd(&gathered.coordinates[1][corner][slot], _mm512_extractf64x4_pd(xy, 1));
+        _mm256_storeu_pd(&gathered.coordinates[2][corner][slot],
+                         _mm512_castpd512_pd256(z_and_zeros));
+    }
+}
+
+#pragma GCC diagnostic pop
+
+POLYMASS_GATHER(avx512, __attribute__((target(POLYMASS_AVX512))), Scalar, store_transposed_avx512)
 #undef POLYMASS_GATHER
 #undef POLYMASS_AVX512
 #endif
