@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "position_hash.hpp"
+#include "radix_sort.hpp"
 #include "scratch_buffer.hpp"
 #include "smallest_index_sets.hpp"
 
@@ -235,8 +236,10 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
 // of each other in every coordinate (up to rounding), so they are one; vertices
 // in adjacent cells are one when any pair across them is that close. Sorting
 // the vertices by cell groups each cell's and lets a merge-like walk meet each
-// cell's 26 neighbours. The cost is O(n log n) unless many distinct vertices
-// crowd two adjacent cells without touching (then it is their product).
+// cell's 26 neighbours. The cost is linear, but for the comparison sort of
+// vertices sharing a slab of x (n log n when they all do), and unless many
+// distinct vertices crowd two adjacent cells without touching (then it is
+// their product).
 // Returns each used vertex's lowest welded vertex, unused vertices their own.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
@@ -262,16 +265,41 @@ std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
         std::uint32_t vertex;
     };
     const Eigen::Vector3d origin = scan.bounds.min();
+    const auto cell_of = [&](std::uint32_t vertex) {
+        const Eigen::Vector3d p = (Eigen::Vector3d(mesh.positions[vertex]) - origin) / distance;
+        return Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())};
+    };
+    const auto entry_before = [&](const Entry& a, const Entry& b) {
+        return cell_before(a.cell, b.cell) || (same_cell(a.cell, b.cell) && a.vertex < b.vertex);
+    };
+    // The entries in that order: first by their cells' x alone, in linear
+    // time (its high 32 bits, of at most 51, in a key above each entry's
+    // place in `used`), then each run of one such key by a comparison sort,
+    // which almost every run (a vertex alone in its slab of x) skips. A
+    // comparison sort of all the entries was half of this weld.
+    std::pmr::vector<std::uint64_t> keys(used.size(), memory);
+    std::uint64_t last_x = 0;
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        keys[i] = std::uint64_t(cell_of(used[i])[0]);
+        last_x = std::max(last_x, keys[i]);
+    }
+    int x_shift = 0;
+    while ((last_x >> x_shift) > UINT32_MAX) ++x_shift;
+    for (std::size_t i = 0; i < used.size(); ++i) keys[i] = (keys[i] >> x_shift) << 32 | i;
+    radix_sort_high_half(keys.data(), keys.data() + keys.size(), memory);
     std::pmr::vector<Entry> entries(memory);
     entries.reserve(used.size());
-    for (const std::uint32_t vertex : used) {
-        const Eigen::Vector3d p = (Eigen::Vector3d(mesh.positions[vertex]) - origin) / distance;
-        entries.push_back(
-            {Cell{std::int64_t(p.x()), std::int64_t(p.y()), std::int64_t(p.z())}, vertex});
+    for (const std::uint64_t key : keys) {
+        const std::uint32_t vertex = used[std::uint32_t(key)];
+        entries.push_back({cell_of(vertex), vertex});
     }
-    std::sort(entries.begin(), entries.end(), [&](const Entry& a, const Entry& b) {
-        return cell_before(a.cell, b.cell) || (same_cell(a.cell, b.cell) && a.vertex < b.vertex);
-    });
+    for (std::size_t run = 0; run < keys.size();) {
+        std::size_t end = run + 1;
+        while (end < keys.size() && keys[end] >> 32 == keys[run] >> 32) ++end;
+        if (end - run > 1) std::sort(entries.begin() + run, entries.begin() + end, entry_before);
+        run = end;
+    }
+    let_go(keys);
 
     // Each occupied cell's first entry; the next cell's first ends it.
     std::pmr::vector<std::size_t> cell_starts(memory);

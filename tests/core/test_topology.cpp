@@ -341,6 +341,78 @@ void check_weld_tag_collisions() {
     }
 }
 
+// The weld within a tolerance against its rule applied to every pair: two
+// positions in one cell of the grid `distance` wide are one, and so are two in
+// neighbouring cells within `distance` in each coordinate (weld_within,
+// welding.cpp). Clusters of copies, each a little off its first (within and
+// past the distance), among 3,000 positions: scattered with a tolerance so
+// fine that the cells' x needs more than 32 bits (the weld sorts by its high
+// bits, then each run of equal keys in full), and on ten planes of one x each
+// (runs of hundreds).
+void check_weld_within() {
+    std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
+    std::mt19937 random(31);
+    for (const bool planes : {false, true}) {
+        const double tolerance = planes ? 1e-6 : 1e-13;
+        std::uniform_real_distribution<double> unit(0.0, 1.0), near(-1.2, 1.2);
+        std::vector<std::array<double, 3>> points;
+        while (points.size() < 3000) {
+            std::array<double, 3> first{unit(random), unit(random), unit(random)};
+            if (planes) first[0] = double(random() % 10) / 9.0;
+            points.push_back(first);
+            for (int copy = int(random() % 4); copy > 0; --copy) {
+                std::array<double, 3> p = first;
+                for (int axis = planes ? 1 : 0; axis < 3; ++axis)
+                    p[std::size_t(axis)] += near(random) * tolerance;
+                points.push_back(p);
+            }
+        }
+        std::shuffle(points.begin(), points.end(), random);
+        const std::size_t count = points.size();
+        const polymass::core::PositionArray<double> positions{
+            reinterpret_cast<const unsigned char*>(points.data()), 3 * sizeof(double)};
+        polymass::core::SerialTaskRunner serial;
+        const polymass::core::WeldedPositions welded =
+            polymass::core::weld_positions(positions, count, tolerance, serial, memory);
+
+        Eigen::AlignedBox3d bounds;
+        for (const auto& p : points) bounds.extend(Eigen::Vector3d(p[0], p[1], p[2]));
+        const double distance = tolerance * bounds.sizes().maxCoeff();
+        const auto cell = [&](const std::array<double, 3>& p, int axis) {
+            return std::int64_t((p[std::size_t(axis)] - bounds.min()[axis]) / distance);
+        };
+        std::vector<std::uint32_t> parent(count);
+        std::iota(parent.begin(), parent.end(), 0u);
+        const auto root = [&](std::uint32_t v) {
+            while (parent[v] != v) v = parent[v] = parent[parent[v]];
+            return v;
+        };
+        for (std::uint32_t a = 0; a < count; ++a)
+            for (std::uint32_t b = a + 1; b < count; ++b) {
+                bool same_cell = true, neighbours = true, close = true;
+                for (int axis = 0; axis < 3; ++axis) {
+                    const std::int64_t apart = cell(points[a], axis) - cell(points[b], axis);
+                    same_cell &= apart == 0;
+                    neighbours &= apart >= -1 && apart <= 1;
+                    close &= std::abs(points[a][std::size_t(axis)] -
+                                      points[b][std::size_t(axis)]) <= distance;
+                }
+                if (same_cell || (neighbours && close)) {
+                    const std::uint32_t ra = root(a), rb = root(b);
+                    parent[std::max(ra, rb)] = std::min(ra, rb);
+                }
+            }
+        std::size_t welded_away = 0;
+        bool same = welded.vertex_of.size() == count;
+        for (std::uint32_t v = 0; v < count; ++v) {
+            same = same && welded.vertex_of[v] == root(v);
+            welded_away += root(v) != v;
+        }
+        CHECK(same);
+        CHECK(welded_away > 500);  // the clusters' copies, most of them
+    }
+}
+
 }  // namespace
 
 int main() {
@@ -365,5 +437,6 @@ int main() {
     break_faces(large, 30, random);
     check_welded_soup(large, random);
     check_weld_tag_collisions();
+    check_weld_within();
     return polymass_test::finish("test_topology");
 }
