@@ -139,7 +139,7 @@ void add_fine_cube(TestMesh& mesh, int n) {
         for (int j = 0; j <= n; ++j)
             for (int k = 0; k <= n; ++k)
                 mesh.add_vertex(Eigen::Vector3d(i, j, k) / n);  // inner ones unused
-    // Each face as a grid over (u, v), from the corner `origin`, turned outward.
+    // Each face as a grid over (u, v), turned outward or inward as `outward` says.
     auto face = [&](auto vertex, bool outward) {
         for (int u = 0; u < n; ++u)
             for (int v = 0; v < n; ++v) {
