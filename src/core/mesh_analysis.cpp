@@ -140,6 +140,9 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     // integrals fit in doubles: a surface refused whole for its volume (none,
     // or inside out) still has its shells judged, signed as they are found.
     const Defect defect = analysis.verdict.defect;
+    // The intersection check below also counts the windings of the shells.
+    const bool intersection_check_runs =
+        settings.check_topology && settings.check_intersections && std::isfinite(scan.diagonal());
     if (analysis.topology &&
         analysis.topology->closed_and_oriented(settings.policy.accept_balanced_non_manifold) &&
         (defect == Defect::none || defect == Defect::inverted || defect == Defect::zero_volume)) {
@@ -147,9 +150,14 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
             survey_shells(mesh, scan, identities, std::move(vertex_sets), integration.reference,
                           analysis.verdict.outward, analysis.integration->integrals.volume,
                           analysis.integration->encloses_no_volume, tasks, memory);
-        if (stop()) return finish();
+        // A shell inside out by the boxes alone is not yet a verdict when the
+        // windings are counted next: they may find it a cavity across two
+        // solids that touch, or passing through a surface. An analysis that
+        // stops at the first problem goes on to them, so that every caller
+        // gets the verdict of the full analysis.
+        if (stop() && !intersection_check_runs) return finish();
     }
-    if (settings.check_topology && settings.check_intersections && std::isfinite(scan.diagonal())) {
+    if (intersection_check_runs) {
         const Shells* shells = analysis.shells ? &analysis.shells->shells : nullptr;
         // The check takes each vertex's lowest welded vertex.
         const std::pmr::vector<std::uint32_t> lowest =

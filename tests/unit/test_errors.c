@@ -478,6 +478,54 @@ static void shell_inside_out(case_input* in, int variant) {
     describe(in);
 }
 
+/* An octahedron about the vertical line through (0.5, 0.5): its square
+   equator, of half-diagonal 0.25, in the plane z = 1, its apexes at z = 0.5
+   and 1.5; inside out when asked. */
+static void add_octahedron_at_z1(pm_mesh* m, int inside_out) {
+    uint32_t bottom = pm_mesh_add_vertex(m, 0.5, 0.5, 0.5);
+    uint32_t top = pm_mesh_add_vertex(m, 0.5, 0.5, 1.5);
+    uint32_t equator[4];
+    int i;
+    equator[0] = pm_mesh_add_vertex(m, 0.75, 0.5, 1);
+    equator[1] = pm_mesh_add_vertex(m, 0.5, 0.75, 1);
+    equator[2] = pm_mesh_add_vertex(m, 0.25, 0.5, 1);
+    equator[3] = pm_mesh_add_vertex(m, 0.5, 0.25, 1);
+    for (i = 0; i < 4; ++i) {
+        uint32_t a = equator[i], b = equator[(i + 1) % 4];
+        if (inside_out) {
+            pm_mesh_add_tri(m, b, a, top);
+            pm_mesh_add_tri(m, a, b, bottom);
+        } else {
+            pm_mesh_add_tri(m, a, b, top);
+            pm_mesh_add_tri(m, b, a, bottom);
+        }
+    }
+}
+
+/* The unit cube and an octahedron inside out, half in it and half above it,
+   its equator on the cube's top: no faces cross, but the shell passes
+   through the cube's surface. Its box is in no solid's box, and the analysis
+   that stops at the first problem must not stop there: the windings say how
+   it fails. */
+static void inside_out_half_in_a_cube(case_input* in, int variant) {
+    (void)variant;
+    pm_mesh_unit_cube(&in->mesh, 1);
+    add_octahedron_at_z1(&in->mesh, 1);
+    describe(in);
+}
+
+/* The same octahedron inside out as a cavity across two boxes resting on
+   each other: wholly inside the solid they make, though in neither box, so
+   a valid solid of volume 2 - 1/24. */
+static void cavity_across_two_boxes(case_input* in, int variant) {
+    static const double lo[3] = {0, 0, 1}, hi[3] = {1, 1, 2};
+    (void)variant;
+    pm_mesh_unit_cube(&in->mesh, 1);
+    pm_mesh_add_box(&in->mesh, lo, hi, 1);
+    add_octahedron_at_z1(&in->mesh, 1);
+    describe(in);
+}
+
 static void flat_square(case_input* in, int variant) {
     (void)variant;
     make_flat_square(&in->mesh);
@@ -681,6 +729,12 @@ static const error_case cases[] = {
      "every face is reversed"},
     {"a shell inside out, in no solid", shell_inside_out, 1, NULL, POLYMASS_ERROR_INVERTED,
      "shell 1 (6 faces, the first face 6, signed volume -0.125) is inside out"},
+    {"a shell inside out, half in a solid", inside_out_half_in_a_cube, 1, NULL,
+     POLYMASS_ERROR_INTERSECTING,
+     "shell 1 (8 faces, the first face 12, signed volume -0.041666666666666664) lies inside "
+     "another shell that already bounds the same side, or passes through its surface"},
+    {"a cavity across two solids resting on each other", cavity_across_two_boxes, 1, NULL,
+     POLYMASS_OK, ""},
     {"a flat double-sided square", flat_square, 1, NULL, POLYMASS_ERROR_ZERO_VOLUME,
      "the surface encloses no volume"},
     {"the same, inverted accepted", flat_square, 1, &accept_inverted, POLYMASS_ERROR_ZERO_VOLUME,
@@ -1119,6 +1173,28 @@ static void test_inverted_findings(void** state) {
         PM_ASSERT_PROPERTIES(ref->name, &e, &p, PM_TOL);
         pm_mesh_free(&m);
     }
+    polymass_context_destroy(ctx);
+}
+
+/* The cavity across two boxes resting on each other (the table's case):
+   its volume is subtracted, the touching faces are warned of, and no shell
+   is called inside out. */
+static void test_cavity_across_two_solids(void** state) {
+    polymass_context* ctx = pm_context_new();
+    polymass_diagnostics diag;
+    polymass_mass_properties p;
+    case_input in;
+    (void)state;
+    memset(&in, 0, sizeof in);
+    cavity_across_two_boxes(&in, 0);
+    PM_ASSERT_OK(ctx, pm_compute(&p, ctx, &in.mesh, NULL));
+    PM_ASSERT_REL("volume of two unit cubes less the octahedron", 2.0 - 1.0 / 24.0, p.volume,
+                  PM_TOL);
+    assert_int_equal(p.warnings, POLYMASS_WARNING_TOUCHING_FACES);
+    PM_ASSERT_OK(ctx, pm_check(&diag, ctx, &in.mesh));
+    assert_int_equal(diag.shell_count, 3);
+    assert_int_equal(diag.inverted_shells, 0);
+    pm_mesh_free(&in.mesh);
     polymass_context_destroy(ctx);
 }
 
@@ -1660,6 +1736,7 @@ int main(void) {
         cmocka_unit_test(test_inconsistent_orientation_findings),
         cmocka_unit_test(test_non_planar_findings),
         cmocka_unit_test(test_inverted_findings),
+        cmocka_unit_test(test_cavity_across_two_solids),
         cmocka_unit_test(test_zero_volume_findings),
         cmocka_unit_test(test_skip_topology_checks),
         cmocka_unit_test(test_degenerate_faces),
