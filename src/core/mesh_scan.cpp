@@ -169,6 +169,14 @@ struct VertexPart {
     Eigen::Vector3d low = Eigen::AlignedBox3d().min(), high = Eigen::AlignedBox3d().max();
     std::size_t used_vertex_count = 0;
     Finding non_finite;
+
+    // Joins the part of the blocks after this one's.
+    void append(const VertexPart& later) {
+        low = low.cwiseMin(later.low);
+        high = high.cwiseMax(later.high);
+        used_vertex_count += later.used_vertex_count;
+        non_finite.merge(later.non_finite);
+    }
 };
 
 // Bounds the used vertices of blocks [first_block, last_block) (64 vertices
@@ -296,12 +304,7 @@ VertexPart bound_in_parts(const MeshView<Scalar, Index>& mesh,
                                    std::min(blocks, first + kBlocksPerPart), used_words);
     });
     VertexPart joined;
-    for (const VertexPart& part : bounded) {
-        joined.low = joined.low.cwiseMin(part.low);
-        joined.high = joined.high.cwiseMax(part.high);
-        joined.used_vertex_count += part.used_vertex_count;
-        joined.non_finite.merge(part.non_finite);
-    }
+    for (const VertexPart& part : bounded) joined.append(part);
     return joined;
 }
 
@@ -323,12 +326,8 @@ VertexPart bound_in_stretches(const MeshView<Scalar, Index>& mesh,
     VertexPart joined;
     for (std::size_t first = 0; first < blocks; first += kBlocksPerStretch) {
         const std::size_t last = std::min(blocks, first + kBlocksPerStretch);
-        const VertexPart part =
-            kernels.bound_vertices(mesh, seen_vertex, addressable, first, last, scan.used.data());
-        joined.low = joined.low.cwiseMin(part.low);
-        joined.high = joined.high.cwiseMax(part.high);
-        joined.used_vertex_count += part.used_vertex_count;
-        joined.non_finite.merge(part.non_finite);
+        joined.append(
+            kernels.bound_vertices(mesh, seen_vertex, addressable, first, last, scan.used.data()));
         follower.follow(scan, 64 * first, std::min(addressable, 64 * last));
     }
     return joined;
