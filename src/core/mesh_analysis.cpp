@@ -18,16 +18,22 @@ Finding faces_too_small(const std::uint32_t* face_sizes, std::size_t face_count)
     return small;
 }
 
+// scan_surface from the mesh's scan.
+template <class Scalar, class Index>
+MeshAnalysis judge_scan(const MeshView<Scalar, Index>& mesh, MeshScan scan) {
+    MeshAnalysis analysis(std::move(scan));
+    analysis.small_faces = faces_too_small(mesh.face_sizes, mesh.face_count);
+    analysis.used_vertex_count = analysis.scan.used_vertex_count;
+    analysis.verdict = judge(analysis, {});
+    return analysis;
+}
+
 }  // namespace
 
 template <class Scalar, class Index>
 MeshAnalysis scan_surface(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
                           TaskRunner& tasks) {
-    MeshAnalysis analysis(scan_mesh(mesh, memory, tasks));
-    analysis.small_faces = faces_too_small(mesh.face_sizes, mesh.face_count);
-    analysis.used_vertex_count = analysis.scan.used_vertex_count;
-    analysis.verdict = judge(analysis, {});
-    return analysis;
+    return judge_scan(mesh, scan_mesh(mesh, memory, tasks));
 }
 
 namespace {
@@ -92,7 +98,15 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         integrated->verdict = judge(*integrated, settings.policy);
         return std::move(*integrated);
     }
-    MeshAnalysis analysis = scan_surface(mesh, memory, tasks);
+    // The topology and the shells take the welded positions numbered densely.
+    // An exact weld follows the scan (scan_and_weld_exact): a soup's positions
+    // are read from memory once for both.
+    const bool weld = settings.weld && (settings.check_topology || settings.list_shells);
+    const bool weld_exact = weld && !(settings.weld_tolerance > 0.0);
+    NumberedVertices numbered(memory);
+    MeshAnalysis analysis =
+        weld_exact ? judge_scan(mesh, scan_and_weld_exact(mesh, numbered, tasks, memory))
+                   : scan_surface(mesh, memory, tasks);
     const MeshScan& scan = analysis.scan;
     // Judges what is known; true when the analysis should end here.
     auto stop = [&] {
@@ -107,10 +121,9 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         return analysis;
     }
 
-    // The topology and the shells take the welded positions numbered densely.
-    NumberedVertices numbered(memory);
-    if (settings.weld && (settings.check_topology || settings.list_shells)) {
-        numbered = weld_and_number(mesh, scan, settings.weld_tolerance, tasks, memory);
+    if (weld) {
+        if (!weld_exact)
+            numbered = weld_and_number(mesh, scan, settings.weld_tolerance, tasks, memory);
         analysis.used_vertex_count = numbered.lowest_vertex.size();
         // Every vertex used and no two at one position (an indexed mesh, as
         // most are): each vertex is its own identity, and no numbering is kept.

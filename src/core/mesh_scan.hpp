@@ -61,12 +61,31 @@ std::size_t count_used_with(const MeshScan& scan, std::size_t count, Property&& 
     return found;
 }
 
+// A pass that reads the positions right after the scan (the exact weld),
+// told of each stretch of vertices as soon as the scan has bounded them and
+// set their bits of scan.used: it reads their positions while they are still
+// in the L1 cache, rather than the whole array again from memory once it has
+// outgrown the caches (docs/validity.md, "Closed and oriented").
+class ScanFollower {
+public:
+    // Vertices [first, last), in ascending stretches from 0; scan.used holds
+    // their bits and those of every vertex before them (nothing else of the
+    // scan is final yet).
+    virtual void follow(const MeshScan& scan, std::size_t first, std::size_t last) = 0;
+
+protected:
+    ~ScanFollower() = default;
+};
+
 // Runs in fixed parts on `tasks`: the same scan whatever runs them, and
 // whichever instruction set's kernels read the arrays (`set` must be one this
-// processor runs; tests compare them all).
+// processor runs; tests compare them all). With a follower, the pass over the
+// vertices runs on the calling thread, a stretch of them at a time, each
+// handed to the follower when bounded: still the same scan.
 template <class Scalar, class Index>
 MeshScan scan_mesh(const MeshView<Scalar, Index>& mesh, std::pmr::memory_resource* memory,
-                   TaskRunner& tasks, InstructionSet set = widest_instruction_set());
+                   TaskRunner& tasks, InstructionSet set = widest_instruction_set(),
+                   ScanFollower* follower = nullptr);
 
 // The same scan in pieces, for a pass over the faces that reads the index
 // array anyway (the integration when nothing else needs the scan first): it

@@ -36,11 +36,14 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
 // One hashing pass over the used vertices in index order (no list of them): the
 // first vertex met at a position (the lowest index) enters the table, and the
 // position is numbered in the order met; every later vertex with the same bits
-// gets that number. Returns each number's lowest vertex, ascending. In shares
-// (weld_exact), the pass runs over each share of the positions, chosen by
-// hash, with a table of its own: every copy of a position is in one share, so
-// each vertex meets in its share the same lowest vertex as in one pass over
-// all (the numbers, the share's own, are then merged). The table holds only
+// gets that number. lowest() is each number's lowest vertex, ascending. In
+// shares (weld_exact), the pass runs over each share of the positions, chosen
+// by hash, with a table of its own: every copy of a position is in one share,
+// so each vertex meets in its share the same lowest vertex as in one pass over
+// all (the numbers, the share's own, are then merged). The pass takes its
+// items in ascending runs (take), each as soon as the scan has bounded them
+// when it follows the scan (scan_and_weld_exact); the answer is the same
+// however the items are cut into runs. The table holds only
 // distinct positions (a triangle soup asks about each corner, but has a sixth
 // as many vertices), in open addressing with linear probing, at most half
 // full, and beside it a copy of each distinct position, so that a probe
@@ -48,16 +51,47 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
 // it may be far back. Each slot keeps the position's number with the high half
 // of its hash, so that a probe reads a held position's bits only when the
 // halves agree (almost only for a copy), and the slot of a vertex a few ahead
-// is prefetched. A vertex's first slot is taken from that high half too, so
-// that the table grows by moving its slots alone. Comparing bits rather than
-// values is exact welding for finite coordinates and still defined for NaN
+// in the run is prefetched. A vertex's first slot is taken from that high half
+// too, so that the table grows by moving its slots alone. Comparing bits rather
+// than values is exact welding for finite coordinates and still defined for NaN
 // (copies of one NaN are one vertex), which sorting is not.
 template <class Scalar, class Index, class VertexAt, class HashOf>
-std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
-                                           const MeshScan& scan, std::size_t items,
-                                           VertexAt&& vertex_at, HashOf&& hash_of,
-                                           std::uint32_t* number_of,
-                                           std::pmr::memory_resource* memory) {
+class HashingPass {
+public:
+    HashingPass(const MeshView<Scalar, Index>& mesh, VertexAt vertex_at, HashOf hash_of,
+                std::uint32_t* number_of, std::pmr::memory_resource* memory)
+        : mesh_(mesh),
+          vertex_at_(std::move(vertex_at)),
+          hash_of_(std::move(hash_of)),
+          number_of_(number_of),
+          slots_(std::size_t(1) << 12, 0, memory),
+          lowest_(memory),
+          held_(memory) {}
+
+    // Items [first, last); `scan` holds the used bits of their vertices.
+    void take(const MeshScan& scan, std::size_t first, std::size_t last) {
+        // The hashes of the next kAhead items of the run, by item % kAhead
+        // (stale for an unused vertex, which is never looked up).
+        std::array<std::uint64_t, kAhead> ahead{};
+        const auto hash_ahead = [&](std::size_t item) {
+            if (item >= last || !scan.is_used(vertex_at_(item))) return;
+            const std::uint64_t hash = hash_of_(vertex_at_(item));
+            ahead[item % kAhead] = hash;
+            __builtin_prefetch(&slots_[home(hash)]);
+        };
+        for (std::size_t item = first; item < first + kAhead; ++item) hash_ahead(item);
+        for (std::size_t item = first; item < last; ++item) {
+            const std::uint64_t hash = ahead[item % kAhead];  // before its slot is reused
+            hash_ahead(item + kAhead);
+            const std::uint32_t vertex = vertex_at_(item);
+            if (scan.is_used(vertex)) number(vertex, hash);
+        }
+    }
+
+    std::pmr::vector<std::uint32_t> lowest() && { return std::move(lowest_); }
+
+private:
+    static constexpr std::size_t kAhead = 16;
     // A position's bits as the weld compares them, in a Scalar's room (a
     // float32 one in half a double's): for double, position_bits; for float,
     // the bits of the float read, +0 for -0 and NaN quieted as on its way to a
@@ -65,73 +99,86 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
     using Bits =
         std::array<std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t>,
                    3>;
-    const auto bits_of = [](const Eigen::Vector3d& p) {
+    static constexpr std::uint64_t kHighHalf = 0xFFFFFFFF00000000ull;
+
+    static Bits bits_of(const Eigen::Vector3d& p) {
         Bits bits;
         for (int axis = 0; axis < 3; ++axis) {
             const Scalar value = Scalar(p[axis]) + Scalar(0);
             std::memcpy(&bits[std::size_t(axis)], &value, sizeof value);
         }
         return bits;
-    };
-    // A slot: the hash's high half, then the position's number + 1 (0: empty).
-    const auto slot_of = [](std::uint64_t hash, std::size_t number) {
-        return (hash & 0xFFFFFFFF00000000ull) | (std::uint64_t(number) + 1);
-    };
-    std::pmr::vector<std::uint64_t> slots(std::size_t(1) << 12, 0, memory);
-    std::pmr::vector<std::uint32_t> lowest(memory);  // of each number
-    std::pmr::vector<Bits> held(memory);             // of each number, its position's bits
+    }
     // The first slot to probe for a hash, or for a slot holding it.
-    const auto home = [&](std::uint64_t hash_or_slot) {
-        return std::size_t(hash_or_slot >> 32) & (slots.size() - 1);
-    };
-    const auto place = [&](std::uint64_t entry) {
-        const std::size_t mask = slots.size() - 1;
+    std::size_t home(std::uint64_t hash_or_slot) const {
+        return std::size_t(hash_or_slot >> 32) & (slots_.size() - 1);
+    }
+    void place(std::uint64_t entry) {
+        const std::size_t mask = slots_.size() - 1;
         std::size_t slot = home(entry);
-        while (slots[slot] != 0) slot = (slot + 1) & mask;
-        slots[slot] = entry;
-    };
-    // The hashes of the next kAhead items, by item % kAhead (stale for an
-    // unused vertex, which is never looked up).
-    constexpr std::size_t kAhead = 16;
-    std::array<std::uint64_t, kAhead> ahead{};
-    const auto hash_ahead = [&](std::size_t item) {
-        if (item >= items || !scan.is_used(vertex_at(item))) return;
-        const std::uint64_t hash = hash_of(vertex_at(item));
-        ahead[item % kAhead] = hash;
-        __builtin_prefetch(&slots[home(hash)]);
-    };
-    for (std::size_t item = 0; item < kAhead; ++item) hash_ahead(item);
-    for (std::size_t item = 0; item < items; ++item) {
-        const std::uint64_t hash = ahead[item % kAhead];  // before its slot is reused
-        hash_ahead(item + kAhead);
-        const std::uint32_t vertex = vertex_at(item);
-        if (!scan.is_used(vertex)) continue;
-        const Bits bits = bits_of(mesh.positions[vertex]);
-        const std::uint64_t tag = hash & 0xFFFFFFFF00000000ull;
-        const std::size_t mask = slots.size() - 1;
+        while (slots_[slot] != 0) slot = (slot + 1) & mask;
+        slots_[slot] = entry;
+    }
+
+    void number(std::uint32_t vertex, std::uint64_t hash) {
+        const Bits bits = bits_of(mesh_.positions[vertex]);
+        const std::uint64_t tag = hash & kHighHalf;
+        const std::size_t mask = slots_.size() - 1;
         std::size_t slot = home(hash);
-        for (; slots[slot] != 0; slot = (slot + 1) & mask) {
-            const std::uint64_t entry = slots[slot];
-            if ((entry & 0xFFFFFFFF00000000ull) != tag) continue;
-            const Bits& copy = held[std::uint32_t(entry) - 1];
+        for (; slots_[slot] != 0; slot = (slot + 1) & mask) {
+            const std::uint64_t entry = slots_[slot];
+            if ((entry & kHighHalf) != tag) continue;
+            const Bits& copy = held_[std::uint32_t(entry) - 1];
             if (copy[0] == bits[0] && copy[1] == bits[1] && copy[2] == bits[2]) break;
         }
-        if (slots[slot] != 0) {
-            number_of[vertex] = std::uint32_t(slots[slot]) - 1;
-            continue;
+        if (slots_[slot] != 0) {
+            number_of_[vertex] = std::uint32_t(slots_[slot]) - 1;
+            return;
         }
-        number_of[vertex] = std::uint32_t(lowest.size());
-        slots[slot] = slot_of(hash, lowest.size());
-        lowest.push_back(vertex);
-        held.push_back(bits);
-        if (2 * lowest.size() > slots.size()) {
-            std::pmr::vector<std::uint64_t> moved(std::move(slots));
-            slots = std::pmr::vector<std::uint64_t>(2 * moved.size(), 0, memory);
+        number_of_[vertex] = std::uint32_t(lowest_.size());
+        // A slot: the hash's high half, then the position's number + 1 (0: empty).
+        slots_[slot] = tag | (std::uint64_t(lowest_.size()) + 1);
+        lowest_.push_back(vertex);
+        held_.push_back(bits);
+        if (2 * lowest_.size() > slots_.size()) {
+            std::pmr::vector<std::uint64_t> moved(std::move(slots_));
+            slots_ = std::pmr::vector<std::uint64_t>(2 * moved.size(), 0, moved.get_allocator());
             for (const std::uint64_t entry : moved)
                 if (entry != 0) place(entry);
         }
     }
-    return lowest;
+
+    const MeshView<Scalar, Index>& mesh_;
+    VertexAt vertex_at_;
+    HashOf hash_of_;
+    std::uint32_t* number_of_;
+    std::pmr::vector<std::uint64_t> slots_;
+    std::pmr::vector<std::uint32_t> lowest_;  // of each number
+    std::pmr::vector<Bits> held_;             // of each number, its position's bits
+};
+
+template <class Scalar, class Index, class VertexAt, class HashOf>
+HashingPass<Scalar, Index, VertexAt, HashOf> hashing_pass(const MeshView<Scalar, Index>& mesh,
+                                                          VertexAt vertex_at, HashOf hash_of,
+                                                          std::uint32_t* number_of,
+                                                          std::pmr::memory_resource* memory) {
+    return {mesh, std::move(vertex_at), std::move(hash_of), number_of, memory};
+}
+
+// The hash of a vertex's position, for the exact weld.
+template <class Scalar, class Index>
+std::uint64_t hash_of_vertex(const MeshView<Scalar, Index>& mesh, std::uint32_t vertex) {
+    const Eigen::Vector3d p = mesh.positions[vertex];
+    return position_hash({position_bits(p.x()), position_bits(p.y()), position_bits(p.z())});
+}
+
+// The one pass of the exact weld over every vertex, in index order.
+template <class Scalar, class Index>
+auto whole_hashing_pass(const MeshView<Scalar, Index>& mesh, std::uint32_t* number_of,
+                        std::pmr::memory_resource* memory) {
+    return hashing_pass(
+        mesh, [](std::size_t item) { return std::uint32_t(item); },
+        [&mesh](std::uint32_t vertex) { return hash_of_vertex(mesh, vertex); }, number_of, memory);
 }
 
 // The exact weld, numbered, in shares on `tasks` (a share a thread, each of at
@@ -148,10 +195,6 @@ std::pmr::vector<std::uint32_t> weld_share(const MeshView<Scalar, Index>& mesh,
 template <class Scalar, class Index>
 NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                             TaskRunner& tasks, std::pmr::memory_resource* memory) {
-    const auto hash_of = [&](std::uint32_t vertex) {
-        const Eigen::Vector3d p = mesh.positions[vertex];
-        return position_hash({position_bits(p.x()), position_bits(p.y()), position_bits(p.z())});
-    };
     NumberedVertices numbered(memory);
     const std::size_t count = welded_count(mesh, scan);
     numbered.of_vertex.resize(count);
@@ -159,9 +202,9 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
     const std::size_t shares = std::max<std::size_t>(
         1, std::min(tasks.concurrency(), scan.used_vertex_count / kItemsPerBlock));
     if (shares == 1) {
-        numbered.lowest_vertex = weld_share(
-            mesh, scan, count, [](std::size_t item) { return std::uint32_t(item); }, hash_of,
-            number_of, memory);
+        auto pass = whole_hashing_pass(mesh, number_of, memory);
+        pass.take(scan, 0, count);
+        numbered.lowest_vertex = std::move(pass).lowest();
         return numbered;
     }
     // A share from the hash's high half's highest bits (its lowest pick the slot).
@@ -180,7 +223,7 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
     // ends[block * shares + share]: the block's count, then where its next vertex goes.
     std::pmr::vector<std::size_t> ends(blocks * shares, 0, memory);
     each_used([&](std::size_t block, std::uint32_t vertex) {
-        high_halves[vertex] = std::uint32_t(hash_of(vertex) >> 32);
+        high_halves[vertex] = std::uint32_t(hash_of_vertex(mesh, vertex) >> 32);
         ++ends[block * shares + share_of(high_halves[vertex])];
     });
     std::pmr::vector<std::size_t> share_starts(shares + 1, memory);
@@ -199,11 +242,12 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
     std::pmr::vector<std::pmr::vector<std::uint32_t>> lowest_of_share(shares, &one_at_a_time);
     tasks.run(shares, [&](std::size_t share) {
         const std::uint32_t* const own = in_shares.data() + share_starts[share];
-        lowest_of_share[share] = weld_share(
-            mesh, scan, share_starts[share + 1] - share_starts[share],
-            [own](std::size_t item) { return own[item]; },
+        auto pass = hashing_pass(
+            mesh, [own](std::size_t item) { return own[item]; },
             [&](std::uint32_t vertex) { return std::uint64_t(high_halves[vertex]) << 32; },
             number_of, &one_at_a_time);
+        pass.take(scan, 0, share_starts[share + 1] - share_starts[share]);
+        lowest_of_share[share] = std::move(pass).lowest();
     });
     // first_of_share[share]: where the share's numbers start in `renumbered`,
     // which gives each the number it has among all shares'.
@@ -230,6 +274,25 @@ NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan&
             renumbered[first_of_share[share_of(high_halves[vertex])] + number_of[vertex]];
     });
     return numbered;
+}
+
+// The exact weld's one pass as a follower of the scan.
+template <class Pass>
+class FollowingWeld final : public ScanFollower {
+public:
+    explicit FollowingWeld(Pass& pass) : pass_(pass) {}
+    void follow(const MeshScan& scan, std::size_t first, std::size_t last) override {
+        pass_.take(scan, first, last);
+    }
+
+private:
+    Pass& pass_;
+};
+
+// What an exact weld can be asked of: indices in range (the weld reads the
+// positions the faces use) and, for the analysis, finite coordinates.
+bool weldable(const MeshScan& scan) {
+    return scan.out_of_range_indices == 0 && scan.non_finite.count == 0;
 }
 
 // A grid of cells `distance` wide: vertices in one cell are within `distance`
@@ -387,6 +450,28 @@ NumberedVertices weld_and_number(const MeshView<Scalar, Index>& mesh, const Mesh
     return number_welded_vertices(lowest, scan, distinct, memory);
 }
 
+template <class Scalar, class Index>
+MeshScan scan_and_weld_exact(const MeshView<Scalar, Index>& mesh, NumberedVertices& numbered,
+                             TaskRunner& tasks, std::pmr::memory_resource* memory) {
+    numbered = NumberedVertices(memory);
+    if (tasks.concurrency() > 1) {
+        MeshScan scan = scan_mesh(mesh, memory, tasks);
+        if (weldable(scan)) numbered = weld_exact(mesh, scan, tasks, memory);
+        return scan;
+    }
+    // welded_count, from the length the scan gives scan.used.
+    const std::size_t used_words = (addressable_vertices(mesh) + 63) / 64;
+    numbered.of_vertex.resize(std::min(mesh.vertex_count, 64 * used_words));
+    auto pass = whole_hashing_pass(mesh, numbered.of_vertex.data(), memory);
+    FollowingWeld<decltype(pass)> follower(pass);
+    MeshScan scan = scan_mesh(mesh, memory, tasks, widest_instruction_set(), &follower);
+    if (weldable(scan))
+        numbered.lowest_vertex = std::move(pass).lowest();
+    else
+        numbered = NumberedVertices(memory);
+    return scan;
+}
+
 std::pmr::vector<std::uint32_t> lowest_welded_vertices(const NumberedVertices& numbered,
                                                        const MeshScan& scan,
                                                        std::pmr::memory_resource* memory) {
@@ -438,7 +523,10 @@ template WeldedPositions weld_positions<float>(const PositionArray<float>&, std:
         std::pmr::memory_resource*);                                                               \
     template NumberedVertices weld_and_number<Scalar, Index>(const MeshView<Scalar, Index>&,       \
                                                              const MeshScan&, double, TaskRunner&, \
-                                                             std::pmr::memory_resource*);
+                                                             std::pmr::memory_resource*);          \
+    template MeshScan scan_and_weld_exact<Scalar, Index>(const MeshView<Scalar, Index>&,           \
+                                                         NumberedVertices&, TaskRunner&,           \
+                                                         std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -44,6 +44,18 @@ NumberedVertices weld_and_number(const MeshView<Scalar, Index>& mesh, const Mesh
                                  double tolerance, TaskRunner& tasks,
                                  std::pmr::memory_resource* memory);
 
+// scan_mesh (mesh_scan.hpp) and, into `numbered`, weld_and_number's exact
+// weld (tolerance 0) of the same mesh when the scan finds every index in range
+// and every used coordinate finite (else `numbered` is left empty). On one
+// thread the weld follows the scan (ScanFollower): it hashes each stretch of
+// vertices just after the scan has bounded it, while the positions are in
+// cache, so that a soup too large for the caches is read from memory once
+// rather than twice. On more, the scan runs in its parts and the weld in its
+// shares after it. The same scan and numbers either way.
+template <class Scalar, class Index>
+MeshScan scan_and_weld_exact(const MeshView<Scalar, Index>& mesh, NumberedVertices& numbered,
+                             TaskRunner& tasks, std::pmr::memory_resource* memory);
+
 // weld_vertices' answer from weld_and_number's (the mesh `scan` scanned).
 std::pmr::vector<std::uint32_t> lowest_welded_vertices(const NumberedVertices& numbered,
                                                        const MeshScan& scan,

@@ -9,7 +9,9 @@
 // the used vertices, the non-finite ones and indices past the array. The scan
 // from marks (the trusted path's: the used vertices marked by the gather,
 // then finished from the marks and the bounds of every vertex) is the same
-// scan, wherever the bounds of every vertex can be taken.
+// scan, wherever the bounds of every vertex can be taken. So is the scan
+// followed (ScanFollower: run in stretches, each handed on once bounded),
+// whose follower is told of every vertex in order, each with its used bit set.
 #include "core/mesh_scan.hpp"
 
 #include "check.hpp"
@@ -45,13 +47,38 @@ bool same_scan(const polymass::core::MeshScan& scan, const polymass::core::MeshS
     return same;
 }
 
-// The scan with each instruction set's kernels is `expected`, bit for bit.
+// A follower of the scan that checks what it is told: stretches in order,
+// from vertex 0 on, each with the used bits of `expected` already set.
+class CheckingFollower final : public polymass::core::ScanFollower {
+public:
+    explicit CheckingFollower(const polymass::core::MeshScan& expected) : expected_(expected) {}
+    void follow(const polymass::core::MeshScan& scan, std::size_t first,
+                std::size_t last) override {
+        in_order_ = in_order_ && first == followed_ && last > first;
+        for (std::size_t vertex = first; vertex < last; ++vertex)
+            bits_set_ = bits_set_ && scan.is_used(vertex) == expected_.is_used(vertex);
+        followed_ = last;
+    }
+    // Whether every stretch up to `end` came in order with its bits set.
+    bool followed_all(std::size_t end) const { return in_order_ && bits_set_ && followed_ == end; }
+
+private:
+    const polymass::core::MeshScan& expected_;
+    std::size_t followed_ = 0;
+    bool in_order_ = true, bits_set_ = true;
+};
+
+// The scan with each instruction set's kernels is `expected`, bit for bit,
+// and so is the scan followed (run in stretches on the calling thread, even
+// when given a runner of several), whose follower is told of every vertex the
+// indices can reach, each stretch once its used bits are set.
 template <class Scalar, class Index>
 void check_every_instruction_set(const char* name,
                                  const polymass::core::MeshView<Scalar, Index>& view,
                                  const polymass::core::MeshScan& expected) {
     using polymass::core::InstructionSet;
     polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
     for (InstructionSet set :
          {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
         if (!polymass::core::runs_instruction_set(set)) continue;
@@ -62,6 +89,16 @@ void check_every_instruction_set(const char* name,
             std::fprintf(stderr, "%s (%zu vertices): instruction set %d scans otherwise\n", name,
                          std::size_t(view.vertex_count), int(set));
         CHECK(same);
+        CheckingFollower follower(expected);
+        const polymass::core::MeshScan followed = polymass::core::scan_mesh(
+            view, std::pmr::get_default_resource(), reversed, set, &follower);
+        const bool same_followed =
+            same_scan(followed, expected) &&
+            follower.followed_all(polymass::core::addressable_vertices(view));
+        if (!same_followed)
+            std::fprintf(stderr, "%s (%zu vertices): instruction set %d followed otherwise\n", name,
+                         std::size_t(view.vertex_count), int(set));
+        CHECK(same_followed);
     }
 }
 

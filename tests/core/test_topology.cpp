@@ -222,7 +222,9 @@ void check_mesh(const TestMesh& mesh) {
 }
 
 // The exact weld of `soup` numbers its used vertices as `expected` does, on
-// one thread, reversed as on three and on two threads.
+// one thread, reversed as on three and on two threads; so does the weld that
+// follows the scan (scan_and_weld_exact: in stretches on one thread), whose
+// scan is the scan.
 void check_weld(const TestMesh& soup, const polymass::core::NumberedVertices& expected) {
     std::pmr::memory_resource* memory = std::pmr::new_delete_resource();
     polymass::core::SerialTaskRunner serial;
@@ -232,13 +234,23 @@ void check_weld(const TestMesh& soup, const polymass::core::NumberedVertices& ex
          std::initializer_list<polymass::core::TaskRunner*>{&serial, &reversed, &pool}) {
         const polymass::core::MeshScan scan =
             polymass::core::scan_mesh(soup.view(), memory, *tasks);
-        const polymass::core::NumberedVertices numbered =
+        polymass::core::NumberedVertices followed(memory);
+        const polymass::core::MeshScan followed_scan =
+            polymass::core::scan_and_weld_exact(soup.view(), followed, *tasks, memory);
+        CHECK(followed_scan.used == scan.used &&
+              followed_scan.used_vertex_count == scan.used_vertex_count &&
+              followed_scan.bounds.min() == scan.bounds.min() &&
+              followed_scan.bounds.max() == scan.bounds.max());
+        const polymass::core::NumberedVertices welded =
             polymass::core::weld_and_number(soup.view(), scan, 0.0, *tasks, memory);
-        CHECK(numbered.lowest_vertex == expected.lowest_vertex);
-        bool same = true;
-        for (const std::uint32_t vertex : soup.indices)
-            same &= numbered.of_vertex[vertex] == expected.of_vertex[vertex];
-        CHECK(same);
+        for (const polymass::core::NumberedVertices* numbered :
+             std::initializer_list<const polymass::core::NumberedVertices*>{&welded, &followed}) {
+            CHECK(numbered->lowest_vertex == expected.lowest_vertex);
+            bool same = true;
+            for (const std::uint32_t vertex : soup.indices)
+                same &= numbered->of_vertex[vertex] == expected.of_vertex[vertex];
+            CHECK(same);
+        }
     }
 }
 
