@@ -325,10 +325,12 @@ int main() {
 
     // A part inside another touching it only where the many parts meet (at
     // the needles' apex, along the lower half of the pages' spine), as a
-    // solid or a cavity, and every part inside out; each also turned. The
-    // inner part is shell 1, the one holding it shell 0.
+    // solid or a cavity, and every part inside out; the solids also turned
+    // (each case runs 6 analyses of 41 shells: the test's time is in them).
+    // The inner part is shell 1, the one holding it shell 0.
     for (const bool cavity : {false, true})
         for (const bool inward : {false, true}) {
+            if (cavity && inward) continue;
             TestMesh needles, pages;
             add_needles(needles, {0.25, -0.5, 0.125}, 40, true, inward);
             add_pages(pages, {0.25, -0.5, -0.375}, 40, true, inward);
@@ -339,10 +341,11 @@ int main() {
             // Around the inner part: the outer one, +1 or, inside out, -1.
             std::vector<int> expected(41, 0);
             expected[1] = inward ? -1 : 1;
-            const char* what = cavity ? (inward ? "inside out, the inner one turned back"
-                                                : "the inner one a cavity")
-                                      : (inward ? "all inside out" : "solids");
+            const char* what = cavity   ? "the inner one a cavity"
+                               : inward ? "all inside out"
+                                        : "solids";
             for (const bool quarter : {false, true}) {
+                if (quarter && (cavity || inward)) continue;
                 const std::string needle_name = std::string("40 needles, one inside another at ") +
                                                 "the apex, " + what + (quarter ? ", turned" : "");
                 const std::string page_name = std::string("40 pages, one inside another along ") +
