@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory_resource>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -82,12 +83,13 @@ void add_l_prism(TestMesh& mesh) {
 }
 
 // A tetrahedron (its own four vertices, faces turned outward).
-void add_tetrahedron(TestMesh& mesh, const Eigen::Vector3d (&corner)[4]) {
+// Its faces turned outward, or inward (a cavity, or inside out) when `inward`.
+void add_tetrahedron(TestMesh& mesh, const Eigen::Vector3d (&corner)[4], bool inward = false) {
     const bool positive =
         (corner[1] - corner[0]).dot((corner[2] - corner[0]).cross(corner[3] - corner[0])) > 0;
     std::uint32_t v[4];
     for (int k = 0; k < 4; ++k) v[k] = mesh.add_vertex(corner[k]);
-    if (!positive) std::swap(v[1], v[2]);
+    if (positive == inward) std::swap(v[1], v[2]);
     mesh.add_face({v[0], v[2], v[1]});
     mesh.add_face({v[0], v[1], v[3]});
     mesh.add_face({v[0], v[3], v[2]});
@@ -97,7 +99,11 @@ void add_tetrahedron(TestMesh& mesh, const Eigen::Vector3d (&corner)[4]) {
 // k thin tetrahedra whose apexes are one point, `apex`, pointing out along
 // directions spread over the sphere (length 1, never meeting elsewhere):
 // separate parts, each its own vertex there, all touching each other at it.
-void add_needles(TestMesh& mesh, const Eigen::Vector3d& apex, int k) {
+// With `nested`, needle 0 holds a second one, half as long and half as wide,
+// from the same apex (its own vertex there): touching it at that point alone.
+// All turned inward with `inward`.
+void add_needles(TestMesh& mesh, const Eigen::Vector3d& apex, int k, bool nested = false,
+                 bool inward = false) {
     const double pi = 3.14159265358979323846;
     for (int n = 0; n < k; ++n) {
         const double z = 1 - (2 * n + 1.0) / k, r = std::sqrt(1 - z * z);
@@ -105,17 +111,27 @@ void add_needles(TestMesh& mesh, const Eigen::Vector3d& apex, int k) {
         const Eigen::Vector3d d(r * std::cos(turn), r * std::sin(turn), z);
         const Eigen::Vector3d u = d.unitOrthogonal(), v = d.cross(u);
         const double width = 0.2 * std::sqrt(4 * pi / k);
-        Eigen::Vector3d corner[4] = {apex, apex, apex, apex};
-        for (int c = 0; c < 3; ++c)
-            corner[1 + c] +=
-                d + width * (std::cos(2 * pi * c / 3) * u + std::sin(2 * pi * c / 3) * v);
-        add_tetrahedron(mesh, corner);
+        for (const double scale : {1.0, 0.5}) {
+            if (scale != 1 && !(nested && n == 0)) continue;
+            Eigen::Vector3d corner[4] = {apex, apex, apex, apex};
+            for (int c = 0; c < 3; ++c)
+                corner[1 + c] +=
+                    scale * (d + scale * width *
+                                     (std::cos(2 * pi * c / 3) * u + std::sin(2 * pi * c / 3) * v));
+            add_tetrahedron(mesh, corner, inward);
+        }
     }
 }
 
 // k thin tetrahedra around one edge from `foot` up by 1 along z, as the
 // pages of a book around its spine: touching each other along it.
-void add_pages(TestMesh& mesh, const Eigen::Vector3d& foot, int k) {
+// With `nested`, page 0 holds a second one from the same foot, its spine the
+// lower half of the first's, its other corners inside the first: touching it
+// along that half spine (off the first's faces elsewhere: a corner of the
+// inner one in the plane of the outer's foot and far corners, and the two
+// faces would coincide). All turned inward with `inward`.
+void add_pages(TestMesh& mesh, const Eigen::Vector3d& foot, int k, bool nested = false,
+               bool inward = false) {
     const double pi = 3.14159265358979323846;
     for (int n = 0; n < k; ++n) {
         const double angle = 2 * pi * n / k, width = pi / k;
@@ -123,8 +139,24 @@ void add_pages(TestMesh& mesh, const Eigen::Vector3d& foot, int k) {
             foot, foot + Eigen::Vector3d(0, 0, 1),
             foot + Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.5),
             foot + Eigen::Vector3d(std::cos(angle + width), std::sin(angle + width), 0.5)};
-        add_tetrahedron(mesh, corner);
+        add_tetrahedron(mesh, corner, inward);
+        if (!nested || n != 0) continue;
+        const Eigen::Vector3d inner[4] = {
+            foot, foot + Eigen::Vector3d(0, 0, 0.5),
+            0.4 * foot + 0.1 * corner[1] + 0.375 * corner[2] + 0.125 * corner[3],
+            0.4 * foot + 0.1 * corner[1] + 0.125 * corner[2] + 0.375 * corner[3]};
+        add_tetrahedron(mesh, inner, inward);
     }
+}
+
+// The mesh turned a quarter about z: exactly, no coordinate rounded.
+TestMesh turned(TestMesh mesh) {
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+        double* x = &mesh.coordinates[3 * v];
+        const double x0 = x[0];
+        x[0] = -x[1], x[1] = x0;
+    }
+    return mesh;
 }
 
 // The unit cube with each face cut into n x n squares of two triangles: one
@@ -290,6 +322,38 @@ int main() {
         expect(inside ? "40 pages around one edge inside a solid" : "40 pages around one edge",
                pages, expected);
     }
+
+    // A part inside another touching it only where the many parts meet (at
+    // the needles' apex, along the lower half of the pages' spine), as a
+    // solid or a cavity, and every part inside out; the solids also turned
+    // (each case runs 6 analyses of 41 shells: the test's time is in them).
+    // The inner part is shell 1, the one holding it shell 0.
+    for (const bool cavity : {false, true})
+        for (const bool inward : {false, true}) {
+            if (cavity && inward) continue;
+            TestMesh needles, pages;
+            add_needles(needles, {0.25, -0.5, 0.125}, 40, true, inward);
+            add_pages(pages, {0.25, -0.5, -0.375}, 40, true, inward);
+            if (cavity)  // the inner part (shell 1's 4 faces) turned the other way
+                for (TestMesh* mesh : {&needles, &pages})
+                    for (std::size_t f = 4; f < 8; ++f)
+                        std::swap(mesh->indices[3 * f + 1], mesh->indices[3 * f + 2]);
+            // Around the inner part: the outer one, +1 or, inside out, -1.
+            std::vector<int> expected(41, 0);
+            expected[1] = inward ? -1 : 1;
+            const char* what = cavity   ? "the inner one a cavity"
+                               : inward ? "all inside out"
+                                        : "solids";
+            for (const bool quarter : {false, true}) {
+                if (quarter && (cavity || inward)) continue;
+                const std::string needle_name = std::string("40 needles, one inside another at ") +
+                                                "the apex, " + what + (quarter ? ", turned" : "");
+                const std::string page_name = std::string("40 pages, one inside another along ") +
+                                              "the spine, " + what + (quarter ? ", turned" : "");
+                expect(needle_name.c_str(), quarter ? turned(needles) : needles, expected);
+                expect(page_name.c_str(), quarter ? turned(pages) : pages, expected);
+            }
+        }
 
     // A tetrahedron under a box, its top face flush with part of the box's
     // bottom, from a corner on the bottom's edge (x = 0): the start inside
