@@ -17,10 +17,12 @@
 namespace polymass::core {
 namespace {
 
-// How many vertices a weld maps: every one up to the last a face may use.
+// How many vertices a weld maps: every one up to the last a face may use,
+// those the scan's words of used bits cover (known before the scan, for the
+// weld that follows it).
 template <class Scalar, class Index>
-std::size_t welded_count(const MeshView<Scalar, Index>& mesh, const MeshScan& scan) {
-    return std::min(mesh.vertex_count, scan.used.size() * 64);
+std::size_t welded_count(const MeshView<Scalar, Index>& mesh) {
+    return std::min(mesh.vertex_count, (addressable_vertices(mesh) + 63) / 64 * 64);
 }
 
 // The used vertices among the first `count`, in index order.
@@ -196,7 +198,7 @@ template <class Scalar, class Index>
 NumberedVertices weld_exact(const MeshView<Scalar, Index>& mesh, const MeshScan& scan,
                             TaskRunner& tasks, std::pmr::memory_resource* memory) {
     NumberedVertices numbered(memory);
-    const std::size_t count = welded_count(mesh, scan);
+    const std::size_t count = welded_count(mesh);
     numbered.of_vertex.resize(count);
     std::uint32_t* const number_of = numbered.of_vertex.data();
     const std::size_t shares = std::max<std::size_t>(
@@ -308,7 +310,7 @@ template <class Scalar, class Index>
 std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
                                             const MeshScan& scan, double distance,
                                             std::pmr::memory_resource* memory) {
-    std::pmr::vector<std::uint32_t> representative(welded_count(mesh, scan), memory);
+    std::pmr::vector<std::uint32_t> representative(welded_count(mesh), memory);
     std::iota(representative.begin(), representative.end(), 0u);
     const std::pmr::vector<std::uint32_t> used = used_vertices(scan, representative.size(), memory);
     using Cell = std::array<std::int64_t, 3>;
@@ -340,6 +342,8 @@ std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
     // place in `used`), then each run of one such key by a comparison sort,
     // which almost every run (a vertex alone in its slab of x) skips. A
     // comparison sort of all the entries was half of this weld.
+    // (Each cell is computed again when the entries are laid out in that
+    // order: keeping the first ones would need a second array of entries.)
     std::pmr::vector<std::uint64_t> keys(used.size(), memory);
     std::uint64_t last_x = 0;
     for (std::size_t i = 0; i < used.size(); ++i) {
@@ -459,9 +463,7 @@ MeshScan scan_and_weld_exact(const MeshView<Scalar, Index>& mesh, NumberedVertic
         if (weldable(scan)) numbered = weld_exact(mesh, scan, tasks, memory);
         return scan;
     }
-    // welded_count, from the length the scan gives scan.used.
-    const std::size_t used_words = (addressable_vertices(mesh) + 63) / 64;
-    numbered.of_vertex.resize(std::min(mesh.vertex_count, 64 * used_words));
+    numbered.of_vertex.resize(welded_count(mesh));
     auto pass = whole_hashing_pass(mesh, numbered.of_vertex.data(), memory);
     FollowingWeld<decltype(pass)> follower(pass);
     MeshScan scan = scan_mesh(mesh, memory, tasks, widest_instruction_set(), &follower);
