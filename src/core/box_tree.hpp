@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory_resource>
+#include <type_traits>
 #include <vector>
 
 #include "task_runner.hpp"
@@ -123,9 +124,11 @@ public:
     // kLeafSize * 2^kPieceLevel items is one piece.
     std::pmr::vector<PairTask> pair_tasks() const;
 
-    // visit(i, j) once for each pair of distinct items of `task` whose boxes overlap.
+    // visit(i, j) once for each pair of distinct items of `task` whose boxes
+    // overlap; a visit returning bool ends the walk when it returns false
+    // (a caller with a budget of pairs). False when a visit ended it.
     template <class Visit>
-    void for_each_overlapping_pair(PairTask task, Visit&& visit) const;
+    bool for_each_overlapping_pair(PairTask task, Visit&& visit) const;
 
     // visit(i) for each item whose box may meet the segment from a to b,
     // until a visit returns false.
@@ -265,7 +268,9 @@ inline FloatBox BoxTree::item_box(std::size_t at) const {
 }
 
 template <class Visit>
-void BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
+bool BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
+    constexpr bool may_stop =
+        std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t, std::uint32_t>, bool>;
     // Depth first: a task adds at most four, each one level lower, so the
     // stack holds fewer than four per level.
     constexpr std::size_t kMaxTasks = 4 * 64;
@@ -284,9 +289,16 @@ void BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
         const std::size_t first_of_a = leaf_first(a), first_of_b = leaf_first(b);
         for (; overlapping != 0; overlapping &= overlapping - 1) {
             const unsigned bit = unsigned(__builtin_ctz(overlapping));
-            visit(order_[first_of_a + bit / kLeafSize], order_[first_of_b + bit % kLeafSize]);
+            const std::uint32_t i = order_[first_of_a + bit / kLeafSize];
+            const std::uint32_t j = order_[first_of_b + bit % kLeafSize];
+            if constexpr (may_stop) {
+                if (!visit(i, j)) return false;
+            } else {
+                visit(i, j);
+            }
         }
     }
+    return true;
 }
 
 template <class Visit>

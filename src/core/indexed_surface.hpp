@@ -84,6 +84,8 @@ public:
     __attribute__((always_inline)) std::uint32_t next_copy(std::size_t t) const {
         return has_copies(t) ? next_[copy_rank(t)] : kNoCopy;
     }
+    // Whether any triangle has copies.
+    bool any_copies() const { return !next_.empty(); }
     // Degenerate triangles (three collinear corners) bound nothing and meet nothing.
     bool meets_nothing(std::size_t t) const { return corner_bits_[t] >> kDegenerateBit & 1; }
     // Per corner k of triangle t, bits 6 k + axis: the corner is the

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <utility>
 
+#include "shell_pairs.hpp"
 #include "triangle_contact.hpp"
 
 namespace polymass::core {
@@ -74,6 +76,9 @@ public:
         }
         return found;
     }
+
+    // Whether no pair was added.
+    bool empty() const { return kept_ == 0; }
 
     // Whether pair was counted or kept (after finding(): pairs_ is sorted).
     bool holds(const FacePair& pair) const {
@@ -366,29 +371,163 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     struct PieceContacts {
         PairCollector crossing, touching;
     };
-    const std::pmr::vector<BoxTree::PairTask> pieces = surface.tree().pair_tasks();
-    std::pmr::vector<PieceContacts> found(memory);
-    found.reserve(pieces.size() + 1);
-    for (std::size_t piece = 0; piece <= pieces.size(); ++piece)
-        found.push_back({PairCollector(memory), PairCollector(memory)});
-    tasks.run(pieces.size(), [&](std::size_t piece) {
-        surface.tree().for_each_overlapping_pair(
-            pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
-                PieceContacts& contacts = found[piece];
-                if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
-                    test_pair(r, s, contacts.crossing, contacts.touching);
-                else
-                    pair_copies(r, s, contacts.crossing, contacts.touching);
-            });
-    });
-    // The copies of one shape meet each other; the tree holds one of them.
-    for (std::uint32_t t = 0; t < surface.size(); ++t)
-        if (surface.lowest_copy(t) == t && surface.next_copy(t) != kNoCopy &&
-            !surface.meets_nothing(t))
-            pair_copies(t, t, found.back().crossing, found.back().touching);
+    auto pieces_of = [&](std::size_t count) {
+        std::pmr::vector<PieceContacts> found(memory);
+        found.reserve(count);
+        for (std::size_t piece = 0; piece < count; ++piece)
+            found.push_back({PairCollector(memory), PairCollector(memory)});
+        return found;
+    };
+
+    // The search along the triangles' tree: every pair of shapes whose boxes
+    // overlap, and the copies of each shape with each other (the last piece).
+    auto search_triangle_pairs = [&]() {
+        const std::pmr::vector<BoxTree::PairTask> pieces = surface.tree().pair_tasks();
+        std::pmr::vector<PieceContacts> found = pieces_of(pieces.size() + 1);
+        tasks.run(pieces.size(), [&](std::size_t piece) {
+            surface.tree().for_each_overlapping_pair(
+                pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
+                    PieceContacts& contacts = found[piece];
+                    if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
+                        test_pair(r, s, contacts.crossing, contacts.touching);
+                    else
+                        pair_copies(r, s, contacts.crossing, contacts.touching);
+                });
+        });
+        // The copies of one shape meet each other; the tree holds one of them.
+        for (std::uint32_t t = 0; t < surface.size(); ++t)
+            if (surface.lowest_copy(t) == t && surface.next_copy(t) != kNoCopy &&
+                !surface.meets_nothing(t))
+                pair_copies(t, t, found.back().crossing, found.back().touching);
+        return found;
+    };
+
+    // The search by pairs of shells (pair_shells): the triangles of each
+    // shell with each other, and of two shells whose boxes meet with each
+    // other where that could change the finding. Two shells whose boxes
+    // meet only in a plane, a line or a point (parts resting on each
+    // other) have triangles on either side of it, which do not cross, and
+    // coincide only when both lie flat in it (apart_but_in_a_plane): their
+    // other pairs could only touch, which matters while the touching pairs
+    // want the lowest pair the two shells could give, or to mark a
+    // triangle not yet marked. Past that, only those pairs are tested:
+    // the ones decide_pair would not leave at its first test.
+    auto search_shell_pairs = [&](const ShellPairs& paired) {
+        // The lowest face of each shell's triangles: the lowest face pair
+        // two shells could give is their two lowest faces.
+        std::pmr::vector<std::uint32_t> lowest_face(shells->count, UINT32_MAX, memory);
+        for (std::size_t s = 0; s < shells->count; ++s)
+            for (std::uint32_t at = paired.first_triangle[s]; at < paired.first_triangle[s + 1];
+                 ++at)
+                lowest_face[s] = std::min(lowest_face[s], surface.face(paired.triangles[at]));
+        // The pairs of triangles of shell s whose boxes overlap.
+        auto pair_within = [&](std::uint32_t s, PieceContacts& contacts) {
+            for (std::uint32_t a = paired.first_triangle[s]; a < paired.first_triangle[s + 1]; ++a)
+                for (std::uint32_t b = a + 1; b < paired.first_triangle[s + 1]; ++b)
+                    if (paired.boxes[a].overlaps(paired.boxes[b]))
+                        test_pair(paired.triangles[a], paired.triangles[b], contacts.crossing,
+                                  contacts.touching);
+        };
+        // A triangle of a shell whose box meets another shell's.
+        struct Near {
+            std::uint32_t at;  // in paired.triangles
+            bool marked;
+            std::uint32_t flat;  // flat_axes
+        };
+        auto near_other = [&](std::uint32_t s, std::uint32_t t, std::pmr::vector<Near>& near) {
+            near.clear();
+            for (std::uint32_t at = paired.first_triangle[s]; at < paired.first_triangle[s + 1];
+                 ++at) {
+                if (!paired.boxes[at].overlaps(paired.shell_boxes[t])) continue;
+                const std::uint32_t i = paired.triangles[at];
+                near.push_back({at, touches_other_shell[i].load(std::memory_order_relaxed) != 0,
+                                flat_axes(surface.corner_extremes(i))});
+            }
+        };
+        // The pairs of triangles of shells s and t whose boxes overlap (a
+        // triangle whose box misses the other shell's meets none of its
+        // triangles). When only touching is left to learn from them (the
+        // boxes meet in a plane, a line or a point: the axes `resting`, and
+        // the touching pairs are full), only the pairs of which a triangle
+        // is not yet marked, or both lie flat in that plane (a triangle flat
+        // on two axes is degenerate: none when the boxes meet in a line or a
+        // point). A mark read before it was set only costs a test.
+        auto pair_between = [&](std::uint32_t s, std::uint32_t t, std::uint32_t resting,
+                                PieceContacts& contacts, std::pmr::vector<Near>& of_s,
+                                std::pmr::vector<Near>& of_t) {
+            near_other(s, t, of_s);
+            if (of_s.empty()) return;
+            near_other(t, s, of_t);
+            for (const Near& first : of_s)
+                for (const Near& second : of_t)
+                    if ((resting == 0 || !first.marked || !second.marked ||
+                         (first.flat & second.flat) == resting) &&
+                        paired.boxes[first.at].overlaps(paired.boxes[second.at]))
+                        test_pair(paired.triangles[first.at], paired.triangles[second.at],
+                                  contacts.crossing, contacts.touching);
+        };
+        auto pair_shells_met = [&](std::uint32_t s, std::uint32_t t, PieceContacts& contacts,
+                                   std::pmr::vector<Near>& of_s, std::pmr::vector<Near>& of_t) {
+            const ShellBox &first = shell_boxes[s], &second = shell_boxes[t];
+            std::uint32_t meeting_in_a_plane = 0;  // bit per axis
+            for (int axis = 0; axis < 3; ++axis)
+                if (std::min(first.hi[axis], second.hi[axis]) ==
+                    std::max(first.lo[axis], second.lo[axis]))
+                    meeting_in_a_plane |= 1u << axis;
+            const FacePair lowest{std::min(lowest_face[s], lowest_face[t]),
+                                  std::max(lowest_face[s], lowest_face[t])};
+            const bool only_touching_to_learn =
+                meeting_in_a_plane != 0 && !contacts.touching.wants(lowest);
+            pair_between(s, t, only_touching_to_learn ? meeting_in_a_plane : 0, contacts, of_s,
+                         of_t);
+        };
+        // Pieces of whole shells, each the first to reach kTrianglesPerPiece
+        // triangles: cut by the surface alone, as the tree's are. Each
+        // counts its own touching pairs, so that a piece of too few
+        // triangles never reaches the stop of its count and enters every
+        // pair of shells (pieces of 64 cubes cost 60 % of the tree's search).
+        constexpr std::size_t kTrianglesPerPiece = 4096;
+        std::pmr::vector<std::uint32_t> piece_ends(memory);  // in shells
+        for (std::uint32_t s = 0, start = 0; s < shells->count; ++s)
+            if (paired.first_triangle[s + 1] - start >= kTrianglesPerPiece ||
+                s + 1 == shells->count) {
+                piece_ends.push_back(s + 1);
+                start = paired.first_triangle[s + 1];
+            }
+        std::pmr::vector<PieceContacts> found = pieces_of(piece_ends.size());
+        tasks.run(piece_ends.size(), [&](std::size_t piece) {
+            std::pmr::vector<Near> of_s(memory), of_t(memory);
+            for (std::uint32_t s = piece == 0 ? 0 : piece_ends[piece - 1]; s < piece_ends[piece];
+                 ++s) {
+                pair_within(s, found[piece]);
+                for (std::uint32_t at = paired.first_partner[s]; at < paired.first_partner[s + 1];
+                     ++at)
+                    pair_shells_met(s, paired.partners[at], found[piece], of_s, of_t);
+            }
+        });
+        return found;
+    };
+
+    // By pairs of shells when they serve; but a surface with crossing faces
+    // is searched again along the tree (its marks cleared), for the pairs
+    // each kind counts past its stop, and so the touching pairs left when
+    // the crossing ones are taken out of them, depend on the order in which
+    // pairs come: the answer stays the tree's.
+    std::optional<std::pmr::vector<PieceContacts>> found;
+    if (const std::optional<ShellPairs> paired = pair_shells(surface, tasks, memory)) {
+        found = search_shell_pairs(*paired);
+        const bool crossing =
+            std::any_of(found->begin(), found->end(),
+                        [](const PieceContacts& piece) { return !piece.crossing.empty(); });
+        if (crossing) {
+            found.reset();
+            for (auto& mark : touches_other_shell) mark.store(0, std::memory_order_relaxed);
+        }
+    }
+    if (!found) found = search_triangle_pairs();
     // In piece order, though the result does not depend on it.
     PairCollector crossing(memory), touching(memory);
-    for (const PieceContacts& piece : found) {
+    for (const PieceContacts& piece : *found) {
         crossing.merge(piece.crossing);
         touching.merge(piece.touching);
     }
