@@ -33,7 +33,7 @@ std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surfa
     std::size_t pairs = 0;
     for (std::size_t s = 0; s < shell_count; ++s) {
         const std::size_t size = paired.first_triangle[s + 1];
-        pairs += size * (size - (size > 0)) / 2;
+        pairs += size * (size - 1) / 2;  // 0 when size is 0, wrapping or not
     }
     if (pairs > budget) return std::nullopt;
 

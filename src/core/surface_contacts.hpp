@@ -12,6 +12,14 @@
 // coincides, which faces resting on each other answer from their extents,
 // and faces of two shells whose boxes meet only in a plane (parts resting on
 // each other) from those boxes and whether the faces lie flat in it.
+//
+// A surface of several shells without copies, whose shells' pairs are few
+// enough (shell_pairs.hpp), is searched by pairs of shells instead of along
+// the tree: the triangles of two shells resting on each other are then not
+// paired at all once the touching count is full, except those not yet
+// marked and those flat in the plane the shells meet in. Whatever it finds
+// is the tree's answer; a surface with crossing faces is searched again
+// along the tree, whose order then decides which pairs are counted.
 #pragma once
 
 #include <atomic>

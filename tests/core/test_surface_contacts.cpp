@@ -71,9 +71,15 @@ Reference test_every_pair(const TestMesh& mesh, const polymass::core::Shells* sh
         return Triangle{mesh.vertex(corner(f, first)), mesh.vertex(corner(f, (first + 1) % 3)),
                         mesh.vertex(corner(f, (first + 2) % 3))};
     };
+    // Triangles whose boxes do not meet do not meet: not tested, so that
+    // assemblies of a few thousand triangles stay quick in a debug build.
+    std::vector<Eigen::AlignedBox3d> boxes(faces);
+    for (std::size_t f = 0; f < faces; ++f)
+        for (int k = 0; k < 3; ++k) boxes[f].extend(mesh.vertex(corner(f, k)));
     for (std::size_t f = 0; f < faces; ++f) {
         if (polymass::core::is_degenerate(triangle(f, 0))) continue;
         for (std::size_t g = f + 1; g < faces; ++g) {
+            if (!boxes[f].intersects(boxes[g])) continue;
             if (polymass::core::is_degenerate(triangle(g, 0))) continue;
             int shared = 0, at_f = 0, at_g = 0;
             for (int k = 0; k < 3; ++k)
@@ -317,6 +323,98 @@ void check_touching_assembly() {
         side * side * side, expected.crossing.size(), expected.touching.size());
 }
 
+// Parts resting on each other and nothing crossing, searched by pairs of
+// shells (shell_pairs.hpp): 125 unit cubes in a grid, past the count's stop
+// in one piece of the search, and a tetrahedron whose box overlaps a cube's
+// in volume, touching it at one point of its edge. Then the same with a
+// sheet resting on the last cube, coinciding with its top across the plane
+// they meet in: crossing, found only by the pairs of faces flat in that
+// plane once both are marked. And eight cubes, every touching pair
+// counted. Counts,
+// lowest pairs and marks as a test of every pair finds them, on one thread,
+// in reverse and on two. (Marks only without crossing faces: with them the
+// nesting, which reads them, does not run, and the tree's search then
+// decides.)
+void check_resting_parts() {
+    constexpr int side = 5;
+    const Eigen::Vector3d far(1e3, -2e3, 3e3), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    TestMesh resting;
+    for (int k = 0; k < side * side * side; ++k) {
+        const Eigen::Vector3d at(k % side, k / side % side, k / side / side);
+        polymass_test::append(resting, polymass_test::box_mesh(far + at, x, y, z, true));
+    }
+    // Its edge from (s + 1/2, 1/2, t - 1/2) to (s - 1/2, 1/2, t + 1/2) meets
+    // the cube's edge x = s, z = t at y = 1/2; the tetrahedron lies where
+    // x + z >= s + t, the cube where x + z <= s + t.
+    {
+        const Eigen::Vector3d edge = far + Eigen::Vector3d(side, 0.5, side);
+        TestMesh tetrahedron;
+        const std::uint32_t a = tetrahedron.add_vertex(edge + Eigen::Vector3d(0.5, 0, -0.5));
+        const std::uint32_t b = tetrahedron.add_vertex(edge + Eigen::Vector3d(-0.5, 0, 0.5));
+        const std::uint32_t c = tetrahedron.add_vertex(edge + Eigen::Vector3d(0.5, -1, 0.5));
+        const std::uint32_t d = tetrahedron.add_vertex(edge + Eigen::Vector3d(0.5, 1, 0.5));
+        for (const auto& face : {std::array<std::uint32_t, 3>{a, c, b},
+                                 {a, b, d},
+                                 {a, d, c},
+                                 std::array<std::uint32_t, 3>{b, c, d}})
+            tetrahedron.add_face({face[0], face[1], face[2]});
+        polymass_test::append(resting, tetrahedron);
+    }
+    // A sheet of one triangle on the last cube's top, facing up as it does
+    // (coinciding: crossing), along the edge it shares with the cube
+    // before it, whose side marks it first.
+    TestMesh with_sheet = resting;
+    {
+        const Eigen::Vector3d corner = far + Eigen::Vector3d(side - 1, side - 1, side);
+        TestMesh sheet;
+        sheet.add_face({sheet.add_vertex(corner), sheet.add_vertex(corner + 0.5 * x),
+                        sheet.add_vertex(corner + 0.5 * y)});
+        polymass_test::append(with_sheet, sheet);
+    }
+    // Eight cubes, below the count's stop: every touching pair counted, those
+    // of two cubes whose triangles others have marked too.
+    TestMesh few;
+    for (int k = 0; k < 8; ++k)
+        polymass_test::append(
+            few, polymass_test::box_mesh(far + Eigen::Vector3d(k & 1, k >> 1 & 1, k >> 2), x, y, z,
+                                         true));
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
+    for (const TestMesh* mesh : {&resting, &with_sheet, &few}) {
+        const polymass::core::Shells shells = polymass_test::shells_of(*mesh);
+        const Reference expected = test_every_pair(*mesh, &shells);
+        std::vector<bool> marked(mesh->indices.size() / 3, false);
+        for (const auto& [f, g] : expected.touching)
+            if (shells.of_face[f] != shells.of_face[g]) marked[f] = marked[g] = true;
+        CHECK((expected.touching.size() > kMostCountedPairs) == (mesh != &few));
+        CHECK(expected.crossing.empty() == (mesh != &with_sheet));
+        const auto view = mesh->view();
+        for (polymass::core::TaskRunner* runner :
+             {static_cast<polymass::core::TaskRunner*>(&serial),
+              static_cast<polymass::core::TaskRunner*>(&reversed),
+              static_cast<polymass::core::TaskRunner*>(&pool)}) {
+            const polymass::core::IndexedSurface surface(view, nullptr, far, 10.0, &shells, *runner,
+                                                         std::pmr::get_default_resource());
+            const auto found =
+                polymass::core::find_contacts(surface, *runner, std::pmr::get_default_resource());
+            CHECK(agrees(found.crossing, expected.crossing));
+            CHECK(agrees(found.touching, expected.touching));
+            std::size_t wrong_marks = 0;
+            for (std::size_t t = 0; t < marked.size() && expected.crossing.empty(); ++t)
+                wrong_marks += marked[t] != (found.touches_other_shell[t].load() != 0);
+            CHECK(wrong_marks == 0);
+            if (wrong_marks)
+                std::fprintf(stderr, "resting parts: %zu triangles marked wrongly\n", wrong_marks);
+        }
+        std::printf("  %s: %zu pairs crossing, %zu touching\n",
+                    mesh == &few       ? "8 resting cubes"
+                    : mesh == &resting ? "125 resting cubes and a tetrahedron"
+                                       : "125 resting cubes, a tetrahedron and a sheet",
+                    expected.crossing.size(), expected.touching.size());
+    }
+}
+
 // The shells' boxes, taken in the pass that boxes the triangles, in blocks
 // of 2^16 triangles joined in block order: the exact least and greatest
 // coordinates of each shell's corners, degenerate triangles' too, on every
@@ -384,6 +482,7 @@ void check_shell_boxes() {
 int main() {
     check_shell_boxes();
     check_touching_assembly();
+    check_resting_parts();
     check_folds_at_a_shared_corner();
     check_many_pieces();
     check_fans();
