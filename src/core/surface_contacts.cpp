@@ -485,7 +485,8 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         // triangles: cut by the surface alone, as the tree's are. Each
         // counts its own touching pairs, so that a piece of too few
         // triangles never reaches the stop of its count and enters every
-        // pair of shells (pieces of 64 cubes cost 60 % of the tree's search).
+        // pair of shells (pieces of 64 shells of 1,000 cubes: 305 M
+        // instructions of find_contacts, against the tree's 357 M).
         constexpr std::size_t kTrianglesPerPiece = 4096;
         std::pmr::vector<std::uint32_t> piece_ends(memory);  // in shells
         for (std::uint32_t s = 0, start = 0; s < shells->count; ++s)
