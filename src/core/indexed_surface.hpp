@@ -70,7 +70,9 @@ public:
     // vertex sits at the position of the vertex it was welded to, so that
     // corners the surface shares are one point, not two points 1e-17 apart
     // whose triangles would seem to cross.
-    Triangle triangle(std::size_t t, int first = 0) const {
+    // Inlined: GCC left it out of line in the search once its pairs had
+    // two searches (surface_contacts.cpp), 3 % of a clean torus's check.
+    __attribute__((always_inline)) Triangle triangle(std::size_t t, int first = 0) const {
         const std::array<std::uint32_t, 3> ids = corners(t);
         return Triangle{mesh_.positions[ids[first]], mesh_.positions[ids[(first + 1) % 3]],
                         mesh_.positions[ids[(first + 2) % 3]]};

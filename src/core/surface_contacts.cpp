@@ -118,13 +118,15 @@ private:
 };
 
 // How many corners two triangles share (as vertices, not positions), and
-// where the last one found sits in each.
+// where the last one found sits in each. Inlined: asked for every candidate
+// pair, and GCC left it out of line once test_pair had three callers (the
+// clean torus 1e5 then cost 4.4 % more instructions).
 struct SharedCorners {
     int count = 0, at_first = 0, at_second = 0;
 };
 
-SharedCorners shared_corners(const std::array<std::uint32_t, 3>& first,
-                             const std::array<std::uint32_t, 3>& second) {
+__attribute__((always_inline)) inline SharedCorners shared_corners(
+    const std::array<std::uint32_t, 3>& first, const std::array<std::uint32_t, 3>& second) {
     SharedCorners shared;
     for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l)
