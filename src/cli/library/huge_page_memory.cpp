@@ -12,15 +12,12 @@ namespace polymass_cli {
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
-// Smaller blocks stay in small pages: a huge page is resident whole once
-// touched, and a block of a few pages may be touched in part.
-constexpr std::size_t kHugeFrom = std::size_t(4) << 20;
 
 // Every block is malloc's (so that the tool's out-of-memory test fails it in
 // turn as any other), aligned inside it, with malloc's own pointer just
 // before the block for deallocate, which is given no size.
 void* allocate(void*, std::size_t size, std::size_t alignment) {
-    const std::size_t align = std::max(size >= kHugeFrom ? kHugePage : alignof(void*), alignment);
+    const std::size_t align = std::max(size >= kHugePage ? kHugePage : alignof(void*), alignment);
     if (size > SIZE_MAX - align - sizeof(void*)) return nullptr;
     void* const raw = std::malloc(size + align + sizeof(void*));
     if (raw == nullptr) return nullptr;
@@ -30,7 +27,7 @@ void* allocate(void*, std::size_t size, std::size_t alignment) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     // Only whole huge pages inside the block: the rest of malloc's chunk may
     // be another's. A kernel without them ignores the advice.
-    if (size >= kHugeFrom) madvise(block, size / kHugePage * kHugePage, MADV_HUGEPAGE);
+    if (size >= kHugePage) madvise(block, size / kHugePage * kHugePage, MADV_HUGEPAGE);
 #endif
     return block;
 }

@@ -3,10 +3,11 @@
 // megabytes each in turn, each freshly mapped (main.cpp: freed ones go back to
 // the system, to keep the peak low); at 4 KiB a page, their first touches were
 // 67,500 page faults, about a sixth of the run's CPU time in the kernel. A
-// block of 4 MiB or more is therefore laid on 2 MiB boundaries and asked of
+// block of 2 MiB or more is therefore laid on 2 MiB boundaries and asked of
 // the kernel as transparent huge pages (madvise MADV_HUGEPAGE, honoured under
 // the kernel's policies "madvise" and "always"; "never" ignores it): 512 times
-// fewer faults over it. Smaller blocks
+// fewer faults over its whole huge pages (its tail stays in small ones: a
+// huge page is resident whole once touched). Smaller blocks
 // are malloc's as before. The tool's own largest buffer, a binary STL's
 // corners, comes from the same memory (HugePageArray). Figures:
 // docs/tool-end-to-end.md, "Page faults".
