@@ -592,6 +592,37 @@ class BadInput(Case):
             self.write("truncated.stl", data[:-30]), "unreadable", EXIT_UNREADABLE, "truncated"
         )
 
+    def test_binary_stl_header_and_declared_count(self):
+        # The exact size decides binary: a header beginning with "solid" is
+        # still binary, read as the same solid; a count one off either way is
+        # refused, and with a "solid" header the file is then read as ASCII,
+        # which it is not.
+        data = fixtures.binary_stl_bytes(self.vertices, self.faces)
+        count = len(fixtures.triangles(self.faces))
+        solid_header = b"solid bracket".ljust(80, b"\0")
+
+        def answer(name, content):
+            result, out = run_json(self.write(name, content))
+            self.assertEqual(result.returncode, EXIT_OK, result.stderr)
+            return {k: v for k, v in out.items() if k != "file"}
+
+        self.assertEqual(
+            answer("solid_header.stl", solid_header + data[80:]), answer("plain.stl", data)
+        )
+        for declared, message in (
+            (count + 1, "(truncated)"),
+            (count - 1, "(not an STL, or corrupt)"),
+        ):
+            with self.subTest(declared=declared):
+                lying = data[:80] + struct.pack("<I", declared) + data[84:]
+                self.expect_error(
+                    self.write("lying.stl", lying), "unreadable", EXIT_UNREADABLE, message
+                )
+                ascii_then = solid_header + lying[80:]
+                self.expect_error(
+                    self.write("solid_lying.stl", ascii_then), "unreadable", EXIT_UNREADABLE
+                )
+
     def test_msh_that_is_not_one(self):
         data = fixtures.msh_bytes(self.vertices, self.faces, normals=len(self.vertices))
         for name, content, message in [

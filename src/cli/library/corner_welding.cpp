@@ -7,6 +7,8 @@
 #include <string>
 #include <type_traits>
 
+#include "library/huge_page_memory.hpp"
+
 namespace polymass_cli {
 namespace {
 
@@ -14,7 +16,7 @@ namespace {
 class WeldContext {
 public:
     WeldContext() {
-        const int32_t created = polymass_context_create(&context_, nullptr);
+        const int32_t created = polymass_context_create(&context_, huge_page_allocator());
         if (created == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
         if (created != POLYMASS_OK)
             throw std::runtime_error(std::string("polymass_context_create: ") +
@@ -33,15 +35,14 @@ private:
 // are in distinct. An exact weld (tolerance 0), whatever the tool's
 // --weld-tolerance: that one is applied when the library computes.
 template <class Scalar>
-std::vector<uint32_t> first_corner_at_each_position(const std::vector<Scalar>& corners,
-                                                    uint64_t corner_count, uint64_t& distinct) {
+std::vector<uint32_t> first_corner_at_each_position(const Scalar* corners, uint64_t corner_count,
+                                                    uint64_t& distinct) {
     const uint32_t position_type =
         std::is_same_v<Scalar, float> ? POLYMASS_POSITION_FLOAT32 : POLYMASS_POSITION_FLOAT64;
     const WeldContext context;
     std::vector<uint32_t> first(corner_count);
-    const int32_t status =
-        polymass_weld_positions(first.data(), &distinct, context.get(), corners.data(),
-                                position_type, corner_count, 0, 0.0);
+    const int32_t status = polymass_weld_positions(first.data(), &distinct, context.get(), corners,
+                                                   position_type, corner_count, 0, 0.0);
     if (status == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (status != POLYMASS_OK)
         throw std::runtime_error(std::string("polymass_weld_positions: ") +
@@ -52,9 +53,8 @@ std::vector<uint32_t> first_corner_at_each_position(const std::vector<Scalar>& c
 }  // namespace
 
 template <class Scalar>
-std::vector<uint32_t> weld_corners(const std::vector<Scalar>& corners,
+std::vector<uint32_t> weld_corners(const Scalar* corners, uint64_t corner_count,
                                    std::vector<Scalar>& positions) {
-    const uint64_t corner_count = corners.size() / 3;
     if (corner_count == 0) return {};
     if (corner_count > UINT32_MAX)
         throw std::length_error("more than 4294967295 triangle corners to weld");
@@ -79,8 +79,7 @@ std::vector<uint32_t> weld_corners(const std::vector<Scalar>& corners,
     return vertex_of;
 }
 
-template std::vector<uint32_t> weld_corners<float>(const std::vector<float>&, std::vector<float>&);
-template std::vector<uint32_t> weld_corners<double>(const std::vector<double>&,
-                                                    std::vector<double>&);
+template std::vector<uint32_t> weld_corners<float>(const float*, uint64_t, std::vector<float>&);
+template std::vector<uint32_t> weld_corners<double>(const double*, uint64_t, std::vector<double>&);
 
 }  // namespace polymass_cli

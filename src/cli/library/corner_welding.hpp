@@ -11,14 +11,14 @@
 
 namespace polymass_cli {
 
-// corners holds x, y, z of each corner, one corner after another (float for
-// a binary STL, double for text). Appends the distinct positions to positions
+// corners holds x, y, z of each of corner_count corners, one corner after
+// another (float for a binary STL, double for text). Appends the distinct positions to positions
 // (in the corners' precision) in the order they first appear and returns each
 // corner's vertex index, a
 // position's first corner naming it. Throws std::length_error past 2^32 - 1
 // corners, std::bad_alloc when memory runs out.
 template <class Scalar>
-std::vector<uint32_t> weld_corners(const std::vector<Scalar>& corners,
+std::vector<uint32_t> weld_corners(const Scalar* corners, uint64_t corner_count,
                                    std::vector<Scalar>& positions);
 
 }  // namespace polymass_cli

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "library/huge_page_memory.hpp"
+
 namespace polymass_cli {
 
 polymass_mesh_desc describe(const Model& model, const Part& part) {
@@ -49,7 +51,7 @@ bool some_mode_may_answer(int32_t status) {
 Library::Library(const polymass_options& options, uint32_t threads,
                  const std::array<double, 3>& point)
     : options_(options), point_(point) {
-    const int32_t created = polymass_context_create(&context_, nullptr);
+    const int32_t created = polymass_context_create(&context_, huge_page_allocator());
     if (created == POLYMASS_ERROR_OUT_OF_MEMORY) throw std::bad_alloc();
     if (created != POLYMASS_OK) {
         throw std::runtime_error(std::string("polymass_context_create: ") +

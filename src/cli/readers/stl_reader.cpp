@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "library/corner_welding.hpp"
+#include "library/huge_page_memory.hpp"
 #include "readers/format_readers.hpp"
 #include "readers/little_endian.hpp"
 #include "readers/mesh_reader.hpp"
@@ -29,12 +30,13 @@ bool starts_with_solid(std::string_view bytes) {
 }
 
 // The triangles' corners as float32, as the file stores them (36 bytes a
-// triangle, against the file's 50), decoded in one pass over the mapping,
+// triangle, against the file's 50; in huge pages, not zeroed first), decoded
+// in one pass over the mapping,
 // which is let go as it is read and before the corners are welded.
 // file, when given, holds bytes and is let go as they are decoded.
 // The welded positions stay float32 (12 bytes a vertex).
 Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_count) {
-    std::vector<float> corners(9 * triangle_count);
+    HugePageArray<float> corners(9 * triangle_count);
     const unsigned char* triangle =
         reinterpret_cast<const unsigned char*>(bytes.data()) + kBinaryHeaderBytes;
     float* corner = corners.data();
@@ -51,7 +53,7 @@ Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_cou
     Model model;
     Part& part = model.parts.emplace_back();  // triangles only: no face sizes
     std::vector<float> positions;
-    part.indices = weld_corners(corners, positions);
+    part.indices = weld_corners(corners.data(), 3 * triangle_count, positions);
     model.positions = Positions(std::move(positions));
     return model;
 }
@@ -117,7 +119,7 @@ Model read_ascii(std::string_view bytes) {
     }
     if (in_loop || in_facet) lines.fail("the file ends inside a facet");
     std::vector<double> positions;
-    const std::vector<uint32_t> vertex_of = weld_corners(soup, positions);
+    const std::vector<uint32_t> vertex_of = weld_corners(soup.data(), soup.size() / 3, positions);
     model.positions = Positions(std::move(positions));
     for (Part& each : model.parts)
         for (uint32_t& index : each.indices) index = vertex_of[index];
