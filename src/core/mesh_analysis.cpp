@@ -38,6 +38,11 @@ MeshAnalysis scan_surface(const MeshView<Scalar, Index>& mesh, std::pmr::memory_
 
 namespace {
 
+// Whether the topology and the shells take welded positions.
+bool welds(const AnalysisSettings& settings) {
+    return settings.weld && (settings.check_topology || settings.list_shells);
+}
+
 IntegrationSettings integration_settings(const MeshScan& scan, const AnalysisSettings& settings) {
     IntegrationSettings integration;
     integration.reference = scan.reference_point();
@@ -53,21 +58,21 @@ bool same_frame(const IntegrationSettings& a, const IntegrationSettings& b) {
            std::memcmp(&a.size, &b.size, sizeof a.size) == 0;
 }
 
-// When nothing but the integration reads the faces (the topology unchecked,
-// no shells listed), the integration marks the used vertices itself, about
-// the centre of the bounds of every vertex, and the scan is finished from its
-// marks: one pass over the index array instead of two. With a vertex unused,
-// if the scan's bounds move the reference point or the unit, the faces are
-// integrated again about the scan's: the results are the usual ones, to the
-// bit. nullopt when the positions cannot be bounded this way (the usual
-// analysis then says why) or an index is out of range.
+// When the faces are triangles and no weld renumbers their vertices, the
+// integration marks the used vertices itself, about the centre of the bounds
+// of every vertex, and the scan is finished from its marks: one pass over the
+// index array fewer (the scan's own marking pass read all of it, a tenth of
+// the checked path's time at 1e6 triangles: docs/validity.md). With a vertex
+// unused, if the scan's bounds move the reference point or the unit, the
+// faces are integrated again about the scan's: the results are the usual
+// ones, to the bit. nullopt when the positions cannot be bounded this way
+// (the usual analysis then says why) or an index is out of range.
 template <class Scalar, class Index>
 std::optional<MeshAnalysis> integrate_while_scanning(const MeshView<Scalar, Index>& mesh,
                                                      const AnalysisSettings& settings,
                                                      TaskRunner& tasks,
                                                      std::pmr::memory_resource* memory) {
-    if (settings.check_topology || settings.list_shells || !mesh.all_triangles())
-        return std::nullopt;
+    if (welds(settings) || !mesh.all_triangles()) return std::nullopt;
     const std::optional<Eigen::AlignedBox3d> every_vertex = bound_every_vertex(mesh, memory, tasks);
     if (!every_vertex) return std::nullopt;
     MeshScan provisional(memory);
@@ -93,20 +98,26 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
                           std::pmr::memory_resource* memory) {
     SerialTaskRunner serial;
     TaskRunner& tasks = settings.tasks ? *settings.tasks : serial;
-    if (std::optional<MeshAnalysis> integrated =
-            integrate_while_scanning(mesh, settings, tasks, memory)) {
+    std::optional<MeshAnalysis> integrated =
+        integrate_while_scanning(mesh, settings, tasks, memory);
+    if (integrated && !settings.check_topology && !settings.list_shells) {
         integrated->verdict = judge(*integrated, settings.policy);
         return std::move(*integrated);
     }
     // The topology and the shells take the welded positions numbered densely.
     // An exact weld follows the scan (scan_and_weld_exact): a soup's positions
     // are read from memory once for both.
-    const bool weld = settings.weld && (settings.check_topology || settings.list_shells);
+    const bool weld = welds(settings);
     const bool weld_exact = weld && !(settings.weld_tolerance > 0.0);
     NumberedVertices numbered(memory);
     MeshAnalysis analysis =
-        weld_exact ? judge_scan(mesh, scan_and_weld_exact(mesh, numbered, tasks, memory))
-                   : scan_surface(mesh, memory, tasks);
+        integrated   ? std::move(*integrated)
+        : weld_exact ? judge_scan(mesh, scan_and_weld_exact(mesh, numbered, tasks, memory))
+                     : scan_surface(mesh, memory, tasks);
+    // An integration done with the scan is the analysis's only once the
+    // topology lets the analysis go on: judged before it, as it always is.
+    std::optional<IntegrationResult> integrated_with_scan =
+        std::exchange(analysis.integration, std::nullopt);
     const MeshScan& scan = analysis.scan;
     // Judges what is known; true when the analysis should end here.
     auto stop = [&] {
@@ -146,7 +157,8 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
     }
 
     const IntegrationSettings integration = integration_settings(scan, settings);
-    analysis.integration = integrate_mesh(mesh, integration, tasks);
+    analysis.integration = integrated_with_scan ? std::move(integrated_with_scan)
+                                                : integrate_mesh(mesh, integration, tasks);
     if (stop()) return finish();
 
     // Shells are judged on a closed, oriented surface of planar faces whose

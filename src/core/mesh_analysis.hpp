@@ -1,7 +1,9 @@
 // Everything the library learns about a mesh before it trusts it: the scan,
 // welding, the topology check, the integration pass, the shells and (when
-// asked) the intersection check, in that order, each run only when the ones
-// before it leave the next one meaningful - and the verdict on all of it.
+// asked) the intersection check, judged in that order, each kept only when
+// the ones before it leave the next one meaningful - and the verdict on all of
+// it. (A mesh of triangles not welded is integrated with its scan, which the
+// integration's reads finish: mesh_analysis.cpp.)
 #pragma once
 
 #include <cstddef>

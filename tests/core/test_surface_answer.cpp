@@ -130,6 +130,27 @@ void test_repair_closes_an_open_cube(const Eigen::Vector3d& at) {
     CHECK(!refused.answered && failed_as(refused, 0, Mode::solid, Refusal::defect, Defect::open));
 }
 
+// A surface of triangles not welded is integrated with its scan
+// (analyse_mesh), before its topology is checked; the integrals are the
+// analysis's only once the topology lets it go on: an open cube's analysis
+// stopped at its first problem has none, as when the integration came after
+// the topology, and one asked for every finding has them.
+void test_integrals_kept_only_past_the_topology(const Eigen::Vector3d& at) {
+    TestMesh open = unit_cube(at);
+    open.indices.resize(open.indices.size() - 3);
+    open.face_sizes.pop_back();
+    polymass::core::AnalysisSettings settings;
+    settings.check_intersections = false;
+    const polymass::core::MeshAnalysis stopped =
+        polymass::core::analyse_mesh(open.view(), settings, std::pmr::get_default_resource());
+    CHECK(stopped.topology && stopped.verdict.defect == Defect::open);
+    CHECK(!stopped.integration);
+    settings.stop_at_first_problem = false;
+    const polymass::core::MeshAnalysis full =
+        polymass::core::analyse_mesh(open.view(), settings, std::pmr::get_default_resource());
+    CHECK(full.verdict.defect == Defect::open && full.integration);
+}
+
 // Modes that cannot make a body of a flat square (two triangles and their
 // reverses: a sheet of no volume) refuse it each for its own reason, in the
 // order tried: the hull of coplanar points; and the shell mode of a surface
@@ -200,6 +221,7 @@ int main() {
         test_crossing_parts_are_refused_unless_the_check_is_skipped(at);
         test_the_hull_answers_after_the_solid_once(at);
         test_repair_closes_an_open_cube(at);
+        test_integrals_kept_only_past_the_topology(at);
         test_each_mode_refuses_for_its_own_reason(at);
         test_a_nan_is_non_finite_in_every_mode(at);
         test_findings_in_full_answer_as_the_first_problem_does(at);

@@ -115,32 +115,38 @@ static void test_unused_vertices(void** state) {
     polymass_context_destroy(ctx);
 }
 
-/* The trusted path (topology unchecked) finds the used vertices as it
-   integrates, about the centre of the bounds of every vertex, and integrates
-   again when the used ones' bounds differ: with vertices unused inside the
-   solid's box, outside it, not finite, or none, its results are those of the
-   checked path, bit for bit, and the exact ones to the usual tolerance. */
+/* The trusted path (topology unchecked), and the checked one without a
+   weld, find the used vertices as they integrate, about the centre of the
+   bounds of every vertex, and integrate again when the used ones' bounds
+   differ: with vertices unused inside the solid's box, outside it, not
+   finite, or none, their results are those of a welded analysis, whose scan
+   marks the used vertices before the integration, bit for bit, and the exact
+   ones to the usual tolerance. */
 static void test_unused_vertices_trusted(void** state) {
     const pm_reference_solid* ref = &pm_reference_solids[PM_REF_TORUS_TRIS];
     const pm_expected e = pm_expected_from_reference(ref);
     polymass_context* ctx = pm_context_new();
     const uint32_t trusted = POLYMASS_OPTION_SKIP_TOPOLOGY_CHECKS;
+    const uint32_t checked_flags = POLYMASS_OPTION_SKIP_INTERSECTION_CHECK;
     int extra;
     (void)state;
     for (extra = 0; extra < 4; ++extra) {
         static const char* const labels[] = {"none unused", "unused inside the box",
                                              "unused far outside", "unused, not finite"};
-        polymass_mass_properties checked, p;
+        polymass_mass_properties scanned_first, checked, p;
         pm_mesh m;
         pm_mesh_from_reference(&m, ref);
         if (extra == 1) pm_mesh_add_vertex(&m, m.positions[0], m.positions[1], m.positions[2]);
         if (extra == 2) pm_mesh_add_vertex(&m, 1e4, -1e4, 1e3);
         if (extra == 3) pm_mesh_add_vertex(&m, NAN, 0, 0);
+        pm_props_init(&scanned_first);
         pm_props_init(&checked);
         pm_props_init(&p);
-        PM_ASSERT_OK(ctx, pm_compute_flags(&checked, ctx, &m,
-                                           POLYMASS_OPTION_SKIP_INTERSECTION_CHECK, NULL));
+        PM_ASSERT_OK(ctx, pm_compute_flags(&scanned_first, ctx, &m,
+                                           checked_flags | POLYMASS_OPTION_WELD_VERTICES, NULL));
+        PM_ASSERT_OK(ctx, pm_compute_flags(&checked, ctx, &m, checked_flags, NULL));
         PM_ASSERT_OK(ctx, pm_compute_flags(&p, ctx, &m, trusted, NULL));
+        PM_ASSERT_SAME_PROPERTIES(labels[extra], &scanned_first, &checked);
         /* The one difference: the trusted answer says it is unchecked. */
         assert_int_equal(p.warnings, checked.warnings | POLYMASS_WARNING_UNCHECKED);
         checked.warnings = p.warnings;
