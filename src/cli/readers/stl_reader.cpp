@@ -31,10 +31,9 @@ bool starts_with_solid(std::string_view bytes) {
 
 // The triangles' corners as float32, as the file stores them (36 bytes a
 // triangle, against the file's 50; in huge pages, not zeroed first), decoded
-// in one pass over the mapping,
-// which is let go as it is read and before the corners are welded.
-// file, when given, holds bytes and is let go as they are decoded.
-// The welded positions stay float32 (12 bytes a vertex).
+// in one pass over the mapping. file, when given, holds bytes and is let go
+// as they are decoded, before the corners are welded. The welded positions
+// stay float32 (12 bytes a vertex).
 Model read_binary(std::string_view bytes, FileBytes* file, uint64_t triangle_count) {
     HugePageArray<float> corners(9 * triangle_count);
     const unsigned char* triangle =
