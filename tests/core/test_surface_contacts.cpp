@@ -11,7 +11,8 @@
 // in the same turn cross wherever they are); fans of triangles around one
 // vertex, and two triangles folded over each other in one plane around a
 // shared vertex (no pair: only crossing counts there); an assembly of touching cubes, past the
-// count's stop, with a crossing cube and coinciding faces late. The reference tests all pairs with
+// count's stop, with a crossing cube and coinciding faces late; crossing boxes of quads among
+// resting cubes, whose touching count is the tree's. The reference tests all pairs with
 // the same exact predicate (test_triangle_contact checks that one).
 #include "core/surface_contacts.hpp"
 
@@ -415,6 +416,73 @@ void check_resting_parts() {
     }
 }
 
+// A face pair that both crosses (through one pair of its triangles) and
+// touches (through another) is listed as crossing only, so it leaves the
+// touching count when the pairs counted before the count's stop held it;
+// which pairs they held depends on the order the pairs come. The search by
+// pairs of shells (shell_pairs.hpp) comes in the shells' order, the tree's in
+// Morton order, and a surface on which the former finds a crossing pair is
+// searched again along the tree, so that the answer is the tree's. Here 124
+// resting cubes (triangles) pass the stop; in the place of the 125th, two
+// boxes of quads, the last two shells, cross: a side quad of the small one
+// crosses the large one's bottom quad through one of its triangles and
+// touches the other at a point of the diagonal. The tree meets that pair
+// before its stop, the shells' order after it (the hole, 87, is chosen so).
+// Without shells only the tree searches, and finds the contacts it finds
+// with them (no faces coincide in one turn).
+void check_crossing_searched_along_the_tree() {
+    constexpr int side = 5, hole = 87;
+    const Eigen::Vector3d far(1e3, -2e3, 3e3), x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    auto cell = [&](int k) -> Eigen::Vector3d {
+        return far + Eigen::Vector3d(k % side, k / side % side, k / side / side);
+    };
+    TestMesh mesh;
+    polymass::core::Shells shells(std::pmr::get_default_resource());
+    auto add_part = [&](const TestMesh& part) {
+        polymass_test::append(mesh, part);
+        shells.of_face.resize(mesh.face_sizes.size(), std::uint32_t(shells.count++));
+    };
+    for (int k = 0; k < side * side * side; ++k)
+        if (k != hole) add_part(polymass_test::box_mesh(cell(k), x, y, z, true));
+    add_part(polymass_test::box_mesh(cell(hole) + Eigen::Vector3d::Constant(0.25), 0.5 * x, 0.5 * y,
+                                     0.5 * z, false));
+    add_part(polymass_test::box_mesh(cell(hole) + Eigen::Vector3d(0.375, 0.375, 0.125), 0.25 * x,
+                                     0.25 * y, 0.375 * z, false));
+    const auto view = mesh.view();
+    auto same = [](const PairFinding& a, const PairFinding& b) {
+        if (a.count != b.count || a.complete != b.complete) return false;
+        for (std::size_t i = 0; i < a.kept(); ++i)
+            if (a.lowest[i] != b.lowest[i]) return false;
+        return true;
+    };
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
+    for (polymass::core::TaskRunner* runner : {static_cast<polymass::core::TaskRunner*>(&serial),
+                                               static_cast<polymass::core::TaskRunner*>(&reversed),
+                                               static_cast<polymass::core::TaskRunner*>(&pool)}) {
+        auto contacts = [&](const polymass::core::Shells* of_faces) {
+            const polymass::core::IndexedSurface surface(view, nullptr, far, 10.0, of_faces,
+                                                         *runner, std::pmr::get_default_resource());
+            return polymass::core::find_contacts(surface, *runner,
+                                                 std::pmr::get_default_resource());
+        };
+        const auto with_shells = contacts(&shells), along_the_tree = contacts(nullptr);
+        CHECK(with_shells.crossing.count == 4);
+        // The case this test is for: the tree counted face pairs that also
+        // cross before its stop (should the tree's order change, choose
+        // another hole where it does).
+        CHECK(along_the_tree.touching.count < kMostCountedPairs);
+        CHECK(same(with_shells.crossing, along_the_tree.crossing));
+        CHECK(same(with_shells.touching, along_the_tree.touching));
+        if (!same(with_shells.touching, along_the_tree.touching))
+            std::fprintf(stderr,
+                         "crossing boxes among resting cubes: %zu touching pairs, %zu "
+                         "along the tree\n",
+                         with_shells.touching.count, along_the_tree.touching.count);
+    }
+}
+
 // The shells' boxes, taken in the pass that boxes the triangles, in blocks
 // of 2^16 triangles joined in block order: the exact least and greatest
 // coordinates of each shell's corners, degenerate triangles' too, on every
@@ -483,6 +551,7 @@ int main() {
     check_shell_boxes();
     check_touching_assembly();
     check_resting_parts();
+    check_crossing_searched_along_the_tree();
     check_folds_at_a_shared_corner();
     check_many_pieces();
     check_fans();
