@@ -180,29 +180,67 @@ bool only_common_edges(const Entry* first, const Entry* last) {
 }
 
 // Hands each directed edge of the face of `size` corners from position
-// `first` of the index array to file(lower, entry): its lower vertex and its
-// Entry, in the face's order (a triangle's loop unrolled: its three edges
-// stay in registers).
-template <class Entry, class VertexId, class File>
+// `first` of the index array to file.edge(from, to), in the face's order (a
+// triangle's loop unrolled: its three edges stay in registers).
+template <class VertexId, class File>
 __attribute__((always_inline)) inline void file_edges_of_face(std::size_t first, std::size_t size,
                                                               VertexId& id, File& file) {
     std::uint32_t from = id(first + size - 1);
 #pragma GCC unroll 4
     for (std::size_t i = 0; i < size; ++i) {
         const std::uint32_t to = id(first + i);
-        const bool down = from > to;
-        if (from != to) file(down ? to : from, (Entry(down ? from : to) << 1) | Entry(down));
+        if (from != to) file.edge(from, to);
         from = to;
     }
 }
 
+// The two passes over the edges, each edge given as its ends (edge) or as
+// its lower vertex and Entry (filed, by the passes eight triangles at a
+// time): the count of each lower vertex's edges, then the edges filed in its
+// bucket. (Copies of the arrays' addresses: read through the containers,
+// they were loaded again after every store.)
+template <class Entry>
+struct Count {
+    Entry* bucket_end;
+
+    void edge(std::uint32_t from, std::uint32_t to) { ++bucket_end[std::min(from, to)]; }
+    void filed(std::uint32_t lower, Entry) { ++bucket_end[lower]; }
+};
+template <class Entry>
+struct File {
+    Entry* bucket_end;
+    Entry* slots;
+
+    void edge(std::uint32_t from, std::uint32_t to) {
+        const bool down = from > to;
+        filed(down ? to : from, (Entry(down ? from : to) << 1) | Entry(down));
+    }
+    void filed(std::uint32_t lower, Entry entry) { slots[bucket_end[lower]++] = entry; }
+};
+// Passes on to `file` the edges whose lower vertex is in [low, high): one
+// thread's share of the buckets.
+template <class Pass>
+struct FileInRange {
+    Pass& pass;
+    std::size_t low, high;
+
+    bool ours(std::uint32_t lower) const { return lower >= low && lower < high; }
+    void edge(std::uint32_t from, std::uint32_t to) {
+        if (ours(std::min(from, to))) pass.edge(from, to);
+    }
+    template <class Entry>
+    void filed(std::uint32_t lower, Entry entry) {
+        if (ours(lower)) pass.filed(lower, entry);
+    }
+};
+
 // file_edges_of_face for each face of one block, in face order.
 template <class Entry, class Scalar, class Index, class VertexId, class File>
 void file_edges_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
-                         std::size_t first_index, VertexId& id, File& file) {
+                         std::size_t first_index, VertexId& id, File file) {
     for_each_face_of_block(mesh, block, first_index,
                            [&](std::size_t, std::size_t first, std::size_t size) {
-                               file_edges_of_face<Entry>(first, size, id, file);
+                               file_edges_of_face(first, size, id, file);
                            });
 }
 
@@ -260,14 +298,13 @@ __attribute__((target("avx2"))) void file_triangle_edges_avx2(
         if (edges_of_eight_triangles(mesh.indices.base + 3 * face * sizeof(std::uint32_t), lower,
                                      entry)) {
 #pragma GCC unroll 24
-            for (int k = 0; k < 24; ++k) file(lower[k], entry[k]);
+            for (int k = 0; k < 24; ++k) file.filed(lower[k], entry[k]);
             continue;
         }
         for (std::size_t one = face; one < face + 8; ++one)
-            file_edges_of_face<std::uint32_t>(3 * one, 3, own_identity, file);
+            file_edges_of_face(3 * one, 3, own_identity, file);
     }
-    for (; face < last_face; ++face)
-        file_edges_of_face<std::uint32_t>(3 * face, 3, own_identity, file);
+    for (; face < last_face; ++face) file_edges_of_face(3 * face, 3, own_identity, file);
 }
 #endif
 
@@ -394,8 +431,6 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, std::size_t iden
     // starts, then (after filing, each bucket filled from its start) where it
     // ends. (v: an identity, as every vertex below.)
     std::pmr::vector<Entry> end_of(identity_count, Entry{0}, memory);
-    // The passes below write through copies of the arrays' addresses: read
-    // through the containers, they were loaded again after every store.
     Entry* const bucket_end = end_of.data();
     // Eight triangles at a time when their indices are the identities.
     const bool eight_at_a_time = [&] {
@@ -423,23 +458,16 @@ TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, std::size_t iden
         }
         const std::size_t low = range * per_range;
         const std::size_t high = std::min(identity_count, low + per_range);
-        auto ours = [&file, low, high](std::uint32_t lower, Entry entry) {
-            if (lower >= low && lower < high) file(lower, entry);
-        };
+        FileInRange<std::remove_reference_t<decltype(file)>> ours{file, low, high};
         for (std::size_t block = 0; block < starts.size(); ++block) file_edges_of(block, ours);
     };
-    tasks.run(ranges, [&](std::size_t range) {
-        file_edges_in_range(range,
-                            [bucket_end](std::uint32_t lower, Entry) { ++bucket_end[lower]; });
-    });
+    tasks.run(ranges,
+              [&](std::size_t range) { file_edges_in_range(range, Count<Entry>{bucket_end}); });
     Entry edge_total = 0;
     for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
     ScratchBuffer<Entry> entries(edge_total, memory);  // each slot filed once below
-    Entry* const slots = entries.data();
     tasks.run(ranges, [&](std::size_t range) {
-        file_edges_in_range(range, [bucket_end, slots](std::uint32_t lower, Entry entry) {
-            slots[bucket_end[lower]++] = entry;
-        });
+        file_edges_in_range(range, File<Entry>{bucket_end, entries.data()});
     });
 
     const std::size_t pieces = (identity_count + vertices_per_piece - 1) / vertices_per_piece;
