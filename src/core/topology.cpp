@@ -257,8 +257,12 @@ __attribute__((always_inline)) inline bool edges_of_eight_triangles(const unsign
                                                                     std::uint32_t (&lower)[24],
                                                                     std::uint32_t (&entry)[24]) {
     using Eight = std::uint32_t __attribute__((vector_size(32)));
+    // One load a vector: copied whole, the 96 bytes went through the stack
+    // in 16-byte halves read back as 32-byte vectors, a stall each (store
+    // forwarding fails) that made the passes slower than one edge at a time.
     Eight from[3];
-    std::memcpy(from, corners, sizeof from);
+#pragma GCC unroll 3
+    for (int k = 0; k < 3; ++k) std::memcpy(&from[k], corners + k * sizeof(Eight), sizeof(Eight));
     // Corners 0..23 in three vectors; the next corner of corner 3t + i is
     // 3t + i + 1, or 3t for i = 2.
     const Eight to[3] = {__builtin_shufflevector(from[0], from[1], 1, 2, 0, 4, 5, 3, 7, 8),
