@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -178,22 +179,138 @@ bool only_common_edges(const Entry* first, const Entry* last) {
     return mismatch == 0;
 }
 
-// Visits the directed edges of one block of faces, in face order (a
+// Hands each directed edge of the face of `size` corners from position
+// `first` of the index array to file.edge(from, to), in the face's order (a
 // triangle's loop unrolled: its three edges stay in registers).
-template <class Scalar, class Index, class VertexId, class Visit>
-void each_edge_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
-                        std::size_t first_index, VertexId& id, Visit&& visit) {
+template <class VertexId, class File>
+__attribute__((always_inline)) inline void file_edges_of_face(std::size_t first, std::size_t size,
+                                                              VertexId& id, File& file) {
+    std::uint32_t from = id(first + size - 1);
+#pragma GCC unroll 4
+    for (std::size_t i = 0; i < size; ++i) {
+        const std::uint32_t to = id(first + i);
+        if (from != to) file.edge(from, to);
+        from = to;
+    }
+}
+
+// The two passes over the edges, each edge given as its ends (edge) or as
+// its lower vertex and Entry (filed, by the passes eight triangles at a
+// time): the count of each lower vertex's edges, then the edges filed in its
+// bucket. (Copies of the arrays' addresses: read through the containers,
+// they were loaded again after every store.)
+template <class Entry>
+struct Count {
+    Entry* bucket_end;
+
+    void edge(std::uint32_t from, std::uint32_t to) { ++bucket_end[std::min(from, to)]; }
+    void filed(std::uint32_t lower, Entry) { ++bucket_end[lower]; }
+};
+template <class Entry>
+struct File {
+    Entry* bucket_end;
+    Entry* slots;
+
+    void edge(std::uint32_t from, std::uint32_t to) {
+        const bool down = from > to;
+        filed(down ? to : from, (Entry(down ? from : to) << 1) | Entry(down));
+    }
+    void filed(std::uint32_t lower, Entry entry) { slots[bucket_end[lower]++] = entry; }
+};
+// Passes on to `file` the edges whose lower vertex is in [low, high): one
+// thread's share of the buckets.
+template <class Pass>
+struct FileInRange {
+    Pass& pass;
+    std::size_t low, high;
+
+    bool ours(std::uint32_t lower) const { return lower >= low && lower < high; }
+    void edge(std::uint32_t from, std::uint32_t to) {
+        if (ours(std::min(from, to))) pass.edge(from, to);
+    }
+    template <class Entry>
+    void filed(std::uint32_t lower, Entry entry) {
+        if (ours(lower)) pass.filed(lower, entry);
+    }
+};
+
+// file_edges_of_face for each face of one block, in face order.
+template <class Entry, class Scalar, class Index, class VertexId, class File>
+void file_edges_of_block(const MeshView<Scalar, Index>& mesh, std::size_t block,
+                         std::size_t first_index, VertexId& id, File file) {
     for_each_face_of_block(mesh, block, first_index,
                            [&](std::size_t, std::size_t first, std::size_t size) {
-                               std::uint32_t from = id(first + size - 1);
-#pragma GCC unroll 4
-                               for (std::size_t i = 0; i < size; ++i) {
-                                   const std::uint32_t to = id(first + i);
-                                   if (from != to) visit(from, to);
-                                   from = to;
-                               }
+                               file_edges_of_face(first, size, id, file);
                            });
 }
+
+#if defined(__x86_64__)
+// The lower vertices and entries of the 24 edges of eight triangles from
+// `corners` (32-bit indices, each vertex its own identity), edge k from
+// corner k to the next corner of its triangle; false when an edge runs from
+// a vertex to itself (no edge: then the caller files them one by one). In
+// vectors of eight, the shuffles giving each corner's next one: the
+// counting and filing passes were 16 and 40 instructions a triangle one edge
+// at a time, most of them choosing the ends and the entry of each edge; 13
+// and 27 so (torus of 1e6 triangles, callgrind: docs/integrals.md).
+__attribute__((always_inline)) inline bool edges_of_eight_triangles(const unsigned char* corners,
+                                                                    std::uint32_t (&lower)[24],
+                                                                    std::uint32_t (&entry)[24]) {
+    using Eight = std::uint32_t __attribute__((vector_size(32)));
+    // One load a vector: copied whole, the 96 bytes went through the stack
+    // in 16-byte halves read back as 32-byte vectors, a stall each (store
+    // forwarding fails) that made the passes slower than one edge at a time.
+    Eight from[3];
+#pragma GCC unroll 3
+    for (int k = 0; k < 3; ++k) std::memcpy(&from[k], corners + k * sizeof(Eight), sizeof(Eight));
+    // Corners 0..23 in three vectors; the next corner of corner 3t + i is
+    // 3t + i + 1, or 3t for i = 2.
+    const Eight to[3] = {__builtin_shufflevector(from[0], from[1], 1, 2, 0, 4, 5, 3, 7, 8),
+                         __builtin_shufflevector(
+                             __builtin_shufflevector(from[0], from[1], 6, 10, 11, 9, 13, 14, 12, 8),
+                             from[2], 0, 1, 2, 3, 4, 5, 6, 8),
+                         __builtin_shufflevector(from[1], from[2], 9, 7, 11, 12, 10, 14, 15, 13)};
+    Eight repeated{};
+#pragma GCC unroll 3
+    for (int k = 0; k < 3; ++k) {
+        const Eight down = Eight(from[k] > to[k]);  // all bits set where the edge runs down
+        const Eight low = (to[k] & down) | (from[k] & ~down);
+        const Eight high = from[k] ^ to[k] ^ low;
+        const Eight filed = (high << 1) | (down & 1);
+        repeated |= Eight(from[k] == to[k]);
+        std::memcpy(lower + 8 * k, &low, sizeof low);
+        std::memcpy(entry + 8 * k, &filed, sizeof filed);
+    }
+    std::uint32_t any_repeated = 0;
+    for (int i = 0; i < 8; ++i) any_repeated |= repeated[i];
+    return any_repeated == 0;
+}
+
+// file_edges_of_block for a block of triangles whose 32-bit indices are
+// their vertices' identities, eight triangles at a time on AVX2 (32-bit
+// entries). The same edges, each bucket's in another order, which neither
+// the test of small buckets nor the sort of the others sees.
+template <class Scalar, class File>
+__attribute__((target("avx2"))) void file_triangle_edges_avx2(
+    const MeshView<Scalar, std::uint32_t>& mesh, std::size_t block, File& file) {
+    const std::size_t first_face = block * kFacesPerBlock;
+    const std::size_t last_face = std::min(mesh.face_count, first_face + kFacesPerBlock);
+    auto own_identity = [&mesh](std::size_t position) { return mesh.indices[position]; };
+    std::size_t face = first_face;
+    for (; face + 8 <= last_face; face += 8) {
+        alignas(32) std::uint32_t lower[24], entry[24];
+        if (edges_of_eight_triangles(mesh.indices.base + 3 * face * sizeof(std::uint32_t), lower,
+                                     entry)) {
+#pragma GCC unroll 24
+            for (int k = 0; k < 24; ++k) file.filed(lower[k], entry[k]);
+            continue;
+        }
+        for (std::size_t one = face; one < face + 8; ++one)
+            file_edges_of_face(3 * one, 3, own_identity, file);
+    }
+    for (; face < last_face; ++face) file_edges_of_face(3 * face, 3, own_identity, file);
+}
+#endif
 
 // Joins `low` with the higher end of the entries in the slots of `lanes`
 // from `first`: a common edge's up alone (its down names the same vertex).
@@ -307,51 +424,54 @@ auto walk_buckets_for(InstructionSet set) {
     return walk_buckets_baseline<Entry>;
 }
 
+// ids_are_indices: id(position) is the index at `position` (no weld).
 template <class Entry, class Scalar, class Index, class VertexId>
 TopologyReport match_edges(const MeshView<Scalar, Index>& mesh, std::size_t identity_count,
-                           VertexId&& id, TaskRunner& tasks, std::pmr::memory_resource* memory,
-                           std::uint32_t* vertex_sets, InstructionSet set) {
+                           VertexId&& id, bool ids_are_indices, TaskRunner& tasks,
+                           std::pmr::memory_resource* memory, std::uint32_t* vertex_sets,
+                           InstructionSet set) {
     const std::pmr::vector<std::size_t> starts = face_block_starts(mesh, memory);
     // end_of[v]: first counts, then (after the prefix sum) where v's bucket
     // starts, then (after filing, each bucket filled from its start) where it
     // ends. (v: an identity, as every vertex below.)
     std::pmr::vector<Entry> end_of(identity_count, Entry{0}, memory);
-    // The passes below write through copies of the arrays' addresses: read
-    // through the containers, they were loaded again after every store.
     Entry* const bucket_end = end_of.data();
+    // Eight triangles at a time when their indices are the identities.
+    const bool eight_at_a_time = [&] {
+#if defined(__x86_64__)
+        if constexpr (std::is_same_v<Index, std::uint32_t> && std::is_same_v<Entry, std::uint32_t>)
+            return ids_are_indices && mesh.all_triangles() && set != InstructionSet::baseline;
+#endif
+        return false;
+    }();
+    auto file_edges_of = [&](std::size_t block, auto& file) {
+#if defined(__x86_64__)
+        if constexpr (std::is_same_v<Index, std::uint32_t> && std::is_same_v<Entry, std::uint32_t>)
+            if (eight_at_a_time) return file_triangle_edges_avx2(mesh, block, file);
+#endif
+        file_edges_of_block<Entry>(mesh, block, starts[block], id, file);
+    };
     // Each edge of every face whose lower vertex is in range `range` of the
     // tasks' concurrency.
     const std::size_t ranges = std::max<std::size_t>(1, tasks.concurrency());
     const std::size_t per_range = (identity_count + ranges - 1) / ranges;
-    auto each_edge_in_range = [&](std::size_t range, auto&& visit) {
+    auto file_edges_in_range = [&](std::size_t range, auto&& file) {
         if (ranges == 1) {  // every edge: no test per edge on one thread
-            for (std::size_t block = 0; block < starts.size(); ++block)
-                each_edge_of_block(mesh, block, starts[block], id, visit);
+            for (std::size_t block = 0; block < starts.size(); ++block) file_edges_of(block, file);
             return;
         }
         const std::size_t low = range * per_range;
         const std::size_t high = std::min(identity_count, low + per_range);
-        for (std::size_t block = 0; block < starts.size(); ++block)
-            each_edge_of_block(mesh, block, starts[block], id,
-                               [&visit, low, high](std::uint32_t from, std::uint32_t to) {
-                                   const std::uint32_t lower = std::min(from, to);
-                                   if (lower >= low && lower < high) visit(from, to);
-                               });
+        FileInRange<std::remove_reference_t<decltype(file)>> ours{file, low, high};
+        for (std::size_t block = 0; block < starts.size(); ++block) file_edges_of(block, ours);
     };
-    tasks.run(ranges, [&](std::size_t range) {
-        each_edge_in_range(range, [bucket_end](std::uint32_t from, std::uint32_t to) {
-            ++bucket_end[std::min(from, to)];
-        });
-    });
+    tasks.run(ranges,
+              [&](std::size_t range) { file_edges_in_range(range, Count<Entry>{bucket_end}); });
     Entry edge_total = 0;
     for (Entry& count : end_of) edge_total += std::exchange(count, edge_total);
     ScratchBuffer<Entry> entries(edge_total, memory);  // each slot filed once below
-    Entry* const slots = entries.data();
     tasks.run(ranges, [&](std::size_t range) {
-        each_edge_in_range(range, [bucket_end, slots](std::uint32_t from, std::uint32_t to) {
-            const bool down = from > to;
-            slots[bucket_end[down ? to : from]++] = (Entry(down ? from : to) << 1) | Entry(down);
-        });
+        file_edges_in_range(range, File<Entry>{bucket_end, entries.data()});
     });
 
     const std::size_t pieces = (identity_count + vertices_per_piece - 1) / vertices_per_piece;
@@ -390,12 +510,13 @@ TopologyReport analyse_topology(const MeshView<Scalar, Index>& mesh,
     const std::size_t count = identities.count_among(mesh.vertex_count);
     vertex_sets.resize(count);
     std::iota(vertex_sets.begin(), vertex_sets.end(), 0u);
+    const bool ids_are_indices = !identities.of_vertex;
     auto analyse = [&](auto&& id) {
         const bool narrow = count <= (std::size_t{1} << 31) &&
                             mesh.index_count <= std::numeric_limits<std::uint32_t>::max();
-        return narrow ? match_edges<std::uint32_t>(mesh, count, id, tasks, memory,
+        return narrow ? match_edges<std::uint32_t>(mesh, count, id, ids_are_indices, tasks, memory,
                                                    vertex_sets.data(), set)
-                      : match_edges<std::uint64_t>(mesh, count, id, tasks, memory,
+                      : match_edges<std::uint64_t>(mesh, count, id, ids_are_indices, tasks, memory,
                                                    vertex_sets.data(), set);
     };
     if (!identities.of_vertex)

@@ -4,7 +4,8 @@
 // slivers (an edge that alone links its two vertices: a join left out splits
 // their set), then broken by turning, removing and repeating faces, so that small buckets
 // hold every kind of edge. Every instruction set this processor runs gives the
-// reference's report, and vertex sets that join the ends of every edge. Each
+// reference's report, and vertex sets that join the ends of every edge, on
+// one thread and with the buckets filed in three ranges as on three. Each
 // mesh is also checked as a welded soup (every corner its own copy of its
 // vertex, the copies numbered at random among more, with unused ones between):
 // its welded positions numbered densely (vertex_identities.hpp) give the report
@@ -199,19 +200,25 @@ std::vector<std::uint32_t> reference_roots(const TestMesh& mesh) {
 // `mesh`'s report and vertex sets, on each instruction set this processor
 // runs, against those expected; the sets named by each vertex's root through
 // `root_vertex`.
+// Reversed as on one thread and as on three (each thread filing the edges
+// of its own range of lower vertices, the AVX2 pass eight triangles at a
+// time).
 template <class RootVertex>
 void check_analysis(const TestMesh& mesh, const VertexIdentities& identities,
                     const TopologyReport& expected, RootVertex&& root_vertex) {
-    polymass_test::ReversedTaskRunner tasks;
-    for (InstructionSet set :
-         {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
-        if (!polymass::core::runs_instruction_set(set)) continue;
-        std::pmr::vector<std::uint32_t> sets(std::pmr::new_delete_resource());
-        const TopologyReport report = analyse_topology(mesh.view(), identities, tasks,
-                                                       std::pmr::new_delete_resource(), sets, set);
-        CHECK(same_report(report, expected));
-        CHECK(root_vertex(roots_of({sets.begin(), sets.end()})));
-    }
+    polymass_test::ReversedTaskRunner one;
+    ReversedRunner three(3);
+    for (polymass::core::TaskRunner* tasks :
+         std::initializer_list<polymass::core::TaskRunner*>{&one, &three})
+        for (InstructionSet set :
+             {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
+            if (!polymass::core::runs_instruction_set(set)) continue;
+            std::pmr::vector<std::uint32_t> sets(std::pmr::new_delete_resource());
+            const TopologyReport report = analyse_topology(
+                mesh.view(), identities, *tasks, std::pmr::new_delete_resource(), sets, set);
+            CHECK(same_report(report, expected));
+            CHECK(root_vertex(roots_of({sets.begin(), sets.end()})));
+        }
 }
 
 void check_mesh(const TestMesh& mesh) {
