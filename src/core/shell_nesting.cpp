@@ -107,6 +107,12 @@ constexpr std::size_t kNearShells = 32;
 // Triangles of the shells whose boxes hold a point tested one by one before
 // the point is looked up along the triangles' tree instead.
 constexpr std::size_t kScannedTriangles = 256;
+// Pairs of shells whose boxes meet, a shell on average, past which the
+// shells' neighbours are not listed; and the neighbours of a shell past
+// which a point of it looks along the shells' tree instead of at them. Parts
+// resting on each other in a grid have 26 neighbours each.
+constexpr std::size_t kPairsPerShell = 64;
+constexpr std::size_t kScannedNeighbours = 64;
 // Shells, and triangles, probed by one task.
 constexpr std::size_t kShellsPerTask = 64;
 constexpr std::size_t kTrianglesPerTask = 256;
@@ -362,7 +368,15 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     let_go(by_position);
     const std::size_t point_count = start_of_point.size();
     // The tree's triangles of each shell (lowest copies, not degenerate), in
-    // order: those of shell s are shell_triangles[shell_begin[s], shell_begin[s + 1]).
+    // order, with their boxes: those of shell s are
+    // shell_triangles[shell_begin[s], shell_begin[s + 1]). The boxes are
+    // taken once here: taken at each point, from the triangles' corners,
+    // they were half the cost of the points' lists on cubes resting on each
+    // other, whose triangles are listed at every one of their corners.
+    struct BoxedTriangle {
+        std::uint32_t triangle;
+        ShellBox box;
+    };
     std::pmr::vector<std::uint32_t> shell_begin(shells.count + 1, 0, memory);
     const auto in_tree = [&](std::uint32_t t) {
         return surface.lowest_copy(t) == t && !surface.meets_nothing(t);
@@ -371,12 +385,50 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         if (in_tree(t)) ++shell_begin[shell_of(t) + 1];
     for (std::size_t shell = 0; shell < shells.count; ++shell)
         shell_begin[shell + 1] += shell_begin[shell];
-    std::pmr::vector<std::uint32_t> shell_triangles(shell_begin.back(), memory);
+    std::pmr::vector<BoxedTriangle> shell_triangles(shell_begin.back(), memory);
     {
         std::pmr::vector<std::uint32_t> next(shell_begin.begin(), shell_begin.end() - 1, memory);
         for (std::uint32_t t = 0; t < surface.size(); ++t)
-            if (in_tree(t)) shell_triangles[next[shell_of(t)]++] = t;
+            if (in_tree(t)) shell_triangles[next[shell_of(t)]++] = {t, triangle_box(t)};
     }
+    // The shells whose boxes may meet each shell's: those of shell s are
+    // neighbours[neighbours_begin[s], neighbours_begin[s + 1]), from one walk
+    // over the pairs of the shells' tree, whose boxes are rounded outward
+    // (every shell whose exact box meets s's is among them). A shell whose
+    // box holds a point meets the box of every shell with a vertex there, so
+    // a point's shells are found among the neighbours of one of those, where
+    // a look along the shells' tree, whose boxes all touch a point where
+    // parts rest on each other, opened hundreds of nodes (docs/validity.md).
+    // Past kPairsPerShell pairs a shell (parts in each other's boxes, as at a
+    // point many parts touch) the walk stops and none are kept: each point
+    // looks along the tree, as does one whose shell has more than
+    // kScannedNeighbours.
+    std::pmr::vector<std::array<std::uint32_t, 2>> meeting(memory);
+    bool paired = true;
+    for (const BoxTree::PairTask& piece : shell_tree.pair_tasks()) {
+        paired = shell_tree.for_each_overlapping_pair(piece, [&](std::uint32_t r, std::uint32_t s) {
+            meeting.push_back({r, s});
+            return meeting.size() <= kPairsPerShell * shells.count;
+        });
+        if (!paired) break;
+    }
+    std::pmr::vector<std::uint32_t> neighbours_begin(paired ? shells.count + 1 : 0, 0, memory);
+    std::pmr::vector<std::uint32_t> neighbours(paired ? 2 * meeting.size() : 0, memory);
+    if (paired) {
+        for (const auto& [r, s] : meeting) {
+            ++neighbours_begin[r + 1];
+            ++neighbours_begin[s + 1];
+        }
+        for (std::size_t shell = 0; shell < shells.count; ++shell)
+            neighbours_begin[shell + 1] += neighbours_begin[shell];
+        std::pmr::vector<std::uint32_t> next(neighbours_begin.begin(), neighbours_begin.end() - 1,
+                                             memory);
+        for (const auto& [r, s] : meeting) {
+            neighbours[next[r]++] = s;
+            neighbours[next[s]++] = r;
+        }
+    }
+    let_go(meeting);
     // The triangles whose boxes hold each point, of every shell (a start
     // skips its own shell's), with their boxes' side bits, looked up in
     // blocks as tasks, then gathered in order: those of point i are
@@ -409,17 +461,21 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         for (std::size_t i = block * kTrianglesPerTask; i < end; ++i) {
             const Eigen::Vector3d p = position_of_start(start_of_point[i]);
             const ProbeStart start{p, p, p, false};
-            const auto list_if_near = [&](std::uint32_t t) {
-                const ShellBox box = triangle_box(t);
+            const auto list_if_near = [&](std::uint32_t t, const ShellBox& box) {
                 if ((box.lo.array() <= p.array()).all() && (p.array() <= box.hi.array()).all()) {
                     block_near[block].push_back({t, SideBits::of_box(box, p)});
                     ++near_count[i];
                 }
                 return true;
             };
+            const auto list_along_tree = [&] {
+                const Eigen::Vector3d p_in_units = surface.in_units(p);
+                surface.tree().for_each_item_near_segment(
+                    p_in_units, p_in_units,
+                    [&](std::uint32_t t) { return list_if_near(t, triangle_box(t)); });
+            };
             std::size_t holding_count = 0, triangle_count = 0;
-            const Eigen::Vector3d p_in_units = surface.in_units(p);
-            shell_tree.for_each_item_near_segment(p_in_units, p_in_units, [&](std::uint32_t shell) {
+            const auto hold_if_holding = [&](std::uint32_t shell) {
                 if (!holds(shell_boxes[shell], start)) return true;
                 if (holding_count == holding.size()) {
                     holding_count = kManyShells;
@@ -428,22 +484,32 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
                 triangle_count += shell_begin[shell + 1] - shell_begin[shell];
                 holding[holding_count++] = shell;
                 return true;
-            });
+            };
+            const std::uint32_t own = shell_of(corner_of_start[start_of_point[i]] / 3);
+            if (paired && neighbours_begin[own + 1] - neighbours_begin[own] <= kScannedNeighbours) {
+                if (hold_if_holding(own))
+                    for (std::uint32_t n = neighbours_begin[own]; n < neighbours_begin[own + 1];
+                         ++n)
+                        if (!hold_if_holding(neighbours[n])) break;
+            } else {
+                const Eigen::Vector3d p_in_units = surface.in_units(p);
+                shell_tree.for_each_item_near_segment(p_in_units, p_in_units, hold_if_holding);
+            }
             shell_count[i] = std::uint32_t(holding_count);
             if (holding_count == kManyShells) {
-                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                list_along_tree();
                 continue;
             }
             block_shells[block].insert(block_shells[block].end(), holding.begin(),
                                        holding.begin() + holding_count);
             if (triangle_count > kScannedTriangles) {
-                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                list_along_tree();
                 continue;
             }
             for (std::size_t k = 0; k < holding_count; ++k)
                 for (std::uint32_t n = shell_begin[holding[k]]; n < shell_begin[holding[k] + 1];
                      ++n)
-                    list_if_near(shell_triangles[n]);
+                    list_if_near(shell_triangles[n].triangle, shell_triangles[n].box);
         }
     });
     std::pmr::vector<std::size_t> near_begin(point_count + 1, 0, memory);
