@@ -59,18 +59,10 @@ bool lies_on(const Triangle& t, int drop, int turn, const ProbeStart& start) {
 }
 
 // The axis whose coordinate plane t projects onto best: that of its
-// normal's largest component (rounded; the first of equal ones). A triangle
-// flat on an axis (`flat`, else -1) has a normal whose other components are
-// products of zero differences, zero: the flat axis unless its component is
-// zero too, the same answer without the cross product.
-int drop_axis(const Triangle& t, int flat) {
-    const Eigen::Vector3d d1 = t[1] - t[0], d2 = t[2] - t[0];
-    if (flat >= 0) {
-        const int u = (flat + 1) % 3, v = (flat + 2) % 3;
-        return std::fabs(d1[u] * d2[v] - d1[v] * d2[u]) > 0 ? flat : 0;
-    }
+// normal's largest component (rounded; the first of equal ones).
+int drop_axis(const Triangle& t) {
     int drop = 0;
-    d1.cross(d2).cwiseAbs().maxCoeff(&drop);
+    (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs().maxCoeff(&drop);
     return drop;
 }
 
@@ -276,6 +268,14 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
             return bits;
         }
     };
+    // Each triangle's projection for lies_on (drop_axis, and projected_turn
+    // + 2 above it; kNoProjection until one is needed), taken once: a
+    // triangle where parts rest flush on each other is tested against the
+    // starts at each of its corners, about five times, where the rounded
+    // cross product and the orient2d were a quarter of a test. Set by any
+    // task that needs it, as the same value whoever sets it.
+    constexpr std::uint8_t kNoProjection = 0;
+    std::pmr::vector<std::atomic<std::uint8_t>> projection(surface.size(), memory);
     // Whether the start lies on triangle t, whose box holds it. A triangle
     // lying flat on an axis (most of those where parts rest flush on each
     // other) has the plane x = c of its corners' coordinate there: the start
@@ -283,9 +283,8 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     auto lies_on_triangle = [&](const ProbeStart& start, std::uint32_t t) {
         const Triangle c = surface.triangle(t);
         const std::uint32_t flat = flat_axes(surface.corner_extremes(t));
-        int axis = -1;
         if (flat != 0 && !surface.meets_nothing(t)) {
-            axis = flat & 1 ? 0 : flat & 2 ? 1 : 2;
+            const int axis = flat & 1 ? 0 : flat & 2 ? 1 : 2;
             const auto on = [&](const Eigen::Vector3d& x) { return x[axis] == c[0][axis]; };
             if (!on(start.p) || (start.inside && !(on(start.a) && on(start.b)))) return false;
         } else if (sign_at(start, [&](const Eigen::Vector3d& x) {
@@ -293,8 +292,13 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
                    }) != 0) {
             return false;
         }
-        const int drop = drop_axis(c, axis);
-        return lies_on(c, drop, projected_turn(c, drop), start);
+        std::uint8_t projected = projection[t].load(std::memory_order_relaxed);
+        if (projected == kNoProjection) {
+            const int drop = drop_axis(c);
+            projected = std::uint8_t(4 * (projected_turn(c, drop) + 2) + drop);
+            projection[t].store(projected, std::memory_order_relaxed);
+        }
+        return lies_on(c, projected % 4, projected / 4 - 2, start);
     };
     // The vertices where probes start, numbered in the order of their ids:
     // the probe vertices, and the corners of triangles touching another shell.
