@@ -518,10 +518,19 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     });
     std::pmr::vector<std::size_t> near_begin(point_count + 1, 0, memory);
     for (std::size_t i = 0; i < point_count; ++i) near_begin[i + 1] = near_begin[i] + near_count[i];
-    std::pmr::vector<NearTriangle> near_triangles(memory);
+    // The listed triangles, and apart their side bits, read eight at a time
+    // by on_another_shell (a word past the last: kSidesPadding).
+    constexpr std::size_t kSidesPadding = 8;
+    std::pmr::vector<std::uint32_t> near_triangles(memory);
+    std::pmr::vector<std::uint8_t> near_sides(memory);
     near_triangles.reserve(near_begin.back());
+    near_sides.reserve(near_begin.back() + kSidesPadding);
     for (const auto& found : block_near)
-        near_triangles.insert(near_triangles.end(), found.begin(), found.end());
+        for (const NearTriangle& near : found) {
+            near_triangles.push_back(near.triangle);
+            near_sides.push_back(near.box_sides);
+        }
+    near_sides.resize(near_begin.back() + kSidesPadding, 0);
     let_go(block_near);
     std::pmr::vector<std::size_t> shells_begin(point_count + 1, 0, memory);
     for (std::size_t i = 0; i < point_count; ++i)
@@ -555,14 +564,24 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
                                 std::uint32_t vertex) {
         const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
         const std::uint8_t start_sides = SideBits::of_start(start);
-        for (std::size_t k = near_begin[point]; k < near_begin[point + 1]; ++k) {
-            // A start off the triangle's box is off the triangle: of the
-            // many triangles around a corner where parts rest on each other,
-            // this leaves those on the start's side.
-            const NearTriangle near = near_triangles[k];
-            if ((start_sides & near.box_sides) == 0 && shell_of(near.triangle) != shell &&
-                lies_on_triangle(start, near.triangle))
-                return true;
+        // A start off the triangle's box is off the triangle: of the many
+        // triangles around a corner where parts rest on each other, this
+        // leaves those on the start's side, a few of a hundred. Their bits
+        // are tested eight at a time, as the bytes of a word (whether one of
+        // them is zero, exactly), and one by one only in a word that has
+        // one: tested one by one, they were a quarter of the probes' cost.
+        const std::uint64_t start_word = start_sides * std::uint64_t{0x0101010101010101u};
+        const std::size_t end = near_begin[point + 1];
+        for (std::size_t first = near_begin[point]; first < end; first += 8) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, &near_sides[first], sizeof word);
+            word &= start_word;
+            const std::uint64_t low_bits = 0x0101010101010101u, high_bits = 0x8080808080808080u;
+            if (((word - low_bits) & ~word & high_bits) == 0) continue;  // no zero byte
+            for (std::size_t k = first; k < std::min(end, first + 8); ++k)
+                if ((start_sides & near_sides[k]) == 0 && shell_of(near_triangles[k]) != shell &&
+                    lies_on_triangle(start, near_triangles[k]))
+                    return true;
         }
         return false;
     };
