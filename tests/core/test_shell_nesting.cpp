@@ -443,15 +443,24 @@ int main() {
     expect("72 parts resting on a plate inside a solid", plate, plate_windings);
 
     // More pairs of shells whose boxes meet than the neighbours are listed
-    // for (kPairsPerShell a shell): 140 solids nested, each box in all the
-    // others', every point looks along the shells' tree.
+    // for (kPairsPerShell a shell): 200 solids nested, each box in all the
+    // others', and apart 20 cubes each inside a solid of its own. The walk
+    // over the pairs stops before it has them all: no point may use its
+    // shell's neighbours (a cube's, with its solid missing, would see none).
     TestMesh deep;
     std::vector<int> deep_depth;
-    for (int k = 0; k < 140; ++k) {
-        add_box(deep, Eigen::Vector3d::Constant(k), Eigen::Vector3d::Constant(300 - k), false);
+    for (int k = 0; k < 200; ++k) {
+        add_box(deep, Eigen::Vector3d::Constant(k), Eigen::Vector3d::Constant(400 - k), false);
         deep_depth.push_back(k);
     }
-    expect("140 nested solids", deep, deep_depth);
+    for (int k = 0; k < 20; ++k) {
+        const Eigen::Vector3d corner(-100 - 4 * k, 0, 0);
+        add_box(deep, corner, corner + Eigen::Vector3d(3, 3, 3), false);
+        add_box(deep, corner + Eigen::Vector3d(1, 1, 1), corner + Eigen::Vector3d(2, 2, 2), false);
+        deep_depth.push_back(0);
+        deep_depth.push_back(1);
+    }
+    expect("200 nested solids, and 20 cubes each in a solid apart", deep, deep_depth);
 
     // Enough shells and triangles for the probes to run as several tasks,
     // the mixed shell in the last: a layer of cubes resting side by side.
