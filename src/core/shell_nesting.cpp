@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
@@ -29,21 +30,46 @@ int sign_at(const ProbeStart& start, const Predicate& predicate) {
     return sign != 0 ? sign : predicate(start.b);
 }
 
+// The sign of orient2d(from, to, x) in the coordinates u, v, exact. Where
+// parts rest flush on each other the starts are mostly corners of the
+// triangles tested (the determinant is zero) and the triangles' edges mostly
+// run along an axis (the determinant is a product of two differences, whose
+// signs compare exactly): both decided without the predicate's call.
+int edge_side(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const Eigen::Vector3d& x,
+              int u, int v) {
+    const auto sign = [](double a, double b) { return (a > b) - (a < b); };
+    if ((x[u] == from[u] && x[v] == from[v]) || (x[u] == to[u] && x[v] == to[v])) return 0;
+    if (to[u] == from[u]) return -sign(to[v], from[v]) * sign(x[u], from[u]);
+    if (to[v] == from[v]) return sign(to[u], from[u]) * sign(x[v], from[v]);
+    return orient2d({from[u], from[v]}, {to[u], to[v]}, {x[u], x[v]});
+}
+
 // Whether the start, on the plane of t, lies on the closed triangle t:
-// exact, in the coordinate plane the triangle projects onto best.
-bool lies_on(const Triangle& t, const ProbeStart& start) {
-    int drop = 0;
-    (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs().maxCoeff(&drop);
+// exact, in the coordinate plane that drops the axis `drop`, where t turns
+// `turn` (drop_axis, projected_turn).
+bool lies_on(const Triangle& t, int drop, int turn, const ProbeStart& start) {
     const int u = (drop + 1) % 3, v = (drop + 2) % 3;
-    auto flat = [&](const Eigen::Vector3d& x) { return Eigen::Vector2d(x[u], x[v]); };
-    const int turn = orient2d(flat(t[0]), flat(t[1]), flat(t[2]));
     for (int k = 0; k < 3; ++k) {
         const int side = sign_at(start, [&](const Eigen::Vector3d& x) {
-            return orient2d(flat(t[k]), flat(t[(k + 1) % 3]), flat(x));
+            return edge_side(t[k], t[(k + 1) % 3], x, u, v);
         });
         if (side == -turn) return false;
     }
     return true;
+}
+
+// The axis whose coordinate plane t projects onto best: that of its
+// normal's largest component (rounded; the first of equal ones).
+int drop_axis(const Triangle& t) {
+    int drop = 0;
+    (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs().maxCoeff(&drop);
+    return drop;
+}
+
+// The turn of t projected along `drop` (0 for a triangle degenerate there).
+int projected_turn(const Triangle& t, int drop) {
+    const int u = (drop + 1) % 3, v = (drop + 2) % 3;
+    return orient2d({t[0][u], t[0][v]}, {t[1][u], t[1][v]}, {t[2][u], t[2][v]});
 }
 
 // Whether the start lies in the closed box of a shell: compared coordinate
@@ -73,6 +99,12 @@ constexpr std::size_t kNearShells = 32;
 // Triangles of the shells whose boxes hold a point tested one by one before
 // the point is looked up along the triangles' tree instead.
 constexpr std::size_t kScannedTriangles = 256;
+// Pairs of shells whose boxes meet, a shell on average, past which the
+// shells' neighbours are not listed; and the neighbours of a shell past
+// which a point of it looks along the shells' tree instead of at them. Parts
+// resting on each other in a grid have 26 neighbours each.
+constexpr std::size_t kPairsPerShell = 64;
+constexpr std::size_t kScannedNeighbours = 64;
 // Shells, and triangles, probed by one task.
 constexpr std::size_t kShellsPerTask = 64;
 constexpr std::size_t kTrianglesPerTask = 256;
@@ -236,24 +268,37 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
             return bits;
         }
     };
+    // Each triangle's projection for lies_on (drop_axis, and projected_turn
+    // + 2 above it; kNoProjection until one is needed), taken once: a
+    // triangle where parts rest flush on each other is tested against the
+    // starts at each of its corners, about five times, where the rounded
+    // cross product and the orient2d were a quarter of a test. Set by any
+    // task that needs it, as the same value whoever sets it.
+    constexpr std::uint8_t kNoProjection = 0;
+    std::pmr::vector<std::atomic<std::uint8_t>> projection(surface.size(), memory);
     // Whether the start lies on triangle t, whose box holds it. A triangle
     // lying flat on an axis (most of those where parts rest flush on each
     // other) has the plane x = c of its corners' coordinate there: the start
     // lies in it when its points do, compared exactly, without three orient3d.
-    auto in_plane_of = [&](const Triangle& c, std::uint32_t t, const ProbeStart& start) {
+    auto lies_on_triangle = [&](const ProbeStart& start, std::uint32_t t) {
+        const Triangle c = surface.triangle(t);
         const std::uint32_t flat = flat_axes(surface.corner_extremes(t));
         if (flat != 0 && !surface.meets_nothing(t)) {
             const int axis = flat & 1 ? 0 : flat & 2 ? 1 : 2;
             const auto on = [&](const Eigen::Vector3d& x) { return x[axis] == c[0][axis]; };
-            return on(start.p) && (!start.inside || (on(start.a) && on(start.b)));
+            if (!on(start.p) || (start.inside && !(on(start.a) && on(start.b)))) return false;
+        } else if (sign_at(start, [&](const Eigen::Vector3d& x) {
+                       return orient3d(c[0], c[1], c[2], x);
+                   }) != 0) {
+            return false;
         }
-        return sign_at(start, [&](const Eigen::Vector3d& x) {
-                   return orient3d(c[0], c[1], c[2], x);
-               }) == 0;
-    };
-    auto lies_on_triangle = [&](const ProbeStart& start, std::uint32_t t) {
-        const Triangle c = surface.triangle(t);
-        return in_plane_of(c, t, start) && lies_on(c, start);
+        std::uint8_t projected = projection[t].load(std::memory_order_relaxed);
+        if (projected == kNoProjection) {
+            const int drop = drop_axis(c);
+            projected = std::uint8_t(4 * (projected_turn(c, drop) + 2) + drop);
+            projection[t].store(projected, std::memory_order_relaxed);
+        }
+        return lies_on(c, projected % 4, projected / 4 - 2, start);
     };
     // The vertices where probes start, numbered in the order of their ids:
     // the probe vertices, and the corners of triangles touching another shell.
@@ -285,20 +330,38 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // Start vertices at one point (separate parts touching there, each with
     // its own vertex) share one list: k parts meeting at a point would
     // otherwise list each other's triangles k times over, k^2 in all. The
-    // starts sorted by position, the points numbered in that order. Each
-    // start's position is fetched once, beside it: fetched at each
-    // comparison, the sort cost more than all the rest of the numbering.
+    // starts sorted by a hash of their position, then by position (the
+    // starts at one point, of one hash, are neighbours), the points numbered
+    // in that order, which only orders the lists. Each start's position is
+    // fetched once, beside it: fetched at each comparison, the sort cost
+    // more than all the rest of the numbering; sorted by position first,
+    // three coordinates compared at each step, it still cost a sixth of the
+    // count on cubes resting on each other (docs/validity.md).
     struct PlacedStart {
+        std::uint64_t hash;
         std::array<double, 3> at;
         std::uint32_t start;
+    };
+    const auto hash_of = [](const Eigen::Vector3d& p) {
+        std::uint64_t hash = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double x = p[k] + 0.0;  // -0 is +0: one point, one hash
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, &x, sizeof bits);
+            hash = (hash ^ bits) * 0x9E3779B97F4A7C15u;
+            hash ^= hash >> 29;
+        }
+        return hash;
     };
     std::pmr::vector<PlacedStart> by_position(start_count, memory);
     for (std::uint32_t s = 0; s < start_count; ++s) {
         const Eigen::Vector3d p = position_of_start(s);
-        by_position[s] = {{p[0], p[1], p[2]}, s};
+        by_position[s] = {hash_of(p), {p[0], p[1], p[2]}, s};
     }
     std::sort(by_position.begin(), by_position.end(),
-              [](const PlacedStart& a, const PlacedStart& b) { return a.at < b.at; });
+              [](const PlacedStart& a, const PlacedStart& b) {
+                  return a.hash != b.hash ? a.hash < b.hash : a.at < b.at;
+              });
     std::pmr::vector<std::uint32_t> point_of_start(start_count, 0, memory);
     std::pmr::vector<std::uint32_t> start_of_point(memory);  // one start at each point
     for (std::uint32_t k = 0; k < start_count; ++k) {
@@ -309,7 +372,15 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     let_go(by_position);
     const std::size_t point_count = start_of_point.size();
     // The tree's triangles of each shell (lowest copies, not degenerate), in
-    // order: those of shell s are shell_triangles[shell_begin[s], shell_begin[s + 1]).
+    // order, with their boxes: those of shell s are
+    // shell_triangles[shell_begin[s], shell_begin[s + 1]). The boxes are
+    // taken once here: taken at each point, from the triangles' corners,
+    // they were half the cost of the points' lists on cubes resting on each
+    // other, whose triangles are listed at every one of their corners.
+    struct BoxedTriangle {
+        std::uint32_t triangle;
+        ShellBox box;
+    };
     std::pmr::vector<std::uint32_t> shell_begin(shells.count + 1, 0, memory);
     const auto in_tree = [&](std::uint32_t t) {
         return surface.lowest_copy(t) == t && !surface.meets_nothing(t);
@@ -318,12 +389,50 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         if (in_tree(t)) ++shell_begin[shell_of(t) + 1];
     for (std::size_t shell = 0; shell < shells.count; ++shell)
         shell_begin[shell + 1] += shell_begin[shell];
-    std::pmr::vector<std::uint32_t> shell_triangles(shell_begin.back(), memory);
+    std::pmr::vector<BoxedTriangle> shell_triangles(shell_begin.back(), memory);
     {
         std::pmr::vector<std::uint32_t> next(shell_begin.begin(), shell_begin.end() - 1, memory);
         for (std::uint32_t t = 0; t < surface.size(); ++t)
-            if (in_tree(t)) shell_triangles[next[shell_of(t)]++] = t;
+            if (in_tree(t)) shell_triangles[next[shell_of(t)]++] = {t, triangle_box(t)};
     }
+    // The shells whose boxes may meet each shell's: those of shell s are
+    // neighbours[neighbours_begin[s], neighbours_begin[s + 1]), from one walk
+    // over the pairs of the shells' tree, whose boxes are rounded outward
+    // (every shell whose exact box meets s's is among them). A shell whose
+    // box holds a point meets the box of every shell with a vertex there, so
+    // a point's shells are found among the neighbours of one of those, where
+    // a look along the shells' tree, whose boxes all touch a point where
+    // parts rest on each other, opened hundreds of nodes (docs/validity.md).
+    // Past kPairsPerShell pairs a shell (parts in each other's boxes, as at a
+    // point many parts touch) the walk stops and none are kept: each point
+    // looks along the tree, as does one whose shell has more than
+    // kScannedNeighbours.
+    std::pmr::vector<std::array<std::uint32_t, 2>> meeting(memory);
+    bool paired = true;
+    for (const BoxTree::PairTask& piece : shell_tree.pair_tasks()) {
+        paired = shell_tree.for_each_overlapping_pair(piece, [&](std::uint32_t r, std::uint32_t s) {
+            meeting.push_back({r, s});
+            return meeting.size() <= kPairsPerShell * shells.count;
+        });
+        if (!paired) break;
+    }
+    std::pmr::vector<std::uint32_t> neighbours_begin(paired ? shells.count + 1 : 0, 0, memory);
+    std::pmr::vector<std::uint32_t> neighbours(paired ? 2 * meeting.size() : 0, memory);
+    if (paired) {
+        for (const auto& [r, s] : meeting) {
+            ++neighbours_begin[r + 1];
+            ++neighbours_begin[s + 1];
+        }
+        for (std::size_t shell = 0; shell < shells.count; ++shell)
+            neighbours_begin[shell + 1] += neighbours_begin[shell];
+        std::pmr::vector<std::uint32_t> next(neighbours_begin.begin(), neighbours_begin.end() - 1,
+                                             memory);
+        for (const auto& [r, s] : meeting) {
+            neighbours[next[r]++] = s;
+            neighbours[next[s]++] = r;
+        }
+    }
+    let_go(meeting);
     // The triangles whose boxes hold each point, of every shell (a start
     // skips its own shell's), with their boxes' side bits, looked up in
     // blocks as tasks, then gathered in order: those of point i are
@@ -356,17 +465,21 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         for (std::size_t i = block * kTrianglesPerTask; i < end; ++i) {
             const Eigen::Vector3d p = position_of_start(start_of_point[i]);
             const ProbeStart start{p, p, p, false};
-            const auto list_if_near = [&](std::uint32_t t) {
-                const ShellBox box = triangle_box(t);
+            const auto list_if_near = [&](std::uint32_t t, const ShellBox& box) {
                 if ((box.lo.array() <= p.array()).all() && (p.array() <= box.hi.array()).all()) {
                     block_near[block].push_back({t, SideBits::of_box(box, p)});
                     ++near_count[i];
                 }
                 return true;
             };
+            const auto list_along_tree = [&] {
+                const Eigen::Vector3d p_in_units = surface.in_units(p);
+                surface.tree().for_each_item_near_segment(
+                    p_in_units, p_in_units,
+                    [&](std::uint32_t t) { return list_if_near(t, triangle_box(t)); });
+            };
             std::size_t holding_count = 0, triangle_count = 0;
-            const Eigen::Vector3d p_in_units = surface.in_units(p);
-            shell_tree.for_each_item_near_segment(p_in_units, p_in_units, [&](std::uint32_t shell) {
+            const auto hold_if_holding = [&](std::uint32_t shell) {
                 if (!holds(shell_boxes[shell], start)) return true;
                 if (holding_count == holding.size()) {
                     holding_count = kManyShells;
@@ -375,30 +488,49 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
                 triangle_count += shell_begin[shell + 1] - shell_begin[shell];
                 holding[holding_count++] = shell;
                 return true;
-            });
+            };
+            const std::uint32_t own = shell_of(corner_of_start[start_of_point[i]] / 3);
+            if (paired && neighbours_begin[own + 1] - neighbours_begin[own] <= kScannedNeighbours) {
+                if (hold_if_holding(own))
+                    for (std::uint32_t n = neighbours_begin[own]; n < neighbours_begin[own + 1];
+                         ++n)
+                        if (!hold_if_holding(neighbours[n])) break;
+            } else {
+                const Eigen::Vector3d p_in_units = surface.in_units(p);
+                shell_tree.for_each_item_near_segment(p_in_units, p_in_units, hold_if_holding);
+            }
             shell_count[i] = std::uint32_t(holding_count);
             if (holding_count == kManyShells) {
-                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                list_along_tree();
                 continue;
             }
             block_shells[block].insert(block_shells[block].end(), holding.begin(),
                                        holding.begin() + holding_count);
             if (triangle_count > kScannedTriangles) {
-                surface.tree().for_each_item_near_segment(p_in_units, p_in_units, list_if_near);
+                list_along_tree();
                 continue;
             }
             for (std::size_t k = 0; k < holding_count; ++k)
                 for (std::uint32_t n = shell_begin[holding[k]]; n < shell_begin[holding[k] + 1];
                      ++n)
-                    list_if_near(shell_triangles[n]);
+                    list_if_near(shell_triangles[n].triangle, shell_triangles[n].box);
         }
     });
     std::pmr::vector<std::size_t> near_begin(point_count + 1, 0, memory);
     for (std::size_t i = 0; i < point_count; ++i) near_begin[i + 1] = near_begin[i] + near_count[i];
-    std::pmr::vector<NearTriangle> near_triangles(memory);
+    // The listed triangles, and apart their side bits, read eight at a time
+    // by on_another_shell (a word past the last: kSidesPadding).
+    constexpr std::size_t kSidesPadding = 8;
+    std::pmr::vector<std::uint32_t> near_triangles(memory);
+    std::pmr::vector<std::uint8_t> near_sides(memory);
     near_triangles.reserve(near_begin.back());
+    near_sides.reserve(near_begin.back() + kSidesPadding);
     for (const auto& found : block_near)
-        near_triangles.insert(near_triangles.end(), found.begin(), found.end());
+        for (const NearTriangle& near : found) {
+            near_triangles.push_back(near.triangle);
+            near_sides.push_back(near.box_sides);
+        }
+    near_sides.resize(near_begin.back() + kSidesPadding, 0);
     let_go(block_near);
     std::pmr::vector<std::size_t> shells_begin(point_count + 1, 0, memory);
     for (std::size_t i = 0; i < point_count; ++i)
@@ -432,14 +564,24 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
                                 std::uint32_t vertex) {
         const std::uint32_t point = point_of_start[start_of_vertex[vertex]];
         const std::uint8_t start_sides = SideBits::of_start(start);
-        for (std::size_t k = near_begin[point]; k < near_begin[point + 1]; ++k) {
-            // A start off the triangle's box is off the triangle: of the
-            // many triangles around a corner where parts rest on each other,
-            // this leaves those on the start's side.
-            const NearTriangle near = near_triangles[k];
-            if ((start_sides & near.box_sides) == 0 && shell_of(near.triangle) != shell &&
-                lies_on_triangle(start, near.triangle))
-                return true;
+        // A start off the triangle's box is off the triangle: of the many
+        // triangles around a corner where parts rest on each other, this
+        // leaves those on the start's side, a few of a hundred. Their bits
+        // are tested eight at a time, as the bytes of a word (whether one of
+        // them is zero, exactly), and one by one only in a word that has
+        // one: tested one by one, they were a quarter of the probes' cost.
+        const std::uint64_t start_word = start_sides * std::uint64_t{0x0101010101010101u};
+        const std::size_t end = near_begin[point + 1];
+        for (std::size_t first = near_begin[point]; first < end; first += 8) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, &near_sides[first], sizeof word);
+            word &= start_word;
+            const std::uint64_t low_bits = 0x0101010101010101u, high_bits = 0x8080808080808080u;
+            if (((word - low_bits) & ~word & high_bits) == 0) continue;  // no zero byte
+            for (std::size_t k = first; k < std::min(end, first + 8); ++k)
+                if ((start_sides & near_sides[k]) == 0 && shell_of(near_triangles[k]) != shell &&
+                    lies_on_triangle(start, near_triangles[k]))
+                    return true;
         }
         return false;
     };

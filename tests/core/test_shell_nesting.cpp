@@ -19,11 +19,13 @@
 #include <vector>
 
 #include "core/surface_contacts.hpp"
+#include "core/worker_pool.hpp"
 #include "reversed_task_runner.hpp"
 
 namespace {
 
 using polymass::core::kMixedWinding;
+using polymass::core::kUnknownWinding;
 using polymass_test::TestMesh;
 
 // Appends the axis-aligned box [lo, hi] (triangles), inside out on request.
@@ -210,9 +212,11 @@ std::vector<int> windings_of(TestMesh mesh, const Eigen::Vector3d& offset) {
     CHECK(contacts.crossing.count == 0);
     const std::pmr::vector<int> windings =
         polymass::core::count_windings(surface, contacts, serial, memory);
-    // Tasks finishing in any order give the same windings.
+    // Tasks finishing in any order, on any number of threads, give the same windings.
     polymass_test::ReversedTaskRunner reversed;
     CHECK(polymass::core::count_windings(surface, contacts, reversed, memory) == windings);
+    static polymass::core::WorkerPool two_threads(2, memory);
+    CHECK(polymass::core::count_windings(surface, contacts, two_threads, memory) == windings);
     return std::vector<int>(windings.begin(), windings.end());
 }
 
@@ -389,6 +393,74 @@ int main() {
     add_box(fine_resting, {0.25, 0.25, 1}, {0.75, 0.75, 1.5}, false);
     add_box(fine_resting, {1, 0, 0}, {2, 1, 1}, false);
     expect("cubes resting on a finely cut cube", fine_resting, {0, 0, 0});
+
+    // Nesting inside a touching assembly: a hollow part with another resting
+    // flush on it and a third on its cavity's floor against a wall, and a
+    // solid resting flush on the floor of another hollow, which rests flush
+    // on the first (the starts on flush faces are turned away, the others
+    // see the hollows around them).
+    TestMesh hollow_stack;
+    add_box(hollow_stack, {0, 0, 0}, {4, 4, 4}, false);
+    add_box(hollow_stack, {1, 1, 1}, {3, 3, 3}, true);
+    add_box(hollow_stack, {1, 1, 1}, {2, 2, 2}, false);            // in the cavity's corner
+    add_box(hollow_stack, {0, 0, 4}, {4, 4, 8}, false);            // resting on the hollow part
+    add_box(hollow_stack, {1, 1, 5}, {3, 3, 7}, true);             // its own cavity
+    add_box(hollow_stack, {1.5, 1.5, 5}, {2.5, 2.5, 5.5}, false);  // on that cavity's floor
+    expect("hollow parts resting on each other, parts in their cavities", hollow_stack,
+           {0, 1, 0, 0, 1, 0});
+
+    // A grid of cubes resting on each other, the middle one hollow, with a
+    // cube in its cavity touching its wall (the hollow's probes all start on
+    // its neighbours, its cavity's and the cube's see it around them):
+    // the points where the cubes meet are held by eight shells, found among
+    // the neighbours of one of them.
+    TestMesh grid;
+    std::vector<int> grid_windings;
+    for (int k = 0; k < 27; ++k) {
+        const Eigen::Vector3d corner(2 * (k % 3), 2 * (k / 3 % 3), 2 * (k / 9));
+        add_box(grid, corner, corner + Eigen::Vector3d(2, 2, 2), false);
+        // The middle cube lies on the others wherever it is probed: unknown.
+        grid_windings.push_back(k == 13 ? kUnknownWinding : 0);
+    }
+    add_box(grid, {2.5, 2.5, 2.5}, {3.5, 3.5, 3.5}, true);  // the middle cube's cavity
+    add_box(grid, {2.5, 2.5, 2.5}, {3, 3, 3}, false);       // in its corner
+    grid_windings.push_back(1);
+    grid_windings.push_back(0);
+    expect("a grid of cubes, one hollow around a cube", grid, grid_windings);
+
+    // A plate inside a solid with more parts resting on it than a point of
+    // the plate lists as neighbours (kScannedNeighbours): the plate's points
+    // look along the shells' tree for the solid around them.
+    TestMesh plate;
+    add_box(plate, {-1, -1, -1}, {13, 13, 3}, false);
+    add_box(plate, {0, 0, 0}, {12, 12, 1}, false);
+    std::vector<int> plate_windings{0, 1};
+    for (int k = 0; k < 72; ++k) {
+        const Eigen::Vector3d corner(1 + k % 9 * 1.25, 1 + k / 9 * 1.25, 1);
+        add_box(plate, corner, corner + Eigen::Vector3d(1, 1, 1), false);
+        plate_windings.push_back(1);
+    }
+    expect("72 parts resting on a plate inside a solid", plate, plate_windings);
+
+    // More pairs of shells whose boxes meet than the neighbours are listed
+    // for (kPairsPerShell a shell): 200 solids nested, each box in all the
+    // others', and apart 20 cubes each inside a solid of its own. The walk
+    // over the pairs stops before it has them all: no point may use its
+    // shell's neighbours (a cube's, with its solid missing, would see none).
+    TestMesh deep;
+    std::vector<int> deep_depth;
+    for (int k = 0; k < 200; ++k) {
+        add_box(deep, Eigen::Vector3d::Constant(k), Eigen::Vector3d::Constant(400 - k), false);
+        deep_depth.push_back(k);
+    }
+    for (int k = 0; k < 20; ++k) {
+        const Eigen::Vector3d corner(-100 - 4 * k, 0, 0);
+        add_box(deep, corner, corner + Eigen::Vector3d(3, 3, 3), false);
+        add_box(deep, corner + Eigen::Vector3d(1, 1, 1), corner + Eigen::Vector3d(2, 2, 2), false);
+        deep_depth.push_back(0);
+        deep_depth.push_back(1);
+    }
+    expect("200 nested solids, and 20 cubes each in a solid apart", deep, deep_depth);
 
     // Enough shells and triangles for the probes to run as several tasks,
     // the mixed shell in the last: a layer of cubes resting side by side.
