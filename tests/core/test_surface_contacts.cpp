@@ -114,6 +114,19 @@ bool agrees(const PairFinding& found, const std::vector<std::array<std::uint64_t
     return true;
 }
 
+// `run` given a runner of one thread, one taking the pieces in reverse, and
+// one of two threads, in turn.
+template <class Run>
+void on_three_runners(const Run& run) {
+    polymass::core::SerialTaskRunner serial;
+    polymass_test::ReversedTaskRunner reversed;
+    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
+    for (polymass::core::TaskRunner* runner : {static_cast<polymass::core::TaskRunner*>(&serial),
+                                               static_cast<polymass::core::TaskRunner*>(&reversed),
+                                               static_cast<polymass::core::TaskRunner*>(&pool)})
+        run(*runner);
+}
+
 // The search's contacts on `mesh`, with its pieces in order and in reverse,
 // each given to `check`.
 template <class Check>
@@ -379,9 +392,6 @@ void check_resting_parts() {
         polymass_test::append(
             few, polymass_test::box_mesh(far + Eigen::Vector3d(k & 1, k >> 1 & 1, k >> 2), x, y, z,
                                          true));
-    polymass::core::SerialTaskRunner serial;
-    polymass_test::ReversedTaskRunner reversed;
-    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
     for (const TestMesh* mesh : {&resting, &with_sheet, &few}) {
         const polymass::core::Shells shells = polymass_test::shells_of(*mesh);
         const Reference expected = test_every_pair(*mesh, &shells);
@@ -391,14 +401,11 @@ void check_resting_parts() {
         CHECK((expected.touching.size() > kMostCountedPairs) == (mesh != &few));
         CHECK(expected.crossing.empty() == (mesh != &with_sheet));
         const auto view = mesh->view();
-        for (polymass::core::TaskRunner* runner :
-             {static_cast<polymass::core::TaskRunner*>(&serial),
-              static_cast<polymass::core::TaskRunner*>(&reversed),
-              static_cast<polymass::core::TaskRunner*>(&pool)}) {
-            const polymass::core::IndexedSurface surface(view, nullptr, far, 10.0, &shells, *runner,
+        on_three_runners([&](polymass::core::TaskRunner& tasks) {
+            const polymass::core::IndexedSurface surface(view, nullptr, far, 10.0, &shells, tasks,
                                                          std::pmr::get_default_resource());
             const auto found =
-                polymass::core::find_contacts(surface, *runner, std::pmr::get_default_resource());
+                polymass::core::find_contacts(surface, tasks, std::pmr::get_default_resource());
             CHECK(agrees(found.crossing, expected.crossing));
             CHECK(agrees(found.touching, expected.touching));
             std::size_t wrong_marks = 0;
@@ -407,7 +414,7 @@ void check_resting_parts() {
             CHECK(wrong_marks == 0);
             if (wrong_marks)
                 std::fprintf(stderr, "resting parts: %zu triangles marked wrongly\n", wrong_marks);
-        }
+        });
         std::printf("  %s: %zu pairs crossing, %zu touching\n",
                     mesh == &few       ? "8 resting cubes"
                     : mesh == &resting ? "125 resting cubes and a tetrahedron"
@@ -455,17 +462,11 @@ void check_crossing_searched_along_the_tree() {
             if (a.lowest[i] != b.lowest[i]) return false;
         return true;
     };
-    polymass::core::SerialTaskRunner serial;
-    polymass_test::ReversedTaskRunner reversed;
-    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
-    for (polymass::core::TaskRunner* runner : {static_cast<polymass::core::TaskRunner*>(&serial),
-                                               static_cast<polymass::core::TaskRunner*>(&reversed),
-                                               static_cast<polymass::core::TaskRunner*>(&pool)}) {
+    on_three_runners([&](polymass::core::TaskRunner& tasks) {
         auto contacts = [&](const polymass::core::Shells* of_faces) {
-            const polymass::core::IndexedSurface surface(view, nullptr, far, 10.0, of_faces,
-                                                         *runner, std::pmr::get_default_resource());
-            return polymass::core::find_contacts(surface, *runner,
-                                                 std::pmr::get_default_resource());
+            const polymass::core::IndexedSurface surface(view, nullptr, far, 10.0, of_faces, tasks,
+                                                         std::pmr::get_default_resource());
+            return polymass::core::find_contacts(surface, tasks, std::pmr::get_default_resource());
         };
         const auto with_shells = contacts(&shells), along_the_tree = contacts(nullptr);
         CHECK(with_shells.crossing.count == 4);
@@ -480,7 +481,7 @@ void check_crossing_searched_along_the_tree() {
                          "crossing boxes among resting cubes: %zu touching pairs, %zu "
                          "along the tree\n",
                          with_shells.touching.count, along_the_tree.touching.count);
-    }
+    });
 }
 
 // The shells' boxes, taken in the pass that boxes the triangles, in blocks
@@ -519,14 +520,9 @@ void check_shell_boxes() {
         for (int k = 0; k < 3; ++k)
             expected[shells_of_faces.of_face[f]].extend(mesh.vertex(mesh.indices[3 * f + k]));
     const auto view = mesh.view();
-    polymass::core::SerialTaskRunner serial;
-    polymass_test::ReversedTaskRunner reversed;
-    polymass::core::WorkerPool pool(2, std::pmr::get_default_resource());
-    for (polymass::core::TaskRunner* runner : {static_cast<polymass::core::TaskRunner*>(&serial),
-                                               static_cast<polymass::core::TaskRunner*>(&reversed),
-                                               static_cast<polymass::core::TaskRunner*>(&pool)}) {
+    on_three_runners([&](polymass::core::TaskRunner& tasks) {
         const polymass::core::IndexedSurface surface(view, nullptr, Eigen::Vector3d(-1e6, 3e5, 0),
-                                                     1e3, &shells_of_faces, *runner,
+                                                     1e3, &shells_of_faces, tasks,
                                                      std::pmr::get_default_resource());
         const auto& found = surface.shell_boxes();
         CHECK(found.size() == shells);
@@ -535,8 +531,9 @@ void check_shell_boxes() {
             wrong += found[k].lo != expected[k].lo || found[k].hi != expected[k].hi;
         CHECK(wrong == 0);
         if (wrong) std::fprintf(stderr, "shell boxes: %zu of %zu wrong\n", wrong, shells);
-    }
+    });
     // One shell: nothing to nest, no boxes.
+    polymass::core::SerialTaskRunner serial;
     shells_of_faces.count = 1;
     std::fill(shells_of_faces.of_face.begin(), shells_of_faces.of_face.end(), 0);
     CHECK(polymass::core::IndexedSurface(view, nullptr, Eigen::Vector3d(-1e6, 3e5, 0), 1e3,
