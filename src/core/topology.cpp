@@ -59,9 +59,10 @@ void sort_bucket(Entry* first, Entry* last) {
 // Buckets of at most this many entries (most of a surface's: about six
 // each) are tested for common edges before, and usually instead of, sorting.
 constexpr std::size_t small_bucket = 8;
-// The test pads a small bucket with 0, 4, ..., 4 * (small_bucket - 1):
-// distinct, and neither equal nor a partner (one apart) to any entry of a
-// lower vertex from here on, whose entries are at least 2 * (low + 1).
+// The baseline's test pads a small bucket with 0, 4, ..., 4 * (small_bucket
+// - 1): distinct, and neither equal nor a partner (one apart) to any entry of
+// a lower vertex from here on, whose entries are at least 2 * (low + 1).
+// (The AVX2 test's padding needs no such vertex; both are asked from here on.)
 constexpr std::size_t padded_from_low = 2 * small_bucket - 2;
 
 // Whether a small bucket, in any order, holds only common edges (each
@@ -117,45 +118,65 @@ unsigned small_bucket_of_common_edges(const Entry*, std::size_t) {
 }
 
 #if defined(__x86_64__)
-// The same test on AVX2, the eight slots in one vector: turned by 1, 2 and 3
-// slots, each pair of slots 1, 2, 3, 5, 6 or 7 apart meets once; turned by 4,
-// the pairs 4 apart meet twice, and only the first meeting is counted. About
-// half the instructions of the test above, which SSE2 spends on shuffles.
+// The same test on AVX2, by sorting instead of comparing every pair: the
+// eight slots in one vector, those past n set to all bits (sorted last, and
+// not read after), sorted by a bitonic network (six rounds, each lane
+// against the one whose number differs in bit 0, 1 or 2 of its own, keeping
+// the smaller or the larger; every shuffle of a round takes an immediate).
+// Sorted, the bucket holds only common edges when n is even and each pair of
+// lanes (2i, 2i + 1) below n holds partners: the pair's first is then even
+// (an up, h << 1) and its second the down (h << 1 | 1), and the next pair's
+// first, even, differs from it: no entry repeated. A round is a shuffle, a
+// minimum, a maximum and a blend; the test about 56 instructions where
+// comparing every pair (turned by 1, 2, 3 and 4 slots) took about 63
+// (callgrind: docs/integrals.md).
 // Inlined only into the AVX2 walk, whose target it takes (a function with a
 // target of its own would not be inlined into the walk's shared body).
 __attribute__((always_inline)) inline unsigned small_bucket_of_common_edges_avx2(
     const std::uint32_t* first, std::size_t n) {
     using Eight = std::uint32_t __attribute__((vector_size(32)));
     static_assert(small_bucket == 8, "one vector of eight");
+    // An odd bucket is never only common edges; and its last entry would be
+    // paired with a pad, which the up of vertex 2^31 - 1 (all bits set but
+    // bit 0) would pass for.
+    if (n % 2 != 0) return 0;
     Eight slots;
     std::memcpy(&slots, first, sizeof slots);
     const auto count = std::uint32_t(n);
     const Eight in = Eight(Eight{0, 1, 2, 3, 4, 5, 6, 7} < count);
-    slots = (slots & in) | (Eight{0, 4, 8, 12, 16, 20, 24, 28} & ~in);
-    Eight partners{}, repeated{};
-    auto compare = [&](const Eight& turned, const Eight& counted) {
-        const Eight difference = slots ^ turned;
-        partners -= Eight(difference == 1) & counted;
-        repeated |= Eight(difference == 0);
+    Eight sorted = slots | ~in;
+    // A round: each lane's smaller and larger of itself and its partner,
+    // then from each lane (a blend) one or the other: lane i of `low`, or
+    // of `high` numbered 8 + i.
+    Eight low, high;
+    auto order = [&](const Eight& partner) {
+        low = sorted < partner ? sorted : partner;
+        high = sorted < partner ? partner : sorted;
     };
-    const Eight all = ~Eight{}, first_half{~0u, ~0u, ~0u, ~0u, 0, 0, 0, 0};
-    compare(__builtin_shufflevector(slots, slots, 1, 2, 3, 4, 5, 6, 7, 0), all);
-    compare(__builtin_shufflevector(slots, slots, 2, 3, 4, 5, 6, 7, 0, 1), all);
-    compare(__builtin_shufflevector(slots, slots, 3, 4, 5, 6, 7, 0, 1, 2), all);
-    compare(__builtin_shufflevector(slots, slots, 4, 5, 6, 7, 0, 1, 2, 3), first_half);
-    // One word of flags a lane: bit i when slot i is an up in the bucket, and
-    // bit 8 when the lane met a repeat.
-    Eight flags = ((~slots & 1) << Eight{0, 1, 2, 3, 4, 5, 6, 7} & in) | (repeated & 0x100);
-    // Summed across the lanes by folding halves (lane by lane, the sums took
-    // as many instructions as the comparisons).
-    partners += __builtin_shufflevector(partners, partners, 4, 5, 6, 7, 0, 1, 2, 3);
+    // Runs of 2, then 4, rising and falling in turn; then the 8 merged.
+    order(__builtin_shufflevector(sorted, sorted, 1, 0, 3, 2, 5, 4, 7, 6));
+    sorted = __builtin_shufflevector(low, high, 0, 9, 10, 3, 4, 13, 14, 7);
+    order(__builtin_shufflevector(sorted, sorted, 2, 3, 0, 1, 6, 7, 4, 5));
+    sorted = __builtin_shufflevector(low, high, 0, 1, 10, 11, 12, 13, 6, 7);
+    order(__builtin_shufflevector(sorted, sorted, 1, 0, 3, 2, 5, 4, 7, 6));
+    sorted = __builtin_shufflevector(low, high, 0, 9, 2, 11, 12, 5, 14, 7);
+    order(__builtin_shufflevector(sorted, sorted, 4, 5, 6, 7, 0, 1, 2, 3));
+    sorted = __builtin_shufflevector(low, high, 0, 1, 2, 3, 12, 13, 14, 15);
+    order(__builtin_shufflevector(sorted, sorted, 2, 3, 0, 1, 6, 7, 4, 5));
+    sorted = __builtin_shufflevector(low, high, 0, 1, 10, 11, 4, 5, 14, 15);
+    order(__builtin_shufflevector(sorted, sorted, 1, 0, 3, 2, 5, 4, 7, 6));
+    sorted = __builtin_shufflevector(low, high, 0, 9, 2, 11, 4, 13, 6, 15);
+    const Eight partners =
+        Eight((sorted ^ 1) == __builtin_shufflevector(sorted, sorted, 1, 0, 3, 2, 5, 4, 7, 6));
+    // One word of flags a lane: bit i when slot i is an up in the bucket (in
+    // its own order, whose entries join_lanes reads), and bit 8 when the
+    // lane's pair is not one of partners; ORed across the lanes by folding
+    // halves.
+    Eight flags = ((~slots & 1) << Eight{0, 1, 2, 3, 4, 5, 6, 7} | (~partners & 0x100)) & in;
     flags |= __builtin_shufflevector(flags, flags, 4, 5, 6, 7, 0, 1, 2, 3);
-    partners += __builtin_shufflevector(partners, partners, 2, 3, 0, 1, 6, 7, 4, 5);
     flags |= __builtin_shufflevector(flags, flags, 2, 3, 0, 1, 6, 7, 4, 5);
-    partners += __builtin_shufflevector(partners, partners, 1, 0, 3, 2, 5, 4, 7, 6);
     flags |= __builtin_shufflevector(flags, flags, 1, 0, 3, 2, 5, 4, 7, 6);
-    if ((flags[0] & 0x100) != 0 || 2 * std::size_t(partners[0]) != n) return 0;
-    return flags[0];
+    return (flags[0] & 0x100) != 0 ? 0 : flags[0];
 }
 
 template <class Entry>

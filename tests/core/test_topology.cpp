@@ -13,8 +13,11 @@
 // copy at its vertex's position (the unused ones apart), the exact weld's own
 // numbering (weld_and_number) is that one, on one share and on several (a
 // soup of 204,000 corners: shares of at least 65,536 used vertices), in any
-// order of the tasks. Positions whose hashes share the tag a weld's table
-// keeps, differing in one coordinate, stay apart.
+// order of the tasks. Double cones (two vertices of far more edges than a
+// small bucket holds, in two ranges) closed and broken, also on a pool of two
+// threads; a tetrahedron among a million unused vertices, in the counting
+// sort's memory. Positions whose hashes share the tag a weld's table keeps,
+// differing in one coordinate, stay apart.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,6 +26,7 @@
 #include <map>
 #include <memory_resource>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <utility>
 #include <vector>
@@ -203,13 +207,17 @@ std::vector<std::uint32_t> reference_roots(const TestMesh& mesh) {
 // Reversed as on one thread and as on three (each thread filing the edges
 // of its own range of lower vertices, the AVX2 pass eight triangles at a
 // time).
+// With two_threads, also on a pool of two.
 template <class RootVertex>
 void check_analysis(const TestMesh& mesh, const VertexIdentities& identities,
-                    const TopologyReport& expected, RootVertex&& root_vertex) {
+                    const TopologyReport& expected, RootVertex&& root_vertex,
+                    bool two_threads = false) {
     polymass_test::ReversedTaskRunner one;
     ReversedRunner three(3);
-    for (polymass::core::TaskRunner* tasks :
-         std::initializer_list<polymass::core::TaskRunner*>{&one, &three})
+    std::optional<polymass::core::WorkerPool> two;
+    std::vector<polymass::core::TaskRunner*> runners{&one, &three};
+    if (two_threads) runners.push_back(&two.emplace(2, std::pmr::new_delete_resource()));
+    for (polymass::core::TaskRunner* tasks : runners)
         for (InstructionSet set :
              {InstructionSet::baseline, InstructionSet::avx2, InstructionSet::avx512}) {
             if (!polymass::core::runs_instruction_set(set)) continue;
@@ -221,11 +229,91 @@ void check_analysis(const TestMesh& mesh, const VertexIdentities& identities,
         }
 }
 
-void check_mesh(const TestMesh& mesh) {
+void check_mesh(const TestMesh& mesh, bool two_threads = false) {
     const std::vector<std::uint32_t> expected_roots = reference_roots(mesh);
-    check_analysis(mesh, {}, reference_report(mesh), [&](const std::vector<std::uint32_t>& roots) {
-        return roots == expected_roots;
-    });
+    check_analysis(
+        mesh, {}, reference_report(mesh),
+        [&](const std::vector<std::uint32_t>& roots) { return roots == expected_roots; },
+        two_threads);
+}
+
+// A closed double cone about a ring of `ring` vertices, its apexes numbered 0
+// and amid the ring: each the lower end of about 2 * ring and ring entries,
+// buckets far past a small one's eight (sorted, not tested: topology.cpp),
+// the second one in the second of two ranges of lower vertices.
+TestMesh double_cone(std::uint32_t ring) {
+    const std::uint32_t count = ring + 2, middle = count / 2;
+    TestMesh mesh;
+    mesh.coordinates.assign(3 * std::size_t(count), 0.0);
+    const auto around = [&](std::uint32_t k) {
+        const std::uint32_t v = 1 + k % ring;
+        return v < middle ? v : v + 1;
+    };
+    for (std::uint32_t k = 0; k < ring; ++k) {
+        mesh.add_face({0, around(k), around(k + 1)});
+        mesh.add_face({middle, around(k + 1), around(k)});
+    }
+    return mesh;
+}
+
+// Large buckets: closed; with non-manifold edges at each apex, one as often
+// each way and one not; broken at random; on one, two and three threads.
+void check_large_buckets(std::mt19937& random) {
+    for (std::uint32_t ring = 9; ring < 60; ring += 10) {
+        TestMesh cone = double_cone(ring);
+        check_mesh(cone, true);
+        const std::uint32_t middle = (ring + 2) / 2;
+        TestMesh non_manifold = cone;
+        // (0, 1, 2) three times: its edges traversed four times, three one way.
+        non_manifold.add_face({0, 1, 2});
+        non_manifold.add_face({0, 1, 2});
+        // A face at the other apex again and turned: four traversals, two each way.
+        non_manifold.add_face({middle, middle + 2, middle + 1});
+        non_manifold.add_face({middle, middle + 1, middle + 2});
+        check_mesh(non_manifold, true);
+        break_faces(cone, 1 + int(ring % 4), random);
+        check_mesh(cone, true);
+    }
+}
+
+// Counts the bytes taken, at most, at once.
+class PeakResource final : public std::pmr::memory_resource {
+public:
+    std::size_t peak = 0;
+
+private:
+    std::size_t taken_ = 0;
+    void* do_allocate(std::size_t bytes, std::size_t alignment) override {
+        taken_ += bytes;
+        peak = std::max(peak, taken_);
+        return std::pmr::new_delete_resource()->allocate(bytes, alignment);
+    }
+    void do_deallocate(void* p, std::size_t bytes, std::size_t alignment) override {
+        taken_ -= bytes;
+        std::pmr::new_delete_resource()->deallocate(p, bytes, alignment);
+    }
+    bool do_is_equal(const std::pmr::memory_resource& other) const noexcept override {
+        return this == &other;
+    }
+};
+
+// A tetrahedron among 2^20 vertices, the others unused: the buckets take the
+// counting sort's 4 bytes a vertex (fixed slots, eight a vertex, would take
+// 36: docs/integrals.md), and the report is the map's.
+void check_mostly_unused_vertices() {
+    TestMesh mesh;
+    mesh.coordinates.assign(3 * (std::size_t{1} << 20), 0.0);
+    const std::uint32_t v[4] = {7, 300000, 700001, (1u << 20) - 1};
+    mesh.add_face({v[0], v[2], v[1]});
+    mesh.add_face({v[0], v[1], v[3]});
+    mesh.add_face({v[1], v[2], v[3]});
+    mesh.add_face({v[2], v[0], v[3]});
+    polymass::core::SerialTaskRunner serial;
+    PeakResource memory;
+    std::pmr::vector<std::uint32_t> sets(std::pmr::new_delete_resource());
+    const TopologyReport report = analyse_topology(mesh.view(), {}, serial, &memory, sets);
+    CHECK(same_report(report, reference_report(mesh)));
+    CHECK(memory.peak < 8 * mesh.vertex_count());
 }
 
 // The exact weld of `soup` numbers its used vertices as `expected` does, on
@@ -451,6 +539,8 @@ int main() {
         check_mesh(pieces);
         check_welded_soup(pieces, random);
     }
+    check_large_buckets(random);
+    check_mostly_unused_vertices();
     // Large enough for the weld's shares.
     TestMesh large = torus_grid(170, 200, random);
     break_faces(large, 30, random);
