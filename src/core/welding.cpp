@@ -380,8 +380,10 @@ std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
         return ((pa - pb).cwiseAbs().array() <= distance).all();
     };
     // The 13 neighbours after a cell in sort order (the other 13 meet it from
-    // their side). Cells are visited in sort order, and so, shifted by one
-    // offset, are their neighbours: one cursor per offset only moves forward.
+    // their side): the first 4 in its own slab of x, the other 9 in the next.
+    // Cells are visited in sort order, and so, shifted by one offset, are
+    // their neighbours: one cursor per offset only moves forward.
+    constexpr std::size_t same_slab_offsets = 4;
     std::array<Cell, 13> offsets;
     std::size_t offset_count = 0;
     for (std::int64_t dx = 0; dx <= 1; ++dx)
@@ -392,12 +394,26 @@ std::pmr::vector<std::uint32_t> weld_within(const MeshView<Scalar, Index>& mesh,
     const auto cell_at = [&](std::size_t c) -> const Cell& { return entries[cell_starts[c]].cell; };
 
     SmallestIndexSets sets(representative);
+    std::size_t slab_end = 0;  // the first cell past the slab of x of cell c
     for (std::size_t c = 0; c < cell_count; ++c) {
         const Entry* first = &entries[cell_starts[c]];
         const Entry* last = &entries[0] + cell_starts[c + 1];
         for (const Entry* entry = first + 1; entry != last; ++entry)
             sets.join(first->vertex, entry->vertex);
-        for (std::size_t o = 0; o < offsets.size(); ++o) {
+        // A slab holding no other cell after this one has none of the first 4
+        // neighbours, and a next slab that is not x + 1 none of the other 9.
+        // Cells a tolerance wide are far finer than a surface's vertices, so
+        // most cells are alone in their slab with no slab beside it: looking
+        // for their 13 neighbours in vain was half of this weld. (A cursor
+        // left behind moves on when next asked: each still moves forward only.)
+        if (slab_end == c) {
+            while (slab_end < cell_count && cell_at(slab_end)[0] == first->cell[0]) ++slab_end;
+        }
+        const bool next_slab_beside =
+            slab_end < cell_count && cell_at(slab_end)[0] == first->cell[0] + 1;
+        const std::size_t from = c + 1 < slab_end ? 0 : same_slab_offsets;
+        const std::size_t to = next_slab_beside ? offsets.size() : same_slab_offsets;
+        for (std::size_t o = from; o < to; ++o) {
             const Cell near{first->cell[0] + offsets[o][0], first->cell[1] + offsets[o][1],
                             first->cell[2] + offsets[o][2]};
             std::size_t& n = cursors[o];

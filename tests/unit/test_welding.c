@@ -335,6 +335,64 @@ static void test_many_copies_of_one_vertex(void** state) {
     polymass_context_destroy(ctx);
 }
 
+/* Clusters of two or three positions, each within the tolerance of the
+ * cluster's first, far from every other cluster: each cluster is one vertex,
+ * its first position's. The clusters' members straddle cell borders in every
+ * direction, so each of a cell's 26 neighbours is met, across slabs of x and
+ * within one. */
+static void test_weld_within_meets_every_neighbouring_cell(void** state) {
+    enum { CLUSTERS = 3000, SLOTS = 20 };
+    const double distance = 1e-6; /* the tolerance, of an extent of 1 */
+    double* xyz = malloc(3 * (2 + 3 * CLUSTERS) * sizeof *xyz);
+    uint32_t* of_vertex = malloc((2 + 3 * CLUSTERS) * sizeof *of_vertex);
+    polymass_context* ctx = pm_context_new();
+    uint64_t seed = 11, distinct = 0;
+    size_t k, i;
+    int a;
+    (void)state;
+    assert_non_null(xyz);
+    assert_non_null(of_vertex);
+    /* Two corners fixing the extent at 1, and the clusters' first positions
+       on a lattice 0.045 apart (jittered by up to 0.005): 0.035 or more
+       apart, and from the corners. */
+    for (a = 0; a < 3; ++a) {
+        xyz[a] = 0.0;
+        xyz[3 + a] = 1.0;
+    }
+    for (k = 0; k < CLUSTERS; ++k) {
+        const size_t slot[3] = {k % SLOTS, k / SLOTS % SLOTS, k / (SLOTS * SLOTS)};
+        for (a = 0; a < 3; ++a) {
+            xyz[3 * (2 + k) + a] = 0.05 + 0.045 * (double)slot[a] + 0.005 * next_noise(&seed);
+        }
+    }
+    /* Then each cluster's second and third: up to 0.95 of the tolerance from
+       its first on each axis (some on one axis only, some on none). */
+    for (i = 0; i < 2; ++i) {
+        for (k = 0; k < CLUSTERS; ++k) {
+            const double* first = &xyz[3 * (2 + k)];
+            double* member = &xyz[3 * (2 + (1 + i) * CLUSTERS + k)];
+            for (a = 0; a < 3; ++a) {
+                const double noise = next_noise(&seed);
+                member[a] = first[a] + (fabs(noise) < 0.2 ? 0.0 : 0.95 * distance * noise);
+            }
+        }
+    }
+    PM_ASSERT_OK(ctx,
+                 polymass_weld_positions(of_vertex, &distinct, ctx, xyz, POLYMASS_POSITION_FLOAT64,
+                                         2 + 3 * CLUSTERS, 0, distance));
+    assert_int_equal(distinct, 2 + CLUSTERS);
+    assert_int_equal(of_vertex[0], 0);
+    assert_int_equal(of_vertex[1], 1);
+    for (i = 0; i < 3; ++i) {
+        for (k = 0; k < CLUSTERS; ++k) {
+            assert_int_equal(of_vertex[2 + i * CLUSTERS + k], 2 + k);
+        }
+    }
+    free(of_vertex);
+    free(xyz);
+    polymass_context_destroy(ctx);
+}
+
 static void test_invalid_tolerances(void** state) {
     const double bad[] = {-1e-12, 2 * POLYMASS_MAX_WELD_TOLERANCE, INFINITY, NAN};
     polymass_context* ctx = pm_context_new();
@@ -685,6 +743,7 @@ int main(void) {
         cmocka_unit_test(test_noisy_soup_closes),
         cmocka_unit_test(test_tolerance_is_a_distance),
         cmocka_unit_test(test_many_copies_of_one_vertex),
+        cmocka_unit_test(test_weld_within_meets_every_neighbouring_cell),
         cmocka_unit_test(test_invalid_tolerances),
         cmocka_unit_test(test_shells),
         cmocka_unit_test(test_shells_of_used_vertices),
