@@ -263,6 +263,8 @@ inline unsigned BoxTree::overlap_masks(const LeafBoxes& first, const LeafBoxes& 
         using Wide = float __attribute__((vector_size(2 * sizeof(float) * kLeafSize)));
         using WideMask = std::int32_t __attribute__((vector_size(2 * sizeof(float) * kLeafSize)));
         Wide wide_lo[3], wide_hi[3];
+        // Unrolled: GCC kept these loops, and the vectors on the stack.
+#pragma GCC unroll 3
         for (int k = 0; k < 3; ++k) {
             wide_lo[k] = __builtin_shufflevector(lo[k], lo[k], 0, 1, 2, 3, 0, 1, 2, 3);
             wide_hi[k] = __builtin_shufflevector(hi[k], hi[k], 0, 1, 2, 3, 0, 1, 2, 3);
@@ -272,6 +274,7 @@ inline unsigned BoxTree::overlap_masks(const LeafBoxes& first, const LeafBoxes& 
         auto two_lanes = [&](auto first_lane) {
             constexpr int i = decltype(first_lane)::value;
             WideMask overlapping = WideMask{} - 1;
+#pragma GCC unroll 3
             for (int k = 0; k < 3; ++k) {
                 Lanes box_lo, box_hi;
                 std::memcpy(&box_lo, first.lo[k], sizeof box_lo);
