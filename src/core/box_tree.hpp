@@ -25,6 +25,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "instruction_sets.hpp"
 #include "task_runner.hpp"
 
 #if defined(__SSE2__)
@@ -126,9 +127,12 @@ public:
 
     // visit(i, j) once for each pair of distinct items of `task` whose boxes
     // overlap; a visit returning bool ends the walk when it returns false
-    // (a caller with a budget of pairs). False when a visit ended it.
+    // (a caller with a budget of pairs). False when a visit ended it. The
+    // walk is built for each instruction set and `set` chooses it; every
+    // one visits the same pairs in the same order.
     template <class Visit>
-    bool for_each_overlapping_pair(PairTask task, Visit&& visit) const;
+    bool for_each_overlapping_pair(PairTask task, Visit&& visit,
+                                   InstructionSet set = widest_instruction_set()) const;
 
     // visit(i) for each item whose box may meet the segment from a to b,
     // until a visit returns false.
@@ -157,8 +161,13 @@ private:
     // broadcast against the lanes of `second`, all of them before any pair
     // is visited, so that the lanes stay in registers (a visit is a call,
     // after which they were loaded again, and the broadcast box recomputed
-    // from its index: 60 instructions a box, now under 30).
-    static unsigned overlap_masks(const LeafBoxes& first, const LeafBoxes& second);
+    // from its index: 60 instructions a box, now under 30). With
+    // `eight_lanes` (only where the walk is built for AVX2), two lanes of
+    // `first` at once, each against the four of `second`: the same bits in
+    // half the vector operations.
+    template <bool eight_lanes>
+    __attribute__((always_inline)) static inline unsigned overlap_masks(const LeafBoxes& first,
+                                                                        const LeafBoxes& second);
     // The bits of overlap_masks for the pairs (i, j) with j > i: inside one
     // leaf, each pair once.
     static constexpr unsigned later_lanes() {
@@ -181,6 +190,16 @@ private:
     // call it added 2 % to the instructions of a sphere's intersection check.
     template <class Push>
     __attribute__((always_inline)) inline void split(const PairTask& task, Push&& push) const;
+
+    // for_each_overlapping_pair's walk, its leaf pairs' masks taken on eight
+    // lanes or four; one body, built for the baseline inline in
+    // for_each_overlapping_pair and for AVX2 in walk_avx2.
+    template <bool eight_lanes, class Visit>
+    __attribute__((always_inline)) inline bool walk(PairTask task, Visit& visit) const;
+#if defined(__x86_64__)
+    template <class Visit>
+    __attribute__((target("avx2"))) bool walk_avx2(PairTask task, Visit& visit) const;
+#endif
 
     const FloatBox& box(Node node) const { return nodes_[level_begin_[node.level] + node.index]; }
     static bool empty(const FloatBox& box) { return !(box.lo[0] <= box.hi[0]); }
@@ -227,6 +246,7 @@ void BoxTree::split(const PairTask& task, Push&& push) const {
     }
 }
 
+template <bool eight_lanes>
 inline unsigned BoxTree::overlap_masks(const LeafBoxes& first, const LeafBoxes& second) {
     static_assert(kLeafSize == 4, "a leaf's lanes are four floats");
     using Lanes = float __attribute__((vector_size(sizeof(float) * kLeafSize)));
@@ -236,6 +256,47 @@ inline unsigned BoxTree::overlap_masks(const LeafBoxes& first, const LeafBoxes& 
         std::memcpy(&lo[k], second.lo[k], sizeof lo[k]);
         std::memcpy(&hi[k], second.hi[k], sizeof hi[k]);
     }
+#if defined(__x86_64__)
+    if constexpr (eight_lanes) {
+        // Lanes i and i + 1 of `first`, each in four lanes, against `second`
+        // twice: the eight lanes' results are bits 4 i to 4 i + 7.
+        using Wide = float __attribute__((vector_size(2 * sizeof(float) * kLeafSize)));
+        using WideMask = std::int32_t __attribute__((vector_size(2 * sizeof(float) * kLeafSize)));
+        Wide wide_lo[3], wide_hi[3];
+        // Unrolled: GCC kept these loops, and the vectors on the stack.
+#pragma GCC unroll 3
+        for (int k = 0; k < 3; ++k) {
+            wide_lo[k] = __builtin_shufflevector(lo[k], lo[k], 0, 1, 2, 3, 0, 1, 2, 3);
+            wide_hi[k] = __builtin_shufflevector(hi[k], hi[k], 0, 1, 2, 3, 0, 1, 2, 3);
+        }
+        // Lanes i and i + 1 of `first` (i a constant: the lanes to spread
+        // are a shuffle's operands) against `second`.
+        auto two_lanes = [&](auto first_lane) {
+            constexpr int i = decltype(first_lane)::value;
+            WideMask overlapping = WideMask{} - 1;
+#pragma GCC unroll 3
+            for (int k = 0; k < 3; ++k) {
+                Lanes box_lo, box_hi;
+                std::memcpy(&box_lo, first.lo[k], sizeof box_lo);
+                std::memcpy(&box_hi, first.hi[k], sizeof box_hi);
+                const Wide two_lo =
+                    __builtin_shufflevector(box_lo, box_lo, i, i, i, i, i + 1, i + 1, i + 1, i + 1);
+                const Wide two_hi =
+                    __builtin_shufflevector(box_hi, box_hi, i, i, i, i, i + 1, i + 1, i + 1, i + 1);
+                overlapping &= (wide_lo[k] <= two_hi) & (two_lo <= wide_hi[k]);
+            }
+            // Each half's sign bits (movmskps): the eight-lane form is an
+            // AVX intrinsic, which the walk's one body cannot call.
+            const Mask low = __builtin_shufflevector(overlapping, overlapping, 0, 1, 2, 3);
+            const Mask high = __builtin_shufflevector(overlapping, overlapping, 4, 5, 6, 7);
+            return (unsigned(_mm_movemask_ps(_mm_castsi128_ps(__m128i(low)))) |
+                    unsigned(_mm_movemask_ps(_mm_castsi128_ps(__m128i(high)))) << kLeafSize)
+                   << kLeafSize * i;
+        };
+        return two_lanes(std::integral_constant<int, 0>()) |
+               two_lanes(std::integral_constant<int, 2>());
+    }
+#endif
     unsigned bits = 0;
     for (std::size_t lane = 0; lane < kLeafSize; ++lane) {
         Mask overlapping = Mask{} - 1;
@@ -268,7 +329,22 @@ inline FloatBox BoxTree::item_box(std::size_t at) const {
 }
 
 template <class Visit>
-bool BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
+bool BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit, InstructionSet set) const {
+#if defined(__x86_64__)
+    if (set != InstructionSet::baseline) return walk_avx2(task, visit);
+#endif
+    return walk<false>(task, visit);
+}
+
+#if defined(__x86_64__)
+template <class Visit>
+bool BoxTree::walk_avx2(PairTask task, Visit& visit) const {
+    return walk<true>(task, visit);
+}
+#endif
+
+template <bool eight_lanes, class Visit>
+bool BoxTree::walk(PairTask task, Visit& visit) const {
     constexpr bool may_stop =
         std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t, std::uint32_t>, bool>;
     // Depth first: a task adds at most four, each one level lower, so the
@@ -284,7 +360,8 @@ bool BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit) const {
             split(next, [&](const PairTask& part) { tasks[pending++] = part; });
             continue;
         }
-        unsigned overlapping = overlap_masks(leaf_boxes_[a.index], leaf_boxes_[b.index]);
+        unsigned overlapping =
+            overlap_masks<eight_lanes>(leaf_boxes_[a.index], leaf_boxes_[b.index]);
         if (same(next)) overlapping &= later_lanes();
         const std::size_t first_of_a = leaf_first(a), first_of_b = leaf_first(b);
         for (; overlapping != 0; overlapping &= overlapping - 1) {

@@ -2,14 +2,16 @@
 // boxes than one block of its construction takes (so that the blocks' box
 // of all, leaves and levels are joined across blocks), built on the calling
 // thread and on a runner that runs its blocks last first: every overlapping
-// pair once, none else, and the same tree for both; and on trees of every
-// small size, the items near segments too.
+// pair once, none else, and the same tree for both; on trees of every small
+// size, the items near segments too; and the walk built for each
+// instruction set against the baseline's and against every pair.
 #include "core/box_tree.hpp"
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <memory_resource>
 #include <random>
 #include <vector>
@@ -21,6 +23,7 @@ namespace {
 
 using polymass::core::BoxTree;
 using polymass::core::FloatBox;
+using polymass::core::InstructionSet;
 using Pair = std::array<std::uint32_t, 2>;
 
 // Boxes along a slab `width` wide and high, long enough that a sweep along
@@ -164,11 +167,82 @@ void check_every_small_size() {
     }
 }
 
+// The visits of the walk built for `set`, in their order, until the
+// `budget`-th (a visit then returns false: the walk must stop there).
+std::vector<Pair> visits_of(const BoxTree& tree, InstructionSet set,
+                            std::size_t budget = SIZE_MAX) {
+    std::vector<Pair> visits;
+    for (const BoxTree::PairTask& piece : tree.pair_tasks()) {
+        const bool within_budget = tree.for_each_overlapping_pair(
+            piece,
+            [&](std::uint32_t i, std::uint32_t j) {
+                visits.push_back({i, j});
+                return visits.size() < budget;
+            },
+            set);
+        if (!within_budget) break;
+    }
+    return visits;
+}
+
+// Every instruction set's walk visits the pairs the baseline's does, in its
+// order (the nesting keeps its pairs in the order they come), and stops
+// where it does; and those are every overlapping pair once, against the
+// test of every pair. On boxes that make the leaves' masks hard: empty
+// ones, boxes on a grid touching their neighbours at a face, an edge or a
+// corner (equal bounds), leaves full of one box repeated (every lane meets
+// every lane), and sizes that leave levels of odd size and part-full leaves.
+void check_instruction_sets_alike() {
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource();
+    polymass::core::SerialTaskRunner one_thread;
+    std::mt19937 random(11);
+    std::uniform_int_distribution<int> cell(0, 5), kind(0, 9);
+    std::size_t checked = 0;
+    for (std::size_t count : {1, 2, 3, 5, 8, 13, 31, 64, 97, 333, 1000, 4099}) {
+        std::vector<FloatBox> boxes(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const int what = kind(random);
+            if (what == 0) continue;  // empty
+            if (what <= 3 && i > 0) {
+                boxes[i] = boxes[i - 1];  // repeated
+                continue;
+            }
+            // Unit cubes, or flat and thin ones, on a grid: neighbours
+            // touch at equal bounds.
+            const Eigen::Vector3d lo(cell(random), cell(random), cell(random));
+            const Eigen::Vector3d size(what == 4 ? 0 : 1, what == 5 ? 0 : 1, 1);
+            boxes[i] = FloatBox::spanning(lo, lo + size);
+        }
+        const BoxTree tree(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory,
+                           one_thread);
+        std::vector<Pair> expected;
+        for (std::uint32_t i = 0; i < count; ++i)
+            for (std::uint32_t j = i + 1; j < count; ++j)
+                if (boxes[i].overlaps(boxes[j])) expected.push_back({i, j});
+        const std::vector<Pair> baseline = visits_of(tree, InstructionSet::baseline);
+        std::vector<Pair> found;
+        for (const Pair& pair : baseline)
+            found.push_back({std::min(pair[0], pair[1]), std::max(pair[0], pair[1])});
+        std::sort(found.begin(), found.end());
+        CHECK(found == expected);
+        for (InstructionSet set : {InstructionSet::avx2, InstructionSet::avx512}) {
+            if (!polymass::core::runs_instruction_set(set)) continue;
+            ++checked;
+            CHECK(visits_of(tree, set) == baseline);
+            const std::size_t budget = baseline.size() / 3 + 1;
+            CHECK(visits_of(tree, set, budget) ==
+                  visits_of(tree, InstructionSet::baseline, budget));
+        }
+    }
+    std::printf("test_box_tree: %zu walks of other instruction sets compared\n", checked);
+}
+
 }  // namespace
 
 int main() {
     check_pairs_across_blocks();
     check_pairs_of_shapes();
     check_every_small_size();
+    check_instruction_sets_alike();
     return polymass_test::finish("test_box_tree");
 }
