@@ -58,6 +58,15 @@ std::vector<Pair> pairs_of(const BoxTree& tree) {
     return pairs;
 }
 
+// Every overlapping pair, by testing every pair, in ascending order.
+std::vector<Pair> every_pair(const std::vector<FloatBox>& boxes) {
+    std::vector<Pair> pairs;
+    for (std::uint32_t i = 0; i < boxes.size(); ++i)
+        for (std::uint32_t j = i + 1; j < boxes.size(); ++j)
+            if (boxes[i].overlaps(boxes[j])) pairs.push_back({i, j});
+    return pairs;
+}
+
 // Every overlapping pair, by a sweep of the boxes in order of their low x.
 std::vector<Pair> sweep(const std::vector<FloatBox>& boxes) {
     std::vector<std::uint32_t> order;
@@ -140,10 +149,7 @@ void check_every_small_size() {
         }
         const BoxTree tree(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory,
                            one_thread);
-        std::vector<Pair> expected;
-        for (std::uint32_t i = 0; i < count; ++i)
-            for (std::uint32_t j = i + 1; j < count; ++j)
-                if (boxes[i].overlaps(boxes[j])) expected.push_back({i, j});
+        const std::vector<Pair> expected = every_pair(boxes);
         CHECK(pairs_of(tree) == expected);
         for (int segment = 0; segment < 10; ++segment) {
             const Eigen::Vector3d a(place(random), place(random), place(random)),
@@ -215,10 +221,7 @@ void check_instruction_sets_alike() {
         }
         const BoxTree tree(std::pmr::vector<FloatBox>(boxes.begin(), boxes.end(), memory), memory,
                            one_thread);
-        std::vector<Pair> expected;
-        for (std::uint32_t i = 0; i < count; ++i)
-            for (std::uint32_t j = i + 1; j < count; ++j)
-                if (boxes[i].overlaps(boxes[j])) expected.push_back({i, j});
+        const std::vector<Pair> expected = every_pair(boxes);
         const std::vector<Pair> baseline = visits_of(tree, InstructionSet::baseline);
         std::vector<Pair> found;
         for (const Pair& pair : baseline)
