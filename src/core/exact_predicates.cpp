@@ -356,30 +356,59 @@ int orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
     return orient3d_exact(a, b, c, d);
 }
 
-PlaneSide::PlaneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
-    : a_(a), b_(b), c_(c) {
+namespace {
+
+__attribute__((always_inline)) inline PlaneNormal plane_normal(const Eigen::Vector3d& a,
+                                                               const Eigen::Vector3d& b,
+                                                               const Eigen::Vector3d& c) {
     const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
     const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
     const double uy_vz = uy * vz, uz_vy = uz * vy;
     const double uz_vx = uz * vx, ux_vz = ux * vz;
     const double ux_vy = ux * vy, uy_vx = uy * vx;
-    normal_ = {uy_vz - uz_vy, uz_vx - ux_vz, ux_vy - uy_vx};
-    normal_permanent_ = {std::fabs(uy_vz) + std::fabs(uz_vy), std::fabs(uz_vx) + std::fabs(ux_vz),
-                         std::fabs(ux_vy) + std::fabs(uy_vx)};
+    return {{uy_vz - uz_vy, uz_vx - ux_vz, ux_vy - uy_vx},
+            {std::fabs(uy_vz) + std::fabs(uz_vy), std::fabs(uz_vx) + std::fabs(ux_vz),
+             std::fabs(ux_vy) + std::fabs(uy_vx)}};
 }
 
-int PlaneSide::of(const Eigen::Vector3d& d) const {
-    const double wx = d[0] - a_[0], wy = d[1] - a_[1], wz = d[2] - a_[2];
-    const double det = wx * normal_[0] + wy * normal_[1] + wz * normal_[2];
+// The sign of orient3d(a, b, c, d) when the filter alone decides it, else 0:
+// the same bound as orient3d's, the determinant expanded along d − a.
+__attribute__((always_inline)) inline int filtered_side(const PlaneNormal& plane,
+                                                        const Eigen::Vector3d& a,
+                                                        const Eigen::Vector3d& d) {
+    const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+    const double det = wx * plane.normal[0] + wy * plane.normal[1] + wz * plane.normal[2];
     const double awx = std::fabs(wx), awy = std::fabs(wy), awz = std::fabs(wz);
     const double permanent =
-        awx * normal_permanent_[0] + awy * normal_permanent_[1] + awz * normal_permanent_[2];
+        awx * plane.permanent[0] + awy * plane.permanent[1] + awz * plane.permanent[2];
     // NaN or infinity anywhere (overflow) makes the comparison false.
     if (filter_decides(det, orient3d_relative_bound * permanent, awx + awy + awz + 1.0))
         return det > 0.0 ? 1 : -1;
+    return 0;
+}
+
+}  // namespace
+
+PlaneSide::PlaneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+    : a_(a), b_(b), c_(c), plane_(plane_normal(a, b, c)) {}
+
+int PlaneSide::certain_side(const Eigen::Vector3d& d) const { return filtered_side(plane_, a_, d); }
+
+int certain_common_side(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                        const Eigen::Vector3d& c, const Eigen::Vector3d& d0,
+                        const Eigen::Vector3d& d1, const Eigen::Vector3d& d2) {
+    const PlaneNormal plane = plane_normal(a, b, c);
+    const int side = filtered_side(plane, a, d0);
+    return side != 0 && filtered_side(plane, a, d1) == side && filtered_side(plane, a, d2) == side
+               ? side
+               : 0;
+}
+
+int PlaneSide::of(const Eigen::Vector3d& d) const {
+    if (const int side = filtered_side(plane_, a_, d); side != 0) return side;
     // The normal's factors found again rather than kept for every plane:
     // most planes never get here.
-    if (determinant_zero_by_factors(b_ - a_, c_ - a_, {wx, wy, wz})) return 0;
+    if (determinant_zero_by_factors(b_ - a_, c_ - a_, d - a_)) return 0;
     return orient3d_exact(a_, b_, c_, d);
 }
 

@@ -287,6 +287,18 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         // The shared corner first.
         const Triangle p = surface.triangle(i, shared.at_first);
         const Triangle q = surface.triangle(j, shared.at_second);
+        // Sharing no corner, and neither flat on an axis: on a curved
+        // surface nearly all such pairs lie each on one side of the other's
+        // plane (the thin wedges about the poles of a UV sphere, 2.3 M of a
+        // million-triangle sphere's 3.1 M pairs tested here), which the
+        // plane filter alone certifies at half the cost of the extents and
+        // the exact path. A triangle flat on an axis is a face of a CAD or
+        // voxel part, mostly resting on another, which the extents decide
+        // and the filter cannot: asked of every pair, it cost the 1,000
+        // cubes welded into one STL 9 % more (docs/exact-predicates.md).
+        if (shared.count == 0 && flat_axes(surface.corner_extremes(i)) == 0 &&
+            flat_axes(surface.corner_extremes(j)) == 0 && certainly_apart(p, q))
+            return;
         // One call of add: two had it left out of line.
         const Contact contact = shared.count == 0 && !touching_matters(i, j, pair, touching)
                                     ? crossing_or_coinciding(p, q)

@@ -21,6 +21,8 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "exact_predicates.hpp"
+
 namespace polymass::core {
 
 enum class Contact { none, touching, crossing, coinciding };
@@ -43,6 +45,17 @@ Contact triangle_contact(const Triangle& p, const Triangle& q, bool shared_corne
 // lie in one axis-aligned plane, where the full answer tested how their
 // pieces in that plane meet.
 Contact crossing_or_coinciding(const Triangle& p, const Triangle& q);
+
+// Whether p lies strictly on one side of the plane of q, as orient3d's
+// filter alone certifies (certain_common_side): then the closed triangles
+// have no point in common, and triangle_contact and crossing_or_coinciding
+// would answer none. False says nothing. A fraction of their cost, for a
+// caller that knows which pairs it is likely to decide (pairs sharing no
+// corner on a curved surface: docs/exact-predicates.md, "The plane filter
+// first").
+inline bool certainly_apart(const Triangle& p, const Triangle& q) {
+    return certain_common_side(q[0], q[1], q[2], p[0], p[1], p[2]) != 0;
+}
 
 // True when the three corners are collinear (exactly).
 bool is_degenerate(const Triangle& t);

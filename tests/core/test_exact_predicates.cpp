@@ -1,9 +1,8 @@
-// orient3d, PlaneSide and orient2d against an exact reference: every double is an
-// integer times 2^-1074, so the determinants are evaluated here exactly with
-// a small arbitrary-precision integer type on those integers. The inputs are
-// chosen where double evaluation gets the sign wrong: coplanar (collinear)
-// points perturbed by one unit in the last place, far from the origin, at
-// tiny and huge scales.
+// orient3d, PlaneSide, certain_common_side and orient2d against an exact reference: every double is
+// an integer times 2^-1074, so the determinants are evaluated here exactly with a small
+// arbitrary-precision integer type on those integers. The inputs are chosen where double evaluation
+// gets the sign wrong: coplanar (collinear) points perturbed by one unit in the last place, far
+// from the origin, at tiny and huge scales.
 #include "core/exact_predicates.hpp"
 
 #include "check.hpp"
@@ -21,6 +20,7 @@ namespace {
 
 using Eigen::Vector2d;
 using Eigen::Vector3d;
+using polymass::core::certain_common_side;
 using polymass::core::orient2d;
 using polymass::core::orient3d;
 using polymass::core::PlaneSide;
@@ -170,6 +170,10 @@ void check_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c, con
     CHECK(orient3d(b, c, a, d) == expected);
     CHECK(PlaneSide(a, b, c).of(d) == expected);
     CHECK(PlaneSide(d, b, c).of(a) == -expected);
+    // The filter alone names a side only when it is the exact one.
+    const int certain = PlaneSide(a, b, c).certain_side(d);
+    CHECK(certain == 0 || certain == expected);
+    CHECK(certain_common_side(a, b, c, d, d, d) == certain);
 }
 
 void check_orient2d(const Vector2d& a, const Vector2d& b, const Vector2d& c, Counts& counts) {
@@ -346,6 +350,57 @@ void edge_cases() {
     std::printf("  %-58s %6d cases\n", "zeros, subnormals, the largest doubles, not finite", 12);
 }
 
+// certain_common_side against the exact signs, for planes of unit size at
+// offsets up to 1e8 and three points each well off the plane (half a unit),
+// barely off (a millionth of a unit), exactly on it (a corner of the plane's
+// triangle), or a corner moved by one ulp (on either side, or still on it):
+// it names a side only when all three lie exactly on it, and it names it
+// whenever all three are well off on one side (else it filters nothing).
+void certain_common_sides(std::mt19937_64& random) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> kind_of(0, 3), axis_of(0, 2), ulps(-1, 1);
+    std::bernoulli_distribution above(0.5);
+    long cases = 0, named = 0, must_name = 0;
+    for (const double offset : {0.0, 1e6, 1e8}) {
+        for (int n = 0; n < 3000; ++n) {
+            const Vector3d origin = Vector3d::Constant(offset);
+            const Vector3d a = origin + Vector3d(unit(random), unit(random), unit(random));
+            const Vector3d b = origin + Vector3d(unit(random), unit(random), unit(random));
+            const Vector3d c = origin + Vector3d(unit(random), unit(random), unit(random));
+            const Vector3d normal = (b - a).cross(c - a).normalized();
+            if (!(normal.array().isFinite().all())) continue;
+            // All three far off on one side in some cases, mixed in others.
+            const bool one_side = n % 2 == 0, upward = above(random);
+            std::array<Vector3d, 3> d;
+            bool all_well_off = true;
+            for (Vector3d& x : d) {
+                const int kind = one_side ? 0 : kind_of(random);
+                const Vector3d in_plane = a + unit(random) * (b - a) + unit(random) * (c - a);
+                const double sign = (one_side ? upward : above(random)) ? 1.0 : -1.0;
+                if (kind == 0) x = in_plane + 0.5 * sign * normal;
+                if (kind == 1) x = in_plane + 1e-6 * sign * normal;
+                if (kind == 2) x = (n % 3 == 0 ? a : n % 3 == 1 ? b : c);
+                if (kind == 3) x = nudge(n % 3 == 0 ? a : c, axis_of(random), ulps(random));
+                all_well_off &= kind == 0;
+            }
+            const int exact[3] = {reference_orient3d(a, b, c, d[0]),
+                                  reference_orient3d(a, b, c, d[1]),
+                                  reference_orient3d(a, b, c, d[2])};
+            const int side = certain_common_side(a, b, c, d[0], d[1], d[2]);
+            CHECK(side == 0 || (exact[0] == side && exact[1] == side && exact[2] == side));
+            if (all_well_off && exact[0] == exact[1] && exact[1] == exact[2]) {
+                ++must_name;
+                CHECK(side == exact[0]);
+            }
+            ++cases;
+            named += side != 0;
+        }
+    }
+    CHECK(must_name > 1000);
+    std::printf("  %-58s %6ld cases, %ld named a side (%ld had to)\n",
+                "certain_common_side: three points, offsets to 1e8", cases, named, must_name);
+}
+
 // Random points with small integer coordinates: many exact zeros.
 void random_small_integers(std::mt19937_64& random) {
     std::uniform_int_distribution<int> coordinate(-3, 3);
@@ -431,5 +486,6 @@ int main() {
     random_small_integers(random);
     coarse_grids(random);
     shared_coordinates(random);
+    certain_common_sides(random);
     return polymass_test::finish("test_exact_predicates");
 }

@@ -27,6 +27,7 @@
 namespace {
 
 using Eigen::Vector3d;
+using polymass::core::certainly_apart;
 using polymass::core::Contact;
 using polymass::core::crossing_or_coinciding;
 using polymass::core::is_degenerate;
@@ -325,6 +326,13 @@ void known_configurations() {
                 std::fprintf(stderr, "  %s, %s: got %s, expected %s\n", c.what, place.what,
                              name(got), name(c.expected));
             }
+            // The plane filter says apart only of pairs that do not meet.
+            const bool apart = certainly_apart(p, q) || certainly_apart(q, p);
+            CHECK(!apart || c.expected == Contact::none);
+            if (apart && c.expected != Contact::none)
+                std::fprintf(stderr, "  %s, %s: certainly apart, but %s\n", c.what, place.what,
+                             name(c.expected));
+            wrong += apart && c.expected != Contact::none;
             const int disagreeing = variants_disagreeing(p, q, c.shared, c.expected, c.opposite);
             CHECK(disagreeing == 0);
             if (disagreeing)
@@ -508,7 +516,7 @@ void random_triangles() {
     std::mt19937_64 random(9);
     std::uniform_int_distribution<int> coordinate(-2, 2), kind_of(0, 5), axis_of(0, 2);
     constexpr long wanted = 8000;
-    long pairs = 0, shared_pairs = 0, disagreeing = 0, extents_meeting = 0;
+    long pairs = 0, shared_pairs = 0, disagreeing = 0, extents_meeting = 0, certified = 0;
     long seen[4] = {0, 0, 0, 0};
     long wrong[std::size(placements)] = {};
     while (pairs < wanted) {
@@ -547,6 +555,14 @@ void random_triangles() {
             const Triangle tp = placements[k](to_double(p)), tq = placements[k](to_double(q));
             const Contact got = triangle_contact(tp, tq, shared);
             wrong[k] += got != expected;
+            // The plane filter: apart only when they do not meet (shared
+            // corners meet), and certified for some.
+            const bool apart = certainly_apart(tp, tq);
+            certified += apart;
+            wrong[k] += apart && (expected != Contact::none || shared);
+            if (apart && (expected != Contact::none || shared) && wrong[k] <= 3)
+                std::fprintf(stderr, "  random pair %ld %s (kind %d): certainly apart, but %s\n",
+                             pairs, placements[k].what, kind, name(expected));
             if (got != expected && wrong[k] <= 3)
                 std::fprintf(stderr, "  random pair %ld %s (kind %d): got %s, expected %s\n", pairs,
                              placements[k].what, kind, name(got), name(expected));
@@ -569,11 +585,13 @@ void random_triangles() {
     // The sample must exercise every answer, or it proves little.
     CHECK(seen[0] > 0 && seen[1] > 0 && seen[2] > 0 && seen[3] > 0);
     CHECK(extents_meeting > pairs / 3);
+    CHECK(certified > pairs);  // of pairs x placements
     std::printf(
         "  %ld random integer pairs (%ld sharing a corner, %ld with extents meeting in one value "
         "on an axis): %ld none, %ld touching, %ld crossing, %ld coinciding; %ld of a quarter of "
-        "them inconsistent under symmetries\n",
-        pairs, shared_pairs, extents_meeting, seen[0], seen[1], seen[2], seen[3], disagreeing);
+        "them inconsistent under symmetries; certainly apart %ld times over the placements\n",
+        pairs, shared_pairs, extents_meeting, seen[0], seen[1], seen[2], seen[3], disagreeing,
+        certified);
     for (std::size_t k = 0; k < std::size(placements); ++k) {
         CHECK(wrong[k] == 0);
         std::printf("    %-52s %ld differ from the reference\n", placements[k].what, wrong[k]);
