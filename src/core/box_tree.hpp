@@ -134,6 +134,27 @@ public:
     bool for_each_overlapping_pair(PairTask task, Visit&& visit,
                                    InstructionSet set = widest_instruction_set()) const;
 
+    // The same search a leaf pair at a time: visit_leaves(first, second,
+    // overlapping) for each pair of leaves (first == second: a leaf with
+    // itself) with an overlapping pair of items, bit kLeafSize i + j of
+    // `overlapping` set when item leaf_item(first, i) overlaps
+    // leaf_item(second, j) (within one leaf, only j > i). For a caller that
+    // decides many of a leaf pair's items at once (the contact search's
+    // neighbours). The walk ends when a visit returns false; false then.
+    template <class VisitLeaves>
+    bool for_each_overlapping_leaf_pair(PairTask task, VisitLeaves&& visit_leaves,
+                                        InstructionSet set = widest_instruction_set()) const;
+
+    // Items a leaf holds, and the item in lane `lane` of `leaf` (along the
+    // curve: leaf l holds items kLeafSize l to kLeafSize (l + 1) - 1 of it;
+    // the last leaf's lanes past the last item are empty).
+    static constexpr std::size_t kLeafSize = 4;
+    std::size_t leaf_count() const { return leaf_boxes_.size(); }
+    std::size_t item_count() const { return order_.size(); }
+    std::uint32_t leaf_item(std::size_t leaf, std::size_t lane) const {
+        return order_[kLeafSize * leaf + lane];
+    }
+
     // visit(i) for each item whose box may meet the segment from a to b,
     // until a visit returns false.
     template <class Visit>
@@ -141,7 +162,6 @@ public:
                                     Visit&& visit) const;
 
 private:
-    static constexpr std::size_t kLeafSize = 4;
     // Pieces of pair_tasks() reach no higher than this level (4096 items):
     // a million triangles give a few hundred pieces, enough to share among
     // threads; the pieces of a small surface are one.
@@ -191,14 +211,15 @@ private:
     template <class Push>
     __attribute__((always_inline)) inline void split(const PairTask& task, Push&& push) const;
 
-    // for_each_overlapping_pair's walk, its leaf pairs' masks taken on eight
-    // lanes or four; one body, built for the baseline inline in
-    // for_each_overlapping_pair and for AVX2 in walk_avx2.
-    template <bool eight_lanes, class Visit>
-    __attribute__((always_inline)) inline bool walk(PairTask task, Visit& visit) const;
+    // for_each_overlapping_leaf_pair's walk, its leaf pairs' masks taken on
+    // eight lanes or four; one body, built for the baseline inline in
+    // for_each_overlapping_leaf_pair and for AVX2 in walk_avx2 (into which
+    // the visit is inlined, built for AVX2 with it).
+    template <bool eight_lanes, class VisitLeaves>
+    __attribute__((always_inline)) inline bool walk(PairTask task, VisitLeaves& visit_leaves) const;
 #if defined(__x86_64__)
-    template <class Visit>
-    __attribute__((target("avx2"))) bool walk_avx2(PairTask task, Visit& visit) const;
+    template <class VisitLeaves>
+    __attribute__((target("avx2"))) bool walk_avx2(PairTask task, VisitLeaves& visit_leaves) const;
 #endif
 
     const FloatBox& box(Node node) const { return nodes_[level_begin_[node.level] + node.index]; }
@@ -330,23 +351,44 @@ inline FloatBox BoxTree::item_box(std::size_t at) const {
 
 template <class Visit>
 bool BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit, InstructionSet set) const {
-#if defined(__x86_64__)
-    if (set != InstructionSet::baseline) return walk_avx2(task, visit);
-#endif
-    return walk<false>(task, visit);
-}
-
-#if defined(__x86_64__)
-template <class Visit>
-bool BoxTree::walk_avx2(PairTask task, Visit& visit) const {
-    return walk<true>(task, visit);
-}
-#endif
-
-template <bool eight_lanes, class Visit>
-bool BoxTree::walk(PairTask task, Visit& visit) const {
     constexpr bool may_stop =
         std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t, std::uint32_t>, bool>;
+    auto each_pair = [&](std::uint32_t first, std::uint32_t second, unsigned overlapping)
+        __attribute__((always_inline)) {
+        const std::size_t first_of_a = kLeafSize * first, first_of_b = kLeafSize * second;
+        for (; overlapping != 0; overlapping &= overlapping - 1) {
+            const unsigned bit = unsigned(__builtin_ctz(overlapping));
+            const std::uint32_t i = order_[first_of_a + bit / kLeafSize];
+            const std::uint32_t j = order_[first_of_b + bit % kLeafSize];
+            if constexpr (may_stop) {
+                if (!visit(i, j)) return false;
+            } else {
+                visit(i, j);
+            }
+        }
+        return true;
+    };
+    return for_each_overlapping_leaf_pair(task, each_pair, set);
+}
+
+template <class VisitLeaves>
+bool BoxTree::for_each_overlapping_leaf_pair(PairTask task, VisitLeaves&& visit_leaves,
+                                             InstructionSet set) const {
+#if defined(__x86_64__)
+    if (set != InstructionSet::baseline) return walk_avx2(task, visit_leaves);
+#endif
+    return walk<false>(task, visit_leaves);
+}
+
+#if defined(__x86_64__)
+template <class VisitLeaves>
+bool BoxTree::walk_avx2(PairTask task, VisitLeaves& visit_leaves) const {
+    return walk<true>(task, visit_leaves);
+}
+#endif
+
+template <bool eight_lanes, class VisitLeaves>
+bool BoxTree::walk(PairTask task, VisitLeaves& visit_leaves) const {
     // Depth first: a task adds at most four, each one level lower, so the
     // stack holds fewer than four per level.
     constexpr std::size_t kMaxTasks = 4 * 64;
@@ -363,17 +405,7 @@ bool BoxTree::walk(PairTask task, Visit& visit) const {
         unsigned overlapping =
             overlap_masks<eight_lanes>(leaf_boxes_[a.index], leaf_boxes_[b.index]);
         if (same(next)) overlapping &= later_lanes();
-        const std::size_t first_of_a = leaf_first(a), first_of_b = leaf_first(b);
-        for (; overlapping != 0; overlapping &= overlapping - 1) {
-            const unsigned bit = unsigned(__builtin_ctz(overlapping));
-            const std::uint32_t i = order_[first_of_a + bit / kLeafSize];
-            const std::uint32_t j = order_[first_of_b + bit % kLeafSize];
-            if constexpr (may_stop) {
-                if (!visit(i, j)) return false;
-            } else {
-                visit(i, j);
-            }
-        }
+        if (overlapping != 0 && !visit_leaves(a.index, b.index, overlapping)) return false;
     }
     return true;
 }

@@ -74,7 +74,8 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       copies_before_(memory),
       lowest_(memory),
       next_(memory),
-      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory, tasks) {}
+      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory, tasks),
+      leaf_corners_(corners_by_leaf(tasks, memory)) {}
 
 template <class Scalar, class Index>
 bool IndexedSurface<Scalar, Index>::uses_callers_corners(const MeshView<Scalar, Index>& mesh,
@@ -161,6 +162,24 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
         if (lowest_copy(t) != t) boxes[t] = FloatBox();
     });
     return boxes;
+}
+
+template <class Scalar, class Index>
+std::pmr::vector<LeafCorners> IndexedSurface<Scalar, Index>::corners_by_leaf(
+    TaskRunner& tasks, std::pmr::memory_resource* memory) const {
+    std::pmr::vector<LeafCorners> leaves(tree_.leaf_count(), memory);
+    for_each_in_blocks(
+        leaves.size(), kFacesPerBlock / BoxTree::kLeafSize, tasks, [&](std::size_t leaf) {
+            LeafCorners& lanes = leaves[leaf];
+            for (std::size_t lane = 0; lane < BoxTree::kLeafSize; ++lane) {
+                if (BoxTree::kLeafSize * leaf + lane >= tree_.item_count()) break;
+                const std::uint32_t t = tree_.leaf_item(leaf, lane);
+                for (int k = 0; k < 3; ++k) lanes.corner[k][lane] = corners_[3 * t + k];
+                lanes.extremes[lane] =
+                    corner_extremes(t) | (has_copies(t) ? LeafCorners::kHasCopies : 0);
+            }
+        });
+    return leaves;
 }
 
 template <class Scalar, class Index>

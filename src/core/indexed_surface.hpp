@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "box_tree.hpp"
+#include "leaf_corners.hpp"
 #include "mesh_view.hpp"
 #include "shells.hpp"
 #include "surface_triangles.hpp"
@@ -103,6 +104,8 @@ public:
     // reference: a power of two near the surface's size, so that single
     // precision holds the boxes for any size a double does.
     const BoxTree& tree() const { return tree_; }
+    // The triangles of the tree's leaf `leaf` (LeafCorners).
+    const LeafCorners& leaf_corners(std::size_t leaf) const { return leaf_corners_[leaf]; }
     Eigen::Vector3d in_units(const Eigen::Vector3d& p) const {
         return (p - reference_) * per_unit_;
     }
@@ -122,6 +125,9 @@ private:
     // part stacked in place, or a surface exported twice. keys: per
     // triangle t, a hash of its coordinates (shape_hash) above t.
     void find_copies(std::pmr::vector<std::uint64_t> keys, std::pmr::memory_resource* memory);
+    // The tree's leaves' LeafCorners, once the tree is built.
+    std::pmr::vector<LeafCorners> corners_by_leaf(TaskRunner& tasks,
+                                                  std::pmr::memory_resource* memory) const;
 
     // Inlined (the search asks for every candidate pair), but not the rank,
     // which only triangles with copies need. A surface without copies (most
@@ -167,6 +173,7 @@ private:
     std::pmr::vector<std::uint32_t> copies_before_;
     std::pmr::vector<std::uint32_t> lowest_, next_;
     BoxTree tree_;
+    std::pmr::vector<LeafCorners> leaf_corners_;
 };
 
 }  // namespace polymass::core

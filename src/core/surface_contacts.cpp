@@ -5,6 +5,7 @@
 #include <optional>
 #include <utility>
 
+#include "leaf_corners.hpp"
 #include "shell_pairs.hpp"
 #include "triangle_contact.hpp"
 
@@ -399,13 +400,23 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         const std::pmr::vector<BoxTree::PairTask> pieces = surface.tree().pair_tasks();
         std::pmr::vector<PieceContacts> found = pieces_of(pieces.size() + 1);
         tasks.run(pieces.size(), [&](std::size_t piece) {
-            surface.tree().for_each_overlapping_pair(
-                pieces[piece], [&](std::uint32_t r, std::uint32_t s) {
+            const BoxTree& tree = surface.tree();
+            tree.for_each_overlapping_leaf_pair(
+                pieces[piece], [&](std::uint32_t first, std::uint32_t second,
+                                   unsigned overlapping) __attribute__((always_inline)) {
                     PieceContacts& contacts = found[piece];
-                    if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
-                        test_pair(r, s, contacts.crossing, contacts.touching);
-                    else
-                        pair_copies(r, s, contacts.crossing, contacts.touching);
+                    overlapping &= ~neighbours_adding_nothing(surface.leaf_corners(first),
+                                                              surface.leaf_corners(second));
+                    for (; overlapping != 0; overlapping &= overlapping - 1) {
+                        const unsigned bit = unsigned(__builtin_ctz(overlapping));
+                        const std::uint32_t r = tree.leaf_item(first, bit / BoxTree::kLeafSize);
+                        const std::uint32_t s = tree.leaf_item(second, bit % BoxTree::kLeafSize);
+                        if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
+                            test_pair(r, s, contacts.crossing, contacts.touching);
+                        else
+                            pair_copies(r, s, contacts.crossing, contacts.touching);
+                    }
+                    return true;
                 });
         });
         // The copies of one shape meet each other; the tree holds one of them.
