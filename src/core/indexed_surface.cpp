@@ -5,6 +5,10 @@
 #include <type_traits>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include "face_blocks.hpp"
 #include "position_hash.hpp"
 #include "radix_sort.hpp"
@@ -23,16 +27,36 @@ struct CornerOrder {
     std::uint32_t extremes = 0;
     Eigen::Vector3d lowest, highest;
 };
+
+// Bit axis set where a's coordinate is at or below b's (finite coordinates).
+// All three axes of one pair of corners at once (x and y in one comparison
+// of two lanes where SSE2 is), so that each corner's bits land where
+// corner_extremes wants them with one shift a pair: the axes one at a time,
+// three shifts and an or a comparison, made order_corners 177 instructions
+// a triangle (callgrind, clean 1e5 torus).
+__attribute__((always_inline)) inline std::uint32_t at_or_below(const Eigen::Vector3d& a,
+                                                                const Eigen::Vector3d& b) {
+#if defined(__SSE2__)
+    const std::uint32_t xy = std::uint32_t(
+        _mm_movemask_pd(_mm_cmple_pd(_mm_loadu_pd(a.data()), _mm_loadu_pd(b.data()))));
+    return xy | std::uint32_t(a[2] <= b[2]) << 2;
+#else
+    return std::uint32_t(a[0] <= b[0]) | std::uint32_t(a[1] <= b[1]) << 1 |
+           std::uint32_t(a[2] <= b[2]) << 2;
+#endif
+}
+
 CornerOrder order_corners(const Triangle& t) {
+    // xy: x at or below y on each axis (finite coordinates: not y below x).
+    const std::uint32_t ab = at_or_below(t[0], t[1]), ba = at_or_below(t[1], t[0]);
+    const std::uint32_t bc = at_or_below(t[1], t[2]), cb = at_or_below(t[2], t[1]);
+    const std::uint32_t ca = at_or_below(t[2], t[0]), ac = at_or_below(t[0], t[2]);
+    // Corner k's highest on each axis at bits 6 k + axis, its lowest at 6 k + 3 + axis.
     CornerOrder order;
+    order.extremes = (ba & ca) | (ab & ac) << 3 | (cb & ab) << 6 | (bc & ba) << 9 |
+                     (ac & bc) << 12 | (ca & cb) << 15;
     for (int axis = 0; axis < 3; ++axis) {
         const double a = t[0][axis], b = t[1][axis], c = t[2][axis];
-        // xy: x at or below y (finite coordinates: not y below x).
-        const std::uint32_t ab = a <= b, ba = b <= a, bc = b <= c, cb = c <= b, ca = c <= a,
-                            ac = a <= c;
-        const std::uint32_t highest = (ba & ca) | (cb & ab) << 6 | (ac & bc) << 12;
-        const std::uint32_t lowest = (ab & ac) | (bc & ba) << 6 | (ca & cb) << 12;
-        order.extremes |= highest << axis | lowest << (axis + 3);
         order.lowest[axis] = std::min(std::min(a, b), c);
         order.highest[axis] = std::max(std::max(a, b), c);
     }
