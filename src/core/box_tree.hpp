@@ -145,6 +145,13 @@ public:
     bool for_each_overlapping_leaf_pair(PairTask task, VisitLeaves&& visit_leaves,
                                         InstructionSet set = widest_instruction_set()) const;
 
+    // visit(i, j) for each pair of items that the bits of `overlapping` name
+    // (a mask as for_each_overlapping_leaf_pair gives), lowest bit first; a
+    // visit returning bool ends it when it returns false, and false then.
+    template <class Visit>
+    bool for_each_pair_of(std::uint32_t first, std::uint32_t second, unsigned overlapping,
+                          Visit&& visit) const;
+
     // Items a leaf holds, and the item in lane `lane` of `leaf` (along the
     // curve: leaf l holds items kLeafSize l to kLeafSize (l + 1) - 1 of it;
     // the last leaf's lanes past the last item are empty).
@@ -351,24 +358,31 @@ inline FloatBox BoxTree::item_box(std::size_t at) const {
 
 template <class Visit>
 bool BoxTree::for_each_overlapping_pair(PairTask task, Visit&& visit, InstructionSet set) const {
-    constexpr bool may_stop =
-        std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t, std::uint32_t>, bool>;
     auto each_pair = [&](std::uint32_t first, std::uint32_t second, unsigned overlapping)
         __attribute__((always_inline)) {
-        const std::size_t first_of_a = kLeafSize * first, first_of_b = kLeafSize * second;
-        for (; overlapping != 0; overlapping &= overlapping - 1) {
-            const unsigned bit = unsigned(__builtin_ctz(overlapping));
-            const std::uint32_t i = order_[first_of_a + bit / kLeafSize];
-            const std::uint32_t j = order_[first_of_b + bit % kLeafSize];
-            if constexpr (may_stop) {
-                if (!visit(i, j)) return false;
-            } else {
-                visit(i, j);
-            }
-        }
-        return true;
+        return for_each_pair_of(first, second, overlapping, visit);
     };
     return for_each_overlapping_leaf_pair(task, each_pair, set);
+}
+
+template <class Visit>
+__attribute__((always_inline)) inline bool BoxTree::for_each_pair_of(std::uint32_t first,
+                                                                     std::uint32_t second,
+                                                                     unsigned overlapping,
+                                                                     Visit&& visit) const {
+    constexpr bool may_stop =
+        std::is_same_v<std::invoke_result_t<Visit&, std::uint32_t, std::uint32_t>, bool>;
+    for (; overlapping != 0; overlapping &= overlapping - 1) {
+        const unsigned bit = unsigned(__builtin_ctz(overlapping));
+        const std::uint32_t i = leaf_item(first, bit / kLeafSize);
+        const std::uint32_t j = leaf_item(second, bit % kLeafSize);
+        if constexpr (may_stop) {
+            if (!visit(i, j)) return false;
+        } else {
+            visit(i, j);
+        }
+    }
+    return true;
 }
 
 template <class VisitLeaves>

@@ -392,8 +392,6 @@ __attribute__((always_inline)) inline int filtered_side(const PlaneNormal& plane
 PlaneSide::PlaneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
     : a_(a), b_(b), c_(c), plane_(plane_normal(a, b, c)) {}
 
-int PlaneSide::certain_side(const Eigen::Vector3d& d) const { return filtered_side(plane_, a_, d); }
-
 int certain_common_side(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                         const Eigen::Vector3d& c, const Eigen::Vector3d& d0,
                         const Eigen::Vector3d& d1, const Eigen::Vector3d& d2) {

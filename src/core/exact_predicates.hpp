@@ -38,22 +38,19 @@ class PlaneSide {
 public:
     PlaneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
     int of(const Eigen::Vector3d& d) const;
-    // The sign of() gives for d when the filter alone decides it (d certainly
-    // off the plane), else 0, which says nothing: d's sign then needs of().
-    int certain_side(const Eigen::Vector3d& d) const;
 
 private:
     const Eigen::Vector3d &a_, &b_, &c_;
     PlaneNormal plane_;
 };
 
-// The side (+1 or -1) of the plane through a, b and c on which
-// PlaneSide::certain_side puts each of d0, d1 and d2, when it puts all three
-// on one; else 0, which says nothing. For a caller that acts only on points
-// certainly on one side (triangle_contact's first test of two triangles
-// sharing no corner): one call, the plane's and the points' filters inlined
-// into it, where a PlaneSide and a call per point cost about 180
-// instructions (docs/exact-predicates.md).
+// The side (+1 or -1) of the plane through a, b and c on which the filter
+// of PlaneSide::of (orient3d's bound) alone puts each of d0, d1 and d2, when
+// it puts all three on one; else 0, which says nothing. For a caller that
+// acts only on points certainly on one side (the contact search's first test
+// of two triangles sharing no corner, certainly_apart): one call, the plane's and the points'
+// filters inlined into it, where a PlaneSide and a call per point cost about 180 instructions
+// (docs/exact-predicates.md).
 int certain_common_side(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                         const Eigen::Vector3d& c, const Eigen::Vector3d& d0,
                         const Eigen::Vector3d& d1, const Eigen::Vector3d& d2);

@@ -405,17 +405,17 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                 pieces[piece], [&](std::uint32_t first, std::uint32_t second,
                                    unsigned overlapping) __attribute__((always_inline)) {
                     PieceContacts& contacts = found[piece];
-                    overlapping &= ~neighbours_adding_nothing(surface.leaf_corners(first),
-                                                              surface.leaf_corners(second));
-                    for (; overlapping != 0; overlapping &= overlapping - 1) {
-                        const unsigned bit = unsigned(__builtin_ctz(overlapping));
-                        const std::uint32_t r = tree.leaf_item(first, bit / BoxTree::kLeafSize);
-                        const std::uint32_t s = tree.leaf_item(second, bit % BoxTree::kLeafSize);
-                        if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
-                            test_pair(r, s, contacts.crossing, contacts.touching);
-                        else
-                            pair_copies(r, s, contacts.crossing, contacts.touching);
-                    }
+                    const unsigned left =
+                        overlapping & ~neighbours_adding_nothing(surface.leaf_corners(first),
+                                                                 surface.leaf_corners(second));
+                    tree.for_each_pair_of(
+                        first, second,
+                        left, [&](std::uint32_t r, std::uint32_t s) __attribute__((always_inline)) {
+                            if (surface.next_copy(r) == kNoCopy && surface.next_copy(s) == kNoCopy)
+                                test_pair(r, s, contacts.crossing, contacts.touching);
+                            else
+                                pair_copies(r, s, contacts.crossing, contacts.touching);
+                        });
                     return true;
                 });
         });

@@ -171,9 +171,8 @@ void check_orient3d(const Vector3d& a, const Vector3d& b, const Vector3d& c, con
     CHECK(PlaneSide(a, b, c).of(d) == expected);
     CHECK(PlaneSide(d, b, c).of(a) == -expected);
     // The filter alone names a side only when it is the exact one.
-    const int certain = PlaneSide(a, b, c).certain_side(d);
+    const int certain = certain_common_side(a, b, c, d, d, d);
     CHECK(certain == 0 || certain == expected);
-    CHECK(certain_common_side(a, b, c, d, d, d) == certain);
 }
 
 void check_orient2d(const Vector2d& a, const Vector2d& b, const Vector2d& c, Counts& counts) {
