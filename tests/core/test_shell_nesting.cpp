@@ -428,6 +428,16 @@ int main() {
     grid_windings.push_back(0);
     expect("a grid of cubes, one hollow around a cube", grid, grid_windings);
 
+    // The same grid solid: the middle cube lies on the others wherever it
+    // is probed, but no cube's box reaches inside another's, so no cube is
+    // wound around, and none is probed.
+    TestMesh solid_grid;
+    for (int k = 0; k < 27; ++k) {
+        const Eigen::Vector3d corner(2 * (k % 3), 2 * (k / 3 % 3), 2 * (k / 9));
+        add_box(solid_grid, corner, corner + Eigen::Vector3d(2, 2, 2), false);
+    }
+    expect("a grid of cubes resting on each other", solid_grid, std::vector<int>(27, 0));
+
     // A plate inside a solid with more parts resting on it than a point of
     // the plate lists as neighbours (kScannedNeighbours): the plate's points
     // look along the shells' tree for the solid around them.
