@@ -129,10 +129,28 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // The probes' far ends lie outside every box.
     const double span = surface.span();
     std::pmr::vector<int> winding_of_shell(shells.count, kUnknownWinding, memory);
-    if (!(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
+    // Only a shell another's box reaches inside may be wound around
+    // (shells_reached_inside, docs/validity.md, "Only the shells whose boxes
+    // reach inside"): the others' winding is 0, exact, without a probe, and
+    // their triangles are not marked touching.
+    const std::pmr::vector<std::uint8_t>& wound = contacts.reached_inside;
+    bool any_wound = false;
+    for (std::size_t shell = 0; shell < shells.count; ++shell) {
+        if (!wound[shell]) winding_of_shell[shell] = 0;
+        any_wound = any_wound || wound[shell];
+    }
+    if (!any_wound || !(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
 
-    // A tree over the shells' boxes.
+    // A few triangles of each shell that may be wound around, in order,
+    // whose first corners are the probes; and a tree over the shells' boxes.
+    std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
+    std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
+    for (std::size_t t = 0; t < surface.size(); ++t) {
+        const std::uint32_t shell = shell_of(t);
+        if (wound[shell] && !surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
+            probes[shell][probe_count[shell]++] = std::uint32_t(t);
+    }
     std::pmr::vector<FloatBox> rounded_boxes(shells.count, memory);
     for (std::size_t shell = 0; shell < shells.count; ++shell) {
         // in_units keeps the order of coordinates: the corners' boxes lie in this one.
@@ -140,82 +158,6 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].hi));
     }
     const BoxTree shell_tree(rounded_boxes, memory, tasks);
-
-    // The shells whose boxes may meet each shell's: those of shell s are
-    // neighbours[neighbours_begin[s], neighbours_begin[s + 1]), from one walk
-    // over the pairs of the shells' tree, whose boxes are rounded outward
-    // (every shell whose exact box meets s's is among them). A shell whose
-    // box holds a point meets the box of every shell with a vertex there, so
-    // a point's shells are found among the neighbours of one of those, where
-    // a look along the shells' tree, whose boxes all touch a point where
-    // parts rest on each other, opened hundreds of nodes (docs/validity.md).
-    // Past kPairsPerShell pairs a shell (parts in each other's boxes, as at a
-    // point many parts touch) the walk stops and none are kept: each point
-    // looks along the tree, as does one whose shell has more than
-    // kScannedNeighbours.
-    std::pmr::vector<std::array<std::uint32_t, 2>> meeting(memory);
-    bool paired = true;
-    for (const BoxTree::PairTask& piece : shell_tree.pair_tasks()) {
-        paired = shell_tree.for_each_overlapping_pair(piece, [&](std::uint32_t r, std::uint32_t s) {
-            meeting.push_back({r, s});
-            return meeting.size() <= kPairsPerShell * shells.count;
-        });
-        if (!paired) break;
-    }
-    std::pmr::vector<std::uint32_t> neighbours_begin(paired ? shells.count + 1 : 0, 0, memory);
-    std::pmr::vector<std::uint32_t> neighbours(paired ? 2 * meeting.size() : 0, memory);
-    if (paired) {
-        for (const auto& [r, s] : meeting) {
-            ++neighbours_begin[r + 1];
-            ++neighbours_begin[s + 1];
-        }
-        for (std::size_t shell = 0; shell < shells.count; ++shell)
-            neighbours_begin[shell + 1] += neighbours_begin[shell];
-        std::pmr::vector<std::uint32_t> next(neighbours_begin.begin(), neighbours_begin.end() - 1,
-                                             memory);
-        for (const auto& [r, s] : meeting) {
-            neighbours[next[r]++] = s;
-            neighbours[next[s]++] = r;
-        }
-    }
-    let_go(meeting);
-
-    // Whether another shell may wind around a shell: only one whose box's
-    // inside meets its box. Another shell B winds 0 around every point off
-    // B outside B's open box (that point and those outside B's closed box
-    // beside it are joined off B), and the shell's points lie in its own
-    // closed box: where that misses the inside of every other shell's box
-    // (parts resting on each other, whose boxes meet in a plane, a line or a
-    // point) the winding around the shell is 0, exact, without a probe
-    // (docs/validity.md, "Only the shells whose boxes reach inside").
-    // Compared exactly, on the neighbours the walk found: on every axis each
-    // box begins below where the other ends (so too for a flat box, whose
-    // inside is empty: a probe too many). Past the walk's stop, every shell
-    // is probed.
-    const auto reaches_inside = [&](std::uint32_t shell, std::uint32_t other) {
-        const ShellBox &box = shell_boxes[shell], &around = shell_boxes[other];
-        return (box.lo.array() < around.hi.array() && around.lo.array() < box.hi.array()).all();
-    };
-    std::pmr::vector<std::uint8_t> wound(shells.count, !paired, memory);
-    std::size_t wound_count = paired ? 0 : shells.count;
-    if (paired)
-        for (std::uint32_t shell = 0; shell < shells.count; ++shell) {
-            for (std::uint32_t n = neighbours_begin[shell]; n < neighbours_begin[shell + 1]; ++n)
-                wound[shell] |= reaches_inside(shell, neighbours[n]);
-            if (!wound[shell]) winding_of_shell[shell] = 0;
-            wound_count += wound[shell];
-        }
-    if (wound_count == 0) return winding_of_shell;
-
-    // A few triangles of each shell that may be wound around, in order,
-    // whose first corners are the probes.
-    std::pmr::vector<std::array<std::uint32_t, kProbeVertices>> probes(shells.count, memory);
-    std::pmr::vector<std::uint8_t> probe_count(shells.count, 0, memory);
-    for (std::size_t t = 0; t < surface.size(); ++t) {
-        const std::uint32_t shell = shell_of(t);
-        if (wound[shell] && !surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
-            probes[shell][probe_count[shell]++] = std::uint32_t(t);
-    }
 
     // Where the other shells can wind around a start: the box around those
     // whose boxes hold it (each winds 0 around points outside its box), and
@@ -368,13 +310,8 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         }
         return lies_on(c, projected % 4, projected / 4 - 2, start);
     };
-    // Whether triangle t is probed from inside (below): it touches another
-    // shell, and its own may be wound around.
-    const auto probed_inside = [&](std::uint32_t t) {
-        return wound[shell_of(t)] && touches_other_shell[t].load(std::memory_order_relaxed);
-    };
     // The vertices where probes start, numbered in the order of their ids:
-    // the probe vertices, and the corners of triangles probed from inside.
+    // the probe vertices, and the corners of triangles touching another shell.
     constexpr std::uint32_t kNoStart = UINT32_MAX;
     std::uint32_t vertex_end = 0;
     for (std::size_t t = 0; t < surface.size(); ++t)
@@ -385,7 +322,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         for (std::size_t k = 0; k < probe_count[shell]; ++k)
             start_of_vertex[surface.corners(probes[shell][k])[0]] = 0;
     for (std::size_t t = 0; t < surface.size(); ++t)
-        if (probed_inside(std::uint32_t(t)))
+        if (touches_other_shell[t].load(std::memory_order_relaxed))
             for (const std::uint32_t vertex : surface.corners(t)) start_of_vertex[vertex] = 0;
     std::uint32_t start_count = 0;
     for (std::uint32_t& start : start_of_vertex)
@@ -468,6 +405,44 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         for (std::uint32_t t = 0; t < surface.size(); ++t)
             if (in_tree(t)) shell_triangles[next[shell_of(t)]++] = {t, triangle_box(t)};
     }
+    // The shells whose boxes may meet each shell's: those of shell s are
+    // neighbours[neighbours_begin[s], neighbours_begin[s + 1]), from one walk
+    // over the pairs of the shells' tree, whose boxes are rounded outward
+    // (every shell whose exact box meets s's is among them). A shell whose
+    // box holds a point meets the box of every shell with a vertex there, so
+    // a point's shells are found among the neighbours of one of those, where
+    // a look along the shells' tree, whose boxes all touch a point where
+    // parts rest on each other, opened hundreds of nodes (docs/validity.md).
+    // Past kPairsPerShell pairs a shell (parts in each other's boxes, as at a
+    // point many parts touch) the walk stops and none are kept: each point
+    // looks along the tree, as does one whose shell has more than
+    // kScannedNeighbours.
+    std::pmr::vector<std::array<std::uint32_t, 2>> meeting(memory);
+    bool paired = true;
+    for (const BoxTree::PairTask& piece : shell_tree.pair_tasks()) {
+        paired = shell_tree.for_each_overlapping_pair(piece, [&](std::uint32_t r, std::uint32_t s) {
+            meeting.push_back({r, s});
+            return meeting.size() <= kPairsPerShell * shells.count;
+        });
+        if (!paired) break;
+    }
+    std::pmr::vector<std::uint32_t> neighbours_begin(paired ? shells.count + 1 : 0, 0, memory);
+    std::pmr::vector<std::uint32_t> neighbours(paired ? 2 * meeting.size() : 0, memory);
+    if (paired) {
+        for (const auto& [r, s] : meeting) {
+            ++neighbours_begin[r + 1];
+            ++neighbours_begin[s + 1];
+        }
+        for (std::size_t shell = 0; shell < shells.count; ++shell)
+            neighbours_begin[shell + 1] += neighbours_begin[shell];
+        std::pmr::vector<std::uint32_t> next(neighbours_begin.begin(), neighbours_begin.end() - 1,
+                                             memory);
+        for (const auto& [r, s] : meeting) {
+            neighbours[next[r]++] = s;
+            neighbours[next[s]++] = r;
+        }
+    }
+    let_go(meeting);
     // The triangles whose boxes hold each point, of every shell (a start
     // skips its own shell's), with their boxes' side bits, looked up in
     // blocks as tasks, then gathered in order: those of point i are
@@ -663,7 +638,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     tasks.run((surface.size() + kTrianglesPerTask - 1) / kTrianglesPerTask, [&](std::size_t task) {
         const std::size_t end = std::min(surface.size(), (task + 1) * kTrianglesPerTask);
         for (std::uint32_t t = std::uint32_t(task * kTrianglesPerTask); t < end; ++t) {
-            if (!probed_inside(t)) continue;
+            if (!touches_other_shell[t].load(std::memory_order_relaxed)) continue;
             int& winding = winding_inside[t];
             for (int k = 0; k < 3 && winding != kMixedWinding; ++k) {
                 const Triangle corners = surface.triangle(t, k);

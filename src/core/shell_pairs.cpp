@@ -13,7 +13,48 @@ bool boxes_meet(const ShellBox& first, const ShellBox& second) {
            (second.lo.array() <= first.hi.array()).all();
 }
 
+// Whether two exact boxes overlap inside: on every axis each begins below
+// where the other ends.
+bool insides_meet(const ShellBox& first, const ShellBox& second) {
+    return (first.lo.array() < second.hi.array()).all() &&
+           (second.lo.array() < first.hi.array()).all();
+}
+
+// The shells' boxes in the tree's units, rounded outward.
+template <class Scalar, class Index>
+std::pmr::vector<FloatBox> rounded_shell_boxes(const IndexedSurface<Scalar, Index>& surface,
+                                               std::pmr::memory_resource* memory) {
+    std::pmr::vector<FloatBox> boxes(memory);
+    boxes.reserve(surface.shell_boxes().size());
+    for (const ShellBox& box : surface.shell_boxes())
+        boxes.push_back(FloatBox::spanning(surface.in_units(box.lo), surface.in_units(box.hi)));
+    return boxes;
+}
+
 }  // namespace
+
+template <class Scalar, class Index>
+std::pmr::vector<std::uint8_t> shells_reached_inside(const IndexedSurface<Scalar, Index>& surface,
+                                                     TaskRunner& tasks,
+                                                     std::pmr::memory_resource* memory) {
+    const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
+    const std::size_t shell_count = shell_boxes.size();
+    std::pmr::vector<std::uint8_t> reached(shell_count, 0, memory);
+    const BoxTree tree(rounded_shell_boxes(surface, memory), memory, tasks);
+    std::size_t pairs = 0;
+    for (const BoxTree::PairTask& piece : tree.pair_tasks()) {
+        const bool within_budget =
+            tree.for_each_overlapping_pair(piece, [&](std::uint32_t r, std::uint32_t s) {
+                if (insides_meet(shell_boxes[r], shell_boxes[s])) reached[r] = reached[s] = 1;
+                return ++pairs <= kShellPairsCompared * shell_count;
+            });
+        if (!within_budget) {
+            std::fill(reached.begin(), reached.end(), 1);
+            break;
+        }
+    }
+    return reached;
+}
 
 template <class Scalar, class Index>
 std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surface,
@@ -38,10 +79,7 @@ std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surfa
     if (pairs > budget) return std::nullopt;
 
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
-    paired.shell_boxes.reserve(shell_count);
-    for (const ShellBox& box : shell_boxes)
-        paired.shell_boxes.push_back(
-            FloatBox::spanning(surface.in_units(box.lo), surface.in_units(box.hi)));
+    paired.shell_boxes = rounded_shell_boxes(surface, memory);
     const BoxTree tree(std::pmr::vector<FloatBox>(paired.shell_boxes, memory), memory, tasks);
     std::pmr::vector<std::array<std::uint32_t, 2>> meeting(memory);
     for (const BoxTree::PairTask& piece : tree.pair_tasks()) {
@@ -84,8 +122,10 @@ std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surfa
     return paired;
 }
 
-#define POLYMASS_INSTANTIATE(Scalar, Index)                        \
-    template std::optional<ShellPairs> pair_shells<Scalar, Index>( \
+#define POLYMASS_INSTANTIATE(Scalar, Index)                                             \
+    template std::optional<ShellPairs> pair_shells<Scalar, Index>(                      \
+        const IndexedSurface<Scalar, Index>&, TaskRunner&, std::pmr::memory_resource*); \
+    template std::pmr::vector<std::uint8_t> shells_reached_inside<Scalar, Index>(       \
         const IndexedSurface<Scalar, Index>&, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE

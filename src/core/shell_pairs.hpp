@@ -59,4 +59,23 @@ template <class Scalar, class Index>
 std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surface,
                                       TaskRunner& tasks, std::pmr::memory_resource* memory);
 
+// Per shell: whether another shell's box reaches inside its own (on every
+// axis, each box begins below where the other ends; so too for a flat box,
+// whose inside is empty). Only such a shell may have another shell wind
+// around it (shell_nesting.hpp): another shell winds 0 around every point
+// off it outside its open box. Parts resting on each other, whose boxes
+// meet in a plane, a line or a point, are reached inside by none. Exact,
+// from the shells' exact boxes; past kShellPairsCompared pairs of boxes a
+// shell (boxes inside boxes, a pile of parts) every shell is taken as
+// reached. The same for every runner.
+template <class Scalar, class Index>
+std::pmr::vector<std::uint8_t> shells_reached_inside(const IndexedSurface<Scalar, Index>& surface,
+                                                     TaskRunner& tasks,
+                                                     std::pmr::memory_resource* memory);
+
+// The pairs of boxes meeting, a shell on average, that shells_reached_inside
+// compares before it takes every shell as reached: parts resting on each
+// other in a grid meet 26 neighbours each, 13 pairs a shell.
+inline constexpr std::size_t kShellPairsCompared = 64;
+
 }  // namespace polymass::core

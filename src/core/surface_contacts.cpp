@@ -182,27 +182,35 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     // nesting, so the copies of a shape that matters lie on one shell.
     SurfaceContacts contacts(nesting ? surface.size() : 0, memory);
     auto& touches_other_shell = contacts.touches_other_shell;
+    if (nesting) contacts.reached_inside = shells_reached_inside(surface, tasks, memory);
+    const auto& reached_inside = contacts.reached_inside;
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
+    // Whether triangle t (with shells) is of a shell that another may wind
+    // around, not yet marked: only such a triangle's touching matters to the
+    // nesting. A mark read unset by a race only costs a test.
+    auto needs_mark = [&](std::uint32_t t) {
+        return reached_inside[shell_of(t)] &&
+               !touches_other_shell[surface.lowest_copy(t)].load(std::memory_order_relaxed);
+    };
     auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
-        if (contact == Contact::touching && nesting && shell_of(i) != shell_of(j)) {
-            touches_other_shell[surface.lowest_copy(i)].store(1, std::memory_order_relaxed);
-            touches_other_shell[surface.lowest_copy(j)].store(1, std::memory_order_relaxed);
-        }
+        if (contact != Contact::touching || !nesting || shell_of(i) == shell_of(j)) return;
+        for (const std::uint32_t t : {i, j})
+            if (reached_inside[shell_of(t)])
+                touches_other_shell[surface.lowest_copy(t)].store(1, std::memory_order_relaxed);
     };
 
     // Whether telling touching from none, for the pair of triangles i and j
     // (their faces `pair`), could change the finding: the touching pairs
     // still want it, or it would mark a triangle touching another shell
-    // that is not yet marked. Past the stop of touching pairs, an assembly
-    // resting on itself has every triangle marked by its first touching
-    // pair, and its other pairs need only say whether they cross (a mark
-    // read unset by a race only costs the full test).
+    // that needs a mark. Past the stop of touching pairs, an assembly
+    // resting on itself has every triangle that needs one marked by its
+    // first touching pair (and parts resting on each other in a grid need
+    // none), and its other pairs need only say whether they cross.
     auto touching_matters = [&](std::uint32_t i, std::uint32_t j, const FacePair& pair,
                                 const PairCollector& touching) {
         if (touching.wants(pair)) return true;
         if (!nesting || shell_of(i) == shell_of(j)) return false;
-        return !touches_other_shell[surface.lowest_copy(i)].load(std::memory_order_relaxed) ||
-               !touches_other_shell[surface.lowest_copy(j)].load(std::memory_order_relaxed);
+        return needs_mark(i) || needs_mark(j);
     };
 
     // Per shape (its lowest triangle), with shells: whether two of its
@@ -264,13 +272,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         if (face_i == face_j) return;  // pieces of one polygon
         const FacePair pair{std::min(face_i, face_j), std::max(face_i, face_j)};
         // Triangles of two shells that only rest on each other (most pairs
-        // of a touching assembly), both already marked: they could only add
-        // a touching pair, asked first and alone.
+        // of a touching assembly), neither needing a mark: they could only
+        // add a touching pair, asked first and alone.
         if (shared.count == 0 && nesting) {
             const std::uint32_t shell_i = shell_of(i), shell_j = shell_of(j);
-            if (shell_i != shell_j &&
-                touches_other_shell[surface.lowest_copy(i)].load(std::memory_order_relaxed) &&
-                touches_other_shell[surface.lowest_copy(j)].load(std::memory_order_relaxed) &&
+            if (shell_i != shell_j && !needs_mark(i) && !needs_mark(j) &&
                 apart_but_in_a_plane(shell_boxes[shell_i], shell_boxes[shell_j],
                                      flat_axes(surface.corner_extremes(i)) &
                                          flat_axes(surface.corner_extremes(j))) &&
@@ -465,8 +471,7 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                  ++at) {
                 if (!paired.boxes[at].overlaps(paired.shell_boxes[t])) continue;
                 const std::uint32_t i = paired.triangles[at];
-                near.push_back({at, touches_other_shell[i].load(std::memory_order_relaxed) != 0,
-                                flat_axes(surface.corner_extremes(i))});
+                near.push_back({at, !needs_mark(i), flat_axes(surface.corner_extremes(i))});
             }
         };
         // The pairs of triangles of shells s and t whose boxes overlap (a

@@ -44,14 +44,19 @@ inline std::uint32_t flat_axes(std::uint32_t corner_extremes) {
 struct SurfaceContacts {
     PairFinding crossing;  // face pairs (low, high) that cross
     PairFinding touching;  // face pairs that meet without crossing (and share no vertex)
-    // With two shells or more, per shape (its lowest copy): whether it
-    // touches a triangle of another shell. Only there can the rest of the
-    // surface wind around a shell otherwise than at one vertex of it
-    // (shell_nesting.hpp). Empty otherwise.
+    // With two shells or more, per shell: whether another shell's box
+    // reaches inside its own (shells_reached_inside, shell_pairs.hpp), so
+    // that another shell may wind around it. Empty otherwise.
+    std::pmr::vector<std::uint8_t> reached_inside;
+    // With two shells or more, per shape (its lowest copy) of a shell
+    // reached inside: whether it touches a triangle of another shell. Only
+    // there can the rest of the surface wind around a shell otherwise than
+    // at one vertex of it (shell_nesting.hpp). Empty otherwise; never set on
+    // a shell not reached inside, which nothing winds around.
     std::pmr::vector<std::atomic<std::uint8_t>> touches_other_shell;
 
     SurfaceContacts(std::size_t triangles, std::pmr::memory_resource* memory)
-        : touches_other_shell(triangles, memory) {}
+        : reached_inside(memory), touches_other_shell(triangles, memory) {}
 };
 
 // With the surface's shells (IndexedSurface::shells), coinciding faces of
