@@ -92,17 +92,23 @@ std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surfa
             });
         if (!within_budget) return std::nullopt;
     }
-    std::sort(meeting.begin(), meeting.end());
+    // The partners grouped by shell, then each shell's few sorted: a sort
+    // of all the pairs cost nine tenths of this pairing on 1,000 cubes.
     paired.first_partner.assign(shell_count + 1, 0);
-    paired.partners.reserve(meeting.size());
-    for (const auto& [r, s] : meeting) {
-        ++paired.first_partner[r + 1];
-        paired.partners.push_back(s);
-    }
+    for (const auto& [r, s] : meeting) ++paired.first_partner[r + 1];
     for (std::size_t s = 0; s < shell_count; ++s) {
         paired.first_partner[s + 1] += paired.first_partner[s];
         paired.first_triangle[s + 1] += paired.first_triangle[s];
     }
+    paired.partners.resize(meeting.size());
+    {
+        std::pmr::vector<std::uint32_t> next(paired.first_partner.begin(),
+                                             paired.first_partner.end() - 1, memory);
+        for (const auto& [r, s] : meeting) paired.partners[next[r]++] = s;
+    }
+    for (std::size_t s = 0; s < shell_count; ++s)
+        std::sort(paired.partners.begin() + paired.first_partner[s],
+                  paired.partners.begin() + paired.first_partner[s + 1]);
 
     // Each shell's triangles in ascending order, with their boxes as the
     // tree of triangles has them.

@@ -465,13 +465,16 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
             bool marked;
             std::uint32_t flat;  // flat_axes
         };
-        auto near_other = [&](std::uint32_t s, std::uint32_t t, std::pmr::vector<Near>& near) {
+        // Those flat on the axes `flat_on` only, when that is not 0.
+        auto near_other = [&](std::uint32_t s, std::uint32_t t, std::uint32_t flat_on,
+                              std::pmr::vector<Near>& near) {
             near.clear();
             for (std::uint32_t at = paired.first_triangle[s]; at < paired.first_triangle[s + 1];
                  ++at) {
                 if (!paired.boxes[at].overlaps(paired.shell_boxes[t])) continue;
                 const std::uint32_t i = paired.triangles[at];
-                near.push_back({at, !needs_mark(i), flat_axes(surface.corner_extremes(i))});
+                const std::uint32_t flat = flat_axes(surface.corner_extremes(i));
+                if ((flat & flat_on) == flat_on) near.push_back({at, !needs_mark(i), flat});
             }
         };
         // The pairs of triangles of shells s and t whose boxes overlap (a
@@ -481,13 +484,18 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         // the touching pairs are full), only the pairs of which a triangle
         // is not yet marked, or both lie flat in that plane (a triangle flat
         // on two axes is degenerate: none when the boxes meet in a line or a
-        // point). A mark read before it was set only costs a test.
+        // point). A mark read before it was set only costs a test. Where
+        // neither shell's triangles need marks (parts resting on each other
+        // in a grid), only the triangles flat in that plane are listed.
         auto pair_between = [&](std::uint32_t s, std::uint32_t t, std::uint32_t resting,
                                 PieceContacts& contacts, std::pmr::vector<Near>& of_s,
                                 std::pmr::vector<Near>& of_t) {
-            near_other(s, t, of_s);
+            const std::uint32_t flat_on =
+                resting != 0 && !reached_inside[s] && !reached_inside[t] ? resting : 0;
+            if ((flat_on & (flat_on - 1)) != 0) return;  // a line or a point
+            near_other(s, t, flat_on, of_s);
             if (of_s.empty()) return;
-            near_other(t, s, of_t);
+            near_other(t, s, flat_on, of_t);
             for (const Near& first : of_s)
                 for (const Near& second : of_t)
                     if ((resting == 0 || !first.marked || !second.marked ||
