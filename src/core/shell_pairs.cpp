@@ -39,7 +39,10 @@ std::pmr::vector<std::uint8_t> shells_reached_inside(const IndexedSurface<Scalar
                                                      std::pmr::memory_resource* memory) {
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
     const std::size_t shell_count = shell_boxes.size();
-    std::pmr::vector<std::uint8_t> reached(shell_count, 0, memory);
+    // Copies on two shells coincide, which crosses, and the nesting is not
+    // asked; a pile of copies would only cost the walk's budget.
+    std::pmr::vector<std::uint8_t> reached(shell_count, surface.any_copies(), memory);
+    if (surface.any_copies()) return reached;
     const BoxTree tree(rounded_shell_boxes(surface, memory), memory, tasks);
     std::size_t pairs = 0;
     for (const BoxTree::PairTask& piece : tree.pair_tasks()) {

@@ -66,8 +66,9 @@ std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surfa
 // off it outside its open box. Parts resting on each other, whose boxes
 // meet in a plane, a line or a point, are reached inside by none. Exact,
 // from the shells' exact boxes; past kShellPairsCompared pairs of boxes a
-// shell (boxes inside boxes, a pile of parts) every shell is taken as
-// reached. The same for every runner.
+// shell (boxes inside boxes, a pile of parts), and on a surface with copies
+// (a pile of copies), every shell is taken as reached. The same for every
+// runner.
 template <class Scalar, class Index>
 std::pmr::vector<std::uint8_t> shells_reached_inside(const IndexedSurface<Scalar, Index>& surface,
                                                      TaskRunner& tasks,
