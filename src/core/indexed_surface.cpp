@@ -82,7 +82,8 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
                                               const std::uint32_t* vertex_ids,
                                               const Eigen::Vector3d& reference, double size,
                                               const Shells* shells, TaskRunner& tasks,
-                                              std::pmr::memory_resource* memory)
+                                              std::pmr::memory_resource* memory,
+                                              bool may_have_copies)
     : mesh_(mesh),
       callers_corners_(uses_callers_corners(mesh, vertex_ids)),
       triangles_(callers_corners_ ? SurfaceTriangles(memory) : triangulate_faces(mesh, memory)),
@@ -98,7 +99,7 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       copies_before_(memory),
       lowest_(memory),
       next_(memory),
-      tree_(boxes_with_copies(vertex_ids, tasks, memory), memory, tasks),
+      tree_(boxes_with_copies(vertex_ids, may_have_copies, tasks, memory), memory, tasks),
       leaf_corners_(corners_by_leaf(tasks, memory)) {}
 
 template <class Scalar, class Index>
@@ -114,7 +115,8 @@ bool IndexedSurface<Scalar, Index>::uses_callers_corners(const MeshView<Scalar, 
 // the peak of a million triangles.) The tree takes the boxes.
 template <class Scalar, class Index>
 std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
-    const std::uint32_t* vertex_ids, TaskRunner& tasks, std::pmr::memory_resource* memory) {
+    const std::uint32_t* vertex_ids, bool may_have_copies, TaskRunner& tasks,
+    std::pmr::memory_resource* memory) {
     // Each corner as the vertex it is welded to, in place: the test of
     // shared corners reads nothing else for most candidate pairs.
     if (vertex_ids)
@@ -134,7 +136,7 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
     // their order.)
     std::pmr::vector<FloatBox> boxes(size(), memory);
     corner_bits_.resize(size());
-    std::pmr::vector<std::uint64_t> shape_keys(size(), memory);
+    std::pmr::vector<std::uint64_t> shape_keys(may_have_copies ? size() : 0, memory);
     // Each block's shells' boxes, per run of its triangles on one shell
     // (numbered in the order of their first faces, a shell's faces mostly
     // come together), joined in block order: the same boxes whatever the
@@ -156,7 +158,8 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
             ShellRun run{kNoShell, ShellBox()};
             for (std::size_t t = begin; t < end; ++t) {
                 const Triangle corners = triangle(t);
-                shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
+                if (may_have_copies)
+                    shape_keys[t] = (shape_hash(corners) & 0xffffffff00000000u) | t;
                 const bool degenerate = is_degenerate(corners);
                 const CornerOrder order = order_corners(corners);
                 corner_bits_[t] = order.extremes | std::uint32_t(degenerate) << kDegenerateBit;
@@ -181,6 +184,7 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
             for (const ShellRun& run : runs) shell_boxes_[run.shell].extend(run.box);
         let_go(runs_of_block);
     }
+    if (!may_have_copies) return boxes;
     find_copies(std::move(shape_keys), memory);
     for_each_in_blocks(size(), kFacesPerBlock, tasks, [&](std::size_t t) {
         if (lowest_copy(t) != t) boxes[t] = FloatBox();

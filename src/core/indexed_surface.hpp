@@ -52,12 +52,15 @@ public:
     // vertex_ids: welding (see weld_vertices), null meaning the index itself.
     // reference, size: a point near the surface and its size (the scan's
     // bounding box centre and diagonal). shells: null, or the surface's
-    // shells, kept by pointer. Indices must be in range, coordinates finite,
-    // faces fewer than 2^32. Built in blocks on `tasks`; the same for every
-    // runner.
+    // shells, kept by pointer. may_have_copies false: the caller has proved
+    // that no two triangles lie at the same three positions in the same
+    // order (copies_ruled_out, topology.hpp), and their search is skipped.
+    // Indices must be in range, coordinates finite, faces fewer than 2^32.
+    // Built in blocks on `tasks`; the same for every runner.
     IndexedSurface(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                    const Eigen::Vector3d& reference, double size, const Shells* shells,
-                   TaskRunner& tasks, std::pmr::memory_resource* memory);
+                   TaskRunner& tasks, std::pmr::memory_resource* memory,
+                   bool may_have_copies = true);
 
     std::size_t size() const { return size_; }
     // Triangle t's corners as welded vertices, in the face's turn.
@@ -119,7 +122,8 @@ public:
     const std::pmr::vector<ShellBox>& shell_boxes() const { return shell_boxes_; }
 
 private:
-    std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids, TaskRunner& tasks,
+    std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids,
+                                                 bool may_have_copies, TaskRunner& tasks,
                                                  std::pmr::memory_resource* memory);
     // Triangles at the same three positions in the same order: copies of a
     // part stacked in place, or a surface exported twice. keys: per

@@ -188,9 +188,13 @@ MeshAnalysis analyse_mesh(const MeshView<Scalar, Index>& mesh, const AnalysisSet
         const std::pmr::vector<std::uint32_t> lowest =
             welded ? lowest_welded_vertices(numbered, scan, memory)
                    : std::pmr::vector<std::uint32_t>(memory);
+        // Copies need no search where the topology rules them out (a closed,
+        // oriented surface of welded triangles, most meshes).
+        const bool may_have_copies =
+            !copies_ruled_out(mesh.all_triangles(), weld, *analysis.topology);
         analysis.overlaps =
             find_overlaps(mesh, welded ? lowest.data() : nullptr, integration.reference,
-                          integration.size, shells, tasks, memory);
+                          integration.size, shells, may_have_copies, tasks, memory);
         if (!analysis.overlaps->winding_of_shell.empty())
             classify_by_winding(*analysis.shells, analysis.overlaps->winding_of_shell,
                                 analysis.verdict.outward);

@@ -8,9 +8,10 @@ namespace polymass::core {
 template <class Scalar, class Index>
 SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                               const Eigen::Vector3d& reference, double size, const Shells* shells,
-                              TaskRunner& tasks, std::pmr::memory_resource* memory) {
+                              bool may_have_copies, TaskRunner& tasks,
+                              std::pmr::memory_resource* memory) {
     const IndexedSurface<Scalar, Index> surface(mesh, vertex_ids, reference, size, shells, tasks,
-                                                memory);
+                                                memory, may_have_copies);
     const SurfaceContacts contacts = find_contacts(surface, tasks, memory);
     SurfaceOverlaps result(memory);
     result.crossing = contacts.crossing;
@@ -24,7 +25,7 @@ SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::ui
 #define POLYMASS_INSTANTIATE(Scalar, Index)                                                   \
     template SurfaceOverlaps find_overlaps<Scalar, Index>(                                    \
         const MeshView<Scalar, Index>&, const std::uint32_t*, const Eigen::Vector3d&, double, \
-        const Shells*, TaskRunner&, std::pmr::memory_resource*);
+        const Shells*, bool, TaskRunner&, std::pmr::memory_resource*);
 POLYMASS_FOR_EACH_MESH_VIEW(POLYMASS_INSTANTIATE)
 #undef POLYMASS_INSTANTIATE
 

@@ -32,12 +32,14 @@ struct SurfaceOverlaps {
 // vertex_ids: welding (see weld_vertices), null meaning the index itself.
 // reference, size: a point near the surface and its size (the scan's bounding
 // box centre and diagonal). shells: null, or the
-// surface's shells, whose windings are then counted. The search for meeting
-// faces runs as tasks of `tasks`; the result is the same for every runner.
-// Indices must be in range, coordinates finite, faces fewer than 2^32.
+// surface's shells, whose windings are then counted. may_have_copies: false
+// when copies are ruled out (copies_ruled_out, topology.hpp). The search for
+// meeting faces runs as tasks of `tasks`; the result is the same for every
+// runner. Indices must be in range, coordinates finite, faces fewer than 2^32.
 template <class Scalar, class Index>
 SurfaceOverlaps find_overlaps(const MeshView<Scalar, Index>& mesh, const std::uint32_t* vertex_ids,
                               const Eigen::Vector3d& reference, double size, const Shells* shells,
-                              TaskRunner& tasks, std::pmr::memory_resource* memory);
+                              bool may_have_copies, TaskRunner& tasks,
+                              std::pmr::memory_resource* memory);
 
 }  // namespace polymass::core

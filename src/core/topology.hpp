@@ -62,6 +62,15 @@ struct TopologyReport {
     }
 };
 
+// Whether no two triangles of a surface can lie at the same three positions
+// in the same order (copies, indexed_surface.hpp): every face a triangle,
+// its vertices welded (equal positions one vertex), and every edge used
+// exactly once each way. Two such triangles would be on the same three
+// vertices and use each of their edges the same way.
+inline bool copies_ruled_out(bool all_triangles, bool welded, const TopologyReport& topology) {
+    return all_triangles && welded && topology.closed_and_oriented(false);
+}
+
 // identities: each vertex's for the check (vertex_identities.hpp: itself, or
 // its welded position numbered densely); edges are named by the vertices
 // identities.vertex gives. Indices must be in range. Edges whose two ends are

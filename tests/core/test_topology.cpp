@@ -28,6 +28,7 @@
 #include <numeric>
 #include <optional>
 #include <random>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -229,7 +230,31 @@ void check_analysis(const TestMesh& mesh, const VertexIdentities& identities,
         }
 }
 
+// Whether two triangles repeat three vertices in one turn (copies, when the
+// vertices are welded), compared in every rotation.
+bool repeats_a_triangle(const TestMesh& mesh) {
+    std::set<std::array<std::uint32_t, 3>> seen;
+    for (std::size_t f = 0; f < mesh.indices.size(); f += 3) {
+        std::array<std::uint32_t, 3> t{mesh.indices[f], mesh.indices[f + 1], mesh.indices[f + 2]};
+        std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        if (!seen.insert(t).second) return true;
+    }
+    return false;
+}
+
+// copies_ruled_out is said only of meshes that repeat no triangle; counted
+// both ways, so that the meshes below reach each.
+std::size_t ruled_out_count = 0, repeating_count = 0;
+void check_copies_ruled_out(const TestMesh& mesh) {
+    const bool ruled_out = polymass::core::copies_ruled_out(true, true, reference_report(mesh));
+    const bool repeats = repeats_a_triangle(mesh);
+    CHECK(!(ruled_out && repeats));
+    ruled_out_count += ruled_out;
+    repeating_count += repeats;
+}
+
 void check_mesh(const TestMesh& mesh, bool two_threads = false) {
+    check_copies_ruled_out(mesh);
     const std::vector<std::uint32_t> expected_roots = reference_roots(mesh);
     check_analysis(
         mesh, {}, reference_report(mesh),
@@ -539,6 +564,14 @@ int main() {
         check_mesh(pieces);
         check_welded_soup(pieces, random);
     }
+    // A closed grid with one face written again and once reversed: each of
+    // its edges is used twice each way, a balanced non-manifold edge, and
+    // the face has a copy.
+    TestMesh repeated = torus_grid(4, 5, random);
+    repeated.add_face({repeated.indices[0], repeated.indices[1], repeated.indices[2]});
+    repeated.add_face({repeated.indices[0], repeated.indices[2], repeated.indices[1]});
+    check_mesh(repeated);
+    CHECK(ruled_out_count > 0 && repeating_count > 0);
     check_large_buckets(random);
     check_mostly_unused_vertices();
     // Large enough for the weld's shares.
