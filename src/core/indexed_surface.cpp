@@ -99,8 +99,16 @@ IndexedSurface<Scalar, Index>::IndexedSurface(const MeshView<Scalar, Index>& mes
       copies_before_(memory),
       lowest_(memory),
       next_(memory),
-      tree_(boxes_with_copies(vertex_ids, may_have_copies, tasks, memory), memory, tasks),
-      leaf_corners_(corners_by_leaf(tasks, memory)) {}
+      memory_(memory),
+      boxes_(boxes_with_copies(vertex_ids, may_have_copies, tasks, memory)),
+      leaf_corners_(memory) {}
+
+template <class Scalar, class Index>
+void IndexedSurface<Scalar, Index>::build_tree(TaskRunner& tasks) const {
+    if (tree_) return;
+    tree_.emplace(std::move(boxes_), memory_, tasks);
+    leaf_corners_ = corners_by_leaf(tasks, memory_);
+}
 
 template <class Scalar, class Index>
 bool IndexedSurface<Scalar, Index>::uses_callers_corners(const MeshView<Scalar, Index>& mesh,
@@ -195,13 +203,13 @@ std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::boxes_with_copies(
 template <class Scalar, class Index>
 std::pmr::vector<LeafCorners> IndexedSurface<Scalar, Index>::corners_by_leaf(
     TaskRunner& tasks, std::pmr::memory_resource* memory) const {
-    std::pmr::vector<LeafCorners> leaves(tree_.leaf_count(), memory);
+    std::pmr::vector<LeafCorners> leaves(tree_->leaf_count(), memory);
     for_each_in_blocks(
         leaves.size(), kFacesPerBlock / BoxTree::kLeafSize, tasks, [&](std::size_t leaf) {
             LeafCorners& lanes = leaves[leaf];
             for (std::size_t lane = 0; lane < BoxTree::kLeafSize; ++lane) {
-                if (BoxTree::kLeafSize * leaf + lane >= tree_.item_count()) break;
-                const std::uint32_t t = tree_.leaf_item(leaf, lane);
+                if (BoxTree::kLeafSize * leaf + lane >= tree_->item_count()) break;
+                const std::uint32_t t = tree_->leaf_item(leaf, lane);
                 for (int k = 0; k < 3; ++k) lanes.corner[k][lane] = corners_[3 * t + k];
                 lanes.extremes[lane] =
                     corner_extremes(t) | (has_copies(t) ? LeafCorners::kHasCopies : 0);
@@ -218,7 +226,7 @@ std::size_t IndexedSurface<Scalar, Index>::copy_rank(std::size_t t) const {
 
 template <class Scalar, class Index>
 double IndexedSurface<Scalar, Index>::span() const {
-    const FloatBox everything = tree_.bounds();
+    const FloatBox everything = tree_->bounds();
     double span = 0;
     for (int k = 0; k < 3; ++k)
         span = std::max(span, double(everything.hi[k]) - double(everything.lo[k]));

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <memory_resource>
+#include <optional>
 #include <vector>
 
 #include "box_tree.hpp"
@@ -105,14 +106,20 @@ public:
 
     // The tree over the lowest copy of each shape, in units about the
     // reference: a power of two near the surface's size, so that single
-    // precision holds the boxes for any size a double does.
-    const BoxTree& tree() const { return tree_; }
+    // precision holds the boxes for any size a double does. Built with its
+    // leaves' LeafCorners by the first build_tree, on `tasks`, and only
+    // then: the search by pairs of shells (parts resting on each other)
+    // needs neither, and the tree was a tenth of its check. build_tree must
+    // be called from the thread that runs `tasks`, before any task reads
+    // the tree (a cache of a const index: the same tree whoever builds it).
+    void build_tree(TaskRunner& tasks) const;
+    const BoxTree& tree() const { return *tree_; }
     // The triangles of the tree's leaf `leaf` (LeafCorners).
     const LeafCorners& leaf_corners(std::size_t leaf) const { return leaf_corners_[leaf]; }
     Eigen::Vector3d in_units(const Eigen::Vector3d& p) const {
         return (p - reference_) * per_unit_;
     }
-    // The largest extent of the boxes, in the mesh's units.
+    // The largest extent of the boxes, in the mesh's units (once the tree is built).
     double span() const;
 
     // The shells given, or null.
@@ -176,8 +183,11 @@ private:
     std::pmr::vector<std::uint64_t> with_copies_;
     std::pmr::vector<std::uint32_t> copies_before_;
     std::pmr::vector<std::uint32_t> lowest_, next_;
-    BoxTree tree_;
-    std::pmr::vector<LeafCorners> leaf_corners_;
+    std::pmr::memory_resource* memory_;
+    // The triangles' boxes until the tree takes them.
+    mutable std::pmr::vector<FloatBox> boxes_;
+    mutable std::optional<BoxTree> tree_;
+    mutable std::pmr::vector<LeafCorners> leaf_corners_;
 };
 
 }  // namespace polymass::core

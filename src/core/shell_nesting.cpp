@@ -126,8 +126,6 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     const Shells& shells = *surface.shells();
     const auto& touches_other_shell = contacts.touches_other_shell;
     const auto shell_of = [&](std::size_t t) { return shells.of_face[surface.face(t)]; };
-    // The probes' far ends lie outside every box.
-    const double span = surface.span();
     std::pmr::vector<int> winding_of_shell(shells.count, kUnknownWinding, memory);
     // Only a shell another's box reaches inside may be wound around
     // (shells_reached_inside, docs/validity.md, "Only the shells whose boxes
@@ -139,7 +137,11 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         if (!wound[shell]) winding_of_shell[shell] = 0;
         any_wound = any_wound || wound[shell];
     }
-    if (!any_wound || !(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
+    if (!any_wound) return winding_of_shell;
+    // The probes walk the triangles' tree; their far ends lie outside every box.
+    surface.build_tree(tasks);
+    const double span = surface.span();
+    if (!(span > 0) || !std::isfinite(4 * span)) return winding_of_shell;
 
     // A few triangles of each shell that may be wound around, in order,
     // whose first corners are the probes; and a tree over the shells' boxes.

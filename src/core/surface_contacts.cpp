@@ -403,6 +403,7 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     // The search along the triangles' tree: every pair of shapes whose boxes
     // overlap, and the copies of each shape with each other (the last piece).
     auto search_triangle_pairs = [&]() {
+        surface.build_tree(tasks);
         const std::pmr::vector<BoxTree::PairTask> pieces = surface.tree().pair_tasks();
         std::pmr::vector<PieceContacts> found = pieces_of(pieces.size() + 1);
         tasks.run(pieces.size(), [&](std::size_t piece) {
