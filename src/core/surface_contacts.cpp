@@ -465,8 +465,10 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
             std::uint32_t at;  // in paired.triangles
             bool marked;
             std::uint32_t flat;  // flat_axes
+            int turn;            // turn_along the axis flat_on, when listed so
         };
-        // Those flat on the axes `flat_on` only, when that is not 0.
+        // Those flat on the axis `flat_on` only (one bit), with their turn
+        // along it, when that is not 0.
         auto near_other = [&](std::uint32_t s, std::uint32_t t, std::uint32_t flat_on,
                               std::pmr::vector<Near>& near) {
             near.clear();
@@ -475,7 +477,10 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                 if (!paired.boxes[at].overlaps(paired.shell_boxes[t])) continue;
                 const std::uint32_t i = paired.triangles[at];
                 const std::uint32_t flat = flat_axes(surface.corner_extremes(i));
-                if ((flat & flat_on) == flat_on) near.push_back({at, !needs_mark(i), flat});
+                if ((flat & flat_on) != flat_on) continue;
+                const int turn =
+                    flat_on != 0 ? turn_along(surface.triangle(i), __builtin_ctz(flat_on)) : 0;
+                near.push_back({at, !needs_mark(i), flat, turn});
             }
         };
         // The pairs of triangles of shells s and t whose boxes overlap (a
@@ -487,7 +492,9 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         // on two axes is degenerate: none when the boxes meet in a line or a
         // point). A mark read before it was set only costs a test. Where
         // neither shell's triangles need marks (parts resting on each other
-        // in a grid), only the triangles flat in that plane are listed.
+        // in a grid), only the triangles flat in that plane are listed, and
+        // only those turning alike paired: flat in one plane, two triangles
+        // that turn opposite ways (faces resting on each other) only touch.
         auto pair_between = [&](std::uint32_t s, std::uint32_t t, std::uint32_t resting,
                                 PieceContacts& contacts, std::pmr::vector<Near>& of_s,
                                 std::pmr::vector<Near>& of_t) {
@@ -501,6 +508,7 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                 for (const Near& second : of_t)
                     if ((resting == 0 || !first.marked || !second.marked ||
                          (first.flat & second.flat) == resting) &&
+                        first.turn == second.turn &&
                         paired.boxes[first.at].overlaps(paired.boxes[second.at]))
                         test_pair(paired.triangles[first.at], paired.triangles[second.at],
                                   contacts.crossing, contacts.touching);

@@ -375,12 +375,16 @@ Contact crossing_or_coinciding(const Triangle& p, const Triangle& q) {
         axis_met_once(p_box, q_box, axis + 1) != 3)
         return Contact::none;
     const Projection projection = dropping_axis[axis];
-    const int p_turn = projected_orientation(p, projection);
-    const int q_turn = projected_orientation(q, projection);
+    const int p_turn = turn_along(p, axis);
+    const int q_turn = turn_along(q, axis);
     return p_turn == q_turn && interiors_overlap(FlatPiece(p, projection, p_turn),
                                                  FlatPiece(q, projection, q_turn))
                ? Contact::coinciding
                : Contact::none;
+}
+
+int turn_along(const Triangle& t, int axis) {
+    return projected_orientation(t, dropping_axis[axis]);
 }
 
 bool is_degenerate(const Triangle& t) {

@@ -57,6 +57,13 @@ inline bool certainly_apart(const Triangle& p, const Triangle& q) {
     return certain_common_side(q[0], q[1], q[2], p[0], p[1], p[2]) != 0;
 }
 
+// The turn of t seen along `axis`, in the plane of the two others (axis + 1,
+// axis + 2): 1 counterclockwise, -1 clockwise, 0 when t is degenerate there.
+// Exact. Two triangles flat in one plane x = c coincide only when they turn
+// alike (crossing_or_coinciding): faces of parts resting on each other turn
+// opposite ways, which a caller that has listed them can ask once each.
+int turn_along(const Triangle& t, int axis);
+
 // True when the three corners are collinear (exactly).
 bool is_degenerate(const Triangle& t);
 
