@@ -185,11 +185,11 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     if (nesting) contacts.reached_inside = shells_reached_inside(surface, tasks, memory);
     const auto& reached_inside = contacts.reached_inside;
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
-    // Whether triangle t (with shells) is of a shell that another may wind
-    // around, not yet marked: only such a triangle's touching matters to the
-    // nesting. A mark read unset by a race only costs a test.
-    auto needs_mark = [&](std::uint32_t t) {
-        return reached_inside[shell_of(t)] &&
+    // Whether triangle t of shell `shell` is of a shell that another may
+    // wind around, not yet marked: only such a triangle's touching matters
+    // to the nesting. A mark read unset by a race only costs a test.
+    auto needs_mark = [&](std::uint32_t t, std::uint32_t shell) {
+        return reached_inside[shell] &&
                !touches_other_shell[surface.lowest_copy(t)].load(std::memory_order_relaxed);
     };
     auto note_contact = [&](Contact contact, std::uint32_t i, std::uint32_t j) {
@@ -209,8 +209,9 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     auto touching_matters = [&](std::uint32_t i, std::uint32_t j, const FacePair& pair,
                                 const PairCollector& touching) {
         if (touching.wants(pair)) return true;
-        if (!nesting || shell_of(i) == shell_of(j)) return false;
-        return needs_mark(i) || needs_mark(j);
+        if (!nesting) return false;
+        const std::uint32_t shell_i = shell_of(i), shell_j = shell_of(j);
+        return shell_i != shell_j && (needs_mark(i, shell_i) || needs_mark(j, shell_j));
     };
 
     // Per shape (its lowest triangle), with shells: whether two of its
@@ -276,7 +277,7 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         // add a touching pair, asked first and alone.
         if (shared.count == 0 && nesting) {
             const std::uint32_t shell_i = shell_of(i), shell_j = shell_of(j);
-            if (shell_i != shell_j && !needs_mark(i) && !needs_mark(j) &&
+            if (shell_i != shell_j && !needs_mark(i, shell_i) && !needs_mark(j, shell_j) &&
                 apart_but_in_a_plane(shell_boxes[shell_i], shell_boxes[shell_j],
                                      flat_axes(surface.corner_extremes(i)) &
                                          flat_axes(surface.corner_extremes(j))) &&
@@ -480,7 +481,7 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                 if ((flat & flat_on) != flat_on) continue;
                 const int turn =
                     flat_on != 0 ? turn_along(surface.triangle(i), __builtin_ctz(flat_on)) : 0;
-                near.push_back({at, !needs_mark(i), flat, turn});
+                near.push_back({at, !needs_mark(i, s), flat, turn});
             }
         };
         // The pairs of triangles of shells s and t whose boxes overlap (a
