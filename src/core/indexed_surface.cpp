@@ -225,6 +225,16 @@ std::size_t IndexedSurface<Scalar, Index>::copy_rank(std::size_t t) const {
 }
 
 template <class Scalar, class Index>
+std::pmr::vector<FloatBox> IndexedSurface<Scalar, Index>::rounded_shell_boxes(
+    std::pmr::memory_resource* memory) const {
+    std::pmr::vector<FloatBox> boxes(memory);
+    boxes.reserve(shell_boxes_.size());
+    for (const ShellBox& box : shell_boxes_)
+        boxes.push_back(FloatBox::spanning(in_units(box.lo), in_units(box.hi)));
+    return boxes;
+}
+
+template <class Scalar, class Index>
 double IndexedSurface<Scalar, Index>::span() const {
     const FloatBox everything = tree_->bounds();
     double span = 0;

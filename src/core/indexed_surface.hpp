@@ -127,6 +127,10 @@ public:
     // With two shells or more, each shell's box (by Shells' numbering);
     // empty otherwise.
     const std::pmr::vector<ShellBox>& shell_boxes() const { return shell_boxes_; }
+    // Those boxes in the tree's units, rounded outward: the items of a tree
+    // over the shells, whose pairs hold every pair of shells whose exact
+    // boxes meet.
+    std::pmr::vector<FloatBox> rounded_shell_boxes(std::pmr::memory_resource* memory) const;
 
 private:
     std::pmr::vector<FloatBox> boxes_with_copies(const std::uint32_t* vertex_ids,

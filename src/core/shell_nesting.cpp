@@ -131,13 +131,13 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // (shells_reached_inside, docs/validity.md, "Only the shells whose boxes
     // reach inside"): the others' winding is 0, exact, without a probe, and
     // their triangles are not marked touching.
-    const std::pmr::vector<std::uint8_t>& wound = contacts.reached_inside;
-    bool any_wound = false;
+    const std::pmr::vector<std::uint8_t>& reached_inside = contacts.reached_inside;
+    bool any_reached = false;
     for (std::size_t shell = 0; shell < shells.count; ++shell) {
-        if (!wound[shell]) winding_of_shell[shell] = 0;
-        any_wound = any_wound || wound[shell];
+        if (!reached_inside[shell]) winding_of_shell[shell] = 0;
+        any_reached = any_reached || reached_inside[shell];
     }
-    if (!any_wound) return winding_of_shell;
+    if (!any_reached) return winding_of_shell;
     // The probes walk the triangles' tree; their far ends lie outside every box.
     surface.build_tree(tasks);
     const double span = surface.span();
@@ -150,16 +150,11 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
     for (std::size_t t = 0; t < surface.size(); ++t) {
         const std::uint32_t shell = shell_of(t);
-        if (wound[shell] && !surface.meets_nothing(t) && probe_count[shell] < kProbeVertices)
+        if (reached_inside[shell] && !surface.meets_nothing(t) &&
+            probe_count[shell] < kProbeVertices)
             probes[shell][probe_count[shell]++] = std::uint32_t(t);
     }
-    std::pmr::vector<FloatBox> rounded_boxes(shells.count, memory);
-    for (std::size_t shell = 0; shell < shells.count; ++shell) {
-        // in_units keeps the order of coordinates: the corners' boxes lie in this one.
-        rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].lo));
-        rounded_boxes[shell].extend(surface.in_units(shell_boxes[shell].hi));
-    }
-    const BoxTree shell_tree(rounded_boxes, memory, tasks);
+    const BoxTree shell_tree(surface.rounded_shell_boxes(memory), memory, tasks);
 
     // Where the other shells can wind around a start: the box around those
     // whose boxes hold it (each winds 0 around points outside its box), and

@@ -20,17 +20,6 @@ bool insides_meet(const ShellBox& first, const ShellBox& second) {
            (second.lo.array() < first.hi.array()).all();
 }
 
-// The shells' boxes in the tree's units, rounded outward.
-template <class Scalar, class Index>
-std::pmr::vector<FloatBox> rounded_shell_boxes(const IndexedSurface<Scalar, Index>& surface,
-                                               std::pmr::memory_resource* memory) {
-    std::pmr::vector<FloatBox> boxes(memory);
-    boxes.reserve(surface.shell_boxes().size());
-    for (const ShellBox& box : surface.shell_boxes())
-        boxes.push_back(FloatBox::spanning(surface.in_units(box.lo), surface.in_units(box.hi)));
-    return boxes;
-}
-
 }  // namespace
 
 template <class Scalar, class Index>
@@ -43,7 +32,7 @@ std::pmr::vector<std::uint8_t> shells_reached_inside(const IndexedSurface<Scalar
     // asked; a pile of copies would only cost the walk's budget.
     std::pmr::vector<std::uint8_t> reached(shell_count, surface.any_copies(), memory);
     if (surface.any_copies()) return reached;
-    const BoxTree tree(rounded_shell_boxes(surface, memory), memory, tasks);
+    const BoxTree tree(surface.rounded_shell_boxes(memory), memory, tasks);
     std::size_t pairs = 0;
     for (const BoxTree::PairTask& piece : tree.pair_tasks()) {
         const bool within_budget =
@@ -82,7 +71,7 @@ std::optional<ShellPairs> pair_shells(const IndexedSurface<Scalar, Index>& surfa
     if (pairs > budget) return std::nullopt;
 
     const std::pmr::vector<ShellBox>& shell_boxes = surface.shell_boxes();
-    paired.shell_boxes = rounded_shell_boxes(surface, memory);
+    paired.shell_boxes = surface.rounded_shell_boxes(memory);
     const BoxTree tree(std::pmr::vector<FloatBox>(paired.shell_boxes, memory), memory, tasks);
     std::pmr::vector<std::array<std::uint32_t, 2>> meeting(memory);
     for (const BoxTree::PairTask& piece : tree.pair_tasks()) {
