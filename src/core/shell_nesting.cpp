@@ -8,6 +8,7 @@
 
 #include "box_tree.hpp"
 #include "exact_predicates.hpp"
+#include "position_hash.hpp"
 #include "scratch_buffer.hpp"
 
 namespace polymass::core {
@@ -337,7 +338,7 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // Start vertices at one point (separate parts touching there, each with
     // its own vertex) share one list: k parts meeting at a point would
     // otherwise list each other's triangles k times over, k^2 in all. The
-    // starts sorted by a hash of their position, then by position (the
+    // starts sorted by their position's hash (position_hash.hpp), then by position (the
     // starts at one point, of one hash, are neighbours), the points numbered
     // in that order, which only orders the lists. Each start's position is
     // fetched once, beside it: fetched at each comparison, the sort cost
@@ -349,21 +350,12 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
         std::array<double, 3> at;
         std::uint32_t start;
     };
-    const auto hash_of = [](const Eigen::Vector3d& p) {
-        std::uint64_t hash = 0;
-        for (int k = 0; k < 3; ++k) {
-            const double x = p[k] + 0.0;  // -0 is +0: one point, one hash
-            std::uint64_t bits = 0;
-            std::memcpy(&bits, &x, sizeof bits);
-            hash = (hash ^ bits) * 0x9E3779B97F4A7C15u;
-            hash ^= hash >> 29;
-        }
-        return hash;
-    };
     std::pmr::vector<PlacedStart> by_position(start_count, memory);
     for (std::uint32_t s = 0; s < start_count; ++s) {
         const Eigen::Vector3d p = position_of_start(s);
-        by_position[s] = {hash_of(p), {p[0], p[1], p[2]}, s};
+        const std::uint64_t hash =
+            position_hash({position_bits(p[0]), position_bits(p[1]), position_bits(p[2])});
+        by_position[s] = {hash, {p[0], p[1], p[2]}, s};
     }
     std::sort(by_position.begin(), by_position.end(),
               [](const PlacedStart& a, const PlacedStart& b) {

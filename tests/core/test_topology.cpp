@@ -425,6 +425,34 @@ void check_welded_soup(const TestMesh& mesh, std::mt19937& random) {
         });
 }
 
+// The hash spreads positions that differ only in their coordinates' signs:
+// on a grid of integer points about the origin, as doubles and as float32
+// read into doubles (the low 29 bits of each coordinate zero), the high halves
+// (the table's tags, and its slots' first bits) are as distinct as a random
+// hash's, about 0.1 pairs alike among 2^15. A hash that sums each
+// coordinate's product with a constant gives a point and its turn by half a
+// circle about an axis one hash: a quarter of the tags distinct.
+void check_weld_hash_spreads_signs() {
+    for (const bool through_float : {false, true}) {
+        std::set<std::uint32_t> tags;
+        std::size_t count = 0;
+        for (int x = -16; x < 16; ++x)
+            for (int y = -16; y < 16; ++y)
+                for (int z = -16; z < 16; ++z) {
+                    std::array<double, 3> p{x + 0.25, y + 0.5, z + 0.75};
+                    if (through_float)
+                        for (double& c : p) c = double(float(c / 3));
+                    tags.insert(std::uint32_t(
+                        polymass::core::position_hash({polymass::core::position_bits(p[0]),
+                                                       polymass::core::position_bits(p[1]),
+                                                       polymass::core::position_bits(p[2])}) >>
+                        32));
+                    ++count;
+                }
+        CHECK(tags.size() + 4 >= count);
+    }
+}
+
 // Positions whose hashes agree in their high half (the tag a table slot
 // keeps) are told apart by their bits, each coordinate: for each axis, a run
 // of positions differing in that coordinate alone, among which a pair with one
@@ -578,6 +606,7 @@ int main() {
     TestMesh large = torus_grid(170, 200, random);
     break_faces(large, 30, random);
     check_welded_soup(large, random);
+    check_weld_hash_spreads_signs();
     check_weld_tag_collisions();
     check_weld_within();
     return polymass_test::finish("test_topology");
