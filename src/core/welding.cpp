@@ -35,6 +35,37 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
     return used;
 }
 
+// A position's bits as the exact weld compares them, in a Scalar's room (a
+// float32 one in half a double's), read from the mesh as stored: each
+// coordinate plus zero, which makes -0 +0 and quiets a NaN, as on its way to
+// a double (position_bits); two float32 positions have equal bits exactly
+// when their doubles' position_bits are. Read as stored, without the
+// positions' accessor's widening to double (and, for float32, back).
+template <class Scalar>
+using PositionBits =
+    std::array<std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t>, 3>;
+
+template <class Scalar>
+PositionBits<Scalar> bits_at(const PositionArray<Scalar>& positions, std::uint32_t vertex) {
+    PositionBits<Scalar> bits;
+    const unsigned char* xyz = positions.base + std::size_t(vertex) * positions.stride;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        Scalar value;
+        std::memcpy(&value, xyz + axis * sizeof(Scalar), sizeof value);
+        value += Scalar(0);
+        std::memcpy(&bits[axis], &value, sizeof value);
+    }
+    return bits;
+}
+
+// The hash of a vertex's position, for the exact weld: of its bits as the
+// weld compares them.
+template <class Scalar, class Index>
+std::uint64_t hash_of_vertex(const MeshView<Scalar, Index>& mesh, std::uint32_t vertex) {
+    const PositionBits<Scalar> bits = bits_at(mesh.positions, vertex);
+    return position_hash({bits[0], bits[1], bits[2]});
+}
+
 // One hashing pass over the used vertices in index order (no list of them): the
 // first vertex met at a position (the lowest index) enters the table, and the
 // position is numbered in the order met; every later vertex with the same bits
@@ -94,23 +125,8 @@ public:
 
 private:
     static constexpr std::size_t kAhead = 16;
-    // A position's bits as the weld compares them, in a Scalar's room (a
-    // float32 one in half a double's): for double, position_bits; for float,
-    // the bits of the float read, +0 for -0 and NaN quieted as on its way to a
-    // double, which are equal exactly when its double's position_bits are.
-    using Bits =
-        std::array<std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t>,
-                   3>;
+    using Bits = PositionBits<Scalar>;
     static constexpr std::uint64_t kHighHalf = 0xFFFFFFFF00000000ull;
-
-    static Bits bits_of(const Eigen::Vector3d& p) {
-        Bits bits;
-        for (int axis = 0; axis < 3; ++axis) {
-            const Scalar value = Scalar(p[axis]) + Scalar(0);
-            std::memcpy(&bits[std::size_t(axis)], &value, sizeof value);
-        }
-        return bits;
-    }
     // The first slot to probe for a hash, or for a slot holding it.
     std::size_t home(std::uint64_t hash_or_slot) const {
         return std::size_t(hash_or_slot >> 32) & (slots_.size() - 1);
@@ -123,7 +139,7 @@ private:
     }
 
     void number(std::uint32_t vertex, std::uint64_t hash) {
-        const Bits bits = bits_of(mesh_.positions[vertex]);
+        const Bits bits = bits_at(mesh_.positions, vertex);
         const std::uint64_t tag = hash & kHighHalf;
         const std::size_t mask = slots_.size() - 1;
         std::size_t slot = home(hash);
@@ -165,13 +181,6 @@ HashingPass<Scalar, Index, VertexAt, HashOf> hashing_pass(const MeshView<Scalar,
                                                           std::uint32_t* number_of,
                                                           std::pmr::memory_resource* memory) {
     return {mesh, std::move(vertex_at), std::move(hash_of), number_of, memory};
-}
-
-// The hash of a vertex's position, for the exact weld.
-template <class Scalar, class Index>
-std::uint64_t hash_of_vertex(const MeshView<Scalar, Index>& mesh, std::uint32_t vertex) {
-    const Eigen::Vector3d p = mesh.positions[vertex];
-    return position_hash({position_bits(p.x()), position_bits(p.y()), position_bits(p.z())});
 }
 
 // The one pass of the exact weld over every vertex, in index order.
