@@ -18,7 +18,7 @@ inline std::uint64_t position_bits(double value) {
 }
 
 // MurmurHash3's 64-bit finaliser: every input bit reaches every output bit.
-inline std::uint64_t mixed(std::uint64_t h) {
+inline std::uint64_t avalanche(std::uint64_t h) {
     h ^= h >> 33;
     h *= 0xFF51AFD7ED558CCDull;
     h ^= h >> 33;
@@ -37,7 +37,7 @@ inline std::uint64_t mixed(std::uint64_t h) {
 // of integer points about the origin); now 1.5, as for a random hash
 // (docs/validity.md).
 inline std::uint64_t position_hash(const std::array<std::uint64_t, 3>& bits) {
-    return mixed(mixed(mixed(bits[0] ^ 0x9E3779B97F4A7C15ull) ^ bits[1]) ^ bits[2]);
+    return avalanche(avalanche(avalanche(bits[0] ^ 0x9E3779B97F4A7C15ull) ^ bits[1]) ^ bits[2]);
 }
 
 }  // namespace polymass::core

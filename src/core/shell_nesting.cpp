@@ -338,13 +338,14 @@ std::pmr::vector<int> count_windings(const IndexedSurface<Scalar, Index>& surfac
     // Start vertices at one point (separate parts touching there, each with
     // its own vertex) share one list: k parts meeting at a point would
     // otherwise list each other's triangles k times over, k^2 in all. The
-    // starts sorted by their position's hash (position_hash.hpp), then by position (the
-    // starts at one point, of one hash, are neighbours), the points numbered
-    // in that order, which only orders the lists. Each start's position is
-    // fetched once, beside it: fetched at each comparison, the sort cost
-    // more than all the rest of the numbering; sorted by position first,
-    // three coordinates compared at each step, it still cost a sixth of the
-    // count on cubes resting on each other (docs/validity.md).
+    // starts sorted by their position's hash (position_hash.hpp), then by
+    // position (the starts at one point, of one hash, are neighbours), the
+    // points numbered in that order, which only orders the lists. Each
+    // start's position is fetched once, beside it: fetched at each
+    // comparison, the sort cost more than all the rest of the numbering;
+    // sorted by position first, three coordinates compared at each step, it
+    // still cost a sixth of the count on cubes resting on each other
+    // (docs/validity.md).
     struct PlacedStart {
         std::uint64_t hash;
         std::array<double, 3> at;

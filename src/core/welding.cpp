@@ -36,11 +36,11 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
 }
 
 // A position's bits as the exact weld compares them, in a Scalar's room (a
-// float32 one in half a double's), read from the mesh as stored: each
-// coordinate plus zero, which makes -0 +0 and quiets a NaN, as on its way to
-// a double (position_bits); two float32 positions have equal bits exactly
-// when their doubles' position_bits are. Read as stored, without the
-// positions' accessor's widening to double (and, for float32, back).
+// float32 one in half a double's): each coordinate as the mesh stores it,
+// plus zero, which makes -0 +0 and quiets a NaN as on its way to a double
+// (position_bits); two float32 positions have equal bits exactly when their
+// doubles' position_bits are. Read without the positions' accessor, which
+// widens to double (and the comparison narrowed float32 back again).
 template <class Scalar>
 using PositionBits =
     std::array<std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t>, 3>;
