@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <memory_resource>
@@ -426,27 +427,32 @@ void check_welded_soup(const TestMesh& mesh, std::mt19937& random) {
 }
 
 // The hash spreads positions that differ only in their coordinates' signs:
-// on a grid of integer points about the origin, as doubles and as float32
-// read into doubles (the low 29 bits of each coordinate zero), the high halves
-// (the table's tags, and its slots' first bits) are as distinct as a random
+// on a grid of points about the origin, of the bits the weld hashes (a
+// double's, and a float32's in the low half of a word), the high halves (the
+// table's tags, and its slots' first bits) are as distinct as a random
 // hash's, about 0.1 pairs alike among 2^15. A hash that sums each
 // coordinate's product with a constant gives a point and its turn by half a
 // circle about an axis one hash: a quarter of the tags distinct.
 void check_weld_hash_spreads_signs() {
-    for (const bool through_float : {false, true}) {
+    for (const bool through_float : {false, true}) {  // float32 bits, or double
         std::set<std::uint32_t> tags;
         std::size_t count = 0;
         for (int x = -16; x < 16; ++x)
             for (int y = -16; y < 16; ++y)
                 for (int z = -16; z < 16; ++z) {
-                    std::array<double, 3> p{x + 0.25, y + 0.5, z + 0.75};
-                    if (through_float)
-                        for (double& c : p) c = double(float(c / 3));
-                    tags.insert(std::uint32_t(
-                        polymass::core::position_hash({polymass::core::position_bits(p[0]),
-                                                       polymass::core::position_bits(p[1]),
-                                                       polymass::core::position_bits(p[2])}) >>
-                        32));
+                    const std::array<double, 3> p{(x + 0.25) / 3, (y + 0.5) / 3, (z + 0.75) / 3};
+                    std::array<std::uint64_t, 3> bits{};
+                    for (std::size_t axis = 0; axis < 3; ++axis) {
+                        if (!through_float) {
+                            bits[axis] = polymass::core::position_bits(p[axis]);
+                            continue;
+                        }
+                        const float narrow = float(p[axis]);
+                        std::uint32_t narrow_bits = 0;
+                        std::memcpy(&narrow_bits, &narrow, sizeof narrow_bits);
+                        bits[axis] = narrow_bits;
+                    }
+                    tags.insert(std::uint32_t(polymass::core::position_hash(bits) >> 32));
                     ++count;
                 }
         CHECK(tags.size() + 4 >= count);
