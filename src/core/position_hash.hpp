@@ -6,13 +6,19 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace polymass::core {
 
-// The bits of a coordinate, +0 for -0.
-inline std::uint64_t position_bits(double value) {
-    value += 0.0;
-    std::uint64_t bits = 0;
+// The bits of a coordinate in its own precision (float or double), +0 for
+// -0: adding zero makes -0 +0 and quiets a NaN, as the widening of a float
+// to a double does, so two floats have equal bits exactly when their
+// doubles do.
+template <class Scalar>
+auto position_bits(Scalar value) {
+    static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>);
+    value += Scalar(0);
+    std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t> bits = 0;
     std::memcpy(&bits, &value, sizeof bits);
     return bits;
 }

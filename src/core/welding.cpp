@@ -6,7 +6,6 @@
 #include <cstring>
 #include <memory_resource>
 #include <numeric>
-#include <type_traits>
 #include <utility>
 
 #include "position_hash.hpp"
@@ -35,15 +34,12 @@ std::pmr::vector<std::uint32_t> used_vertices(const MeshScan& scan, std::size_t 
     return used;
 }
 
-// A position's bits as the exact weld compares them, in a Scalar's room (a
-// float32 one in half a double's): each coordinate as the mesh stores it,
-// plus zero, which makes -0 +0 and quiets a NaN as on its way to a double
-// (position_bits); two float32 positions have equal bits exactly when their
-// doubles' position_bits are. Read without the positions' accessor, which
-// widens to double (and the comparison narrowed float32 back again).
+// A position's bits as the exact weld compares them: each coordinate's
+// position_bits in the mesh's own precision (a float32 one in half a
+// double's room), read without the positions' accessor, which widens to
+// double (and the comparison narrowed float32 back again).
 template <class Scalar>
-using PositionBits =
-    std::array<std::conditional_t<std::is_same_v<Scalar, float>, std::uint32_t, std::uint64_t>, 3>;
+using PositionBits = std::array<decltype(position_bits(Scalar())), 3>;
 
 template <class Scalar>
 PositionBits<Scalar> bits_at(const PositionArray<Scalar>& positions, std::uint32_t vertex) {
@@ -52,8 +48,7 @@ PositionBits<Scalar> bits_at(const PositionArray<Scalar>& positions, std::uint32
     for (std::size_t axis = 0; axis < 3; ++axis) {
         Scalar value;
         std::memcpy(&value, xyz + axis * sizeof(Scalar), sizeof value);
-        value += Scalar(0);
-        std::memcpy(&bits[axis], &value, sizeof value);
+        bits[axis] = position_bits(value);
     }
     return bits;
 }

@@ -22,7 +22,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <map>
 #include <memory_resource>
@@ -442,16 +441,9 @@ void check_weld_hash_spreads_signs() {
                 for (int z = -16; z < 16; ++z) {
                     const std::array<double, 3> p{(x + 0.25) / 3, (y + 0.5) / 3, (z + 0.75) / 3};
                     std::array<std::uint64_t, 3> bits{};
-                    for (std::size_t axis = 0; axis < 3; ++axis) {
-                        if (!through_float) {
-                            bits[axis] = polymass::core::position_bits(p[axis]);
-                            continue;
-                        }
-                        const float narrow = float(p[axis]);
-                        std::uint32_t narrow_bits = 0;
-                        std::memcpy(&narrow_bits, &narrow, sizeof narrow_bits);
-                        bits[axis] = narrow_bits;
-                    }
+                    for (std::size_t axis = 0; axis < 3; ++axis)
+                        bits[axis] = through_float ? polymass::core::position_bits(float(p[axis]))
+                                                   : polymass::core::position_bits(p[axis]);
                     tags.insert(std::uint32_t(polymass::core::position_hash(bits) >> 32));
                     ++count;
                 }
