@@ -6,6 +6,9 @@
 
 namespace polymass::core {
 
+// avx2 is AVX2 with FMA, which every processor with AVX2 has had (Haswell,
+// Excavator and later): the integration's kernel fuses its move into the
+// frame (docs/integrals.md, section 5).
 enum class InstructionSet { baseline, avx2, avx512 };
 
 // Whether this processor (and its operating system) runs code built for `set`.

@@ -178,8 +178,9 @@ bool fused_move_is_exact(const Eigen::Vector3d& reference, double inverse_unit) 
 
 // The kernel built for each instruction set. The baseline does not fuse a
 // multiply and an add (x86-64 without FMA would do it in software): the file
-// is compiled with -ffp-contract=off, and the AVX-512 kernel fuses the move
-// into the frame alone, only where that gives the baseline's bits.
+// is compiled with -ffp-contract=off, and the AVX2 and AVX-512 kernels fuse
+// the move into the frame alone, only where that gives the baseline's bits
+// (the AVX2 set includes FMA: instruction_sets.hpp).
 template <TriangleForm form, class Scalar, class Index>
 void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch,
                               const GatheredTriangles& gathered, BatchResult& result) {
@@ -187,11 +188,11 @@ void integrate_batch_baseline(const TriangleBatch<Scalar, Index>& batch,
 }
 
 #if defined(__x86_64__)
-template <TriangleForm form, class Scalar, class Index>
-__attribute__((target("avx2"))) void integrate_batch_avx2(const TriangleBatch<Scalar, Index>& batch,
-                                                          const GatheredTriangles& gathered,
-                                                          BatchResult& result) {
-    integrate_batch<form, Lanes, false>(batch, gathered, result);
+template <TriangleForm form, bool fused, class Scalar, class Index>
+__attribute__((target("avx2,fma"))) void integrate_batch_avx2(
+    const TriangleBatch<Scalar, Index>& batch, const GatheredTriangles& gathered,
+    BatchResult& result) {
+    integrate_batch<form, Lanes, fused>(batch, gathered, result);
 }
 
 template <TriangleForm form, class Scalar, class Index>
@@ -207,15 +208,15 @@ using BatchKernel = void (*)(const TriangleBatch<Scalar, Index>&, const Gathered
                              BatchResult&);
 
 // The kernel of `set`; where the fused move would not give the baseline's
-// bits (fused_move_is_exact), AVX2's instead of AVX-512's (a processor with
-// AVX-512 runs AVX2).
+// bits (fused_move_is_exact), AVX2's unfused one (a processor with AVX-512
+// runs AVX2).
 template <TriangleForm form, class Scalar, class Index>
 BatchKernel<Scalar, Index> batch_kernel(InstructionSet set, bool fused_move_exact) {
 #if defined(__x86_64__)
-    if (set == InstructionSet::avx512 && fused_move_exact)
-        return integrate_batch_avx512<form, Scalar, Index>;
-    if (set == InstructionSet::avx512) return integrate_batch_avx2<form, Scalar, Index>;
-    if (set == InstructionSet::avx2) return integrate_batch_avx2<form, Scalar, Index>;
+    if (set != InstructionSet::baseline && !fused_move_exact)
+        return integrate_batch_avx2<form, false, Scalar, Index>;
+    if (set == InstructionSet::avx512) return integrate_batch_avx512<form, Scalar, Index>;
+    if (set == InstructionSet::avx2) return integrate_batch_avx2<form, true, Scalar, Index>;
 #endif
     (void)set;
     (void)fused_move_exact;
@@ -397,7 +398,11 @@ private:
         constexpr double u = 0x1p-53;
         const double radius = settings_.size / 2.0 / unit_;
         const std::size_t block_additions = blocks_ > 0 ? blocks_ - 1 : 0;
-        const double depth = 64.0 + double(total_.summed_terms + block_additions);
+        // Within a batch: a lane's triangles, then the lanes (lanes.hpp).
+        constexpr std::size_t batch_depth = 64;
+        static_assert(batch_capacity / width_of<WideLanes> + 4 <= batch_depth,
+                      "a batch's additions, per lane and across lanes, are counted");
+        const double depth = double(batch_depth + total_.summed_terms + block_additions);
         const double terms = depth * u * total_.extents_squared / 2.0;
         const double shell = std::sqrt(3.0) * u * radius * total_.surface_area;
         return {terms * radius + shell, terms * radius * radius + shell * radius,

@@ -18,7 +18,7 @@ namespace polymass::core {
 // A batch is a block of the summation: its lane sums are reduced before they
 // join the block's total, so rounding grows with the number of batches rather
 // than of triangles.
-inline constexpr std::size_t batch_capacity = 64;
+inline constexpr std::size_t batch_capacity = 256;
 // Gathered slots past the batch's end are filled up to a whole lane group of
 // the widest kernel, which reads a group at a time.
 inline constexpr std::size_t gathered_group = 2 * lane_count;
