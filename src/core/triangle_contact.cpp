@@ -184,8 +184,8 @@ struct Extent {
 // which moves neither end: three selects and two minima and maxima, in
 // registers (arrays of the corners' values with infinities for the others,
 // reduced by std::min of a list, went through the stack: about 46
-// instructions a call, three quarters of the time of deciding faces resting
-// on each other).
+// instructions a call, half of those of deciding faces resting on each
+// other).
 __attribute__((always_inline)) inline Extent extent(const Triangle& t, unsigned corners, int axis) {
     const double c0 = t[0][axis], c1 = t[1][axis], c2 = t[2][axis];
     const double first = corners & 1 ? c0 : corners & 2 ? c1 : c2;
