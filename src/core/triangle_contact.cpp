@@ -219,7 +219,8 @@ unsigned corners_at(const Triangle& t, unsigned corners, int axis, double value)
 Contact contact_in_plane(const Triangle& p, const Triangle& q, int plane_axis, double value) {
     unsigned s = corners_at(p, all_corners, plane_axis, value);
     unsigned t = corners_at(q, all_corners, plane_axis, value);
-    const int first = (plane_axis + 1) % 3, second = (plane_axis + 2) % 3;
+    const Projection projection = dropping_axis[plane_axis];
+    const int first = projection.first, second = projection.second;
     const Extent s_first = extent(p, s, first), t_first = extent(q, t, first);
     const Extent s_second = extent(p, s, second), t_second = extent(q, t, second);
     if (disjoint(s_first, t_first) || disjoint(s_second, t_second)) return Contact::none;
@@ -236,7 +237,6 @@ Contact contact_in_plane(const Triangle& p, const Triangle& q, int plane_axis, d
         return disjoint(extent(p, s, along), extent(q, t, along)) ? Contact::none
                                                                   : Contact::touching;
     }
-    const Projection projection = dropping_axis[plane_axis];
     if (s == all_corners && t == all_corners)
         return coplanar_contact(p, q, projection, projected_orientation(q, projection));
     const auto flat = [&](const Triangle& triangle, unsigned corners) {
