@@ -79,8 +79,9 @@ public:
     // two searches (surface_contacts.cpp), 3 % of a clean torus's check.
     __attribute__((always_inline)) Triangle triangle(std::size_t t, int first = 0) const {
         const std::array<std::uint32_t, 3> ids = corners(t);
-        return Triangle{mesh_.positions[ids[first]], mesh_.positions[ids[(first + 1) % 3]],
-                        mesh_.positions[ids[(first + 2) % 3]]};
+        const int second = first == 2 ? 0 : first + 1, third = second == 2 ? 0 : second + 1;
+        return Triangle{mesh_.positions[ids[first]], mesh_.positions[ids[second]],
+                        mesh_.positions[ids[third]]};
     }
 
     // The lowest copy of t's shape (t itself when it is alone), and the next
