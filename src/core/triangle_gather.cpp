@@ -41,9 +41,9 @@ __attribute__((always_inline)) inline bool indices_in_range(
     const std::uint32_t last =
         std::uint32_t(std::min<std::size_t>(batch.vertex_count, std::size_t{1} << 32) - 1);
     auto largest = [&](std::size_t length) {
-        std::uint32_t largest = 0;
-        for (std::size_t i = 0; i < length; ++i) largest = std::max(largest, indices[first + i]);
-        return largest;
+        std::uint32_t highest = 0;
+        for (std::size_t i = 0; i < length; ++i) highest = std::max(highest, indices[first + i]);
+        return highest;
     };
     return (batch.count == batch_capacity ? largest(3 * batch_capacity)
                                           : largest(3 * batch.count)) <= last;

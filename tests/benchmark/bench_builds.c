@@ -117,21 +117,9 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    const uint32_t segments = 500, rings = (uint32_t)(wanted / (2.0 * segments));
-    const size_t vertices = (size_t)rings * segments, triangles = 2 * vertices;
-    double* positions = checked_malloc(3 * vertices * sizeof *positions);
-    float* float_positions = checked_malloc(3 * vertices * sizeof *float_positions);
-    uint32_t* indices = checked_malloc(3 * triangles * sizeof *indices);
-    make_torus(rings, segments, positions, indices);
-    /* As bench_mass_properties: 1e6 away, float's steps of 1/16 would
-       collapse many of the float torus's triangles. */
-    for (size_t i = 0; i < 3 * vertices; ++i) float_positions[i] = (float)(positions[i] - 1e6);
-    polymass_mesh_desc desc = {sizeof desc};
-    desc.positions = float32 ? (const void*)float_positions : (const void*)positions;
-    desc.position_type = float32 ? POLYMASS_POSITION_FLOAT32 : POLYMASS_POSITION_FLOAT64;
-    desc.vertex_count = vertices;
-    desc.indices = indices;
-    desc.index_count = 3 * triangles;
+    torus_meshes meshes = make_torus_meshes(wanted);
+    const size_t triangles = meshes.triangles;
+    const polymass_mesh_desc desc = float32 ? meshes.float32 : meshes.float64;
 
     const size_t calls = (size_t)rounds * calls_per_turn;
     build builds[max_builds];
@@ -158,5 +146,7 @@ int main(int argc, char** argv) {
                    builds[b].volume == builds[0].volume ? "same bits" : "other last bits");
         printf("\n");
     }
+    free_torus_meshes(&meshes);
+    for (int b = 0; b < count; ++b) free(builds[b].seconds);
     return 0;
 }

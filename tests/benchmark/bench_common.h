@@ -94,4 +94,38 @@ static inline void make_torus(uint32_t rings, uint32_t segments, double* positio
     }
 }
 
+/* The torus of about `wanted` triangles (500 segments around its tube) twice:
+   in float64, 1e6 from the origin, and in float32 at the origin (1e6 away,
+   float's steps of 1/16 would collapse many of its triangles). The meshes
+   bench_mass_properties and bench_builds time. */
+typedef struct torus_meshes {
+    polymass_mesh_desc float64, float32;
+    size_t triangles;
+} torus_meshes;
+
+static inline torus_meshes make_torus_meshes(size_t wanted) {
+    const uint32_t segments = 500, rings = (uint32_t)(wanted / (2.0 * segments));
+    const size_t vertices = (size_t)rings * segments, triangles = 2 * vertices;
+    double* positions = checked_malloc(3 * vertices * sizeof *positions);
+    float* float_positions = checked_malloc(3 * vertices * sizeof *float_positions);
+    uint32_t* indices = checked_malloc(3 * triangles * sizeof *indices);
+    make_torus(rings, segments, positions, indices);
+    for (size_t i = 0; i < 3 * vertices; ++i) float_positions[i] = (float)(positions[i] - 1e6);
+    torus_meshes meshes = {{sizeof meshes.float64}, {sizeof meshes.float32}, triangles};
+    meshes.float64.positions = positions;
+    meshes.float64.vertex_count = vertices;
+    meshes.float64.indices = indices;
+    meshes.float64.index_count = 3 * triangles;
+    meshes.float32 = meshes.float64;
+    meshes.float32.position_type = POLYMASS_POSITION_FLOAT32;
+    meshes.float32.positions = float_positions;
+    return meshes;
+}
+
+static inline void free_torus_meshes(torus_meshes* meshes) {
+    free((void*)meshes->float64.positions);
+    free((void*)meshes->float32.positions);
+    free((void*)meshes->float64.indices);
+}
+
 #endif

@@ -180,26 +180,10 @@ static int one_thread_of(int m) {
 }
 
 static void run(size_t wanted, int rounds, polymass_context* context) {
-    const uint32_t segments = 500, rings = (uint32_t)(wanted / (2.0 * segments));
-    const size_t vertices = (size_t)rings * segments, triangles = 2 * vertices;
-    double* positions = malloc(3 * vertices * sizeof *positions);
-    float* float_positions = malloc(3 * vertices * sizeof *float_positions);
-    uint32_t* indices = malloc(3 * triangles * sizeof *indices);
-    double* seconds = malloc((size_t)measures * (size_t)rounds * sizeof *seconds);
-    if (!positions || !float_positions || !indices || !seconds) exit(1);
-    make_torus(rings, segments, positions, indices);
-    /* The float torus at the origin: 1e6 away, float's steps of 1/16 would
-       collapse many of its triangles. */
-    for (size_t i = 0; i < 3 * vertices; ++i) float_positions[i] = (float)(positions[i] - 1e6);
-
-    polymass_mesh_desc desc = {sizeof desc};
-    desc.positions = positions;
-    desc.vertex_count = vertices;
-    desc.indices = indices;
-    desc.index_count = 3 * triangles;
-    polymass_mesh_desc float_desc = desc;
-    float_desc.position_type = POLYMASS_POSITION_FLOAT32;
-    float_desc.positions = float_positions;
+    torus_meshes meshes = make_torus_meshes(wanted);
+    const size_t triangles = meshes.triangles;
+    const polymass_mesh_desc desc = meshes.float64, float_desc = meshes.float32;
+    double* seconds = checked_malloc((size_t)measures * (size_t)rounds * sizeof *seconds);
 
     double checksum = 0;
     for (int r = 0; r < rounds; ++r) {
@@ -240,9 +224,7 @@ static void run(size_t wanted, int rounds, polymass_context* context) {
         printf("\n");
     }
     free(seconds);
-    free(indices);
-    free(float_positions);
-    free(positions);
+    free_torus_meshes(&meshes);
 }
 
 int main(int argc, char** argv) {
