@@ -50,7 +50,9 @@ struct PairFinding {
     std::array<std::array<std::uint64_t, 2>, kKeptLocations> lowest{};  // ascending
     // False when counting stopped early (surface_contacts.cpp: a count past
     // kMostCountedPairs costs a test per pair and tells nothing more): count
-    // is then a lower bound; lowest stays exact.
+    // is then a lower bound; lowest stays exact, but where the search ended
+    // at the stop of the crossing pairs (SearchEnd): then both kinds hold
+    // what the search found until there.
     bool complete = true;
 
     std::size_t kept() const { return std::min(count, kKeptLocations); }

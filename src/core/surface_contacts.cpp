@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <mutex>
 #include <optional>
 #include <utility>
 
@@ -81,6 +83,10 @@ public:
     // Whether no pair was added.
     bool empty() const { return kept_ == 0; }
 
+    // Whether the count has stopped: kMostCountedPairs distinct pairs were
+    // added (seen at the latest when as many more have come).
+    bool stopped() const { return stopped_; }
+
     // Whether pair was counted or kept (after finding(): pairs_ is sorted).
     bool holds(const FacePair& pair) const {
         return std::binary_search(pairs_.begin(), pairs_.end(), pair) ||
@@ -116,6 +122,48 @@ private:
     std::array<FacePair, kKeptLocations> lowest_{};
     std::size_t kept_ = 0;
     bool stopped_ = false;
+};
+
+// Where the search along the tree ends: at the first piece, in piece order,
+// at which the crossing pairs of the pieces up to it reach the count's stop.
+// The surface is refused then whatever the rest holds, and a pile of parts
+// crossing each other everywhere (near copies, each turned a little) meets
+// in a number of pairs that grows with the square of the parts: the search
+// that went on to give the lowest pairs of all was quadratic there (800
+// cubes, 9,600 triangles: 9.5 s). The pieces past the end are not
+// searched, or their findings dropped when they ran at the same time; each
+// piece's findings depend on the piece alone (a piece stops at its own
+// count's stop, whose pairs already end the search there), so the end, and
+// the finding, are the same on any number of threads.
+class SearchEnd {
+public:
+    SearchEnd(std::size_t pieces, std::pmr::memory_resource* memory)
+        : searched_(pieces, 0, memory), crossing_(memory), end_(pieces) {}
+
+    // Whether piece lies past the end found so far: it need not be searched.
+    bool past(std::size_t piece) const { return piece >= end_.load(std::memory_order_relaxed); }
+
+    // Takes in the crossing pairs of a searched piece once those of every
+    // piece before it are in, and ends the search where they stop.
+    template <class CrossingOf>
+    void searched(std::size_t piece, const CrossingOf& crossing_of) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        searched_[piece] = 1;
+        for (; next_ < searched_.size() && searched_[next_] && !crossing_.stopped(); ++next_) {
+            crossing_.merge(crossing_of(next_));
+            if (crossing_.stopped()) end_.store(next_ + 1, std::memory_order_relaxed);
+        }
+    }
+
+    // How many pieces, from the first, the finding holds.
+    std::size_t end() const { return end_.load(std::memory_order_relaxed); }
+
+private:
+    std::mutex mutex_;
+    std::pmr::vector<std::uint8_t> searched_;
+    PairCollector crossing_;  // of pieces [0, next_)
+    std::size_t next_ = 0;
+    std::atomic<std::size_t> end_;
 };
 
 // How many corners two triangles share (as vertices, not positions), and
@@ -407,7 +455,12 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
         surface.build_tree(tasks);
         const std::pmr::vector<BoxTree::PairTask> pieces = surface.tree().pair_tasks();
         std::pmr::vector<PieceContacts> found = pieces_of(pieces.size() + 1);
+        SearchEnd end(found.size(), memory);
+        auto crossing_of = [&](std::size_t piece) -> const PairCollector& {
+            return found[piece].crossing;
+        };
         tasks.run(pieces.size(), [&](std::size_t piece) {
+            if (end.past(piece)) return;
             const BoxTree& tree = surface.tree();
             tree.for_each_overlapping_leaf_pair(
                 pieces[piece], [&](std::uint32_t first, std::uint32_t second,
@@ -424,14 +477,17 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                             else
                                 pair_copies(r, s, contacts.crossing, contacts.touching);
                         });
-                    return true;
+                    return !contacts.crossing.stopped();
                 });
+            end.searched(piece, crossing_of);
         });
         // The copies of one shape meet each other; the tree holds one of them.
-        for (std::uint32_t t = 0; t < surface.size(); ++t)
-            if (surface.lowest_copy(t) == t && surface.next_copy(t) != kNoCopy &&
-                !surface.meets_nothing(t))
-                pair_copies(t, t, found.back().crossing, found.back().touching);
+        if (!end.past(pieces.size()))
+            for (std::uint32_t t = 0; t < surface.size(); ++t)
+                if (surface.lowest_copy(t) == t && surface.next_copy(t) != kNoCopy &&
+                    !surface.meets_nothing(t))
+                    pair_copies(t, t, found.back().crossing, found.back().touching);
+        found.erase(found.begin() + std::ptrdiff_t(end.end()), found.end());
         return found;
     };
 
@@ -543,15 +599,21 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
                 piece_ends.push_back(s + 1);
                 start = paired.first_triangle[s + 1];
             }
+        // A crossing pair found anywhere sends the surface to the tree's
+        // search (below): the pieces stop at the first.
+        std::atomic<bool> crossing_found{false};
         std::pmr::vector<PieceContacts> found = pieces_of(piece_ends.size());
         tasks.run(piece_ends.size(), [&](std::size_t piece) {
             std::pmr::vector<Near> of_s(memory), of_t(memory);
             for (std::uint32_t s = piece == 0 ? 0 : piece_ends[piece - 1]; s < piece_ends[piece];
                  ++s) {
+                if (crossing_found.load(std::memory_order_relaxed)) return;
                 pair_within(s, found[piece]);
                 for (std::uint32_t at = paired.first_partner[s]; at < paired.first_partner[s + 1];
                      ++at)
                     pair_shells_met(s, paired.partners[at], found[piece], of_s, of_t);
+                if (!found[piece].crossing.empty())
+                    crossing_found.store(true, std::memory_order_relaxed);
             }
         });
         return found;
@@ -583,6 +645,9 @@ SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, Task
     // Faces that cross somewhere are listed as crossing only.
     contacts.crossing = crossing.finding();
     contacts.touching = touching.finding(&crossing);
+    // Past the crossing pairs' stop the search ended: touching pairs may lie
+    // in what it left.
+    contacts.touching.complete = contacts.touching.complete && contacts.crossing.complete;
     return contacts;
 }
 

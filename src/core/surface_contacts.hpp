@@ -62,7 +62,9 @@ struct SurfaceContacts {
 // With the surface's shells (IndexedSurface::shells), coinciding faces of
 // two shells cross and touching between shells is marked. The search runs as tasks of
 // `tasks`; the result is the same for every runner. Each kind counts its
-// pairs up to a limit and keeps the lowest exactly (PairFinding).
+// pairs up to a limit and keeps the lowest exactly (PairFinding), until
+// the crossing pairs reach the limit: the search ends there (SearchEnd in
+// surface_contacts.cpp), and neither kind is then complete.
 template <class Scalar, class Index>
 SurfaceContacts find_contacts(const IndexedSurface<Scalar, Index>& surface, TaskRunner& tasks,
                               std::pmr::memory_resource* memory);

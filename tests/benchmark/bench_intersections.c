@@ -106,6 +106,19 @@ static bench_mesh make_cubes(const char* name, uint32_t k, uint32_t side, int so
     return mesh;
 }
 
+/* Turns point p about the axis (1, 2, 3) through (centre, centre, centre) by
+   `angle` radians (Rodrigues' formula): a cube turned so meets an unturned
+   one in faces crossing, not only touching. */
+static void turn_about(double* p, double centre, double angle) {
+    const double norm = sqrt(14.0), k[3] = {1 / norm, 2 / norm, 3 / norm};
+    const double v[3] = {p[0] - centre, p[1] - centre, p[2] - centre};
+    const double cross[3] = {k[1] * v[2] - k[2] * v[1], k[2] * v[0] - k[0] * v[2],
+                             k[0] * v[1] - k[1] * v[0]};
+    const double along = (k[0] * v[0] + k[1] * v[1] + k[2] * v[2]) * (1 - cos(angle));
+    for (int axis = 0; axis < 3; ++axis)
+        p[axis] = centre + v[axis] * cos(angle) + cross[axis] * sin(angle) + k[axis] * along;
+}
+
 static double check_seconds(polymass_context* context, const bench_mesh* mesh, uint32_t flags,
                             uint32_t threads, polymass_diagnostics* report) {
     polymass_options options = POLYMASS_OPTIONS_INIT;
@@ -212,7 +225,7 @@ int main(int argc, char** argv) {
     }
     printf("libpolymass %s, median of %d interleaved rounds\n", polymass_version_string(), rounds);
     /* kind: 0 torus, 1 torus and its shifted copy, 2 separate cubes, 3 welded cubes, 4 pile,
-       5 flattened torus. */
+       5 flattened torus, 6 pile of cubes each turned (no two copies). */
     static const struct {
         const char* name;
         int kind;
@@ -227,7 +240,9 @@ int main(int argc, char** argv) {
                  {"1000 cubes resting on each other, one welded STL", 3, 1000},
                  {"8000 cubes resting on each other, one welded STL", 3, 8000},
                  {"pile of 1000 coincident cubes", 4, 1000},
-                 {"pile of 8000 coincident cubes", 4, 8000}};
+                 {"pile of 8000 coincident cubes", 4, 8000},
+                 {"pile of 1000 cubes, each turned", 6, 1000},
+                 {"pile of 8000 cubes, each turned", 6, 8000}};
     for (size_t c = 0; c < sizeof cases / sizeof *cases; ++c) {
         const double size = cases[c].size;
         if (!strstr(cases[c].name, only) || (cases[c].kind == 0 && size > largest)) continue;
@@ -236,13 +251,18 @@ int main(int argc, char** argv) {
             cases[c].kind == 0 || cases[c].kind == 5 ? make_tori(cases[c].name, (size_t)size, 1, 0)
             : cases[c].kind == 1 ? make_tori(cases[c].name, (size_t)size, 2, 0.1)
                                  : make_cubes(cases[c].name, (uint32_t)size,
-                                              cases[c].kind == 4 ? 0 : side, cases[c].kind == 3);
+                                              cases[c].kind >= 4 ? 0 : side, cases[c].kind == 3);
         if (cases[c].kind == 5) { /* an affine map: still closed, still crossing nowhere */
             double* positions = (double*)mesh.desc.positions;
             for (size_t v = 0; v < mesh.desc.vertex_count; ++v)
                 positions[3 * v + 2] = 1e6 + 0.01 * (positions[3 * v + 2] - 1e6);
         }
-        run(&mesh, rounds, !(cases[c].kind == 4 && size > 1000), context);
+        if (cases[c].kind == 6) { /* cube k turned about its centre by 0.3 k radians */
+            double* positions = (double*)mesh.desc.positions;
+            for (size_t v = 0; v < mesh.desc.vertex_count; ++v)
+                turn_about(positions + 3 * v, 1e6 + 0.5, 0.3 * (double)(v / 8));
+        }
+        run(&mesh, rounds, !(cases[c].kind >= 4 && cases[c].kind != 5 && size > 1000), context);
         free((void*)mesh.desc.positions);
         free((void*)mesh.desc.indices);
     }

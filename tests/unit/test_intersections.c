@@ -286,36 +286,57 @@ static int32_t check_pile(polymass_diagnostics* d, polymass_context* ctx, int co
     return status;
 }
 
+/* Whether d lists its first crossing pairs in ascending order, each of faces
+   of two cubes of 12 triangles (a pile's cubes cross only each other). */
+static int crossing_pairs_of_two_cubes(const polymass_diagnostics* d) {
+    size_t i;
+    for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+        const uint64_t* pair = d->first_intersecting_face_pairs[i];
+        if (pair[0] >= pair[1] || pair[0] / 12 == pair[1] / 12) return 0;
+        if (i > 0 && !(d->first_intersecting_face_pairs[i - 1][0] < pair[0] ||
+                       (d->first_intersecting_face_pairs[i - 1][0] == pair[0] &&
+                        d->first_intersecting_face_pairs[i - 1][1] < pair[1])))
+            return 0;
+    }
+    return 1;
+}
+
 /* Piles of copies of a part meet in face pairs by the square of the copies
    (a fuzzed pile of 252 coincident cubes took minutes): counting stops at 2048
-   pairs of a kind and says "at least 2048", and the pairs listed are still the
-   lowest, those of a pile of four. Forty copies pass the limit for both kinds. */
+   pairs of a kind and says "at least 2048". Past the touching pairs' stop the
+   pairs listed are still the lowest, those of a pile of four. Past the
+   crossing pairs' stop the search ends (POLYMASS_MAX_COUNTED_FACE_PAIRS):
+   the pairs listed are crossing ones, the same on one thread and on two.
+   Forty copies pass the limit for both kinds. */
 static void test_piles_of_copies_stop_counting(void** state) {
     static const double steps[] = {1e-3, 0.0}; /* crossing, then touching */
     polymass_context* ctx = pm_context_new();
-    polymass_diagnostics few, many;
+    polymass_diagnostics few, many, on_two_threads;
     size_t s, i;
     (void)state;
     for (s = 0; s < 2; ++s) {
         const int32_t status = check_pile(&few, ctx, 4, steps[s]);
         const uint64_t few_count = s == 0 ? few.intersecting_face_pairs : few.touching_face_pairs;
-        const uint64_t(*few_first)[2] =
-            s == 0 ? few.first_intersecting_face_pairs : few.first_touching_face_pairs;
-        const uint64_t(*many_first)[2] =
-            s == 0 ? many.first_intersecting_face_pairs : many.first_touching_face_pairs;
         assert_true(few_count >= POLYMASS_DIAGNOSTIC_LOCATIONS && few_count < 2048);
         if (s == 0) assert_null(strstr(polymass_context_message(ctx), "at least"));
+        PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, 1));
         PM_ASSERT_STATUS(ctx, status, check_pile(&many, ctx, 40, steps[s]));
+        PM_ASSERT_OK(ctx, polymass_context_set_threads(ctx, 2));
+        PM_ASSERT_STATUS(ctx, status, check_pile(&on_two_threads, ctx, 40, steps[s]));
+        assert_memory_equal(&many, &on_two_threads, sizeof many);
         if (s == 0) {
             assert_int_equal(status, POLYMASS_ERROR_INTERSECTING);
             assert_non_null(strstr(polymass_context_message(ctx), "(at least 2048 "));
             assert_int_equal(many.intersecting_face_pairs, 2048);
+            assert_true(crossing_pairs_of_two_cubes(&many));
         } else {
             assert_int_equal(many.touching_face_pairs, 2048);
-        }
-        for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
-            assert_int_equal(many_first[i][0], few_first[i][0]);
-            assert_int_equal(many_first[i][1], few_first[i][1]);
+            for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
+                assert_int_equal(many.first_touching_face_pairs[i][0],
+                                 few.first_touching_face_pairs[i][0]);
+                assert_int_equal(many.first_touching_face_pairs[i][1],
+                                 few.first_touching_face_pairs[i][1]);
+            }
         }
     }
     polymass_context_destroy(ctx);

@@ -84,7 +84,9 @@ class Diagnostics(Verdict):
     (not with skip_intersection_check=True)."""
     first_overlapping_shells: tuple[int, ...]
     intersecting_face_pairs: int
-    """Pairs of faces that cross each other (not with skip_intersection_check=True)."""
+    """Pairs of faces that cross each other (not with skip_intersection_check=True),
+    counted up to 2048 (the C library's POLYMASS_MAX_COUNTED_FACE_PAIRS): at that count
+    the check ended there, and every pair count is a lower bound."""
     first_intersecting_face_pairs: tuple[FacePair, ...]
     touching_face_pairs: int
     """Pairs of faces that touch without crossing nor sharing a vertex, such as

@@ -117,8 +117,9 @@ pub const LOCATIONS: usize = polymass_sys::POLYMASS_DIAGNOSTIC_LOCATIONS as usiz
 
 /// How many face pairs of a kind (crossing, touching) the intersection check
 /// counts: past that, [`Diagnostics::intersecting_face_pairs`] and
-/// [`Diagnostics::touching_face_pairs`] are lower bounds. The C library's
-/// `POLYMASS_MAX_COUNTED_FACE_PAIRS`.
+/// [`Diagnostics::touching_face_pairs`] are lower bounds. Once that many
+/// cross, the check ends there: the touching count is then a lower bound
+/// whatever its value. The C library's `POLYMASS_MAX_COUNTED_FACE_PAIRS`.
 ///
 /// ```
 /// assert_eq!(polymass::MAX_COUNTED_FACE_PAIRS, 2048);
