@@ -310,8 +310,7 @@ void check_search_ends_at_the_crossing_stop() {
                 return mesh.add_vertex(at + Eigen::Vector3d(x, y, z));
             };
             flat.push_back({add(0, 0, 0), add(1, 0, 0), add(0, 1, 0)});
-            upright.push_back(
-                {add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)});
+            upright.push_back({add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)});
         }
     }
     for (const auto& triangles : {flat, upright})

@@ -204,7 +204,13 @@ POLYMASS_API const char* polymass_status_string(int32_t status);
 #define POLYMASS_DIAGNOSTIC_LOCATIONS 8
 /* How many face pairs of a kind (crossing, touching) the intersection check
    counts: past that the count is a lower bound (the message says "at
-   least"); the pairs listed are still the lowest. */
+   least"). The pairs listed are the lowest, but for one case: once this many
+   pairs cross, the surface is refused whatever else it holds, and the search
+   ends (a pile of parts crossing each other meets in a number of pairs that
+   grows with the square of the parts). Both kinds' counts and pairs are then
+   those of the part of the search done, the same on any number of threads:
+   crossing pairs that are not the lowest may be listed, and fewer touching
+   pairs than there are may be counted. */
 #define POLYMASS_MAX_COUNTED_FACE_PAIRS 2048
 /* No location: the value of the "first_*" entries past the count beside them
    (all of them when it is 0). */
@@ -451,7 +457,8 @@ typedef struct polymass_diagnostics {
     uint64_t first_inverted_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
     uint64_t overlapping_shells; /* inside a solid of the same sense, or through another */
     uint64_t first_overlapping_shells[POLYMASS_DIAGNOSTIC_LOCATIONS];
-    /* Counted up to POLYMASS_MAX_COUNTED_FACE_PAIRS of a kind. */
+    /* Counted up to POLYMASS_MAX_COUNTED_FACE_PAIRS of a kind; when that many
+       cross, the search ended there (POLYMASS_MAX_COUNTED_FACE_PAIRS). */
     uint64_t intersecting_face_pairs; /* faces that cross, or coincide facing the same way */
     uint64_t first_intersecting_face_pairs[POLYMASS_DIAGNOSTIC_LOCATIONS][2];
     uint64_t touching_face_pairs; /* faces that touch without crossing nor sharing a vertex */
