@@ -15,8 +15,9 @@
 #           bounded, fixed-seed run
 #   tsan    configure, build and ctest the `tsan` preset (ThreadSanitizer):
 #           the library and its threading unit tests only (threads, batch,
-#           packed, concurrent_calls: contexts on many threads, one mesh read
-#           by many, the library's workers, batches)
+#           packed, concurrent_calls, welding, intersections: contexts on many
+#           threads, one mesh read by many, the library's workers, batches,
+#           the intersection check's search ended on two threads)
 #   python  scripts/test-python.sh: the Python binding installed into a venv,
 #           ruff over every Python file, pytest, the Python examples
 #   rust    scripts/test-rust.sh: rustfmt, clippy, cargo test (with doc
