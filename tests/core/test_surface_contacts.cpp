@@ -264,21 +264,33 @@ void check_pile(const char* name, const TestMesh& mesh, const polymass::core::Sh
 // merged reach the stop. The count stops at 2048, and the search with it
 // (the touching pairs, none, are then a lower bound); the pairs listed are
 // crossing ones, whatever the runner.
+// The corners of a cell of a grid of crossing pairs, added to `mesh` about
+// the cell's corner `at`: a triangle flat in z = 0 and one upright across its
+// inside, along y = 0.25, which cross; and a third apart from both. Their
+// boxes are centred at z = 0, so that the curve orders the cells by x and y
+// alone, and a piece of the search holds whole cells.
+struct CrossingCell {
+    std::array<std::uint32_t, 3> flat, upright, apart;
+};
+
+CrossingCell add_crossing_cell(TestMesh& mesh, const Eigen::Vector3d& at) {
+    auto add = [&](double x, double y, double z) {
+        return mesh.add_vertex(at + Eigen::Vector3d(x, y, z));
+    };
+    return {{add(0, 0, 0), add(1, 0, 0), add(0, 1, 0)},
+            {add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)},
+            {add(1.8, 1.8, 0), add(2.3, 1.8, 0), add(1.8, 2.3, 0)}};
+}
+
 void check_many_pieces() {
     constexpr std::uint32_t cells = 3000, row = 60;
     TestMesh mesh;
     std::vector<std::array<std::uint32_t, 3>> flat, upright, apart;
     for (std::uint32_t k = 0; k < cells; ++k) {
-        const Eigen::Vector3d at(3.0 * (k % row), 3.0 * (k / row), 0.0);
-        auto add = [&](double x, double y, double z) {
-            return mesh.add_vertex(at + Eigen::Vector3d(x, y, z));
-        };
-        // Upright across the flat one's inside, along y = 0.25.
-        flat.push_back({add(0, 0, 0), add(1, 0, 0), add(0, 1, 0)});
-        upright.push_back({add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)});
-        // Boxes centred at z = 0, as the others: the curve then orders the
-        // cells by x and y alone, and a piece holds whole cells.
-        apart.push_back({add(1.8, 1.8, 0), add(2.3, 1.8, 0), add(1.8, 2.3, 0)});
+        const CrossingCell cell = add_crossing_cell(mesh, {3.0 * (k % row), 3.0 * (k / row), 0.0});
+        flat.push_back(cell.flat);
+        upright.push_back(cell.upright);
+        apart.push_back(cell.apart);
     }
     for (const auto& triangles : {flat, upright, apart})
         for (const auto& t : triangles) mesh.add_face({t[0], t[1], t[2]});
@@ -291,9 +303,10 @@ void check_many_pieces() {
     });
 }
 
-// Two clusters far apart, each a grid of cells of two crossing triangles as
-// check_many_pieces', more than the count's stop in each, and over more
-// triangles than a piece holds; their faces alternate between the clusters
+// Two clusters far apart, each a grid of cells of two crossing triangles
+// (add_crossing_cell; the third's corners left unused), more than the
+// count's stop in each, and over more triangles than a piece holds; their
+// faces alternate between the clusters
 // (cell k's triangles are faces 2k and 2 cells + 2k in the first, one more
 // in the second), so that the lowest crossing pairs of all would alternate
 // too. The search ends at the crossing pairs' stop, within the cluster the
@@ -305,12 +318,10 @@ void check_search_ends_at_the_crossing_stop() {
     std::vector<std::array<std::uint32_t, 3>> flat, upright;
     for (std::uint32_t k = 0; k < cells; ++k) {
         for (const double offset : {0.0, 1e4}) {
-            const Eigen::Vector3d at(offset + 3.0 * (k % row), 3.0 * (k / row), 0.0);
-            auto add = [&](double x, double y, double z) {
-                return mesh.add_vertex(at + Eigen::Vector3d(x, y, z));
-            };
-            flat.push_back({add(0, 0, 0), add(1, 0, 0), add(0, 1, 0)});
-            upright.push_back({add(0.1, 0.25, -0.5), add(0.6, 0.25, -0.5), add(0.35, 0.25, 0.5)});
+            const CrossingCell cell =
+                add_crossing_cell(mesh, {offset + 3.0 * (k % row), 3.0 * (k / row), 0.0});
+            flat.push_back(cell.flat);
+            upright.push_back(cell.upright);
         }
     }
     for (const auto& triangles : {flat, upright})

@@ -10,6 +10,11 @@
 #include "overlap_cases.h"
 #include "reference/exact_reference.h"
 
+/* Whether face pair a comes before b: by first face, then by second. */
+static int pair_before(const uint64_t a[2], const uint64_t b[2]) {
+    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+}
+
 static void test_overlapping_cubes(void** state) {
     pm_mesh m;
     (void)state;
@@ -198,14 +203,9 @@ static void test_report_lists_pairs_and_shells(void** state) {
             assert_true(d.first_intersecting_face_pairs[i][0] < 6);  /* first cube */
             assert_true(d.first_intersecting_face_pairs[i][1] >= 6); /* second cube */
             assert_true(d.first_intersecting_face_pairs[i][1] < 12);
-            if (i > 0) { /* ascending */
-                assert_true(d.first_intersecting_face_pairs[i - 1][0] <
-                                d.first_intersecting_face_pairs[i][0] ||
-                            (d.first_intersecting_face_pairs[i - 1][0] ==
-                                 d.first_intersecting_face_pairs[i][0] &&
-                             d.first_intersecting_face_pairs[i - 1][1] <
-                                 d.first_intersecting_face_pairs[i][1]));
-            }
+            if (i > 0) /* ascending */
+                assert_true(pair_before(d.first_intersecting_face_pairs[i - 1],
+                                        d.first_intersecting_face_pairs[i]));
         } else {
             assert_true(d.first_intersecting_face_pairs[i][0] == POLYMASS_NONE);
         }
@@ -293,10 +293,7 @@ static int crossing_pairs_of_two_cubes(const polymass_diagnostics* d) {
     for (i = 0; i < POLYMASS_DIAGNOSTIC_LOCATIONS; ++i) {
         const uint64_t* pair = d->first_intersecting_face_pairs[i];
         if (pair[0] >= pair[1] || pair[0] / 12 == pair[1] / 12) return 0;
-        if (i > 0 && !(d->first_intersecting_face_pairs[i - 1][0] < pair[0] ||
-                       (d->first_intersecting_face_pairs[i - 1][0] == pair[0] &&
-                        d->first_intersecting_face_pairs[i - 1][1] < pair[1])))
-            return 0;
+        if (i > 0 && !pair_before(d->first_intersecting_face_pairs[i - 1], pair)) return 0;
     }
     return 1;
 }
